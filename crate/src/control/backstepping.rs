@@ -1,0 +1,253 @@
+//! The four-step backstepping controller of Section 4, derived from the error definitions
+//!
+//!   z1 = x̂1 − ω_d,                     z2 = a1(x3·x̂4 − x2·x̂5) − v1,
+//!   z3 = x̂4² + x̂5² − ψ_d,              z4 = 2·a10(x2·x̂4 + x3·x̂5) − v3,
+//!
+//! with the observer in the general form (4), x̂̇ = f̂ + L·(x̃2, x̃3), and the measured currents
+//! x2, x3 obeying the true model (2). With x̃1 = x̃4 = x̃5 = 0 the law below gives exactly
+//!
+//!   ż1 = −k1 z1 + z2,   ż2 = −k2 z2 − z1,   ż3 = −k3 z3 + z4,   ż4 = −k4 z4 − z3.
+//!
+//! The unknown disturbances d̃2 and d̃4 (which vanish when x̃1 = x̃4 = x̃5 = 0) are left out of the
+//! feedforward. Names follow the paper, hence `non_snake_case` is not needed but short names are.
+
+use crate::control::RefSample;
+use crate::model::State;
+use crate::params::Lumped;
+use serde::{Deserialize, Serialize};
+use std::fmt;
+
+/// Design gains of the controller (closed-loop error rates, 1/s) and the robust terms.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Gains {
+    /// k1: closed-loop rate of the speed error z1 (1/s).
+    pub k1: f64,
+    /// k2 = a7 + a8 + k2s1: closed-loop rate of the torque error z2 (1/s), eq (36).
+    pub k2: f64,
+    /// k3 = k3s1: closed-loop rate of the flux error z3 (1/s), eq (46).
+    pub k3: f64,
+    /// k4: closed-loop rate of the flux-derivative error z4 (1/s), eq (51).
+    pub k4: f64,
+    /// Whether the robust terms v2s2 (38) and v4s2 (53) are applied.
+    pub robust: bool,
+    /// ε2 of eq (38).
+    pub eps2: f64,
+    /// h2 of eq (38): bound on |d̃2|.
+    pub h2: f64,
+    /// ε4 of eq (53).
+    pub eps4: f64,
+    /// h4 of eq (53): bound on |d̃4|.
+    pub h4: f64,
+}
+
+/// What the controller sees at one sample: only signals a real drive has.
+#[derive(Clone, Copy, Debug)]
+pub struct ControlInput {
+    /// Posterior estimate x̂_{k|k}.
+    pub x_hat: State,
+    /// Measured stator currents y = [x2, x3] (A).
+    pub y: [f64; 2],
+    /// Observer gain L = K/Ts of eq (20), row-major 5×2 (1/s).
+    pub l: [[f64; 2]; 5],
+    /// Residual (x̃2, x̃3) = y − C·x̂_{k|k} (A).
+    pub residual: [f64; 2],
+    /// Speed reference and its derivatives.
+    pub speed_ref: RefSample,
+    /// Flux target ψ_d for x̂4² + x̂5² (Wb²); constant, so its derivatives are zero.
+    pub psi_d: f64,
+}
+
+/// Every term of the four steps at one sample, for teaching and checking.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Terms {
+    /// Errors z1..z4 (rad/s, rad/s², Wb², Wb²/s).
+    pub z: [f64; 4],
+    /// Virtual control v1 = v1a + v1s (rad/s²), eq (26).
+    pub v1: f64,
+    /// Feedforward v1a, eq (27).
+    pub v1a: f64,
+    /// Feedback v1s = −k1s1 z1, eq (28).
+    pub v1s: f64,
+    /// v2 = v2a + v2s (rad/s³), eq (34).
+    pub v2: f64,
+    /// Feedforward v2a = −ψ2 − z1, eq (35) without d̃2.
+    pub v2a: f64,
+    /// Feedback v2s = v2s1 + v2s2, eq (36).
+    pub v2s: f64,
+    /// Virtual control v3 = v3a + v3s (Wb²/s), eq (45).
+    pub v3: f64,
+    /// Feedforward v3a = −ψ3.
+    pub v3a: f64,
+    /// Feedback v3s = −k3 z3.
+    pub v3s: f64,
+    /// v4 = v4a + v4s (Wb²/s²), eq (49).
+    pub v4: f64,
+    /// Feedforward v4a = −ψ4 − z3, eq (50).
+    pub v4a: f64,
+    /// Feedback v4s = v4s1 + v4s2, eq (51).
+    pub v4s: f64,
+    /// ψ2 of eq (33) (typos of (31) corrected).
+    pub psi2: f64,
+    /// ψ3 of eq (43).
+    pub psi3: f64,
+    /// ψ4 of eq (47).
+    pub psi4: f64,
+    /// Estimated torque term a1(x3·x̂4 − x2·x̂5) that tracks v1 (rad/s²).
+    pub torque: f64,
+    /// Voltage from eq (54) before saturation (V).
+    pub u: [f64; 2],
+    /// Lyapunov function V = ½ Σ z_i².
+    pub lyapunov: f64,
+}
+
+/// Why the controller cannot produce a voltage.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum ControlError {
+    /// The decoupling matrix (55) is singular: the flux estimate x̂4² + x̂5² is nearly zero.
+    SingularDecoupling {
+        /// x̂4² + x̂5² (Wb²).
+        flux_sq: f64,
+    },
+}
+
+impl fmt::Display for ControlError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            ControlError::SingularDecoupling { flux_sq } => write!(
+                f,
+                "decoupling matrix (55) is singular: estimated flux x̂4² + x̂5² = {flux_sq:.3e} Wb² \
+                 is below {MIN_FLUX_SQ:e} Wb²"
+            ),
+        }
+    }
+}
+
+impl std::error::Error for ControlError {}
+
+/// Smallest x̂4² + x̂5² (Wb²) for which (54) is solved: a flux modulus of 1 mWb, 0.14 % of the
+/// paper's 0.707 Wb. Below it the voltages would be dominated by rounding.
+pub const MIN_FLUX_SQ: f64 = 1e-6;
+
+/// The backstepping controller with the model parameters it assumes.
+#[derive(Clone, Copy, Debug)]
+pub struct Backstepping {
+    model: Lumped,
+    gains: Gains,
+}
+
+impl Backstepping {
+    /// A controller for the lumped `model` with `gains`.
+    pub fn new(model: Lumped, gains: Gains) -> Backstepping {
+        Backstepping { model, gains }
+    }
+
+    /// Computes every term and the voltage (54) for one sample.
+    pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
+        let p = &self.model;
+        let g = &self.gains;
+        let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
+        let [x2, x3] = input.y;
+        let [e2, e3] = input.residual;
+        let l = &input.l;
+        let r = input.speed_ref;
+        // Observer injections si_i = l_i1 x̃2 + l_i2 x̃3, eq (5).
+        let si: [f64; 5] = std::array::from_fn(|i| l[i][0] * e2 + l[i][1] * e3);
+        // Nominal residual dynamics (x̃1 = x̃4 = x̃5 = 0): d/dt x̃2, d/dt x̃3.
+        let de2 = -(p.a7 + l[1][0]) * e2 - l[1][1] * e3;
+        let de3 = -l[2][0] * e2 - (p.a7 + l[2][1]) * e3;
+        let flux_sq = x4h * x4h + x5h * x5h;
+
+        // Step 1, speed loop: eqs (23)–(30). â2 = a2 (constant load model), so dâ2/dt = 0.
+        let k1s1 = g.k1 - p.a3;
+        let z1 = x1h - r.value;
+        let v1a = -si[0] + r.d1 + p.a3 * r.value + p.a2;
+        let v1s = -k1s1 * z1;
+        let v1 = v1a + v1s;
+        let torque = p.a1 * (x3 * x4h - x2 * x5h);
+        let z2 = torque - v1;
+        // dv1/dt of eq (31) with its typos corrected (a3·ω̇_d, dâ2/dt = 0).
+        let dv1 = -k1s1 * (-g.k1 * z1 + z2) - (l[0][0] * de2 + l[0][1] * de3) + r.d2 + p.a3 * r.d1;
+
+        // Step 2, torque loop: eq (32) is ż2 = v2 + ψ2 − (a7 + a8) z2 + d̃2; the printed (32)
+        // drops −(a7+a8) z2, which is what makes k2 = a7 + a8 + k2s1 in (36) true.
+        let psi2 = -(p.a7 + p.a8) * v1
+            - p.a1 * p.a6 * x1h * flux_sq
+            - p.a1 * p.a9 * x1h * (x5h * x3 + x4h * x2)
+            + p.a1 * p.a10 * (x2h * x3 - x3h * x2)
+            + p.a1 * (x3 * si[3] - x2 * si[4])
+            - dv1;
+        let k2s1 = g.k2 - p.a7 - p.a8;
+        let v2a = -psi2 - z1;
+        let v2s2 = if g.robust {
+            -g.h2 * g.h2 / (4.0 * g.eps2) * z2
+        } else {
+            0.0
+        };
+        let v2s = -k2s1 * z2 + v2s2;
+        let v2 = v2a + v2s;
+
+        // Step 3, flux outer loop: eqs (42)–(46).
+        let z3 = flux_sq - input.psi_d;
+        let psi3 = -2.0 * p.a8 * flux_sq - 2.0 * p.a10 * (e2 * x4h + e3 * x5h)
+            + 2.0 * (x4h * si[3] + x5h * si[4]);
+        let v3a = -psi3;
+        let v3s = -g.k3 * z3;
+        let v3 = v3a + v3s;
+        let z4 = 2.0 * p.a10 * (x2 * x4h + x3 * x5h) - v3;
+
+        // Step 4, flux inner loop: eqs (47)–(51). x̂̇4, x̂̇5 of the observer (4):
+        let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
+        let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
+        let psi4 = 2.0 * p.a10 * p.a5 * flux_sq - 2.0 * p.a10 * p.a7 * (x2h * x4h + x3h * x5h)
+            + 2.0 * p.a10 * (x4h * si[1] + x5h * si[2])
+            + 2.0 * (l[3][0] * x4h + l[4][0] * x5h) * de2
+            + 2.0 * (l[3][1] * x4h + l[4][1] * x5h) * de3
+            + 2.0 * (si[3] + p.a10 * x2h - 2.0 * p.a8 * x4h) * dx4h
+            + 2.0 * (si[4] + p.a10 * x3h - 2.0 * p.a8 * x5h) * dx5h
+            + g.k3 * (-g.k3 * z3 + z4);
+        let v4a = -psi4 - z3;
+        let v4s2 = if g.robust {
+            -g.h4 * g.h4 / (4.0 * g.eps4) * z4
+        } else {
+            0.0
+        };
+        let v4s = -g.k4 * z4 + v4s2;
+        let v4 = v4a + v4s;
+
+        // Eq (54): b·[[−a1x̂5, a1x̂4], [2a10x̂4, 2a10x̂5]]·u = [v2, v4]; det = −2 a1 a10 b (x̂4²+x̂5²).
+        if flux_sq.is_nan() || flux_sq < MIN_FLUX_SQ {
+            return Err(ControlError::SingularDecoupling { flux_sq });
+        }
+        let (m11, m12, m21, m22) = (
+            -p.a1 * x5h,
+            p.a1 * x4h,
+            2.0 * p.a10 * x4h,
+            2.0 * p.a10 * x5h,
+        );
+        let det = p.b * (m11 * m22 - m12 * m21);
+        let u = [(m22 * v2 - m12 * v4) / det, (m11 * v4 - m21 * v2) / det];
+
+        let z = [z1, z2, z3, z4];
+        Ok(Terms {
+            z,
+            v1,
+            v1a,
+            v1s,
+            v2,
+            v2a,
+            v2s,
+            v3,
+            v3a,
+            v3s,
+            v4,
+            v4a,
+            v4s,
+            psi2,
+            psi3,
+            psi4,
+            torque,
+            u,
+            lyapunov: 0.5 * (z1 * z1 + z2 * z2 + z3 * z3 + z4 * z4),
+        })
+    }
+}

@@ -1,0 +1,17 @@
+//! IM Lab core: speed-sensorless induction-motor control after Zhang, Wang, Bortoff et al. (2015),
+//! "Integrated design of speed sensorless control algorithms for induction motors".
+//!
+//! Data flows one way: [`params`] → [`model`] (plant) → [`observer`] (EKF) → [`control`]
+//! (four backstepping steps) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
+//! setting and the query-string codec shared by the CLI, the browser and the tests.
+
+pub mod control;
+pub mod model;
+pub mod observer;
+pub mod params;
+pub mod rng;
+pub mod scenario;
+pub mod sim;
+
+#[cfg(target_arch = "wasm32")]
+pub mod wasm;

@@ -1,0 +1,6 @@
+//! State observers. The controller sees an observer only through the general form (4):
+//! the posterior estimate x̂, the gain L = K/Ts of eq (20) and the current residual.
+
+mod ekf;
+
+pub use ekf::{Ekf, EkfConfig, Predictor};

@@ -1,0 +1,364 @@
+//! The 20 kHz closed loop: plant, measurement noise, EKF, controller, saturation and recording.
+//!
+//! This is the only module that sees the true plant state; the observer and controller get the
+//! measured currents and the applied voltages (or, with the `perfect` teaching switch, the truth).
+
+mod recorder;
+
+pub use recorder::{Recorder, Row, COLUMNS, NUM_COLUMNS};
+
+use crate::control::{Backstepping, ControlError, ControlInput};
+use crate::model::{self, Input, State};
+use crate::observer::Ekf;
+use crate::params::Lumped;
+use crate::rng::Rng;
+use crate::scenario::{Scenario, ScenarioError};
+use std::fmt;
+
+/// Largest trace a run may record (bytes); beyond it the run is refused before it starts.
+pub const MAX_TRACE_BYTES: usize = 512 << 20;
+
+/// Bounds past which the plant or the estimate is declared diverged.
+const MAX_SPEED: f64 = 1e5; // rad/s, ~1 million rpm
+const MAX_CURRENT: f64 = 1e5; // A
+const MAX_FLUX: f64 = 1e3; // Wb
+
+/// Why a run stopped early.
+#[derive(Clone, Debug, PartialEq)]
+pub enum SimError {
+    /// A state left its physical bounds or became NaN.
+    Diverged {
+        /// Time of the sample (s).
+        t: f64,
+        /// Which signal.
+        signal: &'static str,
+        /// Its value.
+        value: f64,
+    },
+    /// The controller could not compute a voltage.
+    Control {
+        /// Time of the sample (s).
+        t: f64,
+        /// The reason.
+        error: ControlError,
+    },
+}
+
+impl fmt::Display for SimError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            SimError::Diverged { t, signal, value } => {
+                write!(
+                    f,
+                    "diverged at t = {t:.5} s: {signal} = {value:e} left its bounds"
+                )
+            }
+            SimError::Control { t, error } => {
+                write!(f, "controller failed at t = {t:.5} s: {error}")
+            }
+        }
+    }
+}
+
+impl std::error::Error for SimError {}
+
+/// A closed-loop run that can be advanced in chunks.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    scenario: Scenario,
+    plant: Lumped,
+    controller: Backstepping,
+    ekf: Ekf,
+    rng: Rng,
+    x: State,
+    u: Input,
+    k: usize,
+    steps: usize,
+    recorder: Recorder,
+    failure: Option<SimError>,
+}
+
+fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
+    let bounds = [MAX_SPEED, MAX_CURRENT, MAX_CURRENT, MAX_FLUX, MAX_FLUX];
+    for i in 0..5 {
+        if x[i].is_nan() || x[i].abs() > bounds[i] {
+            return Err(SimError::Diverged {
+                t,
+                signal: what[i],
+                value: x[i],
+            });
+        }
+    }
+    Ok(())
+}
+
+const PLANT_NAMES: [&str; 5] = [
+    "speed ω",
+    "current i_sa",
+    "current i_sb",
+    "flux φ_ra",
+    "flux φ_rb",
+];
+const ESTIMATE_NAMES: [&str; 5] = [
+    "estimated speed ω̂",
+    "estimated i_sa",
+    "estimated i_sb",
+    "estimated φ_ra",
+    "estimated φ_rb",
+];
+
+impl Simulation {
+    /// Prepares a run of `scenario`, keeping every `every`-th sample.
+    pub fn new(scenario: &Scenario, every: usize) -> Result<Simulation, ScenarioError> {
+        scenario.validate()?;
+        if every == 0 {
+            return Err(ScenarioError::OutOfRange {
+                key: "every".to_string(),
+                value: 0.0,
+                allowed: "1 ≤ every".to_string(),
+            });
+        }
+        let steps = scenario.steps();
+        let rows = steps.div_ceil(every);
+        let bytes = rows.saturating_mul(Recorder::ROW_BYTES);
+        if bytes > MAX_TRACE_BYTES {
+            return Err(ScenarioError::TooLarge {
+                what: format!(
+                    "recording {rows} samples × {NUM_COLUMNS} columns needs {} MiB, more than the {} MiB allowed; \
+                     shorten 'duration' or keep fewer samples (--every)",
+                    bytes >> 20,
+                    MAX_TRACE_BYTES >> 20
+                ),
+            });
+        }
+        let plant = scenario
+            .plant
+            .lumped()
+            .map_err(|error| ScenarioError::Physics {
+                which: "plant",
+                error,
+            })?;
+        let model = scenario
+            .model
+            .lumped()
+            .map_err(|error| ScenarioError::Physics {
+                which: "model",
+                error,
+            })?;
+        // Section 5: x(0) = [ω_d(0), 2, 2, 0.5, 0.5]; x̂(0) = (1 − e)·x(0); P0 = diag((e·x(0))²) + Q.
+        let x0 = [scenario.reference.sample(0.0).value, 2.0, 2.0, 0.5, 0.5];
+        let e = scenario.init_error;
+        let ekf = Ekf::new(
+            model,
+            scenario.ts,
+            &scenario.ekf,
+            x0.map(|v| (1.0 - e) * v),
+            x0.map(|v| e * v),
+        );
+        Ok(Simulation {
+            scenario: scenario.clone(),
+            plant,
+            controller: Backstepping::new(model, scenario.gains),
+            ekf,
+            rng: Rng::new(scenario.seed),
+            x: x0,
+            u: [0.0; 2],
+            k: 0,
+            steps,
+            recorder: Recorder::with_capacity(rows, every),
+            failure: None,
+        })
+    }
+
+    /// Runs up to `max_steps` more samples. Returns the number run; stops at the end or at the
+    /// first failure, which is returned (and kept: later calls return it again).
+    pub fn advance(&mut self, max_steps: usize) -> Result<usize, SimError> {
+        if let Some(e) = &self.failure {
+            return Err(e.clone());
+        }
+        let end = self.steps.min(self.k.saturating_add(max_steps));
+        let start = self.k;
+        while self.k < end {
+            if let Err(e) = self.step() {
+                self.failure = Some(e.clone());
+                return Err(e);
+            }
+            self.k += 1;
+        }
+        Ok(end - start)
+    }
+
+    /// Runs to the end.
+    pub fn run(&mut self) -> Result<(), SimError> {
+        self.advance(usize::MAX).map(|_| ())
+    }
+
+    /// One sample k, in the loop order of the design: measure, predict, update, control, clip, hold.
+    fn step(&mut self) -> Result<(), SimError> {
+        let s = &self.scenario;
+        let ts = s.ts;
+        let t = self.k as f64 * ts;
+        // 1. Measure.
+        let y = [
+            self.x[1] + s.noise * self.rng.normal(),
+            self.x[2] + s.noise * self.rng.normal(),
+        ];
+        // 2–3. EKF predict with u_{k−1} (none before the first sample), then update with y_k.
+        if self.k > 0 {
+            self.ekf.predict(&self.u);
+        }
+        self.ekf.update(&y);
+        let x_hat = self.ekf.state();
+        check_state(t, &x_hat, ESTIMATE_NAMES)?;
+        let gain = self.ekf.gain();
+        // 4. Controller from the posterior, the measured currents, L = K/Ts and the posterior residual.
+        let speed_ref = s.reference.sample(t);
+        let input = if s.perfect {
+            ControlInput {
+                x_hat: self.x,
+                y: [self.x[1], self.x[2]],
+                l: [[0.0; 2]; 5],
+                residual: [0.0; 2],
+                speed_ref,
+                psi_d: s.psi_d,
+            }
+        } else {
+            ControlInput {
+                x_hat,
+                y,
+                l: gain.map(|row| row.map(|k| k / ts)),
+                residual: [y[0] - x_hat[1], y[1] - x_hat[2]],
+                speed_ref,
+                psi_d: s.psi_d,
+            }
+        };
+        let terms = self
+            .controller
+            .control(&input)
+            .map_err(|error| SimError::Control { t, error })?;
+        for (i, name) in ["commanded u_sa", "commanded u_sb"].into_iter().enumerate() {
+            if !terms.u[i].is_finite() {
+                return Err(SimError::Diverged {
+                    t,
+                    signal: name,
+                    value: terms.u[i],
+                });
+            }
+        }
+        // 5. Clip each component to the voltage limit.
+        let vmax = s.voltage_limit;
+        self.u = terms.u.map(|v| v.clamp(-vmax, vmax));
+
+        let x = &self.x;
+        let p = self.ekf.covariance();
+        let [innov_a, innov_b] = self.ekf.innovation();
+        let [s_aa, s_ab, s_bb] = self.ekf.innovation_cov();
+        let [[k11, k12], [k21, k22], [k31, k32], [k41, k42], [k51, k52]] = gain;
+        let row = Row {
+            t,
+            omega_ref: speed_ref.value,
+            omega: x[0],
+            omega_hat: x_hat[0],
+            i_sa: x[1],
+            i_sb: x[2],
+            i_sa_hat: x_hat[1],
+            i_sb_hat: x_hat[2],
+            phi_ra: x[3],
+            phi_rb: x[4],
+            phi_ra_hat: x_hat[3],
+            phi_rb_hat: x_hat[4],
+            u_a: self.u[0],
+            u_b: self.u[1],
+            z1: terms.z[0],
+            z2: terms.z[1],
+            z3: terms.z[2],
+            z4: terms.z[3],
+            y_a: y[0],
+            y_b: y[1],
+            flux_sq: x[3] * x[3] + x[4] * x[4],
+            flux_sq_hat: x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4],
+            psi_d: s.psi_d,
+            torque_hat: terms.torque,
+            v1: terms.v1,
+            v1a: terms.v1a,
+            v1s: terms.v1s,
+            v2: terms.v2,
+            v2a: terms.v2a,
+            v2s: terms.v2s,
+            v3: terms.v3,
+            v3a: terms.v3a,
+            v3s: terms.v3s,
+            v4: terms.v4,
+            v4a: terms.v4a,
+            v4s: terms.v4s,
+            psi2: terms.psi2,
+            psi3: terms.psi3,
+            psi4: terms.psi4,
+            u_a_cmd: terms.u[0],
+            u_b_cmd: terms.u[1],
+            lyapunov: terms.lyapunov,
+            innov_a,
+            innov_b,
+            s_aa,
+            s_ab,
+            s_bb,
+            nis: self.ekf.nis(),
+            p_omega: p[(0, 0)],
+            k11,
+            k12,
+            k21,
+            k22,
+            k31,
+            k32,
+            k41,
+            k42,
+            k51,
+            k52,
+        };
+        self.recorder.record(self.k, &row);
+
+        // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
+        let extra_load = if t >= s.load_step.time {
+            s.load_step.torque / self.plant.j
+        } else {
+            0.0
+        };
+        self.x = model::advance(&self.plant, &self.x, &self.u, extra_load, ts, s.substeps);
+        check_state(t + ts, &self.x, PLANT_NAMES)
+    }
+
+    /// Samples run so far.
+    pub fn steps_done(&self) -> usize {
+        self.k
+    }
+
+    /// Samples in the whole run.
+    pub fn steps_total(&self) -> usize {
+        self.steps
+    }
+
+    /// Whether every sample has run.
+    pub fn is_finished(&self) -> bool {
+        self.k >= self.steps
+    }
+
+    /// The failure that stopped the run, if any.
+    pub fn failure(&self) -> Option<&SimError> {
+        self.failure.as_ref()
+    }
+
+    /// The recorded trace (only finite rows from before any failure).
+    pub fn recorder(&self) -> &Recorder {
+        &self.recorder
+    }
+
+    /// The scenario being run.
+    pub fn scenario(&self) -> &Scenario {
+        &self.scenario
+    }
+
+    /// Current EKF (for checks of its covariance).
+    pub fn ekf(&self) -> &Ekf {
+        &self.ekf
+    }
+}

@@ -1,0 +1,151 @@
+//! JavaScript bindings: type conversion and error mapping only; no physics lives here.
+
+use crate::scenario::{Scenario, PRESETS};
+use crate::sim::{self, COLUMNS};
+use js_sys::{Array, Float64Array};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+fn js_error(e: impl std::fmt::Display) -> JsValue {
+    JsValue::from_str(&e.to_string())
+}
+
+/// A closed-loop run, advanced in chunks from JavaScript.
+#[wasm_bindgen]
+pub struct Simulation {
+    inner: sim::Simulation,
+}
+
+#[wasm_bindgen]
+impl Simulation {
+    /// Parses `scenario` (the query-string codec) and prepares the run, recording every sample.
+    #[wasm_bindgen(constructor)]
+    pub fn new(scenario: &str) -> Result<Simulation, JsValue> {
+        let s = Scenario::parse(scenario).map_err(js_error)?;
+        let inner = sim::Simulation::new(&s, 1).map_err(js_error)?;
+        Ok(Simulation { inner })
+    }
+
+    /// Runs up to `max_steps` samples; returns how many ran, or throws the failure message.
+    pub fn step(&mut self, max_steps: u32) -> Result<u32, JsValue> {
+        let done = self.inner.advance(max_steps as usize).map_err(js_error)?;
+        Ok(done as u32)
+    }
+
+    /// Samples run so far.
+    #[wasm_bindgen(getter)]
+    pub fn done(&self) -> u32 {
+        self.inner.steps_done() as u32
+    }
+
+    /// Samples in the whole run.
+    #[wasm_bindgen(getter)]
+    pub fn total(&self) -> u32 {
+        self.inner.steps_total() as u32
+    }
+
+    /// Whether every sample has run.
+    #[wasm_bindgen(getter)]
+    pub fn finished(&self) -> bool {
+        self.inner.is_finished()
+    }
+
+    /// The failure that stopped the run, if any.
+    #[wasm_bindgen(getter)]
+    pub fn failure(&self) -> Option<String> {
+        self.inner.failure().map(|e| e.to_string())
+    }
+
+    /// The scenario in its compact form.
+    #[wasm_bindgen(getter)]
+    pub fn scenario(&self) -> String {
+        self.inner.scenario().encode()
+    }
+
+    /// Rows recorded so far.
+    #[wasm_bindgen(getter)]
+    pub fn rows(&self) -> u32 {
+        self.inner.recorder().len() as u32
+    }
+
+    /// A whole column, copied into a new `Float64Array`.
+    pub fn column(&self, name: &str) -> Result<Float64Array, JsValue> {
+        self.inner
+            .recorder()
+            .column(name)
+            .map(Float64Array::from)
+            .ok_or_else(|| js_error(format!("no column '{name}'")))
+    }
+
+    /// Min/max envelope of `names` over t in [t0, t1] in `buckets` buckets:
+    /// an array [t, col1, col2, ...] of `Float64Array`s.
+    pub fn envelope(
+        &self,
+        names: Vec<String>,
+        t0: f64,
+        t1: f64,
+        buckets: u32,
+    ) -> Result<Array, JsValue> {
+        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+        let cols = self
+            .inner
+            .recorder()
+            .envelope(&refs, t0, t1, buckets as usize)
+            .ok_or_else(|| js_error(format!("unknown column among {names:?}")))?;
+        Ok(cols
+            .iter()
+            .map(|c| Float64Array::from(c.as_slice()))
+            .collect())
+    }
+
+    /// The recorded trace as CSV, byte-identical to `imlab run`.
+    pub fn csv(&self) -> String {
+        self.inner.recorder().csv()
+    }
+}
+
+#[derive(Serialize)]
+struct PresetInfo {
+    name: &'static str,
+    description: &'static str,
+}
+
+/// Presets as `[{name, description}]`.
+#[wasm_bindgen]
+pub fn presets() -> Result<JsValue, JsValue> {
+    let list: Vec<PresetInfo> = PRESETS
+        .iter()
+        .map(|p| PresetInfo {
+            name: p.name,
+            description: p.description,
+        })
+        .collect();
+    serde_wasm_bindgen::to_value(&list).map_err(js_error)
+}
+
+#[derive(Serialize)]
+struct Description {
+    encoded: String,
+    steps: usize,
+    fields: Vec<crate::scenario::FieldInfo>,
+}
+
+/// Every field of the effective scenario (key, unit, range, value) and its compact form;
+/// throws the codec's message for a bad scenario.
+#[wasm_bindgen]
+pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let d = Description {
+        encoded: s.encode(),
+        steps: s.steps(),
+        fields: s.describe(),
+    };
+    d.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(js_error)
+}
+
+/// Names of the recorded columns in CSV order.
+#[wasm_bindgen]
+pub fn columns() -> Vec<String> {
+    COLUMNS.iter().map(|c| c.to_string()).collect()
+}

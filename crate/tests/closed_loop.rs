@@ -1,0 +1,255 @@
+//! Closed-loop figures the paper and the design fix: decay rates, settling, tracking, EKF health.
+
+use imlab::scenario::{preset, Scenario, PRESETS};
+use imlab::sim::{SimError, Simulation};
+use nalgebra::SymmetricEigen;
+
+fn run(text: &str) -> Simulation {
+    let s = Scenario::parse(text).unwrap();
+    let mut sim = Simulation::new(&s, 1).unwrap();
+    sim.run().unwrap_or_else(|e| panic!("{text}: {e}"));
+    sim
+}
+
+fn col<'a>(sim: &'a Simulation, name: &str) -> &'a [f64] {
+    sim.recorder().column(name).unwrap()
+}
+
+/// Least-squares decay rate of |(a, b)| over t in [t0, t1] (1/s).
+fn decay_rate(sim: &Simulation, a: &str, b: &str, t0: f64, t1: f64) -> f64 {
+    let (t, za, zb) = (col(sim, "t"), col(sim, a), col(sim, b));
+    let pts: Vec<(f64, f64)> = (0..t.len())
+        .filter(|&i| t[i] >= t0 && t[i] <= t1)
+        .map(|i| (t[i], za[i].hypot(zb[i]).ln()))
+        .collect();
+    let n = pts.len() as f64;
+    let (mt, my) = (
+        pts.iter().map(|p| p.0).sum::<f64>() / n,
+        pts.iter().map(|p| p.1).sum::<f64>() / n,
+    );
+    let sxy: f64 = pts.iter().map(|p| (p.0 - mt) * (p.1 - my)).sum();
+    let sxx: f64 = pts.iter().map(|p| (p.0 - mt).powi(2)).sum();
+    -sxy / sxx
+}
+
+/// Designed rate of |(z1, z2)| and |(z3, z4)|: d/dt ½|z|² = −k|z|² exactly in continuous time.
+const DESIGNED_RATE: f64 = 1200.0;
+/// Fit window: 5 ms, about six time constants, before the errors reach rounding level.
+const DECAY_WINDOW: f64 = 0.005;
+
+#[test]
+fn perfect_observer_errors_decay_at_the_designed_rate() {
+    let mut deviation = Vec::new();
+    for ts in [50e-6, 25e-6, 12.5e-6] {
+        let sim = run(&format!("v=1&preset=decay&ts={ts}"));
+        let r12 = decay_rate(&sim, "z1", "z2", 0.0, DECAY_WINDOW);
+        let r34 = decay_rate(&sim, "z3", "z4", 0.0, DECAY_WINDOW);
+        // At 20 kHz the sampled loop is within 2 % of the continuous design.
+        assert!(
+            (r12 / DESIGNED_RATE - 1.0).abs() < 0.02,
+            "Ts = {ts}: |(z1,z2)| rate {r12}"
+        );
+        assert!(
+            (r34 / DESIGNED_RATE - 1.0).abs() < 0.02,
+            "Ts = {ts}: |(z3,z4)| rate {r34}"
+        );
+        deviation.push(((r12 - DESIGNED_RATE).abs(), (r34 - DESIGNED_RATE).abs()));
+    }
+    // And the rate approaches 1200/s as Ts shrinks.
+    for w in deviation.windows(2) {
+        assert!(w[1].0 < w[0].0 && w[1].1 < w[0].1, "{deviation:?}");
+    }
+}
+
+/// Settling band: 2 % of the step size, as the issue asks.
+const SETTLING_BAND: f64 = 0.02;
+
+#[test]
+fn step_settles_within_6_ms() {
+    let sim = run("step");
+    let (t, w) = (col(&sim, "t"), col(&sim, "omega"));
+    let (size, step_time) = (0.5, 0.05);
+    let last_out = (0..t.len())
+        .filter(|&i| t[i] >= step_time && (w[i] - size).abs() > SETTLING_BAND * size)
+        .map(|i| t[i])
+        .fold(step_time, f64::max);
+    let settling = last_out - step_time;
+    assert!(settling < 0.006, "2 % settling time {settling} s");
+}
+
+fn tracking_rms(sim: &Simulation, t0: f64, t1: f64) -> f64 {
+    let (t, w, r) = (col(sim, "t"), col(sim, "omega"), col(sim, "omega_ref"));
+    let e: Vec<f64> = (0..t.len())
+        .filter(|&i| t[i] >= t0 && t[i] <= t1)
+        .map(|i| w[i] - r[i])
+        .collect();
+    (e.iter().map(|v| v * v).sum::<f64>() / e.len() as f64).sqrt()
+}
+
+#[test]
+fn sine200_tracks_within_5_percent_rms() {
+    let rms = tracking_rms(&run("sine200"), 0.05, 0.25);
+    assert!(rms < 0.05 * 0.5, "RMS tracking error {rms} rad/s");
+}
+
+/// Chi-square with 2 degrees of freedom has mean 2; over thousands of samples a consistent
+/// filter's mean NIS stays within ±25 % of it.
+const NIS_BAND: (f64, f64) = (1.5, 2.5);
+
+#[test]
+fn nis_shows_euler_bias_at_200_hz_and_rk4_consistency() {
+    let mean_nis = |text: &str| {
+        let sim = run(text);
+        let (t, nis) = (col(&sim, "t"), col(&sim, "nis"));
+        let v: Vec<f64> = (0..t.len())
+            .filter(|&i| t[i] > 0.05)
+            .map(|i| nis[i])
+            .collect();
+        v.iter().sum::<f64>() / v.len() as f64
+    };
+    for text in ["step", "sine200-rk4"] {
+        let m = mean_nis(text);
+        assert!(m > NIS_BAND.0 && m < NIS_BAND.1, "{text}: mean NIS {m}");
+    }
+    // The paper's Euler predictor cannot follow 200 Hz currents: its innovations are too large.
+    assert!(mean_nis("sine200") > 10.0);
+}
+
+/// Converged: over the last 10 % of the run the RMS flux-estimation error is below half the
+/// initial 10 % error (0.0707 Wb), and the RMS speed-estimation error below 2 % of the largest
+/// reference plus 0.02 rad/s (the measurement noise alone moves the estimate by ~0.01 rad/s).
+const FLUX_EST_TOL: f64 = 0.5 * 0.1 * std::f64::consts::FRAC_1_SQRT_2; // |φ(0)| = |(0.5, 0.5)|
+const SPEED_EST_TOL: (f64, f64) = (0.02, 0.02);
+/// The presets built to saturate the voltage for most of the run; the Euler EKF does not
+/// converge there (its model input is right, but the fast switching defeats forward Euler).
+const SATURATING: &[&str] = &["sine200-1rad", "high-gain"];
+
+#[test]
+fn ekf_converges_on_every_unsaturated_preset_and_p_stays_psd() {
+    let mut saturated = Vec::new();
+    for p in PRESETS {
+        let mut s = preset(p.name).unwrap();
+        // Mismatch presets exist to show an observer whose model is wrong; here the model is right.
+        s.plant = s.model;
+        s.load_step.torque = 0.0;
+        let mut sim = Simulation::new(&s, 1).unwrap();
+        while !sim.is_finished() {
+            sim.advance(97).unwrap();
+            let cov = sim.ekf().covariance();
+            assert_eq!(*cov, cov.transpose(), "{}: P not symmetric", p.name);
+            let min_eig = SymmetricEigen::new(*cov).eigenvalues.min();
+            assert!(
+                min_eig >= -1e-12 * cov.trace(),
+                "{}: P has eigenvalue {min_eig}",
+                p.name
+            );
+        }
+        let n = sim.recorder().len();
+        let tail = n - n / 10..n;
+        let c = |name: &str, i: usize| col(&sim, name)[i];
+        let vmax = s.voltage_limit;
+        if tail
+            .clone()
+            .any(|i| c("u_a_cmd", i).abs() > vmax || c("u_b_cmd", i).abs() > vmax)
+        {
+            saturated.push(p.name);
+            continue;
+        }
+        let rms = |f: &dyn Fn(usize) -> f64| {
+            (tail.clone().map(|i| f(i).powi(2)).sum::<f64>() / tail.len() as f64).sqrt()
+        };
+        let speed = rms(&|i| c("omega", i) - c("omega_hat", i));
+        let flux = rms(&|i| {
+            (c("phi_ra", i) - c("phi_ra_hat", i)).hypot(c("phi_rb", i) - c("phi_rb_hat", i))
+        });
+        let max_ref = col(&sim, "omega_ref")
+            .iter()
+            .fold(0.0f64, |m, v| m.max(v.abs()));
+        let speed_tol = SPEED_EST_TOL.0 * max_ref + SPEED_EST_TOL.1;
+        assert!(
+            speed < speed_tol,
+            "{}: speed estimate RMS error {speed} ≥ {speed_tol}",
+            p.name
+        );
+        assert!(
+            flux < FLUX_EST_TOL,
+            "{}: flux estimate RMS error {flux} ≥ {FLUX_EST_TOL}",
+            p.name
+        );
+    }
+    assert_eq!(
+        saturated, SATURATING,
+        "presets whose voltage saturates at the end"
+    );
+}
+
+#[test]
+fn same_scenario_gives_bit_identical_traces_and_seeds_matter() {
+    let a = run("v=1&preset=sine200&duration=0.05").recorder().csv();
+    let b = run("v=1&preset=sine200&duration=0.05").recorder().csv();
+    assert_eq!(a, b);
+    let c = run("v=1&preset=sine200&duration=0.05&seed=2")
+        .recorder()
+        .csv();
+    assert_ne!(a, c);
+}
+
+#[test]
+fn chunked_and_decimated_runs_match_the_full_run() {
+    let s = preset("step").unwrap();
+    let full = run("step");
+    let mut chunked = Simulation::new(&s, 1).unwrap();
+    while !chunked.is_finished() {
+        chunked.advance(333).unwrap();
+    }
+    assert_eq!(full.recorder().csv(), chunked.recorder().csv());
+    let mut every = Simulation::new(&s, 10).unwrap();
+    every.run().unwrap();
+    let (a, b) = (col(&full, "omega"), col(&every, "omega"));
+    assert_eq!(b.len(), a.len().div_ceil(10));
+    assert!(b
+        .iter()
+        .enumerate()
+        .all(|(i, v)| v.to_bits() == a[10 * i].to_bits()));
+}
+
+#[test]
+fn divergence_is_reported_and_nothing_non_finite_is_recorded() {
+    // 1 kHz sampling with 1200/s gains (k·Ts = 1.2) and no voltage limit runs away.
+    let s = Scenario::parse("v=1&preset=step&ts=0.001&vmax=100000").unwrap();
+    let mut sim = Simulation::new(&s, 1).unwrap();
+    let err = sim.run().unwrap_err();
+    assert!(matches!(err, SimError::Diverged { .. }), "{err}");
+    assert!(!sim.is_finished());
+    assert_eq!(
+        sim.advance(10).unwrap_err(),
+        err,
+        "a failed run stays failed"
+    );
+    for name in imlab::sim::COLUMNS {
+        assert!(
+            col(&sim, name).iter().all(|v| v.is_finite()),
+            "{name} has a non-finite value"
+        );
+    }
+}
+
+#[test]
+fn zero_initial_flux_estimate_is_reported_as_singular() {
+    let s = Scenario::parse("v=1&preset=step&init_err=1").unwrap();
+    let mut sim = Simulation::new(&s, 1).unwrap();
+    let err = sim.run().unwrap_err().to_string();
+    assert!(
+        err.contains("singular") && err.contains("t = 0.00000 s"),
+        "{err}"
+    );
+    assert!(sim.recorder().is_empty());
+}
+
+#[test]
+fn oversized_runs_are_refused_before_they_start() {
+    let s = Scenario::parse("v=1&preset=step&duration=20&ts=0.00001").unwrap();
+    let err = Simulation::new(&s, 1).unwrap_err().to_string();
+    assert!(err.contains("MiB"), "{err}");
+    assert!(Simulation::new(&s, 10).is_ok(), "decimating makes it fit");
+}

@@ -1,0 +1,225 @@
+//! The backstepping law gives the designed error dynamics, checked against the true model.
+
+use imlab::control::{Backstepping, ControlInput, Gains, Reference, Terms};
+use imlab::model::{self, State};
+use imlab::params::{Lumped, MotorParams};
+use imlab::rng::Rng;
+
+/// Relative tolerance for ż from Richardson-extrapolated central differences (error O(h⁴)
+/// with h = 1e-7 s, rounding ~1e-12 of the largest term): 1e-7 leaves a wide margin, while a
+/// single wrong term in the law is off by far more.
+const ZDOT_TOL: f64 = 1e-7;
+
+fn gains(k: [f64; 4]) -> Gains {
+    Gains {
+        k1: k[0],
+        k2: k[1],
+        k3: k[2],
+        k4: k[3],
+        robust: false,
+        eps2: 1.0,
+        h2: 0.0,
+        eps4: 1.0,
+        h4: 0.0,
+    }
+}
+
+struct Case {
+    p: Lumped,
+    ctrl: Backstepping,
+    reference: Reference,
+    l: [[f64; 2]; 5],
+    psi_d: f64,
+}
+
+impl Case {
+    /// The controller's terms with the true currents measured: z is a function of (x, x̂, t).
+    fn terms(&self, x: &State, x_hat: &State, t: f64) -> Terms {
+        let input = ControlInput {
+            x_hat: *x_hat,
+            y: [x[1], x[2]],
+            l: self.l,
+            residual: [x[1] - x_hat[1], x[2] - x_hat[2]],
+            speed_ref: self.reference.sample(t),
+            psi_d: self.psi_d,
+        };
+        self.ctrl.control(&input).expect("flux is away from zero")
+    }
+
+    /// Observer of the general form (4): x̂̇ = f̂ + L·(x̃2, x̃3), the speed row using measured currents.
+    fn observer_rate(&self, x: &State, x_hat: &State, u: &[f64; 2]) -> State {
+        let mut rate = model::f(&self.p, x_hat, u, 0.0);
+        let mixed = [x_hat[0], x[1], x[2], x_hat[3], x_hat[4]];
+        rate[0] = model::f(&self.p, &mixed, u, 0.0)[0];
+        let (e2, e3) = (x[1] - x_hat[1], x[2] - x_hat[2]);
+        for i in 0..5 {
+            rate[i] += self.l[i][0] * e2 + self.l[i][1] * e3;
+        }
+        rate
+    }
+}
+
+fn shifted(x: &State, h: f64, d: &State) -> State {
+    std::array::from_fn(|i| x[i] + h * d[i])
+}
+
+#[test]
+fn control_law_gives_the_designed_error_dynamics() {
+    let p = MotorParams::PAPER.lumped().unwrap();
+    let mut rng = Rng::new(2015);
+    let mut sym = |scale: f64| scale * (2.0 * rng.uniform() - 1.0);
+    for case_no in 0..300 {
+        let k = [
+            1200.0 + sym(1000.0),
+            1200.0 + sym(1000.0),
+            1200.0 + sym(1000.0),
+            1200.0 + sym(1000.0),
+        ];
+        let case = Case {
+            p,
+            ctrl: Backstepping::new(p, gains(k)),
+            reference: Reference::Sine {
+                amp: sym(20.0),
+                freq: 200.0 + sym(150.0),
+            },
+            l: std::array::from_fn(|_| [sym(2000.0), sym(2000.0)]),
+            psi_d: 0.5 + sym(0.2),
+        };
+        let x: State = [sym(100.0), sym(10.0), sym(10.0), sym(1.0), sym(1.0)];
+        if x[3] * x[3] + x[4] * x[4] < 0.01 {
+            continue;
+        }
+        // x̃1 = x̃4 = x̃5 = 0; the measurable residuals x̃2, x̃3 are free.
+        let x_hat: State = [x[0], x[1] + sym(0.5), x[2] + sym(0.5), x[3], x[4]];
+        let t = sym(0.1).abs();
+        let terms = case.terms(&x, &x_hat, t);
+        let u = terms.u;
+        let dx = model::f(&p, &x, &u, 0.0);
+        let dx_hat = case.observer_rate(&x, &x_hat, &u);
+        let z_at = |h: f64| {
+            case.terms(&shifted(&x, h, &dx), &shifted(&x_hat, h, &dx_hat), t + h)
+                .z
+        };
+        let central = |h: f64| -> [f64; 4] {
+            let (zp, zm) = (z_at(h), z_at(-h));
+            std::array::from_fn(|i| (zp[i] - zm[i]) / (2.0 * h))
+        };
+        let h = 1e-7;
+        let (d1, d2) = (central(h), central(h / 2.0));
+        let z_dot: [f64; 4] = std::array::from_fn(|i| (4.0 * d2[i] - d1[i]) / 3.0);
+
+        let z = terms.z;
+        let designed = [
+            -k[0] * z[0] + z[1],
+            -k[1] * z[1] - z[0],
+            -k[2] * z[2] + z[3],
+            -k[3] * z[3] - z[2],
+        ];
+        for i in 0..4 {
+            let scale = (k[i] * z[i]).abs() + z[i ^ 1].abs() + z_dot[i].abs() + 1e-9;
+            assert!(
+                (z_dot[i] - designed[i]).abs() < ZDOT_TOL * scale,
+                "case {case_no}: ż{} = {} but designed {} (z = {z:?})",
+                i + 1,
+                z_dot[i],
+                designed[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn estimation_errors_break_the_designed_dynamics() {
+    // The check above must be able to fail: with x̃1 ≠ 0 the disturbance d̃2 enters ż2.
+    let p = MotorParams::PAPER.lumped().unwrap();
+    let case = Case {
+        p,
+        ctrl: Backstepping::new(p, gains([1200.0; 4])),
+        reference: Reference::Constant { value: 10.0 },
+        l: [[100.0, 0.0]; 5],
+        psi_d: 0.5,
+    };
+    let x: State = [10.0, 2.0, 1.0, 0.6, 0.3];
+    let x_hat: State = [12.0, 2.1, 0.9, 0.6, 0.3];
+    let terms = case.terms(&x, &x_hat, 0.0);
+    let dx = model::f(&p, &x, &terms.u, 0.0);
+    let dx_hat = case.observer_rate(&x, &x_hat, &terms.u);
+    let h = 1e-7;
+    let zp = case
+        .terms(&shifted(&x, h, &dx), &shifted(&x_hat, h, &dx_hat), h)
+        .z;
+    let zm = case
+        .terms(&shifted(&x, -h, &dx), &shifted(&x_hat, -h, &dx_hat), -h)
+        .z;
+    let z2_dot = (zp[1] - zm[1]) / (2.0 * h);
+    let z = terms.z;
+    let designed = -1200.0 * z[1] - z[0];
+    assert!((z2_dot - designed).abs() > 1e-3 * designed.abs().max(1.0));
+}
+
+#[test]
+fn step_terms_sum_to_the_applied_law() {
+    let p = MotorParams::PAPER.lumped().unwrap();
+    let mut rng = Rng::new(11);
+    let mut sym = |scale: f64| scale * (2.0 * rng.uniform() - 1.0);
+    let mut g = gains([1200.0; 4]);
+    g.robust = true;
+    g.h2 = 3.0;
+    g.eps2 = 0.5;
+    g.h4 = 2.0;
+    g.eps4 = 0.25;
+    let ctrl = Backstepping::new(p, g);
+    for _ in 0..100 {
+        let x_hat: State = [sym(50.0), sym(5.0), sym(5.0), 0.5 + sym(0.3), sym(0.5)];
+        let input = ControlInput {
+            x_hat,
+            y: [x_hat[1] + sym(0.01), x_hat[2] + sym(0.01)],
+            l: std::array::from_fn(|_| [sym(500.0), sym(500.0)]),
+            residual: [sym(0.01), sym(0.01)],
+            speed_ref: Reference::Sine {
+                amp: 1.0,
+                freq: 50.0,
+            }
+            .sample(sym(0.1).abs()),
+            psi_d: 0.5,
+        };
+        let t = ctrl.control(&input).unwrap();
+        assert_eq!(t.v1, t.v1a + t.v1s);
+        assert_eq!(t.v2, t.v2a + t.v2s);
+        assert_eq!(t.v3, t.v3a + t.v3s);
+        assert_eq!(t.v4, t.v4a + t.v4s);
+        assert_eq!(t.z[1], t.torque - t.v1);
+        // Eq (54): u solves b·[[−a1x̂5, a1x̂4], [2a10x̂4, 2a10x̂5]]·u = [v2, v4].
+        let (x4, x5) = (x_hat[3], x_hat[4]);
+        let v2 = p.b * (-p.a1 * x5 * t.u[0] + p.a1 * x4 * t.u[1]);
+        let v4 = p.b * (2.0 * p.a10 * x4 * t.u[0] + 2.0 * p.a10 * x5 * t.u[1]);
+        assert!(
+            (v2 - t.v2).abs() <= 1e-9 * (1.0 + t.v2.abs()),
+            "{v2} vs {}",
+            t.v2
+        );
+        assert!(
+            (v4 - t.v4).abs() <= 1e-9 * (1.0 + t.v4.abs()),
+            "{v4} vs {}",
+            t.v4
+        );
+        let v = 0.5 * t.z.iter().map(|z| z * z).sum::<f64>();
+        assert_eq!(t.lyapunov, v);
+    }
+}
+
+#[test]
+fn zero_flux_estimate_is_an_error_not_nan() {
+    let p = MotorParams::PAPER.lumped().unwrap();
+    let ctrl = Backstepping::new(p, gains([1200.0; 4]));
+    let input = ControlInput {
+        x_hat: [0.0, 1.0, 1.0, 0.0, 0.0],
+        y: [1.0, 1.0],
+        l: [[0.0; 2]; 5],
+        residual: [0.0; 2],
+        speed_ref: Reference::Constant { value: 0.0 }.sample(0.0),
+        psi_d: 0.5,
+    };
+    let err = ctrl.control(&input).unwrap_err();
+    assert!(err.to_string().contains("singular"), "{err}");
+}

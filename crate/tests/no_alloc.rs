@@ -1,0 +1,49 @@
+//! The closed loop (plant + EKF + controller + recording) allocates nothing per step.
+
+// A counting global allocator needs `unsafe impl GlobalAlloc`; only this test binary has it.
+#![allow(unsafe_code)]
+
+use imlab::scenario::PRESETS;
+use imlab::sim::Simulation;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+struct Counting;
+
+static ALLOCATIONS: AtomicUsize = AtomicUsize::new(0);
+
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.fetch_add(1, Ordering::Relaxed);
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static GLOBAL: Counting = Counting;
+
+#[test]
+fn closed_loop_steps_do_not_allocate() {
+    for p in PRESETS {
+        let s = imlab::scenario::preset(p.name).unwrap();
+        let mut sim = Simulation::new(&s, 1).unwrap();
+        let before = ALLOCATIONS.load(Ordering::Relaxed);
+        let result = sim.advance(2000);
+        let after = ALLOCATIONS.load(Ordering::Relaxed);
+        assert!(result.is_ok(), "{}: {:?}", p.name, result);
+        assert_eq!(
+            after - before,
+            0,
+            "{}: {} allocations in 2000 steps",
+            p.name,
+            after - before
+        );
+    }
+}
