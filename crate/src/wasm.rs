@@ -73,7 +73,7 @@ impl Simulation {
         self.inner
             .recorder()
             .column(name)
-            .map(Float64Array::from)
+            .map(|c| Float64Array::from(c.as_slice()))
             .ok_or_else(|| js_error(format!("no column '{name}'")))
     }
 

@@ -11,7 +11,7 @@ fn run(text: &str) -> Simulation {
     sim
 }
 
-fn col<'a>(sim: &'a Simulation, name: &str) -> &'a [f64] {
+fn col(sim: &Simulation, name: &str) -> Vec<f64> {
     sim.recorder().column(name).unwrap()
 }
 

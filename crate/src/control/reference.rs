@@ -74,7 +74,7 @@ impl Reference {
             },
             Reference::Sine { amp, freq } => {
                 let w = 2.0 * PI * freq;
-                let (s, c) = (libm::sin(w * t), libm::cos(w * t));
+                let (s, c) = libm::sincos(w * t);
                 RefSample {
                     value: amp * s,
                     d1: amp * w * c,

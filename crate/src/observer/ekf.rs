@@ -33,7 +33,8 @@ pub struct Ekf {
     ts: f64,
     predictor: Predictor,
     q: Matrix5<f64>,
-    r: Matrix2<f64>,
+    /// Measurement noise variance: R = r2·I (A²).
+    r2: f64,
     x: Vector5<f64>,
     p: Matrix5<f64>,
     gain: SMatrix<f64, 5, 2>,
@@ -43,6 +44,20 @@ pub struct Ekf {
 
 fn to_matrix(a: &[[f64; 5]; 5]) -> Matrix5<f64> {
     Matrix5::from_fn(|i, j| a[i][j])
+}
+
+/// A symmetric matrix from a function evaluated on the upper triangle only.
+#[inline]
+fn symmetric_from_upper(f: impl Fn(usize, usize) -> f64) -> Matrix5<f64> {
+    let mut m = Matrix5::zeros();
+    for i in 0..5 {
+        for j in i..5 {
+            let v = f(i, j);
+            m[(i, j)] = v;
+            m[(j, i)] = v;
+        }
+    }
+    m
 }
 
 fn to_state(v: &Vector5<f64>) -> State {
@@ -59,7 +74,7 @@ impl Ekf {
             ts,
             predictor: config.predictor,
             q,
-            r: Matrix2::identity() * (config.r_std * config.r_std),
+            r2: config.r_std * config.r_std,
             x: Vector5::from_column_slice(&x0_hat),
             p: p0,
             gain: SMatrix::zeros(),
@@ -84,7 +99,11 @@ impl Ekf {
             Predictor::Rk4 => self.rk4_with_jacobian(&x, u),
         };
         self.x = Vector5::from_column_slice(&x_next);
-        self.p = phi * self.p * phi.transpose() + self.q;
+        let p = &self.p;
+        let n = Matrix5::from_fn(|i, j| (0..5).map(|k| phi[(i, k)] * p[(k, j)]).sum::<f64>());
+        self.p = symmetric_from_upper(|i, j| {
+            (0..5).map(|k| n[(i, k)] * phi[(j, k)]).sum::<f64>() + self.q[(i, j)]
+        });
     }
 
     /// RK4 state transition and its exact Jacobian Φ = ∂x_{k|k−1}/∂x_{k−1|k−1} (chain rule).
@@ -123,27 +142,34 @@ impl Ekf {
     /// floating point.
     pub fn update(&mut self, y: &[f64; 2]) {
         // C selects x2 and x3, so C·P·Cᵀ is the 2×2 block P[1..3, 1..3] and P·Cᵀ is P[:, 1..3].
+        let p = self.p;
+        let r2 = self.r2;
         self.innovation = Vector2::new(y[0] - self.x[1], y[1] - self.x[2]);
-        let pct: SMatrix<f64, 5, 2> = self.p.fixed_columns::<2>(1).into_owned();
-        self.s = pct.fixed_rows::<2>(1).into_owned() + self.r;
-        let (s11, s12, s21, s22) = (
-            self.s[(0, 0)],
-            self.s[(0, 1)],
-            self.s[(1, 0)],
-            self.s[(1, 1)],
+        self.s = Matrix2::new(p[(1, 1)] + r2, p[(1, 2)], p[(2, 1)], p[(2, 2)] + r2);
+        let inv_det = 1.0 / self.s.determinant();
+        let (i11, i12, i22) = (
+            self.s[(1, 1)] * inv_det,
+            -self.s[(0, 1)] * inv_det,
+            self.s[(0, 0)] * inv_det,
         );
-        let det = s11 * s22 - s12 * s21;
-        let s_inv = Matrix2::new(s22, -s12, -s21, s11) / det;
-        self.gain = pct * s_inv;
-        self.x += self.gain * self.innovation;
-        let mut ikc = Matrix5::<f64>::identity();
-        for i in 0..5 {
-            ikc[(i, 1)] -= self.gain[(i, 0)];
-            ikc[(i, 2)] -= self.gain[(i, 1)];
-        }
-        let p: Matrix5<f64> =
-            ikc * self.p * ikc.transpose() + self.gain * self.r * self.gain.transpose();
-        self.p = (p + p.transpose()) * 0.5;
+        let k = SMatrix::<f64, 5, 2>::from_fn(|i, c| {
+            let (g0, g1) = (p[(i, 1)], p[(i, 2)]);
+            if c == 0 {
+                g0 * i11 + g1 * i12
+            } else {
+                g0 * i12 + g1 * i22
+            }
+        });
+        self.gain = k;
+        self.x += k * self.innovation;
+        // Joseph form with C's structure: A = (I − KC)·P = P − K·(C·P), then
+        // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ. Only the upper triangle is
+        // computed, so P stays exactly symmetric.
+        let a = Matrix5::from_fn(|i, j| p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]);
+        self.p = symmetric_from_upper(|i, j| {
+            a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
+                + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
+        });
     }
 
     /// Posterior estimate x̂_{k|k}.

@@ -315,7 +315,7 @@ impl Simulation {
             k51,
             k52,
         };
-        self.recorder.record(self.k, &row);
+        self.recorder.record(&row);
 
         // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
         let extra_load = if t >= s.load_step.time {

@@ -146,11 +146,14 @@ define_row! {
     k52,
 }
 
-/// Recorded columns; row k of the run is kept when k is a multiple of `every`.
+/// The recorded trace, stored row-major so that recording a sample is one copy; row k of the run
+/// is kept when k is a multiple of `every`.
 #[derive(Clone, Debug)]
 pub struct Recorder {
     every: usize,
-    columns: Vec<Vec<f64>>,
+    /// Samples to skip before the next kept one (a countdown avoids a division per step).
+    skip: usize,
+    data: Vec<f64>,
 }
 
 impl Recorder {
@@ -161,49 +164,56 @@ impl Recorder {
     pub fn with_capacity(rows: usize, every: usize) -> Recorder {
         Recorder {
             every,
-            columns: (0..NUM_COLUMNS).map(|_| Vec::with_capacity(rows)).collect(),
+            skip: 0,
+            data: Vec::with_capacity(rows * NUM_COLUMNS),
         }
     }
 
-    /// Records step `k` if it is kept. Never allocates within the capacity given.
+    /// Records the next sample if it is kept (samples 0, every, 2·every, ...). Never allocates
+    /// within the capacity given.
     #[inline]
-    pub fn record(&mut self, k: usize, row: &Row) {
-        if k % self.every == 0 {
-            for (col, v) in self.columns.iter_mut().zip(row.values()) {
-                col.push(v);
-            }
+    pub fn record(&mut self, row: &Row) {
+        if self.skip == 0 {
+            self.data.extend_from_slice(&row.values());
+            self.skip = self.every;
         }
+        self.skip -= 1;
     }
 
     /// Number of kept rows.
     pub fn len(&self) -> usize {
-        self.columns[0].len()
+        self.data.len() / NUM_COLUMNS
     }
 
     /// Whether no row has been kept.
     pub fn is_empty(&self) -> bool {
-        self.len() == 0
+        self.data.is_empty()
     }
 
-    /// The column named `name`, if there is one.
-    pub fn column(&self, name: &str) -> Option<&[f64]> {
-        COLUMNS
-            .iter()
-            .position(|c| *c == name)
-            .map(|i| self.columns[i].as_slice())
+    fn index(name: &str) -> Option<usize> {
+        COLUMNS.iter().position(|c| *c == name)
+    }
+
+    fn values(&self, col: usize) -> impl Iterator<Item = f64> + '_ {
+        self.data.iter().skip(col).step_by(NUM_COLUMNS).copied()
+    }
+
+    /// A copy of the column named `name`, if there is one.
+    pub fn column(&self, name: &str) -> Option<Vec<f64>> {
+        Self::index(name).map(|c| self.values(c).collect())
     }
 
     /// Writes the header and every row as CSV (shortest round-trip number format).
     pub fn write_csv(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
         writeln!(out, "{}", COLUMNS.join(","))?;
         let mut line = String::with_capacity(NUM_COLUMNS * 24);
-        for r in 0..self.len() {
+        for row in self.data.chunks_exact(NUM_COLUMNS) {
             line.clear();
-            for (i, col) in self.columns.iter().enumerate() {
+            for (i, v) in row.iter().enumerate() {
                 if i > 0 {
                     line.push(',');
                 }
-                write!(line, "{}", col[r]).expect("writing to a String");
+                write!(line, "{v}").expect("writing to a String");
             }
             line.push('\n');
             out.write_all(line.as_bytes())?;
@@ -228,33 +238,49 @@ impl Recorder {
         t1: f64,
         buckets: usize,
     ) -> Option<Vec<Vec<f64>>> {
-        let cols: Vec<&[f64]> = names
+        let cols: Vec<usize> = names
             .iter()
-            .map(|n| self.column(n))
+            .map(|n| Self::index(n))
             .collect::<Option<_>>()?;
-        let t = &self.columns[0];
-        let start = t.partition_point(|&x| x < t0);
-        let end = t.partition_point(|&x| x <= t1);
-        let n = end.saturating_sub(start);
+        let row = |i: usize| &self.data[i * NUM_COLUMNS..(i + 1) * NUM_COLUMNS];
+        // First row index whose time fails `before` (times increase down the trace).
+        let first_not = |before: &dyn Fn(f64) -> bool| {
+            let (mut lo, mut hi) = (0, self.len());
+            while lo < hi {
+                let mid = (lo + hi) / 2;
+                if before(row(mid)[0]) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            lo
+        };
+        let start = first_not(&|t| t < t0);
+        let end = first_not(&|t| t <= t1).max(start);
+        let window = &self.data[start * NUM_COLUMNS..end * NUM_COLUMNS];
+        let n = end - start;
         let buckets = buckets.max(1);
-        let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); names.len() + 1];
+        let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); cols.len() + 1];
         if n <= 2 * buckets {
-            out[0].extend_from_slice(&t[start..end]);
-            for (o, c) in out[1..].iter_mut().zip(&cols) {
-                o.extend_from_slice(&c[start..end]);
+            for r in window.chunks_exact(NUM_COLUMNS) {
+                out[0].push(r[0]);
+                for (o, &c) in out[1..].iter_mut().zip(&cols) {
+                    o.push(r[c]);
+                }
             }
             return Some(out);
         }
         for b in 0..buckets {
-            let lo = start + b * n / buckets;
-            let hi = start + (b + 1) * n / buckets;
-            out[0].push(t[lo]);
-            out[0].push(t[hi - 1]);
-            for (o, c) in out[1..].iter_mut().zip(&cols) {
-                let (mn, mx) = c[lo..hi]
-                    .iter()
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
-                        (a.min(v), b.max(v))
+            let bucket =
+                &window[b * n / buckets * NUM_COLUMNS..(b + 1) * n / buckets * NUM_COLUMNS];
+            out[0].push(bucket[0]);
+            out[0].push(bucket[bucket.len() - NUM_COLUMNS]);
+            for (o, &c) in out[1..].iter_mut().zip(&cols) {
+                let (mn, mx) = bucket
+                    .chunks_exact(NUM_COLUMNS)
+                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
+                        (a.min(r[c]), b.max(r[c]))
                     });
                 o.push(mn);
                 o.push(mx);
@@ -276,7 +302,7 @@ mod tests {
                 omega: if k == 37 { 100.0 } else { (k % 7) as f64 },
                 ..Row::default()
             };
-            r.record(k, &row);
+            r.record(&row);
         }
         r
     }
