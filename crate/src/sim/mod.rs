@@ -76,6 +76,8 @@ pub struct Simulation {
     steps: usize,
     recorder: Recorder,
     failure: Option<SimError>,
+    /// Sampling rate 1/Ts (Hz).
+    rate: f64,
 }
 
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
@@ -167,6 +169,7 @@ impl Simulation {
             steps,
             recorder: Recorder::with_capacity(rows, every),
             failure: None,
+            rate: 1.0 / scenario.ts,
         })
     }
 
@@ -226,7 +229,8 @@ impl Simulation {
             ControlInput {
                 x_hat,
                 y,
-                l: gain.map(|row| row.map(|k| k / ts)),
+                // L = K/Ts, eq (20), as a product with 1/Ts (ten divisions per sample are slow).
+                l: gain.map(|row| row.map(|k| k * self.rate)),
                 residual: [y[0] - x_hat[1], y[1] - x_hat[2]],
                 speed_ref,
                 psi_d: s.psi_d,
@@ -250,11 +254,12 @@ impl Simulation {
         self.u = terms.u.map(|v| v.clamp(-vmax, vmax));
 
         let x = &self.x;
+        let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
+        let flux_sq_hat = x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4];
         let p = self.ekf.covariance();
         let [innov_a, innov_b] = self.ekf.innovation();
         let [s_aa, s_ab, s_bb] = self.ekf.innovation_cov();
-        let [[k11, k12], [k21, k22], [k31, k32], [k41, k42], [k51, k52]] = gain;
-        let row = Row {
+        self.recorder.record(|| Row {
             t,
             omega_ref: speed_ref.value,
             omega: x[0],
@@ -275,9 +280,12 @@ impl Simulation {
             z4: terms.z[3],
             y_a: y[0],
             y_b: y[1],
-            flux_sq: x[3] * x[3] + x[4] * x[4],
-            flux_sq_hat: x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4],
-            psi_d: s.psi_d,
+            flux,
+            flux_hat: flux_sq_hat.sqrt(),
+            flux_ref: s.psi_d.sqrt(),
+            omega_est_err: x[0] - x_hat[0],
+            flux_est_err: flux - flux_sq_hat.sqrt(),
+            flux_sq_hat,
             torque_hat: terms.torque,
             v1: terms.v1,
             v1a: terms.v1a,
@@ -304,18 +312,7 @@ impl Simulation {
             s_bb,
             nis: self.ekf.nis(),
             p_omega: p[(0, 0)],
-            k11,
-            k12,
-            k21,
-            k22,
-            k31,
-            k32,
-            k41,
-            k42,
-            k51,
-            k52,
-        };
-        self.recorder.record(&row);
+        });
 
         // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
         let extra_load = if t >= s.load_step.time {

@@ -66,12 +66,18 @@ define_row! {
     y_a,
     /// Measured current y_b (A).
     y_b,
-    /// True flux modulus squared φ_ra² + φ_rb² (Wb²).
-    flux_sq,
-    /// Estimated flux modulus squared x̂4² + x̂5² (Wb²).
+    /// True rotor-flux modulus |φ_r| (Wb).
+    flux,
+    /// Estimated rotor-flux modulus (x̂4² + x̂5²)^½ (Wb).
+    flux_hat,
+    /// Target flux modulus ψ_d^½ (Wb).
+    flux_ref,
+    /// Speed estimation error ω − ω̂ (rad/s).
+    omega_est_err,
+    /// Flux-modulus estimation error |φ_r| − |φ̂_r| (Wb).
+    flux_est_err,
+    /// Estimated flux modulus squared x̂4² + x̂5², regulated by step 3 (Wb²).
     flux_sq_hat,
-    /// Flux target ψ_d (Wb²).
-    psi_d,
     /// Estimated torque term a1(x3·x̂4 − x2·x̂5) (rad/s²).
     torque_hat,
     /// v1 (rad/s²).
@@ -124,57 +130,37 @@ define_row! {
     nis,
     /// Posterior speed variance P_11 ((rad/s)²).
     p_omega,
-    /// Kalman gain K_11.
-    k11,
-    /// K_12.
-    k12,
-    /// K_21.
-    k21,
-    /// K_22.
-    k22,
-    /// K_31.
-    k31,
-    /// K_32.
-    k32,
-    /// K_41.
-    k41,
-    /// K_42.
-    k42,
-    /// K_51.
-    k51,
-    /// K_52.
-    k52,
 }
 
-/// The recorded trace, stored row-major so that recording a sample is one copy; row k of the run
-/// is kept when k is a multiple of `every`.
+/// The recorded trace: one `Row` per kept sample, so that recording is a single copy; sample k
+/// of the run is kept when k is a multiple of `every`.
 #[derive(Clone, Debug)]
 pub struct Recorder {
     every: usize,
     /// Samples to skip before the next kept one (a countdown avoids a division per step).
     skip: usize,
-    data: Vec<f64>,
+    rows: Vec<Row>,
 }
 
 impl Recorder {
     /// Bytes one kept row takes.
-    pub const ROW_BYTES: usize = NUM_COLUMNS * std::mem::size_of::<f64>();
+    pub const ROW_BYTES: usize = std::mem::size_of::<Row>();
 
     /// A recorder with room for `rows` kept rows.
     pub fn with_capacity(rows: usize, every: usize) -> Recorder {
         Recorder {
             every,
             skip: 0,
-            data: Vec::with_capacity(rows * NUM_COLUMNS),
+            rows: Vec::with_capacity(rows),
         }
     }
 
-    /// Records the next sample if it is kept (samples 0, every, 2·every, ...). Never allocates
-    /// within the capacity given.
+    /// Records the next sample if it is kept (samples 0, every, 2·every, ...); `row` is only
+    /// evaluated then. Never allocates within the capacity given.
     #[inline]
-    pub fn record(&mut self, row: &Row) {
+    pub fn record(&mut self, row: impl FnOnce() -> Row) {
         if self.skip == 0 {
-            self.data.extend_from_slice(&row.values());
+            self.rows.push(row());
             self.skip = self.every;
         }
         self.skip -= 1;
@@ -182,34 +168,31 @@ impl Recorder {
 
     /// Number of kept rows.
     pub fn len(&self) -> usize {
-        self.data.len() / NUM_COLUMNS
+        self.rows.len()
     }
 
     /// Whether no row has been kept.
     pub fn is_empty(&self) -> bool {
-        self.data.is_empty()
+        self.rows.is_empty()
     }
 
     fn index(name: &str) -> Option<usize> {
         COLUMNS.iter().position(|c| *c == name)
     }
 
-    fn values(&self, col: usize) -> impl Iterator<Item = f64> + '_ {
-        self.data.iter().skip(col).step_by(NUM_COLUMNS).copied()
-    }
-
     /// A copy of the column named `name`, if there is one.
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
-        Self::index(name).map(|c| self.values(c).collect())
+        let c = Self::index(name)?;
+        Some(self.rows.iter().map(|r| r.values()[c]).collect())
     }
 
     /// Writes the header and every row as CSV (shortest round-trip number format).
     pub fn write_csv(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
         writeln!(out, "{}", COLUMNS.join(","))?;
         let mut line = String::with_capacity(NUM_COLUMNS * 24);
-        for row in self.data.chunks_exact(NUM_COLUMNS) {
+        for row in &self.rows {
             line.clear();
-            for (i, v) in row.iter().enumerate() {
+            for (i, v) in row.values().iter().enumerate() {
                 if i > 0 {
                     line.push(',');
                 }
@@ -231,59 +214,42 @@ impl Recorder {
     /// Min/max envelope of the named columns over rows with t in [t0, t1], in at most `buckets`
     /// buckets. Each bucket gives two points: (first t, min) and (last t, max), so a plot of the
     /// result shows every excursion of the full-rate trace. Returns [t, col1, col2, ...].
-    pub fn envelope(
-        &self,
-        names: &[&str],
-        t0: f64,
-        t1: f64,
-        buckets: usize,
-    ) -> Option<Vec<Vec<f64>>> {
-        let cols: Vec<usize> = names
-            .iter()
-            .map(|n| Self::index(n))
-            .collect::<Option<_>>()?;
-        let row = |i: usize| &self.data[i * NUM_COLUMNS..(i + 1) * NUM_COLUMNS];
-        // First row index whose time fails `before` (times increase down the trace).
-        let first_not = |before: &dyn Fn(f64) -> bool| {
-            let (mut lo, mut hi) = (0, self.len());
-            while lo < hi {
-                let mid = (lo + hi) / 2;
-                if before(row(mid)[0]) {
-                    lo = mid + 1;
-                } else {
-                    hi = mid;
-                }
-            }
-            lo
-        };
-        let start = first_not(&|t| t < t0);
-        let end = first_not(&|t| t <= t1).max(start);
-        let window = &self.data[start * NUM_COLUMNS..end * NUM_COLUMNS];
-        let n = end - start;
+    pub fn envelope(&self, names: &[&str], t0: f64, t1: f64, buckets: usize) -> Option<Vec<Vec<f64>>> {
+        let cols: Vec<usize> = names.iter().map(|n| Self::index(n)).collect::<Option<_>>()?;
+        let start = self.rows.partition_point(|r| r.t < t0);
+        let end = self.rows.partition_point(|r| r.t <= t1).max(start);
+        let window = &self.rows[start..end];
+        let n = window.len();
         let buckets = buckets.max(1);
         let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); cols.len() + 1];
         if n <= 2 * buckets {
-            for r in window.chunks_exact(NUM_COLUMNS) {
-                out[0].push(r[0]);
+            for r in window {
+                let v = r.values();
+                out[0].push(r.t);
                 for (o, &c) in out[1..].iter_mut().zip(&cols) {
-                    o.push(r[c]);
+                    o.push(v[c]);
                 }
             }
             return Some(out);
         }
+        let mut lo = vec![f64::INFINITY; cols.len()];
+        let mut hi = vec![f64::NEG_INFINITY; cols.len()];
         for b in 0..buckets {
-            let bucket =
-                &window[b * n / buckets * NUM_COLUMNS..(b + 1) * n / buckets * NUM_COLUMNS];
-            out[0].push(bucket[0]);
-            out[0].push(bucket[bucket.len() - NUM_COLUMNS]);
-            for (o, &c) in out[1..].iter_mut().zip(&cols) {
-                let (mn, mx) = bucket
-                    .chunks_exact(NUM_COLUMNS)
-                    .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), r| {
-                        (a.min(r[c]), b.max(r[c]))
-                    });
-                o.push(mn);
-                o.push(mx);
+            let bucket = &window[b * n / buckets..(b + 1) * n / buckets];
+            out[0].push(bucket[0].t);
+            out[0].push(bucket[bucket.len() - 1].t);
+            lo.fill(f64::INFINITY);
+            hi.fill(f64::NEG_INFINITY);
+            for r in bucket {
+                let v = r.values();
+                for (k, &c) in cols.iter().enumerate() {
+                    lo[k] = lo[k].min(v[c]);
+                    hi[k] = hi[k].max(v[c]);
+                }
+            }
+            for (k, o) in out[1..].iter_mut().enumerate() {
+                o.push(lo[k]);
+                o.push(hi[k]);
             }
         }
         Some(out)
@@ -302,7 +268,7 @@ mod tests {
                 omega: if k == 37 { 100.0 } else { (k % 7) as f64 },
                 ..Row::default()
             };
-            r.record(&row);
+            r.record(|| row);
         }
         r
     }

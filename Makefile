@@ -1,0 +1,35 @@
+# IM Lab build, serve and test. `make serve` and `make test` install what they need first.
+.PHONY: setup wasm dist serve test bench
+PORT ?= 8000
+export PATH := $(HOME)/.cargo/bin:$(PATH)
+
+setup:
+	@scripts/setup.sh
+
+wasm: setup
+	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
+	rm -f dist/pkg/.gitignore
+
+# A self-contained static folder that any static host can serve.
+dist: wasm
+	mkdir -p dist/web dist/vendor
+	cp static/* dist/
+	cp web/*.js dist/web/
+	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
+
+serve: dist
+	@echo "IM Lab is at http://localhost:$(PORT)/  (Ctrl-C stops it)"
+	cd dist && python3 -m http.server $(PORT) --bind 127.0.0.1
+
+test: dist
+	cargo fmt --all -- --check
+	cargo clippy --all-targets --release -- -D warnings
+	cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
+	cargo build --release
+	cargo test --release
+	wasm-pack test --node crate
+	node --test --test-concurrency=1 tests/*.test.mjs
+
+bench: dist
+	cargo bench --bench closed_loop
+	node tests/bench/browser.mjs

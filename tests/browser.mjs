@@ -1,0 +1,61 @@
+// Shared helpers for the browser tests and the browser benchmark: a static server for dist/
+// on loopback and headless Debian Chromium through playwright-core.
+import { spawn } from 'node:child_process';
+import { once } from 'node:events';
+import net from 'node:net';
+import { chromium } from 'playwright-core';
+
+const ROOT = new URL('../dist/', import.meta.url).pathname;
+export const CHROMIUM_ARGS = [
+  '--headless', '--no-sandbox', '--disable-gpu', '--no-first-run',
+  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--disable-quic',
+];
+
+async function freePort() {
+  const srv = net.createServer().listen(0, '127.0.0.1');
+  await once(srv, 'listening');
+  const { port } = srv.address();
+  srv.close();
+  return port;
+}
+
+/** Serves dist/ on a free loopback port; returns {url, close}. */
+export async function serve() {
+  const port = await freePort();
+  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], { cwd: ROOT, stdio: 'ignore' });
+  const url = `http://127.0.0.1:${port}/`;
+  for (let i = 0; i < 100; i++) {
+    try {
+      if ((await fetch(url)).ok) break;
+    } catch { /* not up yet */ }
+    await new Promise((r) => setTimeout(r, 50));
+  }
+  return { url, close: () => proc.kill() };
+}
+
+export async function launch() {
+  return chromium.launch({ executablePath: '/usr/bin/chromium', args: CHROMIUM_ARGS });
+}
+
+/** A new page that records console errors and page errors into `errors`. */
+export async function newPage(browser, errors) {
+  const context = await browser.newContext({ acceptDownloads: true, viewport: { width: 1400, height: 1000 } });
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  return page;
+}
+
+/** Waits until the current run has finished (done, failed or cancelled). */
+export async function settled(page, timeout = 30_000) {
+  await page.waitForFunction(() => ['done', 'failed', 'cancelled'].includes(document.body.dataset.state), null, { timeout });
+  return page.evaluate(() => document.body.dataset.state);
+}
+
+/** Clicks Run and waits for that run to finish; returns the page's run figures. */
+export async function runAgain(page) {
+  const before = Number(await page.evaluate(() => document.body.dataset.run ?? 0));
+  await page.click('#run');
+  await page.waitForFunction((n) => Number(document.body.dataset.run ?? 0) > n, before, { timeout: 30_000 });
+  return page.evaluate(() => ({ ...document.body.dataset }));
+}

@@ -1,0 +1,31 @@
+// Native and wasm32 give bit-identical runs: the wasm build's CSV equals `imlab run` byte for byte.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { initSync, presets, Simulation } from '../dist/pkg/imlab.js';
+
+initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+
+function wasmCsv(scenario) {
+  const sim = new Simulation(scenario);
+  while (!sim.finished) sim.step(50_000);
+  const csv = sim.csv();
+  sim.free();
+  return csv;
+}
+
+const scenarios = [
+  ...presets().map((p) => p.name),
+  'v=1&preset=step&ekf=rk4&seed=123456789&noise=0.01&substeps=3',
+  'v=1&preset=ramp&plant.rr=5.5&load.torque=1&load.time=0.2&robust=1&h2=5&h4=5',
+];
+
+for (const s of scenarios) {
+  test(`wasm CSV equals native CLI CSV: ${s}`, () => {
+    const native = execFileSync(cli, ['run', s], { maxBuffer: 1 << 30 }).toString();
+    assert.ok(native.split('\n').length > 100);
+    assert.equal(wasmCsv(s), native);
+  });
+}

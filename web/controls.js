@@ -1,0 +1,94 @@
+// Settings form generated from the core's field table (key, unit, range, meaning, value).
+// Text from the URL or the core only ever reaches the page through textContent and values.
+
+const GROUPS = {
+  reference: 'Reference',
+  gains: 'Controller gains',
+  observer: 'Observer (EKF)',
+  noise: 'Noise and seed',
+  plant: 'Plant: the simulated motor',
+  model: 'Model: what the EKF and controller assume',
+  load: 'Unknown load step',
+  limits: 'Voltage limit, duration and timing',
+};
+const OPEN_GROUPS = new Set(['reference', 'gains']);
+
+function el(tag, props = {}, children = []) {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+}
+
+function allowed(f) {
+  if (f.options.length) return f.options.join(' | ');
+  const lo = f.min_open ? '<' : '≤';
+  const unit = f.unit ? ` ${f.unit}` : '';
+  return `${f.min} ${lo} ${f.key} ≤ ${f.max}${unit}${f.integer ? ', whole number' : ''}`;
+}
+
+function input(f) {
+  if (f.options.length) {
+    const select = el('select', { name: f.key });
+    for (const o of f.options) select.append(el('option', { value: o, textContent: o }));
+    select.value = f.value;
+    return select;
+  }
+  if (f.integer && f.min === 0 && f.max === 1) {
+    return el('input', { type: 'checkbox', name: f.key, checked: f.value === '1' });
+  }
+  return el('input', {
+    type: 'text', inputMode: 'decimal', name: f.key, value: f.value, spellcheck: false,
+  });
+}
+
+/** Renders `info.fields` into `form`, keeping which groups are open. */
+export function renderFields(form, info) {
+  const open = new Set([...form.querySelectorAll('details[open]')].map((d) => d.dataset.group));
+  const first = form.childElementCount === 0;
+  form.replaceChildren();
+  for (const [group, title] of Object.entries(GROUPS)) {
+    const fields = info.fields.filter((f) => f.group === group && f.value !== null);
+    if (!fields.length) continue;
+    const details = el('details', { open: first ? OPEN_GROUPS.has(group) : open.has(group) });
+    details.dataset.group = group;
+    details.append(el('summary', { textContent: title }));
+    for (const f of fields) {
+      const control = input(f);
+      control.id = `field-${f.key}`;
+      control.title = `allowed: ${allowed(f)}`;
+      const unit = f.unit ? ` (${f.unit})` : '';
+      details.append(
+        el('label', { htmlFor: control.id, className: 'field' }, [
+          el('span', { className: 'key', textContent: f.key }),
+          el('span', { className: 'doc', textContent: `${f.doc}${unit}` }),
+          control,
+          el('span', { className: 'range', textContent: allowed(f) }),
+        ]),
+      );
+    }
+    form.append(details);
+  }
+}
+
+/** The scenario string the form describes: the preset plus every field shown. */
+export function composeScenario(form, preset) {
+  const parts = ['v=1', `preset=${preset}`];
+  for (const control of form.querySelectorAll('input, select')) {
+    const value = control.type === 'checkbox' ? (control.checked ? '1' : '0') : control.value.trim();
+    parts.push(`${control.name}=${encodeURIComponent(value)}`);
+  }
+  return parts.join('&');
+}
+
+/** Marks the field a codec error message names (`field 'k1' ...`), clearing the others. */
+export function markInvalid(form, message) {
+  const match = /field '([^']+)'/.exec(message ?? '');
+  for (const control of form.querySelectorAll('input, select')) {
+    control.classList.toggle('invalid', match !== null && control.name === match[1]);
+  }
+}
+
+/** The value the form holds for `key`, as the codec writes it. */
+export function fieldValue(info, key) {
+  return info.fields.find((f) => f.key === key)?.value ?? null;
+}

@@ -1,0 +1,215 @@
+// Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
+import { Plots, PLOT_COLUMNS } from './plots.js';
+import { composeScenario, fieldValue, markInvalid, renderFields } from './controls.js';
+import { DEFAULT_SCENARIO, markRun, presetNamed, scenarioFromUrl, showScenario } from './url.js';
+
+const $ = (id) => document.getElementById(id);
+const ui = {
+  preset: $('preset'), presetDoc: $('preset-doc'), form: $('settings'), run: $('run'),
+  cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
+  copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
+};
+
+const state = {
+  info: null, // the core's description of the scenario in the form
+  presets: [],
+  runId: 0,
+  running: false,
+  started: 0,
+  req: 0,
+  pending: new Map(), // describe requests: req → {resolve}
+  lastView: 0,
+};
+
+const plots = new Plots(ui.plots, (t0, t1) => requestWindow(t0, t1));
+let worker = null;
+
+function say(text, kind = 'error') {
+  ui.message.textContent = text;
+  ui.message.className = text ? kind : '';
+}
+
+function setBusy(busy) {
+  state.running = busy;
+  ui.run.disabled = busy || state.info === null;
+  ui.cancel.disabled = !busy;
+  document.body.dataset.state = busy ? 'running' : 'idle';
+}
+
+function startWorker() {
+  worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+  worker.onmessage = ({ data }) => handlers[data.type](data);
+  worker.onerror = (e) => {
+    e.preventDefault();
+    worker.terminate();
+    for (const { reject } of state.pending.values()) reject(new Error('worker restarted'));
+    state.pending.clear();
+    setBusy(false);
+    say(`The simulation worker stopped (${e.message || 'unknown error'}). It has been restarted; press Run to try again.`);
+    startWorker();
+  };
+}
+
+/** Asks the core to validate and describe a scenario string. */
+function describe(scenario) {
+  const req = ++state.req;
+  return new Promise((resolve, reject) => {
+    state.pending.set(req, { resolve, reject });
+    worker.postMessage({ type: 'describe', req, scenario });
+  });
+}
+
+function applyDescription(info) {
+  const keysBefore = state.info?.fields.filter((f) => f.value !== null).map((f) => f.key).join();
+  const keysAfter = info.fields.filter((f) => f.value !== null).map((f) => f.key).join();
+  const presetChanged = ui.preset.value !== presetNamed(info.encoded);
+  state.info = info;
+  if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
+  ui.preset.value = presetNamed(info.encoded);
+  ui.presetDoc.textContent = state.presets.find((p) => p.name === ui.preset.value)?.description ?? '';
+  ui.run.disabled = state.running;
+  markInvalid(ui.form, null);
+}
+
+/** Loads a scenario string (from the URL, a preset or history); falls back to its preset if invalid. */
+async function load(text, { run = true } = {}) {
+  let info;
+  try {
+    info = await describe(text);
+    say('');
+  } catch (e) {
+    const preset = presetNamed(text);
+    const fallback = preset && state.presets.some((p) => p.name === preset) ? `v=1&preset=${preset}` : DEFAULT_SCENARIO;
+    say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(fallback)} instead.`);
+    info = await describe(fallback);
+  }
+  applyDescription(info);
+  showScenario(info.encoded);
+  if (run) startRun();
+}
+
+async function formChanged() {
+  const text = composeScenario(ui.form, ui.preset.value);
+  try {
+    const info = await describe(text);
+    applyDescription(info);
+    showScenario(info.encoded);
+    say('');
+  } catch (e) {
+    markInvalid(ui.form, e.message);
+    ui.run.disabled = true;
+    say(e.message);
+  }
+}
+
+function startRun() {
+  if (!state.info) return;
+  if (state.running) worker.postMessage({ type: 'cancel', id: state.runId });
+  const id = ++state.runId;
+  markRun(state.info.encoded);
+  document.body.dataset.scenario = state.info.encoded;
+  state.started = performance.now();
+  ui.progress.value = 0;
+  ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
+  setBusy(true);
+  const buckets = Math.max(200, Math.round(plots.width()));
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, columns: PLOT_COLUMNS, buckets });
+}
+
+function requestWindow(t0, t1) {
+  if (state.running || !plots.full) return;
+  const id = state.runId;
+  const full = t0 <= plots.full[0] && t1 >= plots.full[1];
+  worker.postMessage({ type: 'view', id, t0: full ? 0 : t0, t1: full ? Number.MAX_VALUE : t1, buckets: Math.round(plots.width()) });
+}
+
+function download(blob, name) {
+  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: name });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+}
+
+function fileStem() {
+  return `imlab-${presetNamed(state.info.encoded)}-${state.runId}`;
+}
+
+const handlers = {
+  ready({ presets }) {
+    state.presets = presets;
+    for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
+    load(scenarioFromUrl());
+  },
+  described({ req, info }) {
+    state.pending.get(req)?.resolve(info);
+    state.pending.delete(req);
+  },
+  invalid({ req, id, message }) {
+    if (req !== undefined) {
+      state.pending.get(req)?.reject(new Error(message));
+      state.pending.delete(req);
+    } else if (id === state.runId) {
+      setBusy(false);
+      say(message);
+    }
+  },
+  progress({ id, done, total }) {
+    if (id !== state.runId) return;
+    ui.progress.value = done / total;
+    ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
+  },
+  done({ id, rows, failure, view, computeMs }) {
+    if (id !== state.runId) return;
+    setBusy(false);
+    ui.progress.value = 1;
+    const arrived = performance.now();
+    if (view) plots.show(view, Number(fieldValue(state.info, 'vmax')));
+    const ms = performance.now() - state.started;
+    document.body.dataset.plotMs = (performance.now() - arrived).toFixed(1);
+    document.body.dataset.runMs = ms.toFixed(1);
+    document.body.dataset.rows = rows;
+    document.body.dataset.computeMs = computeMs.toFixed(2);
+    document.body.dataset.run = id;
+    ui.csv.disabled = ui.png.disabled = rows === 0;
+    if (failure) {
+      say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
+      ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
+      document.body.dataset.state = 'failed';
+    } else {
+      ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+      document.body.dataset.state = 'done';
+    }
+  },
+  cancelled({ id }) {
+    if (id !== state.runId) return;
+    setBusy(false);
+    ui.status.textContent = `Cancelled at ${(ui.progress.value * 100).toFixed(0)} %`;
+    document.body.dataset.state = 'cancelled';
+  },
+  view({ id, view }) {
+    if (id === state.runId) plots.refine(view);
+  },
+  csv({ id, text }) {
+    if (id === state.runId) download(new Blob([text], { type: 'text/csv' }), `${fileStem()}.csv`);
+  },
+};
+
+ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`));
+ui.form.addEventListener('change', formChanged);
+ui.form.addEventListener('submit', (e) => e.preventDefault());
+ui.run.addEventListener('click', startRun);
+ui.cancel.addEventListener('click', () => worker.postMessage({ type: 'cancel', id: state.runId }));
+ui.csv.addEventListener('click', () => worker.postMessage({ type: 'csv', id: state.runId }));
+ui.png.addEventListener('click', async () => download(await plots.png(), `${fileStem()}.png`));
+ui.copy.addEventListener('click', async () => {
+  try {
+    await navigator.clipboard.writeText(location.href);
+    say('Link copied: it reproduces this run bit for bit.', 'info');
+  } catch {
+    say(`Copy this link: ${location.href}`, 'info');
+  }
+});
+window.addEventListener('popstate', () => load(scenarioFromUrl()));
+window.addEventListener('resize', () => plots.resize());
+
+setBusy(false);
+startWorker();

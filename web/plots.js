@@ -1,0 +1,172 @@
+// The trajectory plots: uPlot charts with a shared, synchronised time axis.
+// They draw what the worker sends (min/max envelopes from the Rust recorder) and nothing else.
+import uPlot from '../vendor/uPlot.esm.js';
+
+const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
+const REFERENCE = '#777';
+
+// [column, label, axis]; axis 'y2' puts a series on the right-hand scale.
+export const PLOTS = [
+  {
+    id: 'speed', title: 'Rotor speed', unit: 'rad/s',
+    series: [['omega_ref', 'ω_d reference'], ['omega', 'ω true'], ['omega_hat', 'ω̂ estimated']],
+  },
+  {
+    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb',
+    series: [['flux_ref', '√ψ_d target'], ['flux', '|φ| true'], ['flux_hat', '|φ̂| estimated']],
+  },
+  {
+    id: 'current', title: 'Stator currents', unit: 'A',
+    series: [['i_sa', 'i_sa'], ['i_sb', 'i_sb'], ['i_sa_hat', 'î_sa'], ['i_sb_hat', 'î_sb']],
+  },
+  {
+    id: 'voltage', title: 'Applied stator voltages (after the limit)', unit: 'V', limits: true,
+    series: [['u_a', 'u_sa'], ['u_b', 'u_sb']],
+  },
+  {
+    id: 'z13', title: 'Tracking errors', unit: 'rad/s', unit2: 'Wb²',
+    series: [['z1', 'z1 = ω̂ − ω_d (rad/s)'], ['z3', 'z3 = |φ̂|² − ψ_d (Wb², right)', 'y2']],
+  },
+  {
+    id: 'z24', title: 'Virtual-control errors', unit: 'rad/s²', unit2: 'Wb²/s',
+    series: [['z2', 'z2 torque error (rad/s²)'], ['z4', 'z4 flux-rate error (Wb²/s, right)', 'y2']],
+  },
+  {
+    id: 'est', title: 'Estimation errors', unit: 'rad/s', unit2: 'Wb',
+    series: [['omega_est_err', 'ω − ω̂ (rad/s)'], ['flux_est_err', '|φ| − |φ̂| (Wb, right)', 'y2']],
+  },
+];
+
+/** Every recorded column the plots need, for the worker's envelope request. */
+export const PLOT_COLUMNS = [...new Set(PLOTS.flatMap((p) => p.series.map((s) => s[0])))];
+
+const SYNC_KEY = 'imlab-time';
+
+function options(plot, width, onZoom) {
+  const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : v.toFixed(5)) }];
+  plot.series.forEach(([, label, axis], i) => {
+    const isRef = i === 0 && (plot.id === 'speed' || plot.id === 'flux');
+    series.push({
+      label,
+      scale: axis === 'y2' ? 'y2' : 'y',
+      stroke: isRef ? REFERENCE : COLORS[i % COLORS.length],
+      dash: isRef ? [6, 4] : undefined,
+      width: 2,
+      value: (u, v) => (v == null ? '–' : v.toPrecision(6)),
+    });
+  });
+  if (plot.limits) {
+    for (const sign of ['+', '−']) {
+      series.push({ label: `${sign}limit`, stroke: '#999', dash: [3, 3], width: 1.5 });
+    }
+  }
+  const axes = [
+    { label: 't (s)', font: '14px system-ui', labelFont: '14px system-ui' },
+    { label: plot.unit, scale: 'y', font: '14px system-ui', labelFont: '14px system-ui', size: 70 },
+  ];
+  if (plot.unit2) {
+    axes.push({
+      label: plot.unit2, scale: 'y2', side: 1, grid: { show: false },
+      font: '14px system-ui', labelFont: '14px system-ui', size: 70,
+    });
+  }
+  return {
+    title: plot.title,
+    width,
+    height: 260,
+    scales: { x: { time: false } },
+    series,
+    axes,
+    cursor: { sync: { key: SYNC_KEY, setSeries: false }, drag: { x: true, y: false } },
+    hooks: { setScale: [(u, key) => key === 'x' && onZoom(u)] },
+  };
+}
+
+/** The set of plots; `onWindow(t0, t1)` is called when the user zooms the shared time axis. */
+export class Plots {
+  constructor(container, onWindow) {
+    this.container = container;
+    this.onWindow = onWindow;
+    this.charts = [];
+    this.syncing = false;
+    this.full = null; // [t0, t1] of the whole run
+    this.limit = 0;
+  }
+
+  width() {
+    return Math.max(320, this.container.clientWidth - 8);
+  }
+
+  zoomed(source) {
+    if (this.syncing) return;
+    const { min, max } = source.scales.x;
+    this.syncing = true;
+    for (const c of this.charts) if (c !== source) c.setScale('x', { min, max });
+    this.syncing = false;
+    this.onWindow(min, max);
+  }
+
+  data(plot, view) {
+    const t = view.columns.t;
+    const rows = [t, ...plot.series.map(([col]) => view.columns[col])];
+    if (plot.limits) {
+      rows.push(new Float64Array(t.length).fill(this.limit), new Float64Array(t.length).fill(-this.limit));
+    }
+    return rows;
+  }
+
+  /** Draws a whole run. `voltageLimit` is the scenario's limit (V). */
+  show(view, voltageLimit) {
+    this.limit = voltageLimit;
+    const t = view.columns.t;
+    this.full = [t[0], t[t.length - 1]];
+    if (this.charts.length === 0) {
+      const width = this.width();
+      for (const plot of PLOTS) {
+        const div = document.createElement('div');
+        div.className = 'plot';
+        div.dataset.plot = plot.id;
+        this.container.append(div);
+        this.charts.push(new uPlot(options(plot, width, (u) => this.zoomed(u)), this.data(plot, view), div));
+      }
+    } else {
+      this.syncing = true;
+      PLOTS.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
+      this.syncing = false;
+    }
+  }
+
+  /** Replaces the data inside a zoom window without moving the axes. */
+  refine(view) {
+    this.syncing = true;
+    PLOTS.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), false));
+    this.syncing = false;
+  }
+
+  resize() {
+    const width = this.width();
+    for (const c of this.charts) c.setSize({ width, height: c.height });
+  }
+
+  /** One PNG of every plot with its title and legend labels. */
+  async png() {
+    const scale = devicePixelRatio || 1;
+    const canvases = this.charts.map((c) => c.ctx.canvas);
+    const titleH = 28 * scale;
+    const width = Math.max(...canvases.map((c) => c.width));
+    const height = canvases.reduce((h, c) => h + c.height + titleH, 0);
+    const out = Object.assign(document.createElement('canvas'), { width, height });
+    const ctx = out.getContext('2d');
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, width, height);
+    let y = 0;
+    PLOTS.forEach((plot, i) => {
+      ctx.fillStyle = '#000';
+      ctx.font = `${16 * scale}px system-ui`;
+      ctx.fillText(`${plot.title}: ${plot.series.map((s) => s[1]).join(', ')}`, 8 * scale, y + 20 * scale);
+      ctx.drawImage(canvases[i], 0, y + titleH);
+      y += canvases[i].height + titleH;
+    });
+    return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+  }
+}

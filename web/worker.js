@@ -1,0 +1,123 @@
+// Module worker: owns the WASM core, runs simulations in chunks, answers view and export requests.
+// It moves messages only; every number comes from the Rust core.
+//
+// Protocol (page → worker):
+//   {type: 'describe', req, scenario}          → {type: 'described', req, info} | {type: 'invalid', req, message}
+//   {type: 'run', id, scenario, columns, buckets}
+//        → {type: 'progress', id, done, total}* then {type: 'done', id, view, rows, failure, computeMs}
+//          | {type: 'invalid', id, message} | {type: 'cancelled', id}
+//   {type: 'cancel', id}
+//   {type: 'view', id, t0, t1, buckets}        → {type: 'view', id, view}
+//   {type: 'csv', id}                          → {type: 'csv', id, text}
+// A view is {t0, t1, columns: {name: Float64Array}}; its buffers are transferred, not copied.
+import init, { describe, presets, Simulation } from '../pkg/imlab.js';
+
+const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
+// compiled in the background is picked up at the next chunk
+
+let current = null; // {id, sim, columns, cancelled}
+
+function view(run, t0, t1, buckets) {
+  const cols = run.sim.envelope(run.columns, t0, t1, buckets);
+  const columns = { t: cols[0] };
+  run.columns.forEach((name, i) => {
+    columns[name] = cols[i + 1];
+  });
+  return { t0, t1, columns };
+}
+
+function post(message, view) {
+  const transfer = view ? Object.values(view.columns).map((a) => a.buffer) : [];
+  self.postMessage(message, transfer);
+}
+
+// Lets queued messages (a cancel) run between chunks. A MessageChannel round trip is not
+// clamped to 4 ms the way nested setTimeout(0) is.
+const channel = new MessageChannel();
+const waiting = [];
+channel.port1.onmessage = () => waiting.shift()();
+function yieldToMessages() {
+  return new Promise((resolve) => {
+    waiting.push(resolve);
+    channel.port2.postMessage(null);
+  });
+}
+
+async function run({ id, scenario, columns, buckets }) {
+  if (current) current.sim.free();
+  current = null;
+  let sim;
+  try {
+    sim = new Simulation(scenario);
+  } catch (e) {
+    post({ type: 'invalid', id, message: String(e) });
+    return;
+  }
+  const me = { id, sim, columns, cancelled: false };
+  current = me;
+  let failure = null;
+  let computeMs = 0;
+  while (!sim.finished) {
+    const start = performance.now();
+    try {
+      sim.step(CHUNK_STEPS);
+      computeMs += performance.now() - start;
+    } catch (e) {
+      failure = String(e);
+      break;
+    }
+    post({ type: 'progress', id, done: sim.done, total: sim.total });
+    await yieldToMessages();
+    if (current !== me) return; // superseded by a newer run, which freed this one
+    if (me.cancelled) {
+      post({ type: 'cancelled', id });
+      return;
+    }
+  }
+  const v = sim.rows > 0 ? view(me, 0, Number.MAX_VALUE, buckets) : null;
+  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs }, v);
+}
+
+// V8 first runs WASM in its baseline compiler and optimises functions that have run often.
+// A short run in small chunks at start-up gets the closed loop optimised before the first
+// real run.
+function warmUp() {
+  const sim = new Simulation('v=1&preset=decay');
+  while (!sim.finished) sim.step(10);
+  sim.free();
+}
+
+const ready = init().then(() => {
+  warmUp();
+  self.postMessage({ type: 'ready', presets: presets() });
+});
+
+self.onmessage = async ({ data }) => {
+  await ready;
+  switch (data.type) {
+    case 'describe':
+      try {
+        post({ type: 'described', req: data.req, info: describe(data.scenario) });
+      } catch (e) {
+        post({ type: 'invalid', req: data.req, message: String(e) });
+      }
+      break;
+    case 'run':
+      run(data);
+      break;
+    case 'cancel':
+      if (current && current.id === data.id) current.cancelled = true;
+      break;
+    case 'view':
+      if (current && current.id === data.id) {
+        const v = view(current, data.t0, data.t1, data.buckets);
+        post({ type: 'view', id: data.id, view: v }, v);
+      }
+      break;
+    case 'csv':
+      if (current && current.id === data.id) post({ type: 'csv', id: data.id, text: current.sim.csv() });
+      break;
+    default:
+      throw new Error(`unknown message type ${data.type}`);
+  }
+};
