@@ -213,3 +213,4 @@ window.addEventListener('resize', () => plots.resize());
 
 setBusy(false);
 startWorker();
+navigator.serviceWorker?.register('sw.js');

@@ -13,7 +13,11 @@ fn error_text(e: wasm_bindgen::JsValue) -> String {
 
 #[wasm_bindgen_test]
 fn bindings_return_the_core_columns_byte_for_byte() {
-    for text in ["step", "v=1&preset=sine200&duration=0.02&seed=9", "v=1&preset=decay&ekf=rk4"] {
+    for text in [
+        "step",
+        "v=1&preset=sine200&duration=0.02&seed=9",
+        "v=1&preset=decay&ekf=rk4",
+    ] {
         let mut js = Simulation::new(text).unwrap();
         while !js.finished() {
             js.step(777).unwrap();
@@ -24,7 +28,10 @@ fn bindings_return_the_core_columns_byte_for_byte() {
             let a = js.column(name).unwrap().to_vec();
             let b = core.recorder().column(name).unwrap();
             assert_eq!(a.len(), b.len());
-            assert!(a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()), "{text}: column {name}");
+            assert!(
+                a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()),
+                "{text}: column {name}"
+            );
         }
         assert_eq!(js.csv(), core.recorder().csv());
     }
@@ -38,7 +45,10 @@ fn envelope_matches_the_core() {
     core.run().unwrap();
     let names = vec!["omega".to_string(), "u_a".to_string()];
     let env = js.envelope(names, 0.0, 1.0, 300).unwrap();
-    let expected = core.recorder().envelope(&["omega", "u_a"], 0.0, 1.0, 300).unwrap();
+    let expected = core
+        .recorder()
+        .envelope(&["omega", "u_a"], 0.0, 1.0, 300)
+        .unwrap();
     assert_eq!(env.length() as usize, expected.len());
     for (i, col) in expected.iter().enumerate() {
         let got = js_sys::Float64Array::from(env.get(i as u32)).to_vec();
@@ -52,8 +62,20 @@ fn errors_are_readable_messages() {
     assert!(e.contains("'k1'") && e.contains("0 < k1"), "{e}");
     let e = error_text(describe("v=1&preset=nope").err().unwrap());
     assert!(e.contains("unknown preset"), "{e}");
-    let e = error_text(Simulation::new("v=1&preset=step&init_err=1").unwrap().step(10).err().unwrap());
+    let e = error_text(
+        Simulation::new("v=1&preset=step&init_err=1")
+            .unwrap()
+            .step(10)
+            .err()
+            .unwrap(),
+    );
     assert!(e.contains("singular"), "{e}");
-    let e = error_text(Simulation::new("step").unwrap().column("nope").err().unwrap());
+    let e = error_text(
+        Simulation::new("step")
+            .unwrap()
+            .column("nope")
+            .err()
+            .unwrap(),
+    );
     assert!(e.contains("nope"), "{e}");
 }

@@ -214,8 +214,17 @@ impl Recorder {
     /// Min/max envelope of the named columns over rows with t in [t0, t1], in at most `buckets`
     /// buckets. Each bucket gives two points: (first t, min) and (last t, max), so a plot of the
     /// result shows every excursion of the full-rate trace. Returns [t, col1, col2, ...].
-    pub fn envelope(&self, names: &[&str], t0: f64, t1: f64, buckets: usize) -> Option<Vec<Vec<f64>>> {
-        let cols: Vec<usize> = names.iter().map(|n| Self::index(n)).collect::<Option<_>>()?;
+    pub fn envelope(
+        &self,
+        names: &[&str],
+        t0: f64,
+        t1: f64,
+        buckets: usize,
+    ) -> Option<Vec<Vec<f64>>> {
+        let cols: Vec<usize> = names
+            .iter()
+            .map(|n| Self::index(n))
+            .collect::<Option<_>>()?;
         let start = self.rows.partition_point(|r| r.t < t0);
         let end = self.rows.partition_point(|r| r.t <= t1).max(start);
         let window = &self.rows[start..end];

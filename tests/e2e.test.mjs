@@ -1,0 +1,177 @@
+// End-to-end tests of the page in headless Debian Chromium. Every test fails on a console error.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { launch, newPage, runAgain, serve, settled } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+let server;
+let browser;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+/** Opens the app at `query`, runs `body(page)`, then fails on any console error. */
+async function withPage(query, body) {
+  const errors = [];
+  const page = await newPage(browser, errors);
+  try {
+    await page.goto(`${server.url}${query ? `?${query}` : ''}`);
+    await body(page);
+  } finally {
+    await page.context().close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+}
+
+async function exportCsv(page) {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
+  return readFileSync(await download.path(), 'utf8');
+}
+
+function cliCsv(scenario) {
+  return execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString();
+}
+
+const scenarioInUrl = (page) => new URL(page.url()).search.slice(1);
+
+test('the page loads and the default preset draws its plots', () =>
+  withPage('', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(scenarioInUrl(page), 'v=1&preset=sine200');
+    assert.equal(await page.locator('.plot canvas').count(), 7);
+    assert.equal(await page.evaluate(() => document.body.dataset.rows), '5000');
+    assert.match(await page.textContent('#preset-doc'), /Fig 2/);
+    assert.equal(await page.textContent('#message'), '');
+  }));
+
+test('each preset runs from the picker', () =>
+  withPage('', async (page) => {
+    await settled(page);
+    const names = await page.$$eval('#preset option', (os) => os.map((o) => o.value));
+    assert.ok(names.length >= 9);
+    for (const name of names) {
+      const before = Number(await page.evaluate(() => document.body.dataset.run));
+      await page.selectOption('#preset', name);
+      await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
+      assert.equal(await page.evaluate(() => document.body.dataset.state), 'done', name);
+      assert.equal(scenarioInUrl(page), `v=1&preset=${name}`);
+    }
+  }));
+
+test('a URL reproduces the run bit for bit, and the CSV export equals the CLI', () =>
+  withPage('v=1&preset=step&step.size=0.3&noise=0.004&seed=7', async (page) => {
+    assert.equal(await settled(page), 'done');
+    const scenario = scenarioInUrl(page);
+    assert.equal(scenario, 'v=1&preset=step&step.size=0.3&noise=0.004&seed=7');
+    assert.equal(await page.inputValue('#field-step\\.size'), '0.3');
+    const csv = await exportCsv(page);
+    assert.equal(csv, cliCsv(scenario));
+
+    // Edit a gain in the form: the address bar follows, and that URL reproduces the new run.
+    await page.fill('#field-k1', '1500');
+    await page.press('#field-k1', 'Tab');
+    await page.waitForFunction(() => location.search.includes('k1=1500'));
+    await runAgain(page);
+    const edited = scenarioInUrl(page);
+    const editedCsv = await exportCsv(page);
+    assert.notEqual(editedCsv, csv);
+    await withPage(edited, async (other) => {
+      assert.equal(await settled(other), 'done');
+      assert.equal(await exportCsv(other), editedCsv);
+    });
+
+    // Back returns to the first scenario and reruns it.
+    await page.goBack();
+    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', scenario);
+    assert.equal(await exportCsv(page), csv);
+  }));
+
+test('a broken URL shows which field is wrong and the app still runs', async () => {
+  await withPage('v=1&preset=step&k1=-5', async (page) => {
+    assert.equal(await settled(page), 'done');
+    const message = await page.textContent('#message');
+    assert.match(message, /'k1'/);
+    assert.match(message, /0 < k1 ≤ 1000000/);
+    assert.equal(scenarioInUrl(page), 'v=1&preset=step');
+  });
+  // Markup in the URL is shown as text, never parsed.
+  await withPage('v=1&preset=%3Cimg%20src=x%3E', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(await page.locator('#message img').count(), 0);
+    assert.match(await page.textContent('#message'), /preset/);
+    assert.equal(scenarioInUrl(page), 'v=1&preset=sine200');
+  });
+});
+
+test('a diverging run is reported, nothing non-finite is plotted, and the next run works', () =>
+  withPage('v=1&preset=step&ts=0.001&vmax=100000', async (page) => {
+    assert.equal(await settled(page), 'failed');
+    assert.match(await page.textContent('#message'), /diverged/);
+    await page.selectOption('#preset', 'step');
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=step' && document.body.dataset.state === 'done');
+  }));
+
+test('an invalid edit names the field and blocks Run until fixed', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.fill('#field-k2', 'abc');
+    await page.press('#field-k2', 'Tab');
+    await page.waitForSelector('#field-k2.invalid');
+    assert.match(await page.textContent('#message'), /'k2'/);
+    assert.ok(await page.isDisabled('#run'));
+    await page.fill('#field-k2', '1300');
+    await page.press('#field-k2', 'Tab');
+    await page.waitForFunction(() => location.search.includes('k2=1300'));
+    assert.ok(await page.isEnabled('#run'));
+  }));
+
+test('Cancel stops a long run', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.goto(`${server.url}?v=1&preset=ramp&duration=20`);
+    await page.waitForFunction(() => document.body.dataset.state === 'running' && document.getElementById('progress').value > 0);
+    await page.click('#cancel');
+    assert.equal(await settled(page), 'cancelled');
+    const progress = await page.evaluate(() => document.getElementById('progress').value);
+    assert.ok(progress < 1, `progress ${progress}`);
+  }));
+
+test('the main thread is never blocked for more than 100 ms while a 5 s simulation runs', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.evaluate(() => {
+      window.longTasks = [];
+      new PerformanceObserver((list) => window.longTasks.push(...list.getEntries().map((e) => e.duration)))
+        .observe({ type: 'longtask' });
+    });
+    await page.selectOption('#preset', 'ramp');
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=ramp');
+    await page.click('details[data-group=limits] > summary');
+    await page.fill('#field-duration', '5');
+    await page.press('#field-duration', 'Tab');
+    await page.waitForFunction(() => location.search.includes('duration=5'));
+    const run = await runAgain(page);
+    assert.equal(run.rows, '100000');
+    const longest = await page.evaluate(() => Math.max(0, ...window.longTasks));
+    assert.ok(longest < 100, `longest main-thread task ${longest} ms`);
+  }));
+
+test('a loaded app reloads and runs offline', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.evaluate(() => navigator.serviceWorker.ready);
+    await page.reload(); // now controlled by the service worker, which caches what it serves
+    await settled(page);
+    await page.context().setOffline(true);
+    await page.reload();
+    assert.equal(await settled(page), 'done');
+    assert.equal(scenarioInUrl(page), 'v=1&preset=step');
+  }));
