@@ -12,10 +12,12 @@ wasm: setup
 
 # A self-contained static folder that any static host can serve.
 dist: wasm
-	mkdir -p dist/web dist/vendor
-	cp static/* dist/
+	mkdir -p dist/web dist/vendor/katex/fonts
+	cp static/*.html static/*.css static/*.js dist/
 	cp web/*.js dist/web/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
+	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
+	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
 
 serve: dist
 	@echo "IM Lab is at http://localhost:$(PORT)/  (Ctrl-C stops it)"

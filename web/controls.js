@@ -52,22 +52,23 @@ export function renderFields(form, info) {
     const details = el('details', { open: first ? OPEN_GROUPS.has(group) : open.has(group) });
     details.dataset.group = group;
     details.append(el('summary', { textContent: title }));
-    for (const f of fields) {
-      const control = input(f);
-      control.id = `field-${f.key}`;
-      control.title = `allowed: ${allowed(f)}`;
-      const unit = f.unit ? ` (${f.unit})` : '';
-      details.append(
-        el('label', { htmlFor: control.id, className: 'field' }, [
-          el('span', { className: 'key', textContent: f.key }),
-          el('span', { className: 'doc', textContent: `${f.doc}${unit}` }),
-          control,
-          el('span', { className: 'range', textContent: allowed(f) }),
-        ]),
-      );
-    }
+    for (const f of fields) details.append(fieldControl(f, 'field'));
     form.append(details);
   }
+}
+
+/** A labelled control for field `f` with id `${prefix}-${key}`, showing its unit and range. */
+export function fieldControl(f, prefix) {
+  const control = input(f);
+  control.id = `${prefix}-${f.key}`;
+  control.title = `allowed: ${allowed(f)}`;
+  const unit = f.unit ? ` (${f.unit})` : '';
+  return el('label', { htmlFor: control.id, className: 'field' }, [
+    el('span', { className: 'key', textContent: f.key }),
+    el('span', { className: 'doc', textContent: `${f.doc}${unit}` }),
+    control,
+    el('span', { className: 'range', textContent: allowed(f) }),
+  ]);
 }
 
 /** The scenario string the form describes: the preset plus every field shown. */
@@ -86,6 +87,15 @@ export function markInvalid(form, message) {
   for (const control of form.querySelectorAll('input, select')) {
     control.classList.toggle('invalid', match !== null && control.name === match[1]);
   }
+}
+
+/** Copies a knob's value into the settings form's control for the same field and reports a change. */
+export function forwardKnob(form, knob) {
+  const target = form.elements.namedItem(knob.name);
+  if (!target) return;
+  if (knob.type === 'checkbox') target.checked = knob.checked;
+  else target.value = knob.value;
+  form.dispatchEvent(new Event('change'));
 }
 
 /** The value the form holds for `key`, as the codec writes it. */

@@ -1,27 +1,54 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
-import { Plots, PLOT_COLUMNS } from './plots.js';
-import { composeScenario, fieldValue, markInvalid, renderFields } from './controls.js';
+import { columnsOf, Plots, PLOTS } from './plots.js';
+import { composeScenario, fieldControl, fieldValue, forwardKnob, markInvalid, renderFields } from './controls.js';
 import { DEFAULT_SCENARIO, markRun, presetNamed, scenarioFromUrl, showScenario } from './url.js';
+import { Walkthrough } from './walkthrough.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   preset: $('preset'), presetDoc: $('preset-doc'), form: $('settings'), run: $('run'),
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
+  present: $('present'), inspect: $('inspect'),
 };
 
 const state = {
   info: null, // the core's description of the scenario in the form
   presets: [],
+  nisBand: [0, 0],
   runId: 0,
   running: false,
   started: 0,
   req: 0,
-  pending: new Map(), // describe requests: req → {resolve}
-  lastView: 0,
+  pending: new Map(), // describe requests: req → {resolve, reject}
 };
 
-const plots = new Plots(ui.plots, (t0, t1) => requestWindow(t0, t1));
+const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
+const plots = new Plots(ui.plots, PLOTS, {
+  onWindow: (t0, t1) => requestWindow(t0, t1),
+  onPick: (t) => requestInspect(t),
+  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * Number(fieldValue(state.info, 'vmax'))) : []),
+});
+const walkthrough = new Walkthrough({
+  container: $('walkthrough'),
+  lessonsBox: $('lessons'),
+  inspectBox: ui.inspect,
+  knob: (key) => {
+    const f = state.info?.fields.find((x) => x.key === key && x.value !== null);
+    return f ? fieldControl(f, 'knob') : null;
+  },
+  onLesson: (preset) => {
+    showTab('plots');
+    load(`v=1&preset=${preset}`);
+  },
+  onCompare: () => {
+    $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
+    worker.postMessage({ type: 'compare', id: state.runId });
+  },
+  onWindow: (t0, t1) => requestWindow(t0, t1),
+  onPick: (t) => requestInspect(t),
+});
+const COLUMNS = columnsOf([...PLOTS, ...walkthrough.plots.defs]);
 let worker = null;
 
 function say(text, kind = 'error') {
@@ -65,10 +92,18 @@ function applyDescription(info) {
   const presetChanged = ui.preset.value !== presetNamed(info.encoded);
   state.info = info;
   if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
+  else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
+  walkthrough.describe(info);
   ui.preset.value = presetNamed(info.encoded);
   ui.presetDoc.textContent = state.presets.find((p) => p.name === ui.preset.value)?.description ?? '';
   ui.run.disabled = state.running;
   markInvalid(ui.form, null);
+}
+
+function syncControl(control, value) {
+  if (!control || control === document.activeElement) return;
+  if (control.type === 'checkbox') control.checked = value === '1';
+  else control.value = value;
 }
 
 /** Loads a scenario string (from the URL, a preset or history); falls back to its preset if invalid. */
@@ -111,16 +146,20 @@ function startRun() {
   state.started = performance.now();
   ui.progress.value = 0;
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
+  ui.inspect.hidden = true;
   setBusy(true);
   const buckets = Math.max(200, Math.round(plots.width()));
-  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, columns: PLOT_COLUMNS, buckets });
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, columns: COLUMNS, buckets });
 }
 
 function requestWindow(t0, t1) {
   if (state.running || !plots.full) return;
-  const id = state.runId;
   const full = t0 <= plots.full[0] && t1 >= plots.full[1];
-  worker.postMessage({ type: 'view', id, t0: full ? 0 : t0, t1: full ? Number.MAX_VALUE : t1, buckets: Math.round(plots.width()) });
+  worker.postMessage({ type: 'view', id: state.runId, t0: full ? 0 : t0, t1: full ? Number.MAX_VALUE : t1, buckets: Math.round(plots.width()) });
+}
+
+function requestInspect(t) {
+  if (!state.running && plots.full) worker.postMessage({ type: 'inspect', id: state.runId, t });
 }
 
 function download(blob, name) {
@@ -133,9 +172,21 @@ function fileStem() {
   return `imlab-${presetNamed(state.info.encoded)}-${state.runId}`;
 }
 
+function showTab(name) {
+  for (const tab of document.querySelectorAll('[role=tab]')) {
+    const selected = tab.dataset.tab === name;
+    tab.setAttribute('aria-selected', selected);
+    $(`panel-${tab.dataset.tab}`).hidden = !selected;
+  }
+  // Plots drawn while hidden have no width; size them now that they are visible.
+  plots.resize();
+  walkthrough.plots.resize();
+}
+
 const handlers = {
-  ready({ presets }) {
+  ready({ presets, nisBand }) {
     state.presets = presets;
+    state.nisBand = nisBand;
     for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
     load(scenarioFromUrl());
   },
@@ -157,18 +208,19 @@ const handlers = {
     ui.progress.value = done / total;
     ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
   },
-  done({ id, rows, failure, view, computeMs }) {
+  done({ id, rows, failure, view, computeMs, stability }) {
     if (id !== state.runId) return;
     setBusy(false);
     ui.progress.value = 1;
     const arrived = performance.now();
-    if (view) plots.show(view, Number(fieldValue(state.info, 'vmax')));
+    if (view) {
+      plots.show(view);
+      walkthrough.show(view, stability, state.nisBand);
+    }
     const ms = performance.now() - state.started;
-    document.body.dataset.plotMs = (performance.now() - arrived).toFixed(1);
-    document.body.dataset.runMs = ms.toFixed(1);
-    document.body.dataset.rows = rows;
-    document.body.dataset.computeMs = computeMs.toFixed(2);
-    document.body.dataset.run = id;
+    Object.assign(document.body.dataset, {
+      plotMs: (performance.now() - arrived).toFixed(1), runMs: ms.toFixed(1), rows, computeMs: computeMs.toFixed(2), run: id,
+    });
     ui.csv.disabled = ui.png.disabled = rows === 0;
     if (failure) {
       say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
@@ -186,7 +238,15 @@ const handlers = {
     document.body.dataset.state = 'cancelled';
   },
   view({ id, view }) {
-    if (id === state.runId) plots.refine(view);
+    if (id !== state.runId) return;
+    plots.refine(view);
+    walkthrough.plots.refine(view);
+  },
+  inspected({ id, t, snapshot }) {
+    if (id === state.runId) walkthrough.inspect(snapshot, t);
+  },
+  compared({ id, results }) {
+    if (id === state.runId) walkthrough.showComparison(results);
   },
   csv({ id, text }) {
     if (id === state.runId) download(new Blob([text], { type: 'text/csv' }), `${fileStem()}.csv`);
@@ -196,6 +256,7 @@ const handlers = {
 ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`));
 ui.form.addEventListener('change', formChanged);
 ui.form.addEventListener('submit', (e) => e.preventDefault());
+$('walkthrough').addEventListener('change', (e) => forwardKnob(ui.form, e.target));
 ui.run.addEventListener('click', startRun);
 ui.cancel.addEventListener('click', () => worker.postMessage({ type: 'cancel', id: state.runId }));
 ui.csv.addEventListener('click', () => worker.postMessage({ type: 'csv', id: state.runId }));
@@ -208,8 +269,19 @@ ui.copy.addEventListener('click', async () => {
     say(`Copy this link: ${location.href}`, 'info');
   }
 });
+for (const tab of document.querySelectorAll('[role=tab]')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
+ui.present.addEventListener('click', () => {
+  const on = document.body.classList.toggle('present');
+  ui.present.setAttribute('aria-pressed', on);
+  const [main, small] = PLOT_HEIGHT[on ? 'present' : 'normal'];
+  plots.resize(main);
+  walkthrough.plots.resize(small);
+});
 window.addEventListener('popstate', () => load(scenarioFromUrl()));
-window.addEventListener('resize', () => plots.resize());
+window.addEventListener('resize', () => {
+  plots.resize();
+  walkthrough.plots.resize();
+});
 
 setBusy(false);
 startWorker();

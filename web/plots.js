@@ -8,11 +8,11 @@ const REFERENCE = '#777';
 // [column, label, axis]; axis 'y2' puts a series on the right-hand scale.
 export const PLOTS = [
   {
-    id: 'speed', title: 'Rotor speed', unit: 'rad/s',
+    id: 'speed', title: 'Rotor speed', unit: 'rad/s', reference: true,
     series: [['omega_ref', 'ω_d reference'], ['omega', 'ω true'], ['omega_hat', 'ω̂ estimated']],
   },
   {
-    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb',
+    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb', reference: true,
     series: [['flux_ref', '√ψ_d target'], ['flux', '|φ| true'], ['flux_hat', '|φ̂| estimated']],
   },
   {
@@ -20,7 +20,8 @@ export const PLOTS = [
     series: [['i_sa', 'i_sa'], ['i_sb', 'i_sb'], ['i_sa_hat', 'î_sa'], ['i_sb_hat', 'î_sb']],
   },
   {
-    id: 'voltage', title: 'Applied stator voltages (after the limit)', unit: 'V', limits: true,
+    id: 'voltage', title: 'Applied stator voltages (after the limit)', unit: 'V',
+    constants: [['+limit'], ['−limit']],
     series: [['u_a', 'u_sa'], ['u_b', 'u_sb']],
   },
   {
@@ -37,15 +38,29 @@ export const PLOTS = [
   },
 ];
 
-/** Every recorded column the plots need, for the worker's envelope request. */
-export const PLOT_COLUMNS = [...new Set(PLOTS.flatMap((p) => p.series.map((s) => s[0])))];
-
 const SYNC_KEY = 'imlab-time';
 
-function options(plot, width, onZoom) {
+// A log axis spanning whole decades (uPlot's log splits need them), at most 14 below the maximum.
+function logRange(u, min, max) {
+  const top = Math.ceil(Math.log10(max));
+  const bottom = Math.max(Math.floor(Math.log10(min)), top - 14);
+  return [10 ** bottom, 10 ** top];
+}
+
+// Tick labels that stay readable from 1e-9 to 1e6 (uPlot's default shows tiny values as 0).
+function tickLabels(u, splits) {
+  return splits.map((v) => (v == null ? '' : String(Number(v.toPrecision(3)))));
+}
+
+/** Every column a list of plot definitions needs. */
+export function columnsOf(defs) {
+  return [...new Set(defs.flatMap((p) => p.series.map((s) => s[0])))];
+}
+
+function options(plot, width, height, onZoom, onPick) {
   const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : v.toFixed(5)) }];
   plot.series.forEach(([, label, axis], i) => {
-    const isRef = i === 0 && (plot.id === 'speed' || plot.id === 'flux');
+    const isRef = i === 0 && plot.reference;
     series.push({
       label,
       scale: axis === 'y2' ? 'y2' : 'y',
@@ -55,42 +70,52 @@ function options(plot, width, onZoom) {
       value: (u, v) => (v == null ? '–' : v.toPrecision(6)),
     });
   });
-  if (plot.limits) {
-    for (const sign of ['+', '−']) {
-      series.push({ label: `${sign}limit`, stroke: '#999', dash: [3, 3], width: 1.5 });
-    }
+  for (const [label, axis] of plot.constants ?? []) {
+    series.push({ label, scale: axis ?? 'y', stroke: '#999', dash: [3, 3], width: 1.5 });
   }
+  const font = { font: '14px system-ui', labelFont: '14px system-ui' };
   const axes = [
-    { label: 't (s)', font: '14px system-ui', labelFont: '14px system-ui' },
-    { label: plot.unit, scale: 'y', font: '14px system-ui', labelFont: '14px system-ui', size: 70 },
+    { label: 't (s)', ...font },
+    { label: plot.unit, scale: 'y', ...font, size: 80, values: tickLabels },
   ];
-  if (plot.unit2) {
-    axes.push({
-      label: plot.unit2, scale: 'y2', side: 1, grid: { show: false },
-      font: '14px system-ui', labelFont: '14px system-ui', size: 70,
-    });
-  }
+  if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80, values: tickLabels });
+  const scales = { x: { time: false } };
+  if (plot.log) scales.y = { distr: 3, log: 10, range: logRange };
   return {
     title: plot.title,
     width,
-    height: 260,
-    scales: { x: { time: false } },
+    height,
+    scales,
     series,
     axes,
     cursor: { sync: { key: SYNC_KEY, setSeries: false }, drag: { x: true, y: false } },
-    hooks: { setScale: [(u, key) => key === 'x' && onZoom(u)] },
+    hooks: {
+      setScale: [(u, key) => key === 'x' && onZoom(u)],
+      ready: [(u) => pickOnClick(u, onPick)],
+    },
   };
 }
 
-/** The set of plots; `onWindow(t0, t1)` is called when the user zooms the shared time axis. */
+// A click (not a drag-to-zoom) on the plot area picks the time under the cursor.
+function pickOnClick(u, onPick) {
+  let downX = null;
+  u.over.addEventListener('mousedown', (e) => { downX = e.clientX; });
+  u.over.addEventListener('click', (e) => {
+    if (downX !== null && Math.abs(e.clientX - downX) < 3 && u.cursor.left >= 0) onPick(u.posToVal(u.cursor.left, 'x'));
+  });
+}
+
+/**
+ * A set of plots sharing the synchronised time axis. `onWindow(t0, t1)` is called when the user
+ * zooms; `onPick(t)` when the user clicks a time. `constants(plot)` gives the values of a plot's
+ * constant lines (limits, bands), which come from the core.
+ */
 export class Plots {
-  constructor(container, onWindow) {
-    this.container = container;
-    this.onWindow = onWindow;
+  constructor(container, defs, { onWindow, onPick, constants = () => [], height = 260 }) {
+    Object.assign(this, { container, defs, onWindow, onPick, constants, height });
     this.charts = [];
     this.syncing = false;
     this.full = null; // [t0, t1] of the whole run
-    this.limit = 0;
   }
 
   width() {
@@ -108,30 +133,29 @@ export class Plots {
 
   data(plot, view) {
     const t = view.columns.t;
-    const rows = [t, ...plot.series.map(([col]) => view.columns[col])];
-    if (plot.limits) {
-      rows.push(new Float64Array(t.length).fill(this.limit), new Float64Array(t.length).fill(-this.limit));
-    }
+    // A series may show a column negated (the lower half of a ±band).
+    const rows = [t, ...plot.series.map(([col, , , sign]) => (sign === -1 ? view.columns[col].map((v) => -v) : view.columns[col]))];
+    for (const value of this.constants(plot)) rows.push(new Float64Array(t.length).fill(value));
     return rows;
   }
 
-  /** Draws a whole run. `voltageLimit` is the scenario's limit (V). */
-  show(view, voltageLimit) {
-    this.limit = voltageLimit;
+  /** Draws a whole run. */
+  show(view) {
     const t = view.columns.t;
     this.full = [t[0], t[t.length - 1]];
     if (this.charts.length === 0) {
       const width = this.width();
-      for (const plot of PLOTS) {
+      for (const plot of this.defs) {
         const div = document.createElement('div');
         div.className = 'plot';
-        div.dataset.plot = plot.id;
-        this.container.append(div);
-        this.charts.push(new uPlot(options(plot, width, (u) => this.zoomed(u)), this.data(plot, view), div));
+        div.dataset.plot = plot.id ?? plot.title;
+        (plot.container ?? this.container).append(div);
+        const opts = options(plot, width, this.height, (u) => this.zoomed(u), (time) => this.onPick(time));
+        this.charts.push(new uPlot(opts, this.data(plot, view), div));
       }
     } else {
       this.syncing = true;
-      PLOTS.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
+      this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
       this.syncing = false;
     }
   }
@@ -139,13 +163,14 @@ export class Plots {
   /** Replaces the data inside a zoom window without moving the axes. */
   refine(view) {
     this.syncing = true;
-    PLOTS.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), false));
+    this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), false));
     this.syncing = false;
   }
 
-  resize() {
+  resize(height = this.height) {
+    this.height = height;
     const width = this.width();
-    for (const c of this.charts) c.setSize({ width, height: c.height });
+    for (const c of this.charts) c.setSize({ width, height });
   }
 
   /** One PNG of every plot with its title and legend labels. */
@@ -160,7 +185,7 @@ export class Plots {
     ctx.fillStyle = '#fff';
     ctx.fillRect(0, 0, width, height);
     let y = 0;
-    PLOTS.forEach((plot, i) => {
+    this.defs.forEach((plot, i) => {
       ctx.fillStyle = '#000';
       ctx.font = `${16 * scale}px system-ui`;
       ctx.fillText(`${plot.title}: ${plot.series.map((s) => s[1]).join(', ')}`, 8 * scale, y + 20 * scale);

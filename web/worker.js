@@ -9,20 +9,27 @@
 //   {type: 'cancel', id}
 //   {type: 'view', id, t0, t1, buckets}        → {type: 'view', id, view}
 //   {type: 'csv', id}                          → {type: 'csv', id, text}
+//   {type: 'inspect', id, t}                   → {type: 'inspected', id, t, snapshot} | {type: 'invalid', id, message}
+//   {type: 'compare', id, columns, buckets}    → {type: 'compared', id, results: [{predictor, metrics}]}
 // A view is {t0, t1, columns: {name: Float64Array}}; its buffers are transferred, not copied.
-import init, { describe, presets, Simulation } from '../pkg/imlab.js';
+// The column 'lyapunov_bound' is the bound (59) evaluated by the core at the view's times.
+import init, { describe, inspect, nis_band, presets, Simulation, variant } from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
 // compiled in the background is picked up at the next chunk
 
 let current = null; // {id, sim, columns, cancelled}
 
+const BOUND = 'lyapunov_bound';
+
 function view(run, t0, t1, buckets) {
-  const cols = run.sim.envelope(run.columns, t0, t1, buckets);
+  const recorded = run.columns.filter((c) => c !== BOUND);
+  const cols = run.sim.envelope(recorded, t0, t1, buckets);
   const columns = { t: cols[0] };
-  run.columns.forEach((name, i) => {
+  recorded.forEach((name, i) => {
     columns[name] = cols[i + 1];
   });
+  if (run.columns.includes(BOUND)) columns[BOUND] = run.sim.lyapunov_bound(cols[0]);
   return { t0, t1, columns };
 }
 
@@ -75,7 +82,35 @@ async function run({ id, scenario, columns, buckets }) {
     }
   }
   const v = sim.rows > 0 ? view(me, 0, Number.MAX_VALUE, buckets) : null;
-  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs }, v);
+  const stability = sim.rows > 0 ? sim.stability() : null;
+  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability }, v);
+}
+
+/** Runs `scenario` to the end in chunks, yielding between them; returns its metrics. */
+async function runToEnd(scenario) {
+  const sim = new Simulation(scenario);
+  try {
+    while (!sim.finished) {
+      sim.step(CHUNK_STEPS);
+      await yieldToMessages();
+    }
+    return sim.metrics();
+  } finally {
+    sim.free();
+  }
+}
+
+async function compare({ id }) {
+  try {
+    const results = [];
+    for (const predictor of ['euler', 'rk4']) {
+      const scenario = variant(current.sim.scenario, 'ekf', predictor);
+      results.push({ predictor, scenario, metrics: await runToEnd(scenario) });
+    }
+    post({ type: 'compared', id, results });
+  } catch (e) {
+    post({ type: 'invalid', id, message: `Comparison failed: ${e}` });
+  }
 }
 
 // V8 first runs WASM in its baseline compiler and optimises functions that have run often.
@@ -89,7 +124,7 @@ function warmUp() {
 
 const ready = init().then(() => {
   warmUp();
-  self.postMessage({ type: 'ready', presets: presets() });
+  self.postMessage({ type: 'ready', presets: presets(), nisBand: nis_band() });
 });
 
 self.onmessage = async ({ data }) => {
@@ -113,6 +148,18 @@ self.onmessage = async ({ data }) => {
         const v = view(current, data.t0, data.t1, data.buckets);
         post({ type: 'view', id: data.id, view: v }, v);
       }
+      break;
+    case 'inspect':
+      if (current && current.id === data.id) {
+        try {
+          post({ type: 'inspected', id: data.id, t: data.t, snapshot: inspect(current.sim.scenario, data.t) });
+        } catch (e) {
+          post({ type: 'invalid', id: data.id, message: String(e) });
+        }
+      }
+      break;
+    case 'compare':
+      if (current && current.id === data.id) compare(data);
       break;
     case 'csv':
       if (current && current.id === data.id) post({ type: 'csv', id: data.id, text: current.sim.csv() });

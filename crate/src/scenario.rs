@@ -1139,6 +1139,19 @@ impl Scenario {
         out
     }
 
+    /// Sets one field from its codec text, then checks the whole scenario.
+    pub fn set(&mut self, key: &str, value: &str) -> Result<(), ScenarioError> {
+        let field =
+            fields()
+                .iter()
+                .find(|f| f.key == key)
+                .ok_or_else(|| ScenarioError::UnknownKey {
+                    key: key.to_string(),
+                })?;
+        field.set(self, value)?;
+        self.validate()
+    }
+
     /// Checks every field's range and the physics of both parameter sets.
     pub fn validate(&self) -> Result<(), ScenarioError> {
         if preset(&self.preset).is_none() {

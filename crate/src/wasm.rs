@@ -1,5 +1,6 @@
 //! JavaScript bindings: type conversion and error mapping only; no physics lives here.
 
+use crate::params::Lumped;
 use crate::scenario::{Scenario, PRESETS};
 use crate::sim::{self, COLUMNS};
 use js_sys::{Array, Float64Array};
@@ -98,6 +99,26 @@ impl Simulation {
             .collect())
     }
 
+    /// The Lyapunov bound (59) at each time in `t` (s), from this run's V(0) and gains.
+    pub fn lyapunov_bound(&self, t: &[f64]) -> Result<Float64Array, JsValue> {
+        let bound = self
+            .inner
+            .lyapunov_bound()
+            .ok_or_else(|| js_error("nothing recorded"))?;
+        let values: Vec<f64> = t.iter().map(|&t| bound.at(t)).collect();
+        Ok(Float64Array::from(values.as_slice()))
+    }
+
+    /// How V(t) compares with the bound (59): `{bound, samples, outside, outside_saturated, ...}`.
+    pub fn stability(&self) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.stability())
+    }
+
+    /// RMS tracking and estimation errors, mean NIS and saturation of the run.
+    pub fn metrics(&self) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.metrics())
+    }
+
     /// The recorded trace as CSV, byte-identical to `imlab run`.
     pub fn csv(&self) -> String {
         self.inner.recorder().csv()
@@ -120,7 +141,13 @@ pub fn presets() -> Result<JsValue, JsValue> {
             description: p.description,
         })
         .collect();
-    serde_wasm_bindgen::to_value(&list).map_err(js_error)
+    to_js(&list)
+}
+
+fn to_js(value: &impl Serialize) -> Result<JsValue, JsValue> {
+    value
+        .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(js_error)
 }
 
 #[derive(Serialize)]
@@ -128,6 +155,8 @@ struct Description {
     encoded: String,
     steps: usize,
     fields: Vec<crate::scenario::FieldInfo>,
+    plant: Lumped,
+    model: Lumped,
 }
 
 /// Every field of the effective scenario (key, unit, range, value) and its compact form;
@@ -135,13 +164,36 @@ struct Description {
 #[wasm_bindgen]
 pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
-    let d = Description {
+    let lumped = |p: &crate::params::MotorParams| p.lumped().map_err(js_error);
+    to_js(&Description {
         encoded: s.encode(),
         steps: s.steps(),
         fields: s.describe(),
-    };
-    d.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(js_error)
+        plant: lumped(&s.plant)?,
+        model: lumped(&s.model)?,
+    })
+}
+
+/// `scenario` with one field changed, in its compact form.
+#[wasm_bindgen]
+pub fn variant(scenario: &str, key: &str, value: &str) -> Result<String, JsValue> {
+    let mut s = Scenario::parse(scenario).map_err(js_error)?;
+    s.set(key, value).map_err(js_error)?;
+    Ok(s.encode())
+}
+
+/// Every recorded value and the Kalman gain at the sample nearest to `t` (s), by replaying the run.
+#[wasm_bindgen]
+pub fn inspect(scenario: &str, t: f64) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    to_js(&sim::Simulation::inspect(&s, t).map_err(js_error)?)
+}
+
+/// The 95 % band of one sample's NIS for a consistent filter, `[low, high]`.
+#[wasm_bindgen]
+pub fn nis_band() -> Vec<f64> {
+    let (lo, hi) = crate::observer::nis_band(0.95);
+    vec![lo, hi]
 }
 
 /// Names of the recorded columns in CSV order.

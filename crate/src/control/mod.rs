@@ -1,7 +1,10 @@
-//! Speed and flux references, and the four-step backstepping controller of Section 4.
+//! Speed and flux references, the four-step backstepping controller of Section 4 and the
+//! Lyapunov bound of Theorem 4.6.
 
 mod backstepping;
 mod reference;
+mod stability;
 
 pub use backstepping::{Backstepping, ControlError, ControlInput, Gains, Terms};
 pub use reference::{RefSample, Reference};
+pub use stability::LyapunovBound;

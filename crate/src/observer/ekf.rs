@@ -206,6 +206,13 @@ impl Ekf {
     }
 }
 
+/// Two-sided `confidence` interval of one sample's NIS when the filter is consistent: χ² with
+/// 2 degrees of freedom, whose distribution function is 1 − exp(−x/2).
+pub fn nis_band(confidence: f64) -> (f64, f64) {
+    let tail = 0.5 * (1.0 - confidence);
+    (-2.0 * libm::log(1.0 - tail), -2.0 * libm::log(tail))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -213,6 +220,15 @@ mod tests {
 
     /// Finite differences of the RK4 map with step 1e-6 on O(1) states: ~1e-8 relative error.
     const PHI_TOL: f64 = 1e-6;
+
+    #[test]
+    fn nis_band_is_the_chi_square_2_quantiles() {
+        let (lo, hi) = nis_band(0.95);
+        assert!(
+            (lo - 0.050636).abs() < 1e-6 && (hi - 7.377759).abs() < 1e-6,
+            "{lo} {hi}"
+        );
+    }
 
     #[test]
     fn rk4_transition_jacobian_matches_finite_differences() {

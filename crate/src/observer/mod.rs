@@ -3,4 +3,4 @@
 
 mod ekf;
 
-pub use ekf::{Ekf, EkfConfig, Predictor};
+pub use ekf::{nis_band, Ekf, EkfConfig, Predictor};

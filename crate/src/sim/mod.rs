@@ -7,12 +7,13 @@ mod recorder;
 
 pub use recorder::{Recorder, Row, COLUMNS, NUM_COLUMNS};
 
-use crate::control::{Backstepping, ControlError, ControlInput};
+use crate::control::{Backstepping, ControlError, ControlInput, LyapunovBound};
 use crate::model::{self, Input, State};
 use crate::observer::Ekf;
 use crate::params::Lumped;
 use crate::rng::Rng;
 use crate::scenario::{Scenario, ScenarioError};
+use serde::Serialize;
 use std::fmt;
 
 /// Largest trace a run may record (bytes); beyond it the run is refused before it starts.
@@ -283,6 +284,7 @@ impl Simulation {
             flux,
             flux_hat: flux_sq_hat.sqrt(),
             flux_ref: s.psi_d.sqrt(),
+            omega_err: x[0] - speed_ref.value,
             omega_est_err: x[0] - x_hat[0],
             flux_est_err: flux - flux_sq_hat.sqrt(),
             flux_sq_hat,
@@ -307,6 +309,8 @@ impl Simulation {
             lyapunov: terms.lyapunov,
             innov_a,
             innov_b,
+            innov_band_a: 2.0 * s_aa.sqrt(),
+            innov_band_b: 2.0 * s_bb.sqrt(),
             s_aa,
             s_ab,
             s_bb,
@@ -357,5 +361,131 @@ impl Simulation {
     /// Current EKF (for checks of its covariance).
     pub fn ekf(&self) -> &Ekf {
         &self.ekf
+    }
+
+    /// The Lyapunov bound (59) of this run, from the recorded V(0).
+    pub fn lyapunov_bound(&self) -> Option<LyapunovBound> {
+        let v0 = self.recorder.column_value(0, "lyapunov")?;
+        Some(LyapunovBound::new(&self.scenario.gains, v0))
+    }
+
+    /// Where the recorded V(t) leaves the bound (59), and whether the voltage limit was active then.
+    pub fn stability(&self) -> Option<Stability> {
+        let bound = self.lyapunov_bound()?;
+        let rows = self.recorder.rows();
+        let vmax = self.scenario.voltage_limit;
+        let outside: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE)
+            .collect();
+        let saturated = |r: &Row| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax;
+        Some(Stability {
+            bound,
+            samples: rows.len(),
+            outside: outside.len(),
+            outside_saturated: outside.iter().filter(|r| saturated(r)).count(),
+            saturated: rows.iter().filter(|r| saturated(r)).count(),
+            first_outside: outside.first().map(|r| r.t),
+        })
+    }
+}
+
+/// Summary figures of a run, for comparing variants.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Metrics {
+    /// Start of the window the figures cover (s): after the first fifth of the run.
+    pub from: f64,
+    /// RMS of ω − ω_d (rad/s).
+    pub tracking_rms: f64,
+    /// RMS of ω − ω̂ (rad/s).
+    pub speed_estimate_rms: f64,
+    /// RMS of |φ| − |φ̂| (Wb).
+    pub flux_estimate_rms: f64,
+    /// Mean NIS (2 for a consistent filter).
+    pub mean_nis: f64,
+    /// Fraction of samples with a commanded voltage beyond the limit.
+    pub saturated: f64,
+}
+
+impl Simulation {
+    /// RMS errors, mean NIS and saturation over the last four fifths of the recorded run.
+    pub fn metrics(&self) -> Option<Metrics> {
+        let rows = self.recorder.rows();
+        let tail = &rows[rows.len() / 5..];
+        let n = tail.len() as f64;
+        if tail.is_empty() {
+            return None;
+        }
+        let rms =
+            |f: &dyn Fn(&Row) -> f64| (tail.iter().map(|r| f(r) * f(r)).sum::<f64>() / n).sqrt();
+        let vmax = self.scenario.voltage_limit;
+        Some(Metrics {
+            from: tail[0].t,
+            tracking_rms: rms(&|r| r.omega_err),
+            speed_estimate_rms: rms(&|r| r.omega_est_err),
+            flux_estimate_rms: rms(&|r| r.flux_est_err),
+            mean_nis: tail.iter().map(|r| r.nis).sum::<f64>() / n,
+            saturated: tail
+                .iter()
+                .filter(|r| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax)
+                .count() as f64
+                / n,
+        })
+    }
+}
+
+/// Relative margin before V counts as outside the bound: rounding in V and the bound.
+const BOUND_TOL: f64 = 1e-9;
+
+/// How a run's V(t) compares with the bound (59).
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct Stability {
+    /// The bound.
+    pub bound: LyapunovBound,
+    /// Recorded samples.
+    pub samples: usize,
+    /// Samples where V is above the bound.
+    pub outside: usize,
+    /// Of those, samples where a commanded voltage exceeded the limit.
+    pub outside_saturated: usize,
+    /// Samples where a commanded voltage exceeded the limit.
+    pub saturated: usize,
+    /// First time V is above the bound (s).
+    pub first_outside: Option<f64>,
+}
+
+/// Every recorded value at one sample, with the Kalman gain, for the inspect panel.
+#[derive(Clone, Debug, Serialize)]
+pub struct Snapshot {
+    /// Sample index k.
+    pub k: usize,
+    /// Column names, in CSV order.
+    pub columns: &'static [&'static str],
+    /// The values of sample k, in the same order.
+    pub values: Vec<f64>,
+    /// Kalman gain K_k (5×2).
+    pub gain: [[f64; 2]; 5],
+    /// Observer gain L = K_k/Ts of eq (20) (5×2, 1/s).
+    pub l: [[f64; 2]; 5],
+}
+
+impl Simulation {
+    /// Replays `scenario` up to sample `k` (the nearest to time `t`) and returns every term there.
+    /// The run is deterministic, so this equals row k of the full run bit for bit.
+    pub fn inspect(scenario: &Scenario, t: f64) -> Result<Snapshot, String> {
+        let steps = scenario.steps();
+        let k = ((t / scenario.ts).round().max(0.0) as usize).min(steps.saturating_sub(1));
+        // Keeping every k-th sample records samples 0 and k only.
+        let mut sim = Simulation::new(scenario, k.max(1)).map_err(|e| e.to_string())?;
+        sim.advance(k + 1).map_err(|e| e.to_string())?;
+        let row = sim.recorder.rows().last().ok_or("nothing recorded")?;
+        let gain = sim.ekf.gain();
+        Ok(Snapshot {
+            k,
+            columns: COLUMNS,
+            values: row.values().to_vec(),
+            gain,
+            l: gain.map(|r| r.map(|g| g * sim.rate)),
+        })
     }
 }

@@ -18,7 +18,8 @@ macro_rules! define_row {
         pub const NUM_COLUMNS: usize = COLUMNS.len();
 
         impl Row {
-            fn values(&self) -> [f64; NUM_COLUMNS] {
+            /// The values in CSV order.
+            pub fn values(&self) -> [f64; NUM_COLUMNS] {
                 [$(self.$name),*]
             }
         }
@@ -72,6 +73,8 @@ define_row! {
     flux_hat,
     /// Target flux modulus ψ_d^½ (Wb).
     flux_ref,
+    /// Speed tracking error ω − ω_d (rad/s).
+    omega_err,
     /// Speed estimation error ω − ω̂ (rad/s).
     omega_est_err,
     /// Flux-modulus estimation error |φ_r| − |φ̂_r| (Wb).
@@ -120,6 +123,10 @@ define_row! {
     innov_a,
     /// Innovation ỹ_b (A).
     innov_b,
+    /// 2σ band of the innovation ỹ_a: 2·S_aa^½ (A).
+    innov_band_a,
+    /// 2σ band of the innovation ỹ_b: 2·S_bb^½ (A).
+    innov_band_b,
     /// Innovation covariance S_aa (A²).
     s_aa,
     /// Innovation covariance S_ab (A²).
@@ -178,6 +185,16 @@ impl Recorder {
 
     fn index(name: &str) -> Option<usize> {
         COLUMNS.iter().position(|c| *c == name)
+    }
+
+    /// The recorded rows.
+    pub fn rows(&self) -> &[Row] {
+        &self.rows
+    }
+
+    /// The value of column `name` in kept row `i`.
+    pub fn column_value(&self, i: usize, name: &str) -> Option<f64> {
+        Some(self.rows.get(i)?.values()[Self::index(name)?])
     }
 
     /// A copy of the column named `name`, if there is one.

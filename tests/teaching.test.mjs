@@ -1,0 +1,114 @@
+// Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { launch, newPage, serve, settled } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+let server;
+let browser;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+async function withPage(query, body) {
+  const errors = [];
+  const page = await newPage(browser, errors);
+  try {
+    await page.goto(`${server.url}?${query}`);
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  } finally {
+    await page.context().close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+}
+
+test('every walkthrough section renders its equations with no KaTeX error', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await page.click('[data-tab=walkthrough]');
+    const sections = await page.$$eval('#walkthrough section.step', (ss) =>
+      ss.map((s) => ({ id: s.id, equations: s.querySelectorAll('.equation').length, rendered: s.querySelectorAll('.equation > .katex-display').length })));
+    assert.equal(sections.length, 7);
+    for (const s of sections) {
+      assert.ok(s.equations >= 2, `${s.id} has ${s.equations} equations`);
+      assert.equal(s.rendered, s.equations, `${s.id}: rendered ${s.rendered} of ${s.equations}`);
+    }
+    assert.equal(await page.locator('.katex-error').count(), 0);
+    // Each section shows live signals from the run and its design knobs.
+    assert.equal(await page.locator('#walkthrough .plot canvas').count(), 8);
+    for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std']) assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
+    assert.match(await page.textContent('#section-stability .stability-report'), /of 2000 samples|all 2000 samples/);
+  }));
+
+test('a design knob edits the scenario like the settings form', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await page.click('[data-tab=walkthrough]');
+    await page.fill('#knob-k3', '900');
+    await page.press('#knob-k3', 'Tab');
+    await page.waitForFunction(() => location.search.includes('k3=900'));
+    assert.equal(await page.inputValue('#field-k3'), '900');
+  }));
+
+function cliRows(scenario) {
+  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
+  const names = header.split(',');
+  return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
+}
+
+test('the inspect panel shows the CLI CSV values of the clicked sample', () =>
+  withPage('v=1&preset=step&seed=3', async (page) => {
+    const over = page.locator('#plots .plot .u-over').first();
+    const box = await over.boundingBox();
+    await page.mouse.click(box.x + box.width * 0.53, box.y + box.height / 2);
+    await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
+    const shown = await page.$$eval('#inspect tr[data-column]', (rows) =>
+      rows.map((r) => [r.dataset.column, r.querySelector('td').textContent]));
+    const heading = await page.textContent('#inspect h3');
+    const k = Number(/k = (\d+)/.exec(heading)[1]);
+    assert.ok(k > 900 && k < 1300, `k = ${k}`);
+    const row = cliRows('v=1&preset=step&seed=3')[k];
+    assert.ok(shown.length >= 30);
+    for (const [column, text] of shown) assert.equal(Number(text), row[column], column);
+    assert.match(heading, new RegExp(`t = ${row.t} s`));
+  }));
+
+test('each lesson loads its preset and runs', () =>
+  withPage('v=1&preset=decay', async (page) => {
+    await page.click('[data-tab=lessons]');
+    const lessons = await page.$$eval('[data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
+    assert.equal(lessons.length, 6);
+    for (const preset of lessons) {
+      await page.click('[data-tab=lessons]');
+      await page.click(`[data-lesson="${preset}"]`);
+      await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `v=1&preset=${preset}`);
+      assert.equal(await page.isVisible('#panel-plots'), true);
+    }
+  }));
+
+test('the Euler/RK4 comparison shows the observer limiting the 200 Hz sine', () =>
+  withPage('v=1&preset=sine200', async (page) => {
+    await page.click('[data-tab=walkthrough]');
+    await page.click('#section-ekf button.compare');
+    await page.waitForSelector('#section-ekf .compare-result table');
+    const rows = await page.$$eval('#section-ekf .compare-result tr', (trs) => trs.slice(1).map((tr) => [...tr.children].map((c) => c.textContent)));
+    assert.deepEqual(rows.map((r) => r[0]), ['euler', 'rk4']);
+    const [euler, rk4] = rows.map((r) => ({ tracking: Number(r[1]), nis: Number(r[4]) }));
+    assert.ok(rk4.tracking < euler.tracking / 2, `tracking RMS euler ${euler.tracking}, rk4 ${rk4.tracking}`);
+    assert.ok(euler.nis > 10 && rk4.nis < 2.5, `mean NIS euler ${euler.nis}, rk4 ${rk4.nis}`);
+  }));
+
+test('presentation mode enlarges text and plots', () =>
+  withPage('v=1&preset=step', async (page) => {
+    const size = () => page.evaluate(() => [parseFloat(getComputedStyle(document.body).fontSize), document.querySelector('#plots canvas').clientHeight]);
+    const [font0, plot0] = await size();
+    await page.click('#present');
+    const [font1, plot1] = await size();
+    assert.ok(font1 > font0 && plot1 > plot0, `${font0}→${font1}, ${plot0}→${plot1}`);
+  }));

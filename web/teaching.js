@@ -1,0 +1,187 @@
+// Teaching content: the seven walkthrough sections and the lessons. Prose and equations only;
+// every number shown next to them comes from the core.
+const t = String.raw;
+
+// Each section: prose paragraphs, display equations (TeX), the plot of its live signals
+// ([column, label, 'y2' for the right axis]) and the scenario fields that are its design knobs.
+export const SECTIONS = [
+  {
+    id: 'model',
+    title: '1. The motor model (2)',
+    prose: [
+      'The state is the rotor speed ω = x1, the stator currents i_sa, i_sb = x2, x3 and the rotor fluxes φ_ra, φ_rb = x4, x5 in the stationary a–b frame. Only the currents are measured; the voltages u1, u2 are the inputs.',
+      'Torque is a1(x3·x4 − x2·x5): current crossed with flux. The load a2 + a3·x1 is the constant T0 and the friction Cf·ω over J. The lumped parameters below are computed by the core from the motor parameters in use; the plant (the simulated motor) and the model (what the EKF and controller assume) can differ.',
+    ],
+    equations: [
+      t`\dot x_1 = a_1(x_3x_4 - x_2x_5) - a_2 - a_3x_1`,
+      t`\dot x_2 = a_5x_4 + a_6x_1x_5 - a_7x_2 + b\,u_1,\quad \dot x_3 = a_5x_5 - a_6x_1x_4 - a_7x_3 + b\,u_2`,
+      t`\dot x_4 = -a_8x_4 - a_9x_1x_5 + a_{10}x_2,\quad \dot x_5 = -a_8x_5 + a_9x_1x_4 + a_{10}x_3`,
+      t`\sigma = L_s - \tfrac{M^2}{L_r},\ \alpha = \tfrac{R_r}{L_r},\ \beta = \tfrac{M}{\sigma L_r},\ a_1 = \tfrac{3n_pM}{2JL_r},\ a_5 = \alpha\beta,\ a_6 = n_p\beta,\ a_7 = \tfrac{R_s}{\sigma} + \alpha\beta M,\ a_8 = \alpha,\ a_9 = n_p,\ a_{10} = \alpha M,\ b = \tfrac1\sigma`,
+    ],
+    lumped: true,
+    plot: { title: 'Speed and flux', unit: 'rad/s', unit2: 'Wb', series: [['omega', 'ω (rad/s)'], ['flux', '|φ| (Wb, right)', 'y2']] },
+    knobs: ['plant.rr', 'model.rr', 'load.torque'],
+  },
+  {
+    id: 'ekf',
+    title: '2. The extended Kalman filter (10)–(20)',
+    prose: [
+      'The EKF estimates all five states from the measured currents and the applied voltages. It predicts with the model discretised by forward Euler (10), linearised by the Jacobian (11), and corrects with the innovation: the measured minus the predicted currents.',
+      'Q (process noise, q·Ts·I) says how much the model is trusted; R (measurement noise, r_std²·I) how much the sensors are. The gain K_k enters the controller as the observer gain L = K_k/Ts of the general form (4): the estimation errors x̃ are what the controller must tolerate.',
+      'A consistent filter has innovations inside their ±2σ band about 95 % of the time and a normalised innovation squared (NIS) averaging 2. The Euler predictor cannot follow 200 Hz currents: compare it with RK4 below.',
+    ],
+    equations: [
+      t`\hat x_{k|k-1} = \hat x_{k-1|k-1} + T_s f(\hat x_{k-1|k-1}, u_{k-1}),\qquad A_{k-1} = I + T_s \tfrac{\partial f}{\partial x}\Big|_{\hat x_{k-1|k-1}}`,
+      t`P_{k|k-1} = A_{k-1}P_{k-1|k-1}A_{k-1}^T + Q,\qquad \tilde y_k = y_k - C\hat x_{k|k-1},\qquad S_k = CP_{k|k-1}C^T + R`,
+      t`K_k = P_{k|k-1}C^TS_k^{-1},\qquad \hat x_{k|k} = \hat x_{k|k-1} + K_k\tilde y_k,\qquad L = K_k/T_s`,
+      t`P_{k|k} = (I - K_kC)P_{k|k-1}(I - K_kC)^T + K_kRK_k^T\quad\text{(Joseph form of (19))}`,
+    ],
+    plot: {
+      title: 'Innovation ỹ_a with its ±2σ band, and NIS', unit: 'A', unit2: 'NIS',
+      series: [['innov_a', 'ỹ_a (A)'], ['innov_band_a', '+2σ'], ['innov_band_a', '−2σ', null, -1], ['nis', 'NIS (right)', 'y2']],
+      nisBand: true,
+    },
+    plot2: {
+      title: 'Speed estimate and its variance', unit: 'rad/s', unit2: '(rad/s)²',
+      series: [['omega', 'ω true'], ['omega_hat', 'ω̂ estimated'], ['p_omega', 'P₁₁ (right)', 'y2']],
+    },
+    knobs: ['ekf', 'ekf.q', 'ekf.r_std'],
+    compare: true,
+  },
+  {
+    id: 'step1',
+    title: '3. Step 1: the speed loop',
+    prose: [
+      'Step 1 regulates the estimated speed: z1 = x̂1 − ω_d. Its virtual control is the torque term a1(x3·x̂4 − x2·x̂5), built from measured currents and estimated fluxes; v1 is the torque Step 1 asks for, and z2 is how far the actual torque term is from it.',
+      'The feedforward v1a cancels the modelled load, the reference acceleration and the observer injection si1 = l11·x̃2 + l12·x̃3 (a measured residual, hence known). The feedback v1s = −k1s1·z1 with k1 = a3 + k1s1 makes ż1 = −k1·z1 + z2.',
+    ],
+    equations: [
+      t`z_1 = \hat x_1 - \omega_d,\qquad z_2 = a_1(x_3\hat x_4 - x_2\hat x_5) - v_1`,
+      t`v_1 = v_{1a} + v_{1s},\quad v_{1a} = -s_{i1} + \dot\omega_d + a_3\omega_d + \hat a_2,\quad v_{1s} = -k_{1s1}z_1`,
+      t`\dot z_1 = -k_1z_1 + z_2,\qquad k_1 = a_3 + k_{1s1}`,
+      t`\dot v_1 = k_{1s1}k_1z_1 - k_{1s1}z_2 + (l_{11}a_7 + l_{11}l_{21} + l_{12}l_{31})\tilde x_2 + (l_{12}a_7 + l_{11}l_{22} + l_{12}l_{32})\tilde x_3 + \ddot\omega_d + a_3\dot\omega_d + \dot{\hat a}_2 + \ldots`,
+    ],
+    note: 'Printed (31) has a3·ω_d and â2 where a3·ω̇_d and dâ2/dt belong (corrected above); the “…” are the x̃1, x̃4, x̃5 terms, which go into d̃2.',
+    plot: {
+      title: 'Step 1: z1, v1 = v1a + v1s and the torque term', unit: 'rad/s²', unit2: 'rad/s',
+      series: [['v1', 'v1'], ['v1a', 'v1a feedforward'], ['v1s', 'v1s feedback'], ['torque_hat', 'a1(x3x̂4 − x2x̂5)'], ['z1', 'z1 (rad/s, right)', 'y2']],
+    },
+    knobs: ['k1'],
+  },
+  {
+    id: 'step2',
+    title: '4. Step 2: the torque loop',
+    prose: [
+      'Step 2 makes the torque term follow v1 by driving z2 to zero, and here the voltages appear for the first time: v2 = b·a1(x̂4·u2 − x̂5·u1).',
+      'ψ2 collects everything known: the flux and current dynamics, the observer injections si4, si5 and the derivative of v1. The estimation errors x̃1, x̃4, x̃5 enter only through d̃2, which is unknown and left out; the robust term v2s2 = −h2²z2/(4ε2) can dominate it if its bound h2 is known.',
+      'Differentiating z2 also gives −(a7 + a8)·z2, a damping the motor supplies itself; (32) as printed drops it, but it is why (36) says k2 = a7 + a8 + k2s1.',
+    ],
+    equations: [
+      t`\dot z_2 = v_2 + \psi_2 - (a_7 + a_8)z_2 + \tilde d_2,\qquad v_2 = b\,a_1(\hat x_4u_2 - \hat x_5u_1)`,
+      t`\psi_2 = -(a_7 + a_8)v_1 - a_1a_6\hat x_1(\hat x_4^2 + \hat x_5^2) - a_1a_9\hat x_1(\hat x_5x_3 + \hat x_4x_2) + a_1a_{10}(\hat x_2x_3 - \hat x_3x_2) + a_1(x_3s_{i4} - x_2s_{i5}) - \dot v_1`,
+      t`v_2 = v_{2a} + v_{2s},\quad v_{2a} = -\psi_2 - z_1,\quad v_{2s} = -k_{2s1}z_2 - \tfrac{h_2^2}{4\epsilon_2}z_2,\quad k_2 = a_7 + a_8 + k_{2s1}`,
+      t`\dot z_2 = -k_2z_2 - z_1 + v_{2s2} + \tilde d_2`,
+    ],
+    plot: {
+      title: 'Step 2: z2 and v2 = v2a + v2s', unit: 'rad/s³', unit2: 'rad/s²',
+      series: [['v2', 'v2'], ['v2a', 'v2a feedforward'], ['v2s', 'v2s feedback'], ['z2', 'z2 (rad/s², right)', 'y2']],
+    },
+    knobs: ['k2', 'robust', 'eps2', 'h2'],
+  },
+  {
+    id: 'step3',
+    title: '5. Step 3: the flux outer loop',
+    prose: [
+      'Step 3 regulates the estimated flux modulus squared: z3 = x̂4² + x̂5² − ψ_d. Its virtual control is 2a10(x2·x̂4 + x3·x̂5), the part of ż3 the stator currents drive.',
+      'ψ3 depends only on estimates and measured residuals, so Step 3 has no unknown term at all: with v3 = −ψ3 − k3·z3, ż3 = −k3·z3 + z4 holds exactly.',
+    ],
+    equations: [
+      t`z_3 = \hat x_4^2 + \hat x_5^2 - \psi_d,\qquad \dot z_3 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) + \psi_3`,
+      t`\psi_3 = -2a_8(\hat x_4^2 + \hat x_5^2) - 2a_{10}(\tilde x_2\hat x_4 + \tilde x_3\hat x_5) + 2\hat x_4s_{i4} + 2\hat x_5s_{i5} - \dot\psi_d`,
+      t`v_3 = v_{3a} + v_{3s},\quad v_{3a} = -\psi_3,\quad v_{3s} = -k_3z_3,\qquad z_4 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) - v_3`,
+      t`\dot z_3 = -k_3z_3 + z_4`,
+    ],
+    plot: {
+      title: 'Step 3: z3 and v3 = v3a + v3s', unit: 'Wb²/s', unit2: 'Wb²',
+      series: [['v3', 'v3'], ['v3a', 'v3a feedforward'], ['v3s', 'v3s feedback'], ['z3', 'z3 (Wb², right)', 'y2']],
+    },
+    knobs: ['k3', 'psi_d'],
+  },
+  {
+    id: 'step4',
+    title: '6. Step 4: the flux inner loop and the voltages',
+    prose: [
+      'Step 4 drives z4 to zero; its input v4 = 2a10·b(x̂4·u1 + x̂5·u2) is the second combination of the voltages. ψ4 is long but known: the current and flux dynamics of the observer, the nominal residual dynamics and k3(−k3z3 + z4) from differentiating v3. d̃4 again collects the unmeasurable estimation errors.',
+      'v2 and v4 together fix both voltages through the decoupling matrix (54), which is invertible while the estimated flux is not zero (55). The voltage limit then clips each component; when it does, the designed error dynamics no longer hold.',
+    ],
+    equations: [
+      t`\dot z_4 = v_4 + \psi_4 + \tilde d_4,\qquad v_4 = a_{41}bu_1 + a_{42}bu_2,\quad a_{41} = 2a_{10}\hat x_4,\ a_{42} = 2a_{10}\hat x_5`,
+      t`v_4 = v_{4a} + v_{4s},\quad v_{4a} = -\psi_4 - z_3,\quad v_{4s} = -k_4z_4 - \tfrac{h_4^2}{4\epsilon_4}z_4,\qquad \dot z_4 = -k_4z_4 - z_3 + v_{4s2} + \tilde d_4`,
+      t`\begin{bmatrix}u_1\\u_2\end{bmatrix} = \frac1b\begin{bmatrix}-a_1\hat x_5 & a_1\hat x_4\\ 2a_{10}\hat x_4 & 2a_{10}\hat x_5\end{bmatrix}^{-1}\begin{bmatrix}v_2\\v_4\end{bmatrix},\qquad \det = -2a_1a_{10}(\hat x_4^2 + \hat x_5^2) \ne 0`,
+    ],
+    note: 'Printed (48) has a21, a22 where a41, a42 belong (corrected above).',
+    plot: {
+      title: 'Step 4: z4, v4 and the voltage before and after the limit', unit: 'V', unit2: 'Wb²/s',
+      series: [['u_a_cmd', 'u_sa commanded (V)'], ['u_a', 'u_sa applied (V)'], ['z4', 'z4 (Wb²/s, right)', 'y2']],
+    },
+    knobs: ['k4', 'robust', 'eps4', 'h4', 'vmax'],
+  },
+  {
+    id: 'stability',
+    title: '7. Stability: Theorem 4.6',
+    prose: [
+      'With V = ½(z1² + z2² + z3² + z4²), the four designed error dynamics give V̇ = −k1z1² − k2z2² − k3z3² − k4z4² + z2(v2s2 + d̃2) + z4(v4s2 + d̃4). The cross terms ±z1z2 and ±z3z4 cancel: that is what the −z1 in v2a and the −z3 in v4a are for.',
+      'If the robust terms keep z2(v2s2 + d̃2) ≤ ε2 and z4(v4s2 + d̃4) ≤ ε4, then V̇ ≤ −λV + ε and V stays under the bound (59). The plot compares the recorded V with that bound for this run.',
+    ],
+    equations: [
+      t`V_s = \tfrac12(z_1^2 + z_2^2 + z_3^2 + z_4^2),\qquad \dot V_s \le -\lambda V_s + \epsilon,\qquad \lambda = 2\min(k_1,k_2,k_3,k_4),\ \epsilon = \epsilon_2 + \epsilon_4`,
+      t`V_s(t) \le e^{-\lambda t}V_s(0) + \frac{\epsilon}{\lambda}\left(1 - e^{-\lambda t}\right)\qquad (59)`,
+    ],
+    plot: {
+      title: 'V(t) against the bound (59), log scale', unit: 'V', log: true,
+      series: [['lyapunov', 'V(t)'], ['lyapunov_bound', 'bound (59)']],
+    },
+    knobs: ['robust', 'eps2', 'h2', 'eps4', 'h4'],
+    stability: true,
+  },
+];
+
+// Guided lessons: a preset, what to look for, and a question for the student.
+export const LESSONS = [
+  {
+    preset: 'step',
+    title: 'The paper’s step response',
+    text: 'A 0.5 rad/s step, filtered by a critically damped 200 Hz filter, starts at 50 ms. Zoom into 45–65 ms on the speed plot: the motor follows the filtered reference and settles within about 5 ms. Open the walkthrough: z1 and z2 are small, and the 400 V limit is never reached after the first milliseconds.',
+    question: 'The reference filter alone settles (to 2 %) in 4.6 ms. What does that leave for the controller and observer?',
+  },
+  {
+    preset: 'sine200-1rad',
+    title: 'Why 200 Hz tracking needs a small amplitude',
+    text: 'Doubling the 200 Hz sine to 1 rad/s doubles the torque, and so the current and voltage the drive needs at 200 Hz. Watch the voltage plot hit ±400 V: while it is clipped, the designed error dynamics do not hold, z2 and z4 grow, and the observer loses the motor.',
+    question: 'Which quantity sets the largest speed amplitude you can track at 200 Hz with 400 V, and how would you estimate it from the model?',
+  },
+  {
+    preset: 'sine200',
+    title: 'Observer bias: Euler against RK4',
+    text: 'Run this, then press “Compare Euler and RK4” in the EKF section of the walkthrough. With the paper’s Euler predictor the mean NIS is far above 2 and the flux estimate is biased by a few per cent; with RK4 the filter is consistent and the tracking error falls by more than half. The controller is the same in both runs.',
+    question: 'Why does a one-step Euler prediction hurt more at 200 Hz than at the step preset’s low speeds?',
+  },
+  {
+    preset: 'rr-mismatch',
+    title: 'Rotor-resistance mismatch',
+    text: 'The motor’s rotor resistance is 10 % above what the EKF and controller assume. The speed estimate settles at the reference, so the controller is content, but the true speed stays several rad/s below it: the observer converts the resistance error into a slip, hence a speed, error.',
+    question: 'Set plant.rr back to 4.95 Ω, then try +5 % at the step preset (near zero speed). Why is near-zero speed the hardest case for a sensorless observer?',
+  },
+  {
+    preset: 'load-step',
+    title: 'An unknown load step',
+    text: 'At 0.15 s a 2 N m load torque appears that neither the EKF nor the controller knows about. The speed estimate stays near 50 rad/s while the true speed falls: this EKF has no load-torque state, so the currents it sees are explained by a wrong speed and flux instead.',
+    question: 'The paper suggests augmenting the state with a2 = T0/J. What would the EKF then be able to estimate, and what must Q say about it?',
+  },
+  {
+    preset: 'high-gain',
+    title: 'Gains past what the observer supports',
+    text: 'All four gains are 3000/s, 2.5× the paper’s. The loop does not go unstable from sampling: with perfect=1 (Observer group) even 20 000/s works at 20 kHz. What breaks it is the estimation noise that the higher gains amplify into the voltages, which then saturate at 400 V almost all the time.',
+    question: 'Find the largest gain that keeps the voltages off the limit with the EKF. How does it change if you halve the current noise?',
+  },
+];

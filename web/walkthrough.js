@@ -1,0 +1,183 @@
+// The design walkthrough: for each of the seven sections its prose, its equations (KaTeX), its
+// live signals from the current run and its design knobs; plus the inspect panel and the lessons.
+// Every number shown here comes from the core (through the worker); the page only formats it.
+import katex from '../vendor/katex/katex.mjs';
+import { Plots } from './plots.js';
+import { LESSONS, SECTIONS } from './teaching.js';
+
+function el(tag, props = {}, children = []) {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+}
+
+/** A KaTeX-rendered equation (our own TeX, never text from the URL). */
+export function tex(source, displayMode = true) {
+  const span = el('span', { className: 'equation' });
+  katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
+  return span;
+}
+
+/** Plot definitions of every section, each drawn inside its section. */
+function plotDefs(sectionDivs) {
+  const defs = [];
+  for (const s of SECTIONS) {
+    for (const plot of [s.plot, s.plot2].filter(Boolean)) {
+      const constants = plot.nisBand ? [['NIS 2.5 %', 'y2'], ['NIS 97.5 %', 'y2']] : [];
+      defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id] });
+    }
+  }
+  return defs;
+}
+
+const LUMPED = ['a1', 'a2', 'a3', 'a5', 'a6', 'a7', 'a8', 'a9', 'a10', 'b'];
+
+// Terms of the inspect panel, grouped by step: [column, TeX label].
+const INSPECT = [
+  ['Step 1', [['z1', 'z_1'], ['v1', 'v_1'], ['v1a', 'v_{1a}'], ['v1s', 'v_{1s}'], ['torque_hat', 'a_1(x_3\\hat x_4 - x_2\\hat x_5)']]],
+  ['Step 2', [['z2', 'z_2'], ['v2', 'v_2'], ['v2a', 'v_{2a}'], ['v2s', 'v_{2s}'], ['psi2', '\\psi_2']]],
+  ['Step 3', [['z3', 'z_3'], ['v3', 'v_3'], ['v3a', 'v_{3a}'], ['v3s', 'v_{3s}'], ['psi3', '\\psi_3']]],
+  ['Step 4', [['z4', 'z_4'], ['v4', 'v_4'], ['v4a', 'v_{4a}'], ['v4s', 'v_{4s}'], ['psi4', '\\psi_4']]],
+  ['Voltage (54) and limit', [['u_a_cmd', 'u_1\\ \\text{before}'], ['u_b_cmd', 'u_2\\ \\text{before}'], ['u_a', 'u_1\\ \\text{applied}'], ['u_b', 'u_2\\ \\text{applied}'], ['lyapunov', 'V']]],
+  ['Estimate x̂ (k|k)', [['omega_hat', '\\hat x_1'], ['i_sa_hat', '\\hat x_2'], ['i_sb_hat', '\\hat x_3'], ['phi_ra_hat', '\\hat x_4'], ['phi_rb_hat', '\\hat x_5']]],
+  ['Measured and true', [['y_a', 'y_1'], ['y_b', 'y_2'], ['omega', 'x_1'], ['omega_ref', '\\omega_d']]],
+];
+
+/** Shortest text that reads back as the same double (as the CLI's CSV writes it). */
+const exact = (v) => String(v);
+
+export class Walkthrough {
+  /**
+   * `container` receives the sections, `lessonsBox` the lessons, `inspectBox` the inspect panel.
+   * `knob(key)` returns the settings control for a field; `onLesson(preset)` loads a lesson;
+   * `onCompare()` asks for the Euler/RK4 comparison.
+   */
+  constructor({ container, lessonsBox, inspectBox, knob, onLesson, onCompare, onWindow, onPick }) {
+    Object.assign(this, { container, inspectBox, knob });
+    this.sectionDivs = {};
+    this.nisBand = [0, 0];
+    for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
+    this.plots = new Plots(container, plotDefs(this.sectionDivs), {
+      onWindow, onPick, height: 220,
+      constants: (plot) => (plot.nisBand ? this.nisBand : []),
+    });
+    for (const lesson of LESSONS) {
+      const run = el('button', { type: 'button', textContent: `Run “${lesson.preset}”` });
+      run.dataset.lesson = lesson.preset;
+      run.addEventListener('click', () => onLesson(lesson.preset));
+      lessonsBox.append(el('article', { className: 'lesson' }, [
+        el('h3', { textContent: lesson.title }),
+        el('p', { textContent: lesson.text }),
+        el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
+        run,
+      ]));
+    }
+  }
+
+  section(s, onCompare) {
+    const div = el('section', { className: 'step', id: `section-${s.id}` });
+    div.append(el('h2', { textContent: s.title }));
+    for (const p of s.prose) div.append(el('p', { textContent: p }));
+    for (const e of s.equations) div.append(tex(e));
+    if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
+    if (s.lumped) div.append(el('div', { className: 'lumped' }));
+    if (s.stability) div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
+    if (s.compare) {
+      const button = el('button', { type: 'button', className: 'compare', textContent: 'Compare Euler and RK4 predictors on this scenario' });
+      button.addEventListener('click', onCompare);
+      div.append(button, el('div', { className: 'compare-result' }));
+    }
+    const knobs = el('div', { className: 'knobs' });
+    knobs.dataset.keys = s.knobs.join(' ');
+    div.append(el('h3', { textContent: 'Design knobs' }), knobs);
+    const plots = el('div', { className: 'section-plots' });
+    div.append(plots);
+    this.sectionDivs[s.id] = plots;
+    return div;
+  }
+
+  /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
+  describe(info) {
+    for (const box of this.container.querySelectorAll('.knobs')) {
+      box.replaceChildren(...box.dataset.keys.split(' ').map((key) => this.knob(key)).filter(Boolean));
+    }
+    const table = el('table', {}, [el('tr', {}, [el('th', { textContent: '' }), ...LUMPED.map((k) => el('th', { textContent: k }))])]);
+    for (const which of ['plant', 'model']) {
+      table.append(el('tr', {}, [el('th', { textContent: which }), ...LUMPED.map((k) => {
+        const cell = el('td', { textContent: info[which][k].toPrecision(5) });
+        if (info.plant[k] !== info.model[k]) cell.className = 'differs';
+        return cell;
+      })]));
+    }
+    this.container.querySelector('.lumped').replaceChildren(table);
+  }
+
+  /** Draws a finished run: its view, the stability report and the NIS band (all from the core). */
+  show(view, stability, nisBand) {
+    this.nisBand = nisBand;
+    this.plots.show(view);
+    const report = this.container.querySelector('.stability-report');
+    report.textContent = stabilityText(stability);
+  }
+
+  inspect(snap, t) {
+    const value = Object.fromEntries(snap.columns.map((c, i) => [c, snap.values[i]]));
+    const box = this.inspectBox;
+    const close = el('button', { type: 'button', className: 'close', textContent: 'Close' });
+    close.addEventListener('click', () => { box.hidden = true; });
+    box.replaceChildren(close, el('h3', { textContent: `Inspect sample k = ${snap.k}, t = ${exact(value.t)} s (clicked ${t.toPrecision(6)} s)` }));
+    const grid = el('div', { className: 'inspect-grid' });
+    for (const [title, terms] of INSPECT) {
+      const table = el('table', {}, [el('caption', { textContent: title })]);
+      for (const [col, label] of terms) {
+        const row = el('tr', {}, [el('th', {}, [tex(label, false)]), el('td', { textContent: exact(value[col]) })]);
+        row.dataset.column = col;
+        table.append(row);
+      }
+      grid.append(table);
+    }
+    const gain = el('table', {}, [el('caption', { textContent: 'Kalman gain K_k and L = K_k/Ts' })]);
+    snap.gain.forEach((row, i) => {
+      gain.append(el('tr', {}, [
+        el('th', {}, [tex(`K_{${i + 1}\\cdot}`, false)]),
+        ...row.map((v) => el('td', { textContent: v.toPrecision(6) })),
+        ...snap.l[i].map((v) => el('td', { textContent: v.toPrecision(6) })),
+      ]));
+    });
+    grid.append(gain);
+    box.append(grid);
+    box.hidden = false;
+  }
+
+  showComparison(results) {
+    const box = this.container.querySelector('.compare-result');
+    const rows = [['predictor', 'tracking RMS (rad/s)', 'speed-estimate RMS (rad/s)', 'flux-estimate RMS (Wb)', 'mean NIS', 'saturated']];
+    for (const r of results) {
+      const m = r.metrics;
+      rows.push([r.predictor, m.tracking_rms.toPrecision(3), m.speed_estimate_rms.toPrecision(3),
+        m.flux_estimate_rms.toPrecision(3), m.mean_nis.toPrecision(3), `${(m.saturated * 100).toFixed(1)} %`]);
+    }
+    const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c) => el(i ? 'td' : 'th', { textContent: c })))));
+    box.replaceChildren(
+      el('p', { textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on.` }),
+      table,
+    );
+  }
+}
+
+function stabilityText(st) {
+  if (!st) return 'Nothing was recorded.';
+  const b = st.bound;
+  const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
+  if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
+  const pct = (n) => `${((100 * n) / st.samples).toFixed(1)} %`;
+  let why;
+  if (st.outside_saturated > st.outside / 2) {
+    why = 'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.';
+  } else if (b.eps === 0) {
+    why = 'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold. With a perfect observer the 20 kHz loop meets it until V is tiny, then sits just above it by the sampling error.';
+  } else {
+    why = 'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.';
+  }
+  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples (${pct(st.outside)}), first at t = ${st.first_outside} s; ${st.outside_saturated} of them with the voltage saturated (${pct(st.saturated)} of all samples are saturated). ${why}`;
+}
