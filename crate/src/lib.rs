@@ -3,8 +3,10 @@
 //!
 //! Data flows one way: [`params`] → [`model`] (plant) → [`observer`] (EKF) → [`control`]
 //! (four backstepping steps) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
-//! setting and the query-string codec shared by the CLI, the browser and the tests.
+//! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
+//! runs many simulations (frequency responses, seed sweeps).
 
+pub mod analysis;
 pub mod control;
 pub mod model;
 pub mod observer;

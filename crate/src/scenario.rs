@@ -5,7 +5,7 @@
 //! preset, e.g. `v=1&preset=step&step.size=0.3&noise=0.004`. Numbers are written in Rust's
 //! shortest round-trip form, so decode(encode(s)) == s bit for bit.
 
-use crate::control::{Gains, Reference};
+use crate::control::{Gains, IfocTuning, Reference};
 use crate::observer::{EkfConfig, Predictor};
 use crate::params::{MotorParams, ParamError};
 use serde::{Deserialize, Serialize};
@@ -24,6 +24,16 @@ pub struct LoadStep {
     pub torque: f64,
 }
 
+/// Which controller drives the motor.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum ControllerKind {
+    /// The paper's four-step backstepping controller with the EKF.
+    Backstepping,
+    /// Classical baseline: sensorless IFOC with a Schauder MRAS speed estimate.
+    Ifoc,
+}
+
 /// Every setting of one simulation run.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Scenario {
@@ -37,8 +47,12 @@ pub struct Scenario {
     pub plant: MotorParams,
     /// Parameters the observer and controller assume.
     pub model: MotorParams,
-    /// Controller gains.
+    /// Which controller drives the motor.
+    pub controller: ControllerKind,
+    /// Backstepping gains.
     pub gains: Gains,
+    /// Tuning of the IFOC baseline.
+    pub ifoc: IfocTuning,
     /// EKF tuning.
     pub ekf: EkfConfig,
     /// Relative initial estimation error: x̂(0) = (1 − e)·x(0), P0 = diag((e·x(0))²) + Q.
@@ -79,6 +93,7 @@ pub const PRESETS: &[Preset] = &[
     Preset { name: "rr-mismatch", description: "Hold 50 rad/s with the motor's rotor resistance 10 % above the model's: a biased speed estimate" },
     Preset { name: "load-step", description: "Hold 50 rad/s; an unknown 2 N m load step at 0.15 s that the 5-state EKF cannot see" },
     Preset { name: "decay", description: "Perfect observer, no noise, ω_d ≡ 0: the errors decay at the designed 1200/s" },
+    Preset { name: "ifoc-step", description: "Classical baseline: sensorless IFOC with an MRAS, step to 40 rad/s (MRAS is blind near zero speed)" },
     Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): estimate noise through the gains saturates the 400 V limit" },
 ];
 
@@ -89,6 +104,13 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
         psi_d: 0.5,
         plant: MotorParams::PAPER,
         model: MotorParams::PAPER,
+        controller: ControllerKind::Backstepping,
+        ifoc: IfocTuning {
+            current_bw: 1000.0,
+            speed_bw: 10.0,
+            mras_bw: 50.0,
+            current_limit: 20.0,
+        },
         gains: Gains {
             k1: 1200.0,
             k2: 1200.0,
@@ -123,6 +145,7 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
 const SINE200: Reference = Reference::Sine {
     amp: 0.5,
     freq: 200.0,
+    offset: 0.0,
 };
 const STEP: Reference = Reference::Step {
     size: 0.5,
@@ -150,6 +173,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
             Reference::Sine {
                 amp: 1.0,
                 freq: 200.0,
+                offset: 0.0,
             },
             0.25,
         ),
@@ -175,6 +199,19 @@ pub fn preset(name: &str) -> Option<Scenario> {
             let mut s = paper_base(name, Reference::Constant { value: 0.0 }, 0.02);
             s.perfect = true;
             s.noise = 0.0;
+            s
+        }
+        "ifoc-step" => {
+            let mut s = paper_base(
+                name,
+                Reference::Step {
+                    size: 40.0,
+                    time: 0.05,
+                    wn: 2.0 * PI * 200.0,
+                },
+                0.6,
+            );
+            s.controller = ControllerKind::Ifoc;
             s
         }
         "high-gain" => {
@@ -634,6 +671,15 @@ pub fn fields() -> &'static [Field] {
                 Sine.freq
             ),
             ref_num!(
+                "sine.offset",
+                "rad/s",
+                -1000.0,
+                false,
+                1000.0,
+                "constant added to the sine",
+                Sine.offset
+            ),
+            ref_num!(
                 "step.size",
                 "rad/s",
                 -1000.0,
@@ -792,6 +838,74 @@ pub fn fields() -> &'static [Field] {
                 false,
                 "h4 of (53): bound on |d̃4|",
                 |s| s.gains.h4
+            ),
+            Field {
+                key: "controller",
+                group: "controller",
+                unit: "",
+                min: 0.0,
+                min_open: false,
+                max: 0.0,
+                integer: false,
+                doc: "backstepping (paper) or ifoc (classical sensorless FOC baseline)",
+                access: Access::Choice {
+                    options: &["backstepping", "ifoc"],
+                    get: |s| match s.controller {
+                        ControllerKind::Backstepping => "backstepping",
+                        ControllerKind::Ifoc => "ifoc",
+                    },
+                    set: |s, name| {
+                        s.controller = if name == "ifoc" {
+                            ControllerKind::Ifoc
+                        } else {
+                            ControllerKind::Backstepping
+                        }
+                    },
+                },
+            },
+            num!(
+                "ifoc.bw_i",
+                "controller",
+                "Hz",
+                0.0,
+                true,
+                5000.0,
+                false,
+                "IFOC current-loop bandwidth",
+                |s| s.ifoc.current_bw
+            ),
+            num!(
+                "ifoc.bw_w",
+                "controller",
+                "Hz",
+                0.0,
+                true,
+                1000.0,
+                false,
+                "IFOC speed-loop bandwidth",
+                |s| s.ifoc.speed_bw
+            ),
+            num!(
+                "ifoc.bw_mras",
+                "controller",
+                "Hz",
+                0.0,
+                true,
+                5000.0,
+                false,
+                "IFOC MRAS speed-estimator bandwidth",
+                |s| s.ifoc.mras_bw
+            ),
+            num!(
+                "ifoc.i_max",
+                "controller",
+                "A",
+                0.0,
+                true,
+                1000.0,
+                false,
+                "IFOC q-current limit",
+                |s| s.ifoc.current_limit
             ),
             Field {
                 key: "ekf",
@@ -1339,7 +1453,8 @@ mod tests {
             s.reference,
             Reference::Sine {
                 amp: 0.5,
-                freq: 50.0
+                freq: 50.0,
+                offset: 0.0,
             }
         );
         assert_eq!(s.encode(), "v=1&preset=step&ref=sine&sine.freq=50");

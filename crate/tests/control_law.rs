@@ -81,6 +81,7 @@ fn control_law_gives_the_designed_error_dynamics() {
             reference: Reference::Sine {
                 amp: sym(20.0),
                 freq: 200.0 + sym(150.0),
+                offset: 0.0,
             },
             l: std::array::from_fn(|_| [sym(2000.0), sym(2000.0)]),
             psi_d: 0.5 + sym(0.2),
@@ -179,6 +180,7 @@ fn step_terms_sum_to_the_applied_law() {
             speed_ref: Reference::Sine {
                 amp: 1.0,
                 freq: 50.0,
+                offset: 0.0,
             }
             .sample(sym(0.1).abs()),
             psi_d: 0.5,

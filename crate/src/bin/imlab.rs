@@ -1,5 +1,6 @@
 //! `imlab`: run IM Lab scenarios from the command line.
 
+use imlab::analysis::{log_grid, seed_run, summarise, sweep_point, SweepSettings};
 use imlab::scenario::{Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::io::{BufWriter, Write};
@@ -9,6 +10,11 @@ const USAGE: &str = "usage:
   imlab list                                   presets, one line each
   imlab describe SCENARIO                      every field of the effective scenario
   imlab run SCENARIO [--every N] [--out FILE]  CSV trace to stdout or FILE
+  imlab sweep SCENARIO [--freqs LO:HI:N | F1,F2,...] [--amp A] [--offset W] [--duration D]
+                                               closed-loop frequency response as CSV (default
+                                               10:1000:20 Hz, 0.05 rad/s about 0 rad/s, 0.2 s)
+  imlab seeds SCENARIO [--n N] [--first SEED]  per-seed figures as CSV (default 10 seeds
+                                               from the scenario's seed)
 
 SCENARIO is a preset name or a query string such as 'v=1&preset=step&step.size=0.3'.";
 
@@ -88,6 +94,159 @@ fn run(args: &[String]) -> Result<(), String> {
             // The trace up to the failure is written; the failure itself is an error.
             result.map_err(|e| format!("{e} (trace written up to the failure)"))
         }
+        Some("sweep") if args.len() >= 2 => sweep(
+            &args[1],
+            &options(&args[2..], &["--freqs", "--amp", "--offset", "--duration"])?,
+        ),
+        Some("seeds") if args.len() >= 2 => {
+            seeds(&args[1], &options(&args[2..], &["--n", "--first"])?)
+        }
         _ => Err(USAGE.to_string()),
     }
+}
+
+/// `--flag value` pairs, each flag one of `allowed`.
+fn options<'a>(args: &'a [String], allowed: &[&str]) -> Result<Vec<(&'a str, &'a str)>, String> {
+    let mut out = Vec::new();
+    let mut rest = args.iter();
+    while let Some(flag) = rest.next() {
+        if !allowed.contains(&flag.as_str()) {
+            return Err(format!("unknown option '{flag}'\n{USAGE}"));
+        }
+        let value = rest
+            .next()
+            .ok_or(format!("{flag} needs a value\n{USAGE}"))?;
+        out.push((flag.as_str(), value.as_str()));
+    }
+    Ok(out)
+}
+
+fn number<T: std::str::FromStr>(
+    flag: &str,
+    value: &str,
+    ok: impl Fn(&T) -> bool,
+    expected: &str,
+) -> Result<T, String> {
+    value
+        .parse()
+        .ok()
+        .filter(ok)
+        .ok_or(format!("{flag} '{value}': expected {expected}"))
+}
+
+fn frequencies(value: &str) -> Result<Vec<f64>, String> {
+    let bad =
+        || format!("--freqs '{value}': expected LO:HI:N (log spaced) or F1,F2,... in Hz, each > 0");
+    let freqs = if let [lo, hi, n] = value.split(':').collect::<Vec<_>>()[..] {
+        let (lo, hi): (f64, f64) = (
+            lo.parse().map_err(|_| bad())?,
+            hi.parse().map_err(|_| bad())?,
+        );
+        let n: usize = n.parse().map_err(|_| bad())?;
+        if !(lo > 0.0 && hi >= lo && (1..=200).contains(&n)) {
+            return Err(bad());
+        }
+        log_grid(lo, hi, n)
+    } else {
+        value
+            .split(',')
+            .map(|f| f.parse::<f64>().map_err(|_| bad()))
+            .collect::<Result<Vec<_>, _>>()?
+    };
+    if freqs.iter().any(|f| !(f.is_finite() && *f > 0.0)) {
+        return Err(bad());
+    }
+    Ok(freqs)
+}
+
+fn sweep(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
+    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
+    let mut settings = SweepSettings::default();
+    let mut freqs = log_grid(10.0, 1000.0, 20);
+    for &(flag, value) in opts {
+        match flag {
+            "--freqs" => freqs = frequencies(value)?,
+            "--amp" => {
+                settings.amp = number(
+                    flag,
+                    value,
+                    |a: &f64| *a > 0.0 && *a <= 1000.0,
+                    "0 < A ≤ 1000 rad/s",
+                )?
+            }
+            "--offset" => {
+                settings.offset =
+                    number(flag, value, |w: &f64| w.abs() <= 1000.0, "|W| ≤ 1000 rad/s")?
+            }
+            _ => {
+                settings.duration = number(
+                    flag,
+                    value,
+                    |d: &f64| *d > 0.0 && *d <= 20.0,
+                    "0 < D ≤ 20 s",
+                )?
+            }
+        }
+    }
+    println!("freq_hz,gain,phase_deg,gain_hat,phase_hat_deg,saturated,failure");
+    let mut points = Vec::new();
+    for (i, &f) in freqs.iter().enumerate() {
+        eprint!("\rimlab sweep: {}/{} ({f:.4} Hz)   ", i + 1, freqs.len());
+        let p = sweep_point(&s, f, &settings).map_err(|e| e.to_string())?;
+        println!(
+            "{},{},{},{},{},{},{}",
+            p.freq,
+            p.gain,
+            p.phase,
+            p.gain_hat,
+            p.phase_hat,
+            p.saturated,
+            p.failure.as_deref().unwrap_or("").replace(',', ";")
+        );
+        points.push(p);
+    }
+    eprintln!();
+    let summary = summarise(&points);
+    let show = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+    println!(
+        "# bandwidth_hz={} phase_at_200hz_deg={}",
+        show(summary.bandwidth),
+        show(summary.phase_at_200)
+    );
+    Ok(())
+}
+
+fn seeds(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
+    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
+    let (mut n, mut first) = (10u64, s.seed);
+    for &(flag, value) in opts {
+        match flag {
+            "--n" => {
+                n = number(
+                    flag,
+                    value,
+                    |n: &u64| (1..=10_000).contains(n),
+                    "a whole number from 1 to 10000",
+                )?
+            }
+            _ => first = number(flag, value, |_: &u64| true, "a whole number ≥ 0")?,
+        }
+    }
+    println!("seed,tracking_rms,estimate_rms,tracking_max,failure");
+    for (i, seed) in (first..first.saturating_add(n)).enumerate() {
+        eprint!("\rimlab seeds: {}/{n}   ", i + 1);
+        let r = seed_run(&s, seed, usize::MAX)
+            .map_err(|e| e.to_string())?
+            .result;
+        println!(
+            "{},{},{},{},{}",
+            r.seed,
+            r.tracking_rms,
+            r.estimate_rms,
+            r.tracking_max,
+            r.failure.as_deref().unwrap_or("").replace(',', ";")
+        );
+    }
+    eprintln!();
+    Ok(())
 }

@@ -2,9 +2,11 @@
 //! Lyapunov bound of Theorem 4.6.
 
 mod backstepping;
+mod ifoc;
 mod reference;
 mod stability;
 
 pub use backstepping::{Backstepping, ControlError, ControlInput, Gains, Terms};
+pub use ifoc::{Ifoc, IfocTuning};
 pub use reference::{RefSample, Reference};
 pub use stability::LyapunovBound;

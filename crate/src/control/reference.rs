@@ -12,12 +12,14 @@ pub enum Reference {
         /// Level (rad/s).
         value: f64,
     },
-    /// ω_d = amp·sin(2π·freq·t).
+    /// ω_d = offset + amp·sin(2π·freq·t).
     Sine {
         /// Amplitude (rad/s).
         amp: f64,
         /// Frequency (Hz).
         freq: f64,
+        /// Constant added to the sine (rad/s).
+        offset: f64,
     },
     /// A step of `size` at `time` through the critically damped filter ω_n²/(s + ω_n)².
     Step {
@@ -72,11 +74,11 @@ impl Reference {
                 d1: 0.0,
                 d2: 0.0,
             },
-            Reference::Sine { amp, freq } => {
+            Reference::Sine { amp, freq, offset } => {
                 let w = 2.0 * PI * freq;
                 let (s, c) = libm::sincos(w * t);
                 RefSample {
-                    value: amp * s,
+                    value: offset + amp * s,
                     d1: amp * w * c,
                     d2: -amp * w * w * s,
                 }
@@ -148,6 +150,7 @@ mod tests {
             Reference::Sine {
                 amp: 0.5,
                 freq: 200.0,
+                offset: 3.0,
             },
             &[0.0, 0.0013, 0.01],
         );

@@ -2,5 +2,7 @@
 //! the posterior estimate x̂, the gain L = K/Ts of eq (20) and the current residual.
 
 mod ekf;
+mod mras;
 
 pub use ekf::{nis_band, Ekf, EkfConfig, Predictor};
+pub use mras::Mras;

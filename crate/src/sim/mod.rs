@@ -7,12 +7,12 @@ mod recorder;
 
 pub use recorder::{Recorder, Row, COLUMNS, NUM_COLUMNS};
 
-use crate::control::{Backstepping, ControlError, ControlInput, LyapunovBound};
+use crate::control::{Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
 use crate::model::{self, Input, State};
 use crate::observer::Ekf;
 use crate::params::Lumped;
 use crate::rng::Rng;
-use crate::scenario::{Scenario, ScenarioError};
+use crate::scenario::{ControllerKind, Scenario, ScenarioError};
 use serde::Serialize;
 use std::fmt;
 
@@ -69,6 +69,8 @@ pub struct Simulation {
     scenario: Scenario,
     plant: Lumped,
     controller: Backstepping,
+    /// The IFOC baseline, when the scenario selects it.
+    ifoc: Option<Ifoc>,
     ekf: Ekf,
     rng: Rng,
     x: State,
@@ -158,10 +160,24 @@ impl Simulation {
             x0.map(|v| (1.0 - e) * v),
             x0.map(|v| e * v),
         );
+        // The baseline starts from the same 10 % initial error as the EKF.
+        let ifoc = (scenario.controller == ControllerKind::Ifoc).then(|| {
+            let start = x0.map(|v| (1.0 - e) * v);
+            Ifoc::new(
+                &scenario.model,
+                &scenario.ifoc,
+                scenario.ts,
+                scenario.psi_d,
+                start[0],
+                [start[3], start[4]],
+                [start[1], start[2]],
+            )
+        });
         Ok(Simulation {
             scenario: scenario.clone(),
             plant,
             controller: Backstepping::new(model, scenario.gains),
+            ifoc,
             ekf,
             rng: Rng::new(scenario.seed),
             x: x0,
@@ -237,22 +253,31 @@ impl Simulation {
                 psi_d: s.psi_d,
             }
         };
-        let terms = self
-            .controller
-            .control(&input)
-            .map_err(|error| SimError::Control { t, error })?;
+        let vmax = s.voltage_limit;
+        let backstepping = self.controller.control(&input);
+        let (terms, u_cmd, omega_used) = match &mut self.ifoc {
+            None => {
+                let terms = backstepping.map_err(|error| SimError::Control { t, error })?;
+                (terms, terms.u, input.x_hat[0])
+            }
+            // The baseline drives the motor; the backstepping terms are evaluated from the EKF
+            // for comparison only (zero where its decoupling matrix is singular).
+            Some(ifoc) => {
+                let u = ifoc.control(&y, &self.u, &speed_ref, vmax);
+                (backstepping.unwrap_or_default(), u, ifoc.speed_estimate())
+            }
+        };
         for (i, name) in ["commanded u_sa", "commanded u_sb"].into_iter().enumerate() {
-            if !terms.u[i].is_finite() {
+            if !u_cmd[i].is_finite() {
                 return Err(SimError::Diverged {
                     t,
                     signal: name,
-                    value: terms.u[i],
+                    value: u_cmd[i],
                 });
             }
         }
         // 5. Clip each component to the voltage limit.
-        let vmax = s.voltage_limit;
-        self.u = terms.u.map(|v| v.clamp(-vmax, vmax));
+        self.u = u_cmd.map(|v| v.clamp(-vmax, vmax));
 
         let x = &self.x;
         let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
@@ -304,8 +329,9 @@ impl Simulation {
             psi2: terms.psi2,
             psi3: terms.psi3,
             psi4: terms.psi4,
-            u_a_cmd: terms.u[0],
-            u_b_cmd: terms.u[1],
+            u_a_cmd: u_cmd[0],
+            u_b_cmd: u_cmd[1],
+            omega_used,
             lyapunov: terms.lyapunov,
             innov_a,
             innov_b,

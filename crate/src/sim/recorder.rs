@@ -117,6 +117,8 @@ define_row! {
     u_a_cmd,
     /// Commanded u_sb before saturation (V).
     u_b_cmd,
+    /// Speed estimate the controller used: x̂1 (EKF) for backstepping, the MRAS estimate for IFOC (rad/s).
+    omega_used,
     /// Lyapunov function V = ½ Σ z_i².
     lyapunov,
     /// Innovation ỹ_a (A).

@@ -1,0 +1,398 @@
+//! Analysis over many runs: closed-loop frequency response (sweeps of sinusoidal speed
+//! references) and seed sweeps. Each run is an ordinary `Simulation`, so the CLI, the browser's
+//! parallel workers and the tests share these functions.
+
+use crate::control::Reference;
+use crate::scenario::{Scenario, ScenarioError};
+use crate::sim::{Row, Simulation};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// How one frequency is measured.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SweepSettings {
+    /// Amplitude of the sinusoidal speed reference (rad/s).
+    pub amp: f64,
+    /// Length of each run (s); the fit uses the whole periods in its second half.
+    pub duration: f64,
+    /// Operating speed the sine rides on (rad/s).
+    pub offset: f64,
+}
+
+impl Default for SweepSettings {
+    fn default() -> Self {
+        // 0.05 rad/s keeps the voltages inside 400 V up to 1 kHz on the paper's motor.
+        SweepSettings {
+            amp: 0.05,
+            duration: 0.2,
+            offset: 0.0,
+        }
+    }
+}
+
+/// The measured response at one frequency.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SweepPoint {
+    /// Reference frequency (Hz).
+    pub freq: f64,
+    /// |ω| / |ω_d| of the fundamentals.
+    pub gain: f64,
+    /// Phase of ω relative to ω_d (degrees, in (−270, 90]).
+    pub phase: f64,
+    /// |ω̂| / |ω_d| (the speed estimate the controller used).
+    pub gain_hat: f64,
+    /// Phase of ω̂ relative to ω_d (degrees).
+    pub phase_hat: f64,
+    /// Fraction of samples whose commanded voltage exceeded the limit.
+    pub saturated: f64,
+    /// Why the run stopped early, if it did (the other figures are then NaN).
+    pub failure: Option<String>,
+}
+
+/// `count` frequencies from `lo` to `hi` (Hz), logarithmically spaced.
+pub fn log_grid(lo: f64, hi: f64, count: usize) -> Vec<f64> {
+    if count == 1 {
+        return vec![lo];
+    }
+    let (a, b) = (libm::log(lo), libm::log(hi));
+    (0..count)
+        .map(|i| libm::exp(a + (b - a) * i as f64 / (count - 1) as f64))
+        .collect()
+}
+
+/// Amplitude and phase (radians) of the component at `w` (rad/s) of a sampled signal, by least
+/// squares over whole periods: x ≈ a·sin(wt) + b·cos(wt).
+fn fundamental(rows: &[Row], w: f64, signal: impl Fn(&Row) -> f64) -> (f64, f64) {
+    let (mut ss, mut sc, mut cc, mut xs, mut xc) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    for r in rows {
+        let (s, c) = libm::sincos(w * r.t);
+        let x = signal(r);
+        ss += s * s;
+        sc += s * c;
+        cc += c * c;
+        xs += x * s;
+        xc += x * c;
+    }
+    let det = ss * cc - sc * sc;
+    let a = (xs * cc - xc * sc) / det;
+    let b = (xc * ss - xs * sc) / det;
+    ((a * a + b * b).sqrt(), libm::atan2(b, a))
+}
+
+/// Wraps a phase difference (radians) to degrees in (−270, 90]: small leads stay small, and lags
+/// up to 270° stay continuous.
+fn lag_degrees(phase: f64) -> f64 {
+    let mut d = phase * 180.0 / PI;
+    while d > 90.0 {
+        d -= 360.0;
+    }
+    while d <= -270.0 {
+        d += 360.0;
+    }
+    d
+}
+
+/// Runs `base` with the reference amp·sin(2π·freq·t) and fits the fundamentals of ω and ω̂.
+pub fn sweep_point(
+    base: &Scenario,
+    freq: f64,
+    settings: &SweepSettings,
+) -> Result<SweepPoint, ScenarioError> {
+    let mut s = base.clone();
+    s.reference = Reference::Sine {
+        amp: settings.amp,
+        freq,
+        offset: settings.offset,
+    };
+    s.duration = settings.duration;
+    s.validate()?;
+    let half = settings.duration / 2.0;
+    let periods = (half * freq).floor();
+    if periods < 1.0 {
+        return Err(ScenarioError::OutOfRange {
+            key: "freq".to_string(),
+            value: freq,
+            allowed: format!(
+                "at least one period in the fit window: freq ≥ {} Hz for a {} s run",
+                1.0 / half,
+                settings.duration
+            ),
+        });
+    }
+    let mut sim = Simulation::new(&s, 1)?;
+    let failure = sim.run().err().map(|e| e.to_string());
+    let rows = sim.recorder().rows();
+    let start = settings.duration - periods / freq;
+    let window: Vec<Row> = rows
+        .iter()
+        .filter(|r| r.t >= start - 0.5 * s.ts)
+        .copied()
+        .collect();
+    if failure.is_some() || window.is_empty() {
+        return Ok(SweepPoint {
+            freq,
+            gain: f64::NAN,
+            phase: f64::NAN,
+            gain_hat: f64::NAN,
+            phase_hat: f64::NAN,
+            saturated: f64::NAN,
+            failure: failure.or(Some("nothing recorded in the fit window".to_string())),
+        });
+    }
+    let w = 2.0 * PI * freq;
+    // The offset is constant and orthogonal to the fundamental over whole periods.
+    let (ref_amp, ref_phase) = fundamental(&window, w, |r| r.omega_ref);
+    let (amp, phase) = fundamental(&window, w, |r| r.omega);
+    let (amp_hat, phase_hat) = fundamental(&window, w, |r| r.omega_used);
+    let vmax = s.voltage_limit;
+    let saturated = rows
+        .iter()
+        .filter(|r| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax)
+        .count() as f64
+        / rows.len() as f64;
+    Ok(SweepPoint {
+        freq,
+        gain: amp / ref_amp,
+        phase: lag_degrees(phase - ref_phase),
+        gain_hat: amp_hat / ref_amp,
+        phase_hat: lag_degrees(phase_hat - ref_phase),
+        saturated,
+        failure: None,
+    })
+}
+
+/// Figures read off a measured frequency response.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct SweepSummary {
+    /// First frequency where the gain falls below 1/√2, interpolated in log frequency (Hz).
+    pub bandwidth: Option<f64>,
+    /// Phase of ω at 200 Hz, interpolated in log frequency (degrees).
+    pub phase_at_200: Option<f64>,
+}
+
+fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
+    let u = (target - y0) / (y1 - y0);
+    libm::exp(libm::log(f0) + u * (libm::log(f1) - libm::log(f0)))
+}
+
+/// The −3 dB bandwidth and the phase at 200 Hz of sweep points sorted by frequency.
+pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
+    let cutoff = std::f64::consts::FRAC_1_SQRT_2;
+    let mut bandwidth = None;
+    for pair in points.windows(2) {
+        let (p, q) = (&pair[0], &pair[1]);
+        if p.gain >= cutoff && q.gain < cutoff {
+            bandwidth = Some(interpolate_log(p.freq, q.freq, p.gain, q.gain, cutoff));
+            break;
+        }
+    }
+    let phase_at_200 = points
+        .windows(2)
+        .find(|w| w[0].freq <= 200.0 && w[1].freq >= 200.0)
+        .map(|w| {
+            let u = (libm::log(200.0) - libm::log(w[0].freq))
+                / (libm::log(w[1].freq) - libm::log(w[0].freq));
+            w[0].phase + u * (w[1].phase - w[0].phase)
+        });
+    SweepSummary {
+        bandwidth,
+        phase_at_200,
+    }
+}
+
+/// Figures of one seed's run.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SeedResult {
+    /// The noise seed.
+    pub seed: u64,
+    /// RMS of ω − ω_d over the run after its first fifth (rad/s).
+    pub tracking_rms: f64,
+    /// RMS of ω − ω̂ over the same window (rad/s).
+    pub estimate_rms: f64,
+    /// Largest |ω − ω_d| over the same window (rad/s).
+    pub tracking_max: f64,
+    /// Why the run stopped early, if it did.
+    pub failure: Option<String>,
+}
+
+/// One seed's run: its figures and its decimated error traces.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SeedRun {
+    /// Figures of the run.
+    pub result: SeedResult,
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// ω − ω_d at those times (rad/s).
+    pub error: Vec<f64>,
+    /// ω − ω̂ at those times (rad/s).
+    pub estimate: Vec<f64>,
+}
+
+/// Runs `base` with noise seed `seed`, keeping every `every`-th sample of the error traces.
+pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, ScenarioError> {
+    let mut s = base.clone();
+    s.seed = seed;
+    s.validate()?;
+    let mut sim = Simulation::new(&s, every)?;
+    let failure = sim.run().err().map(|e| e.to_string());
+    let rows = sim.recorder().rows();
+    let tail = &rows[rows.len() / 5..];
+    let n = tail.len().max(1) as f64;
+    Ok(SeedRun {
+        result: SeedResult {
+            seed,
+            tracking_rms: (tail.iter().map(|r| r.omega_err * r.omega_err).sum::<f64>() / n).sqrt(),
+            estimate_rms: (tail
+                .iter()
+                .map(|r| r.omega_est_err * r.omega_est_err)
+                .sum::<f64>()
+                / n)
+                .sqrt(),
+            tracking_max: tail.iter().fold(0.0, |m, r| m.max(r.omega_err.abs())),
+            failure,
+        },
+        t: rows.iter().map(|r| r.t).collect(),
+        error: rows.iter().map(|r| r.omega_err).collect(),
+        estimate: rows.iter().map(|r| r.omega_est_err).collect(),
+    })
+}
+
+/// Mean, minimum and maximum over runs at each sample.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Band {
+    /// Mean over the runs.
+    pub mean: Vec<f64>,
+    /// Minimum over the runs.
+    pub min: Vec<f64>,
+    /// Maximum over the runs.
+    pub max: Vec<f64>,
+}
+
+impl Band {
+    /// Statistics of `traces` (in the order given) over their common length.
+    pub fn of<'a>(traces: impl Iterator<Item = &'a [f64]> + Clone) -> Band {
+        let n = traces.clone().map(<[f64]>::len).min().unwrap_or(0);
+        let count = traces.clone().count() as f64;
+        let mut band = Band {
+            mean: vec![0.0; n],
+            min: vec![f64::INFINITY; n],
+            max: vec![f64::NEG_INFINITY; n],
+        };
+        for trace in traces {
+            for (i, &v) in trace.iter().take(n).enumerate() {
+                band.mean[i] += v;
+                band.min[i] = band.min[i].min(v);
+                band.max[i] = band.max[i].max(v);
+            }
+        }
+        band.mean.iter_mut().for_each(|m| *m /= count);
+        band
+    }
+}
+
+/// Seed-sweep statistics: the speed error and the estimation error over every completed run.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct SeedBands {
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// ω − ω_d over the seeds.
+    pub error: Band,
+    /// ω − ω̂ over the seeds.
+    pub estimate: Band,
+    /// Runs included (those that did not stop early).
+    pub runs: usize,
+}
+
+/// Statistics of completed seed runs; grouping the runs differently gives the same bits as long
+/// as they come in seed order.
+pub fn seed_bands(runs: &[SeedRun]) -> SeedBands {
+    let ok: Vec<&SeedRun> = runs.iter().filter(|r| r.result.failure.is_none()).collect();
+    let error = Band::of(ok.iter().map(|r| r.error.as_slice()));
+    SeedBands {
+        t: ok
+            .first()
+            .map(|r| r.t[..error.mean.len()].to_vec())
+            .unwrap_or_default(),
+        estimate: Band::of(ok.iter().map(|r| r.estimate.as_slice())),
+        error,
+        runs: ok.len(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::sim::Row;
+
+    #[test]
+    fn fundamental_recovers_a_known_sinusoid_over_whole_periods() {
+        let (w, ts) = (2.0 * PI * 37.0, 5e-5);
+        let rows: Vec<Row> = (0..(4.0 / 37.0 / ts) as usize)
+            .map(|k| {
+                let t = k as f64 * ts;
+                Row {
+                    t,
+                    omega: 3.0 + 0.7 * libm::sin(w * t + 0.4) + 0.1 * libm::sin(3.0 * w * t),
+                    ..Row::default()
+                }
+            })
+            .collect();
+        let (amp, phase) = fundamental(&rows, w, |r| r.omega);
+        assert!(
+            (amp - 0.7).abs() < 1e-3 && (phase - 0.4).abs() < 1e-3,
+            "{amp} {phase}"
+        );
+    }
+
+    fn point(freq: f64, gain: f64, phase: f64) -> SweepPoint {
+        SweepPoint {
+            freq,
+            gain,
+            phase,
+            gain_hat: gain,
+            phase_hat: phase,
+            saturated: 0.0,
+            failure: None,
+        }
+    }
+
+    #[test]
+    fn summary_interpolates_bandwidth_and_phase_in_log_frequency() {
+        let c = std::f64::consts::FRAC_1_SQRT_2;
+        // Gain crosses 1/√2 a quarter of the way (in the gain) from 100 to 400 Hz.
+        let pts = [point(100.0, c + 0.1, -30.0), point(400.0, c - 0.3, -90.0)];
+        let s = summarise(&pts);
+        let expected = libm::exp(libm::log(100.0) + 0.25 * (libm::log(400.0) - libm::log(100.0)));
+        assert!((s.bandwidth.unwrap() - expected).abs() < 1e-9);
+        assert!(
+            (s.phase_at_200.unwrap() + 60.0).abs() < 1e-9,
+            "halfway in log f"
+        );
+        assert_eq!(
+            summarise(&[point(10.0, 1.0, 0.0), point(20.0, 0.9, 0.0)]).bandwidth,
+            None
+        );
+    }
+
+    #[test]
+    fn band_statistics_do_not_depend_on_how_runs_are_produced() {
+        let base = crate::scenario::preset("step").unwrap();
+        let runs: Vec<SeedRun> = (5..9)
+            .map(|seed| seed_run(&base, seed, 50).unwrap())
+            .collect();
+        let again: Vec<SeedRun> = (5..9)
+            .rev()
+            .map(|seed| seed_run(&base, seed, 50).unwrap())
+            .rev()
+            .collect();
+        assert_eq!(seed_bands(&runs), seed_bands(&again));
+        let b = seed_bands(&runs);
+        assert_eq!(b.runs, 4);
+        assert!((0..b.t.len())
+            .all(|i| b.error.min[i] <= b.error.mean[i] && b.error.mean[i] <= b.error.max[i]));
+        assert!(
+            runs[0].result.tracking_rms != runs[1].result.tracking_rms,
+            "seeds change the noise"
+        );
+    }
+}
