@@ -1,7 +1,9 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 import { columnsOf, Plots, PLOTS } from './plots.js';
 import { composeScenario, fieldControl, fieldValue, forwardKnob, markInvalid, renderFields } from './controls.js';
-import { DEFAULT_SCENARIO, markRun, presetNamed, scenarioFromUrl, showScenario } from './url.js';
+import { DEFAULT_SCENARIO, fragment, markRun, presetNamed, scenarioFromUrl, setFragment, showScenario } from './url.js';
+import { Analysis, formatSweep, parseSweep } from './analysis.js';
+import uPlot from '../vendor/uPlot.esm.js';
 import { Walkthrough } from './walkthrough.js';
 
 const $ = (id) => document.getElementById(id);
@@ -16,6 +18,8 @@ const state = {
   info: null, // the core's description of the scenario in the form
   presets: [],
   nisBand: [0, 0],
+  pins: [], // pinned scenarios, in pin order
+  shared: { pins: fragment('pins'), sweep: fragment('sweep') }, // from the link that opened the page
   runId: 0,
   running: false,
   started: 0,
@@ -49,6 +53,7 @@ const walkthrough = new Walkthrough({
   onPick: (t) => requestInspect(t),
 });
 const COLUMNS = columnsOf([...PLOTS, ...walkthrough.plots.defs]);
+const analysis = new Analysis({ scenario: () => state.info.encoded });
 let worker = null;
 
 function say(text, kind = 'error') {
@@ -158,6 +163,37 @@ function requestWindow(t0, t1) {
   worker.postMessage({ type: 'view', id: state.runId, t0: full ? 0 : t0, t1: full ? Number.MAX_VALUE : t1, buckets: Math.round(plots.width()) });
 }
 
+function requestOverlay() {
+  if (!state.pins.length) {
+    $('overlay-plots').replaceChildren();
+    return;
+  }
+  if (state.running || !plots.full) return;
+  worker.postMessage({ type: 'overlay', id: state.runId, column: $('overlay-column').value, t0: 0, t1: Number.MAX_VALUE, buckets: Math.round(plots.width()) });
+}
+
+// Overlay of the current run and the pins, and their differences (all envelopes from the core).
+function drawOverlay(column, data) {
+  const n = state.pins.length;
+  const colors = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
+  const label = $('overlay-column').selectedOptions[0].textContent;
+  const chart = (title, names, series) => {
+    const div = Object.assign(document.createElement('div'), { className: 'plot' });
+    const opts = {
+      title, width: plots.width(), height: 220, scales: { x: { time: false } },
+      series: [{ label: 't (s)' }, ...names.map((name, i) => ({ label: name, stroke: colors[(i + (names[0] === 'current' ? 0 : 1)) % colors.length], width: 2 }))],
+      axes: [{ label: 't (s)' }, { size: 80 }],
+    };
+    new uPlot(opts, [data[0], ...series], div);
+    return div;
+  };
+  const pinNames = state.pins.map((_, i) => `pin ${i + 1}`);
+  $('overlay-plots').replaceChildren(
+    chart(`${label}: current run and pinned runs`, ['current', ...pinNames], data.slice(1, 2 + n)),
+    chart(`${label}: current − pin`, pinNames.map((p) => `current − ${p}`), data.slice(2 + n)),
+  );
+}
+
 function requestInspect(t) {
   if (!state.running && plots.full) worker.postMessage({ type: 'inspect', id: state.runId, t });
 }
@@ -230,6 +266,23 @@ const handlers = {
       ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
       document.body.dataset.state = 'done';
     }
+    // Pins from a shared link are re-run once; afterwards each run refreshes the comparison.
+    if (state.shared.pins) {
+      worker.postMessage({ type: 'pin', scenarios: state.shared.pins.split('|').map(decodeURIComponent) });
+    } else if (state.pins.length) {
+      worker.postMessage({ type: 'pin', scenarios: [] });
+    }
+    // A shared link with a sweep in its fragment runs that sweep once, after the first run.
+    const shared = state.shared.sweep;
+    state.shared = {};
+    if (shared) {
+      const settings = parseSweep(shared);
+      if (settings) {
+        fillSweepForm(settings);
+        showTab('analysis');
+        runSweep();
+      } else say(`The sweep in the address (#sweep=${shared}) is malformed: expected lo,hi,n,amp,offset,duration,variants (e.g. euler.rk4).`);
+    }
   },
   cancelled({ id }) {
     if (id !== state.runId) return;
@@ -247,6 +300,22 @@ const handlers = {
   },
   compared({ id, results }) {
     if (id === state.runId) walkthrough.showComparison(results);
+  },
+  pins({ scenarios, legends, error }) {
+    state.pins = scenarios;
+    if (error) say(error);
+    setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
+    $('pins').replaceChildren(...scenarios.map((s, i) => {
+      const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
+      unpin.addEventListener('click', () => worker.postMessage({ type: 'unpin', index: i }));
+      const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
+      li.append(unpin);
+      return li;
+    }));
+    requestOverlay();
+  },
+  overlay({ id, column, data }) {
+    if (id === state.runId) drawOverlay(column, data);
   },
   csv({ id, text }) {
     if (id === state.runId) download(new Blob([text], { type: 'text/csv' }), `${fileStem()}.csv`);
@@ -282,6 +351,90 @@ window.addEventListener('resize', () => {
   plots.resize();
   walkthrough.plots.resize();
 });
+
+const sweepForm = $('sweep-form');
+
+function readSweepForm() {
+  const f = sweepForm.elements;
+  const num = (name) => Number(f.namedItem(name).value);
+  return {
+    lo: num('lo'), hi: num('hi'), n: num('n'), amp: num('amp'), offset: num('offset'), duration: num('duration'),
+    variants: [...sweepForm.querySelectorAll('[name=variant]:checked')].map((c) => c.value),
+    workers: num('workers'),
+  };
+}
+
+function fillSweepForm(s) {
+  for (const key of ['lo', 'hi', 'n', 'amp', 'offset', 'duration']) sweepForm.elements.namedItem(key).value = s[key];
+  for (const c of sweepForm.querySelectorAll('[name=variant]')) c.checked = s.variants.includes(c.value);
+}
+
+async function runSweep() {
+  const settings = readSweepForm();
+  const status = $('sweep-status');
+  if (!settings.variants.length) {
+    status.textContent = 'Choose at least one variant.';
+    return;
+  }
+  if (!(Number.isInteger(settings.workers) && settings.workers >= 1 && settings.workers <= 8)) {
+    status.textContent = `workers = ${sweepForm.elements.namedItem('workers').value}: expected a whole number from 1 to 8.`;
+    return;
+  }
+  setFragment('sweep', formatSweep(settings));
+  $('sweep-run').disabled = true;
+  $('sweep-cancel').disabled = false;
+  const started = performance.now();
+  status.textContent = 'Sweeping…';
+  try {
+    const out = await analysis.sweep(settings, {
+      workers: settings.workers,
+      onProgress: (p) => { $('sweep-progress').value = p; },
+    });
+    analysis.showSweep(out, $('bode'), $('sweep-table'));
+    const ms = performance.now() - started;
+    status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} workers.`;
+    Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
+    $('sweep-csv').disabled = false;
+  } catch (e) {
+    status.textContent = e.message === 'cancelled' ? 'Sweep cancelled.' : `Sweep failed: ${e.message}`;
+    document.body.dataset.sweep = e.message === 'cancelled' ? 'cancelled' : 'failed';
+  } finally {
+    $('sweep-run').disabled = false;
+    $('sweep-cancel').disabled = true;
+  }
+}
+
+async function runSeeds() {
+  const n = Number($('seeds-form').elements.namedItem('n').value);
+  const status = $('seeds-status');
+  if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
+    status.textContent = `seeds = ${$('seeds-form').elements.namedItem('n').value}: expected a whole number from 1 to 1000.`;
+    return;
+  }
+  status.textContent = 'Running seeds…';
+  try {
+    const first = Number(fieldValue(state.info, 'seed'));
+    const out = await analysis.seeds(n, first, state.info.steps, (p) => { status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`; });
+    analysis.showSeeds(out, $('seeds-plots'));
+    state.seedsCsv = out.csv;
+    $('seeds-csv').disabled = false;
+    status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
+    document.body.dataset.seeds = 'done';
+  } catch (e) {
+    status.textContent = `Seed sweep failed: ${e.message}`;
+  }
+}
+
+$('pin').addEventListener('click', () => worker.postMessage({ type: 'pin', scenarios: [state.info.encoded] }));
+$('overlay-column').addEventListener('change', requestOverlay);
+$('sweep-run').addEventListener('click', runSweep);
+$('sweep-cancel').addEventListener('click', () => analysis.pool.cancel());
+$('sweep-csv').addEventListener('click', async () => {
+  const first = Object.keys(analysis.points)[0];
+  download(new Blob([await analysis.sweepCsv(first)], { type: 'text/csv' }), `imlab-sweep-${first}.csv`);
+});
+$('seeds-run').addEventListener('click', runSeeds);
+$('seeds-csv').addEventListener('click', () => download(new Blob([state.seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'));
 
 setBusy(false);
 startWorker();

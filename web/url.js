@@ -16,8 +16,25 @@ export function presetNamed(text) {
   return match ? match[1] : null;
 }
 
+// The fragment (#sweep=...) holds the analysis settings and stays across scenario edits.
 function urlFor(scenario) {
-  return `${location.pathname}?${scenario}`;
+  return `${location.pathname}?${scenario}${location.hash}`;
+}
+
+function fragmentEntries() {
+  return location.hash.slice(1).split('&').filter(Boolean).map((p) => p.split('=', 2));
+}
+
+/** The value of `key` in the URL fragment (`#key=value&...`), or null. Values are kept as written. */
+export function fragment(key) {
+  return fragmentEntries().find(([k]) => k === key)?.[1] ?? null;
+}
+
+/** Sets (or, with null, removes) `key` in the URL fragment without a new history entry. */
+export function setFragment(key, value) {
+  const entries = fragmentEntries().filter(([k]) => k !== key);
+  if (value !== null) entries.push([key, value]);
+  history.replaceState(history.state, '', `${location.pathname}${location.search}#${entries.map((e) => e.join('=')).join('&')}`);
 }
 
 /** Puts `scenario` in the address bar as an edit of the current entry. */

@@ -11,14 +11,24 @@
 //   {type: 'csv', id}                          → {type: 'csv', id, text}
 //   {type: 'inspect', id, t}                   → {type: 'inspected', id, t, snapshot} | {type: 'invalid', id, message}
 //   {type: 'compare', id, columns, buckets}    → {type: 'compared', id, results: [{predictor, metrics}]}
+//   {type: 'pin', scenarios}                   → {type: 'pins', scenarios, legends} (runs and pins each)
+//   {type: 'unpin', index}                     → {type: 'pins', scenarios, legends}
+//   {type: 'overlay', id, column, t0, t1, buckets} → {type: 'overlay', id, column, data: [t, current, pins..., diffs...]}
+//   {type: 'job', job, kind, ...}              → {type: 'job', job, result} | {type: 'job', job, error}
+//     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
+//     'grid' {lo, hi, n}, 'bands' {runs}, 'summary' {points}, 'sweep-csv' {points}, 'seeds-csv' {results}
+//     (stateless, so any worker of a pool can take any job)
 // A view is {t0, t1, columns: {name: Float64Array}}; its buffers are transferred, not copied.
 // The column 'lyapunov_bound' is the bound (59) evaluated by the core at the view's times.
-import init, { describe, inspect, nis_band, presets, Simulation, variant } from '../pkg/imlab.js';
+import init, {
+  Comparison, describe, inspect, log_grid, nis_band, presets, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+} from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
 // compiled in the background is picked up at the next chunk
 
 let current = null; // {id, sim, columns, cancelled}
+let comparison = null; // pinned runs, created with the module
 
 const BOUND = 'lyapunov_bound';
 
@@ -122,7 +132,27 @@ function warmUp() {
   sim.free();
 }
 
+/** `scenario` with the field changes `[[key, value], ...]` applied by the core. */
+function withChanges(scenario, changes) {
+  return changes.reduce((s, [key, value]) => variant(s, key, value), scenario);
+}
+
+const JOBS = {
+  grid: (d) => [...log_grid(d.lo, d.hi, d.n)],
+  sweep: (d) => sweep_point(withChanges(d.scenario, d.changes), d.freq, d.amp, d.duration, d.offset),
+  seed: (d) => seed_run(d.scenario, d.seed, d.every),
+  bands: (d) => seed_bands(d.runs),
+  summary: (d) => sweep_summary(d.points),
+  'sweep-csv': (d) => sweep_csv(d.points),
+  'seeds-csv': (d) => seeds_csv(d.results),
+};
+
+function pinsMessage() {
+  return { type: 'pins', scenarios: comparison.scenarios(), legends: current ? comparison.legends(current.sim) : [] };
+}
+
 const ready = init().then(() => {
+  comparison = new Comparison();
   warmUp();
   self.postMessage({ type: 'ready', presets: presets(), nisBand: nis_band() });
 });
@@ -160,6 +190,35 @@ self.onmessage = async ({ data }) => {
       break;
     case 'compare':
       if (current && current.id === data.id) compare(data);
+      break;
+    case 'pin':
+      try {
+        for (const s of data.scenarios) comparison.pin(s);
+        post(pinsMessage());
+      } catch (e) {
+        post({ ...pinsMessage(), error: String(e) });
+      }
+      break;
+    case 'unpin':
+      comparison.unpin(data.index);
+      post(pinsMessage());
+      break;
+    case 'overlay':
+      if (current && current.id === data.id) {
+        try {
+          const data2 = [...comparison.overlay(current.sim, data.column, data.t0, data.t1, data.buckets)];
+          self.postMessage({ type: 'overlay', id: data.id, column: data.column, data: data2 }, data2.map((a) => a.buffer));
+        } catch (e) {
+          post({ type: 'invalid', id: data.id, message: String(e) });
+        }
+      }
+      break;
+    case 'job':
+      try {
+        post({ type: 'job', job: data.job, result: JOBS[data.kind](data) });
+      } catch (e) {
+        post({ type: 'job', job: data.job, error: String(e) });
+      }
       break;
     case 'csv':
       if (current && current.id === data.id) post({ type: 'csv', id: data.id, text: current.sim.csv() });

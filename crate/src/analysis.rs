@@ -5,7 +5,7 @@
 use crate::control::Reference;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::sim::{Row, Simulation};
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// How one frequency is measured.
@@ -21,9 +21,9 @@ pub struct SweepSettings {
 
 impl Default for SweepSettings {
     fn default() -> Self {
-        // 0.05 rad/s keeps the voltages inside 400 V up to 1 kHz on the paper's motor.
+        // 0.02 rad/s keeps the voltages inside 400 V up to 1 kHz on the paper's motor.
         SweepSettings {
-            amp: 0.05,
+            amp: 0.02,
             duration: 0.2,
             offset: 0.0,
         }
@@ -31,7 +31,7 @@ impl Default for SweepSettings {
 }
 
 /// The measured response at one frequency.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SweepPoint {
     /// Reference frequency (Hz).
     pub freq: f64,
@@ -47,6 +47,16 @@ pub struct SweepPoint {
     pub saturated: f64,
     /// Why the run stopped early, if it did (the other figures are then NaN).
     pub failure: Option<String>,
+}
+
+/// `count` log-spaced frequencies from `lo` to `hi` (Hz), after checking the request.
+pub fn checked_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, String> {
+    if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo && (1..=200).contains(&count)) {
+        return Err(format!(
+            "frequency grid {lo}:{hi}:{count}: expected 0 < lo ≤ hi (Hz) and 1 to 200 points"
+        ));
+    }
+    Ok(log_grid(lo, hi, count))
 }
 
 /// `count` frequencies from `lo` to `hi` (Hz), logarithmically spaced.
@@ -105,7 +115,15 @@ pub fn sweep_point(
         offset: settings.offset,
     };
     s.duration = settings.duration;
+    // The sine's fields carry the codec's ranges, so a bad frequency or offset is named.
     s.validate()?;
+    if settings.amp <= 0.0 {
+        return Err(ScenarioError::OutOfRange {
+            key: "sine.amp".to_string(),
+            value: settings.amp,
+            allowed: "0 < sine.amp for a sweep".to_string(),
+        });
+    }
     let half = settings.duration / 2.0;
     let periods = (half * freq).floor();
     if periods < 1.0 {
@@ -161,6 +179,39 @@ pub fn sweep_point(
     })
 }
 
+/// The sweep as CSV: one line per frequency, then a `#` line with the summary.
+pub fn sweep_csv(points: &[SweepPoint]) -> String {
+    let mut out = String::from("freq_hz,gain,phase_deg,gain_hat,phase_hat_deg,saturated,failure\n");
+    for p in points {
+        let failure = p.failure.as_deref().unwrap_or("").replace(',', ";");
+        out += &format!(
+            "{},{},{},{},{},{},{failure}\n",
+            p.freq, p.gain, p.phase, p.gain_hat, p.phase_hat, p.saturated
+        );
+    }
+    let s = summarise(points);
+    let show = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+    out += &format!(
+        "# bandwidth_hz={} phase_at_200hz_deg={}\n",
+        show(s.bandwidth),
+        show(s.phase_at_200)
+    );
+    out
+}
+
+/// Per-seed figures as CSV.
+pub fn seeds_csv(results: &[SeedResult]) -> String {
+    let mut out = String::from("seed,tracking_rms,estimate_rms,tracking_max,failure\n");
+    for r in results {
+        let failure = r.failure.as_deref().unwrap_or("").replace(',', ";");
+        out += &format!(
+            "{},{},{},{},{failure}\n",
+            r.seed, r.tracking_rms, r.estimate_rms, r.tracking_max
+        );
+    }
+    out
+}
+
 /// Figures read off a measured frequency response.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SweepSummary {
@@ -201,7 +252,7 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
 }
 
 /// Figures of one seed's run.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SeedResult {
     /// The noise seed.
     pub seed: u64,
@@ -216,7 +267,7 @@ pub struct SeedResult {
 }
 
 /// One seed's run: its figures and its decimated error traces.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SeedRun {
     /// Figures of the run.
     pub result: SeedResult,
@@ -228,12 +279,13 @@ pub struct SeedRun {
     pub estimate: Vec<f64>,
 }
 
-/// Runs `base` with noise seed `seed`, keeping every `every`-th sample of the error traces.
+/// Runs `base` with noise seed `seed`; the figures use every sample, the traces keep every
+/// `every`-th one.
 pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, ScenarioError> {
     let mut s = base.clone();
     s.seed = seed;
     s.validate()?;
-    let mut sim = Simulation::new(&s, every)?;
+    let mut sim = Simulation::new(&s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
     let rows = sim.recorder().rows();
     let tail = &rows[rows.len() / 5..];
@@ -251,9 +303,17 @@ pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, Sce
             tracking_max: tail.iter().fold(0.0, |m, r| m.max(r.omega_err.abs())),
             failure,
         },
-        t: rows.iter().map(|r| r.t).collect(),
-        error: rows.iter().map(|r| r.omega_err).collect(),
-        estimate: rows.iter().map(|r| r.omega_est_err).collect(),
+        t: rows.iter().step_by(every.max(1)).map(|r| r.t).collect(),
+        error: rows
+            .iter()
+            .step_by(every.max(1))
+            .map(|r| r.omega_err)
+            .collect(),
+        estimate: rows
+            .iter()
+            .step_by(every.max(1))
+            .map(|r| r.omega_est_err)
+            .collect(),
     })
 }
 

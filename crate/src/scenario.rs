@@ -1315,6 +1315,32 @@ impl Scenario {
         }
     }
 
+    /// The fields whose values differ from `other`, as "key: other's value → this value (unit)".
+    pub fn differences(&self, other: &Scenario) -> Vec<String> {
+        let mut out = Vec::new();
+        if self.preset != other.preset {
+            out.push(format!("preset: {} → {}", other.preset, self.preset));
+        }
+        for f in fields() {
+            let (mine, theirs) = (f.get(self), f.get(other));
+            if mine != theirs {
+                let show = |v: Option<String>| v.unwrap_or_else(|| "–".to_string());
+                let unit = if f.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" {}", f.unit)
+                };
+                out.push(format!(
+                    "{}: {} → {}{unit}",
+                    f.key,
+                    show(theirs),
+                    show(mine)
+                ));
+            }
+        }
+        out
+    }
+
     /// Every field with its value, for `describe` and the UI.
     pub fn describe(&self) -> Vec<FieldInfo> {
         fields().iter().map(|f| f.info(self)).collect()
@@ -1444,6 +1470,17 @@ mod tests {
                 assert!(!e.to_string().is_empty());
             }
         }
+    }
+
+    #[test]
+    fn differences_name_each_changed_field() {
+        let a = Scenario::parse("v=1&preset=step").unwrap();
+        let b = Scenario::parse("v=1&preset=step&k1=1500&noise=0").unwrap();
+        assert_eq!(
+            b.differences(&a),
+            vec!["k1: 1200 → 1500 1/s", "noise: 0.002 → 0 A"]
+        );
+        assert!(a.differences(&a).is_empty());
     }
 
     #[test]

@@ -1,5 +1,6 @@
 //! JavaScript bindings: type conversion and error mapping only; no physics lives here.
 
+use crate::analysis;
 use crate::params::Lumped;
 use crate::scenario::{Scenario, PRESETS};
 use crate::sim::{self, COLUMNS};
@@ -200,4 +201,161 @@ pub fn nis_band() -> Vec<f64> {
 #[wasm_bindgen]
 pub fn columns() -> Vec<String> {
     COLUMNS.iter().map(|c| c.to_string()).collect()
+}
+
+/// The closed-loop response of `scenario` at `freq` (Hz): `{freq, gain, phase, gain_hat, ...}`.
+#[wasm_bindgen]
+pub fn sweep_point(
+    scenario: &str,
+    freq: f64,
+    amp: f64,
+    duration: f64,
+    offset: f64,
+) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let settings = analysis::SweepSettings {
+        amp,
+        duration,
+        offset,
+    };
+    to_js(&analysis::sweep_point(&s, freq, &settings).map_err(js_error)?)
+}
+
+/// `count` log-spaced frequencies from `lo` to `hi` (Hz); throws for a bad grid.
+#[wasm_bindgen]
+pub fn log_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, JsValue> {
+    analysis::checked_grid(lo, hi, count).map_err(js_error)
+}
+
+fn from_js<T: serde::de::DeserializeOwned>(value: JsValue) -> Result<T, JsValue> {
+    serde_wasm_bindgen::from_value(value).map_err(js_error)
+}
+
+/// `{bandwidth, phase_at_200}` of sweep points sorted by frequency.
+#[wasm_bindgen]
+pub fn sweep_summary(points: JsValue) -> Result<JsValue, JsValue> {
+    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+    to_js(&analysis::summarise(&points))
+}
+
+/// Sweep points as the CSV `imlab sweep` prints.
+#[wasm_bindgen]
+pub fn sweep_csv(points: JsValue) -> Result<String, JsValue> {
+    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+    Ok(analysis::sweep_csv(&points))
+}
+
+/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces.
+#[wasm_bindgen]
+pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    if !(0.0..=9_007_199_254_740_991.0).contains(&seed) || seed.fract() != 0.0 {
+        return Err(js_error(format!(
+            "seed {seed}: expected a whole number from 0 to 2^53 − 1"
+        )));
+    }
+    let seed = seed as u64;
+    to_js(&analysis::seed_run(&s, seed, every).map_err(js_error)?)
+}
+
+/// Mean and min–max bands over seed runs (in seed order).
+#[wasm_bindgen]
+pub fn seed_bands(runs: JsValue) -> Result<JsValue, JsValue> {
+    let runs: Vec<analysis::SeedRun> = from_js(runs)?;
+    to_js(&analysis::seed_bands(&runs))
+}
+
+/// Per-seed figures as the CSV `imlab seeds` prints.
+#[wasm_bindgen]
+pub fn seeds_csv(results: JsValue) -> Result<String, JsValue> {
+    let results: Vec<analysis::SeedResult> = from_js(results)?;
+    Ok(analysis::seeds_csv(&results))
+}
+
+/// Pinned runs to compare with the current one (at most four).
+#[wasm_bindgen]
+#[derive(Default)]
+pub struct Comparison {
+    pins: Vec<sim::Simulation>,
+}
+
+/// Most pinned runs at once.
+const MAX_PINS: usize = 4;
+
+#[wasm_bindgen]
+impl Comparison {
+    /// An empty set of pins.
+    #[wasm_bindgen(constructor)]
+    pub fn new() -> Comparison {
+        Comparison::default()
+    }
+
+    /// Runs `scenario` to the end (or its failure) and pins it.
+    pub fn pin(&mut self, scenario: &str) -> Result<(), JsValue> {
+        if self.pins.len() >= MAX_PINS {
+            return Err(js_error(format!(
+                "at most {MAX_PINS} runs can be pinned; unpin one first"
+            )));
+        }
+        let s = Scenario::parse(scenario).map_err(js_error)?;
+        let mut sim = sim::Simulation::new(&s, 1).map_err(js_error)?;
+        // A run that stops early stays pinned with the samples before its failure.
+        let _ = sim.run();
+        self.pins.push(sim);
+        Ok(())
+    }
+
+    /// Removes pin `index`.
+    pub fn unpin(&mut self, index: usize) {
+        if index < self.pins.len() {
+            self.pins.remove(index);
+        }
+    }
+
+    /// The pinned scenarios, in pin order.
+    pub fn scenarios(&self) -> Vec<String> {
+        self.pins.iter().map(|p| p.scenario().encode()).collect()
+    }
+
+    /// For each pin, what differs between it and `current` ("key: pin → current").
+    pub fn legends(&self, current: &Simulation) -> Vec<String> {
+        let now = current.inner.scenario();
+        self.pins
+            .iter()
+            .map(|p| {
+                let d = now.differences(p.scenario());
+                if d.is_empty() {
+                    "same scenario".to_string()
+                } else {
+                    d.join("; ")
+                }
+            })
+            .collect()
+    }
+
+    /// Column `name` of `current` and of each pin, then current − pin for each, as min/max
+    /// envelopes over t in [t0, t1]: an array of `Float64Array`s [t, current, pins..., diffs...].
+    pub fn overlay(
+        &self,
+        current: &Simulation,
+        name: &str,
+        t0: f64,
+        t1: f64,
+        buckets: u32,
+    ) -> Result<Array, JsValue> {
+        let ts = current.inner.scenario().ts;
+        if let Some(p) = self.pins.iter().find(|p| p.scenario().ts != ts) {
+            return Err(js_error(format!("pinned run {} samples at Ts = {} s, the current one at {ts} s: overlays need the same Ts", p.scenario().encode(), p.scenario().ts)));
+        }
+        let others: Vec<&crate::sim::Recorder> = self.pins.iter().map(|p| p.recorder()).collect();
+        let cols = current
+            .inner
+            .recorder()
+            .overlay(&others, name, t0, t1, buckets as usize)
+            .ok_or_else(|| js_error(format!("no column '{name}'")))?;
+        Ok(cols
+            .iter()
+            .map(|c| Float64Array::from(c.as_slice()))
+            .collect())
+    }
 }

@@ -1,6 +1,8 @@
 //! `imlab`: run IM Lab scenarios from the command line.
 
-use imlab::analysis::{log_grid, seed_run, summarise, sweep_point, SweepSettings};
+use imlab::analysis::{
+    checked_grid, log_grid, seed_run, seeds_csv, sweep_csv, sweep_point, SweepSettings,
+};
 use imlab::scenario::{Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::io::{BufWriter, Write};
@@ -12,7 +14,7 @@ const USAGE: &str = "usage:
   imlab run SCENARIO [--every N] [--out FILE]  CSV trace to stdout or FILE
   imlab sweep SCENARIO [--freqs LO:HI:N | F1,F2,...] [--amp A] [--offset W] [--duration D]
                                                closed-loop frequency response as CSV (default
-                                               10:1000:20 Hz, 0.05 rad/s about 0 rad/s, 0.2 s)
+                                               10:1000:20 Hz, 0.02 rad/s about 0 rad/s, 0.2 s)
   imlab seeds SCENARIO [--n N] [--first SEED]  per-seed figures as CSV (default 10 seeds
                                                from the scenario's seed)
 
@@ -137,22 +139,16 @@ fn number<T: std::str::FromStr>(
 fn frequencies(value: &str) -> Result<Vec<f64>, String> {
     let bad =
         || format!("--freqs '{value}': expected LO:HI:N (log spaced) or F1,F2,... in Hz, each > 0");
-    let freqs = if let [lo, hi, n] = value.split(':').collect::<Vec<_>>()[..] {
-        let (lo, hi): (f64, f64) = (
-            lo.parse().map_err(|_| bad())?,
-            hi.parse().map_err(|_| bad())?,
-        );
+    if let [lo, hi, n] = value.split(':').collect::<Vec<_>>()[..] {
+        let lo: f64 = lo.parse().map_err(|_| bad())?;
+        let hi: f64 = hi.parse().map_err(|_| bad())?;
         let n: usize = n.parse().map_err(|_| bad())?;
-        if !(lo > 0.0 && hi >= lo && (1..=200).contains(&n)) {
-            return Err(bad());
-        }
-        log_grid(lo, hi, n)
-    } else {
-        value
-            .split(',')
-            .map(|f| f.parse::<f64>().map_err(|_| bad()))
-            .collect::<Result<Vec<_>, _>>()?
-    };
+        return checked_grid(lo, hi, n).map_err(|e| format!("--freqs: {e}"));
+    }
+    let freqs = value
+        .split(',')
+        .map(|f| f.parse::<f64>().map_err(|_| bad()))
+        .collect::<Result<Vec<_>, _>>()?;
     if freqs.iter().any(|f| !(f.is_finite() && *f > 0.0)) {
         return Err(bad());
     }
@@ -188,31 +184,13 @@ fn sweep(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
             }
         }
     }
-    println!("freq_hz,gain,phase_deg,gain_hat,phase_hat_deg,saturated,failure");
     let mut points = Vec::new();
     for (i, &f) in freqs.iter().enumerate() {
         eprint!("\rimlab sweep: {}/{} ({f:.4} Hz)   ", i + 1, freqs.len());
-        let p = sweep_point(&s, f, &settings).map_err(|e| e.to_string())?;
-        println!(
-            "{},{},{},{},{},{},{}",
-            p.freq,
-            p.gain,
-            p.phase,
-            p.gain_hat,
-            p.phase_hat,
-            p.saturated,
-            p.failure.as_deref().unwrap_or("").replace(',', ";")
-        );
-        points.push(p);
+        points.push(sweep_point(&s, f, &settings).map_err(|e| e.to_string())?);
     }
     eprintln!();
-    let summary = summarise(&points);
-    let show = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
-    println!(
-        "# bandwidth_hz={} phase_at_200hz_deg={}",
-        show(summary.bandwidth),
-        show(summary.phase_at_200)
-    );
+    print!("{}", sweep_csv(&points));
     Ok(())
 }
 
@@ -232,21 +210,16 @@ fn seeds(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
             _ => first = number(flag, value, |_: &u64| true, "a whole number ≥ 0")?,
         }
     }
-    println!("seed,tracking_rms,estimate_rms,tracking_max,failure");
+    let mut results = Vec::new();
     for (i, seed) in (first..first.saturating_add(n)).enumerate() {
         eprint!("\rimlab seeds: {}/{n}   ", i + 1);
-        let r = seed_run(&s, seed, usize::MAX)
-            .map_err(|e| e.to_string())?
-            .result;
-        println!(
-            "{},{},{},{},{}",
-            r.seed,
-            r.tracking_rms,
-            r.estimate_rms,
-            r.tracking_max,
-            r.failure.as_deref().unwrap_or("").replace(',', ";")
+        results.push(
+            seed_run(&s, seed, usize::MAX)
+                .map_err(|e| e.to_string())?
+                .result,
         );
     }
     eprintln!();
+    print!("{}", seeds_csv(&results));
     Ok(())
 }

@@ -284,6 +284,80 @@ impl Recorder {
     }
 }
 
+/// Min/max envelopes of `series` (functions of the row index) over rows `start..start + n`, as
+/// [t, series...] with two points per bucket, like [`Recorder::envelope`].
+fn bucketed(
+    t: impl Fn(usize) -> f64,
+    series: &[&dyn Fn(usize) -> f64],
+    start: usize,
+    n: usize,
+    buckets: usize,
+) -> Vec<Vec<f64>> {
+    let buckets = buckets.max(1);
+    let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); series.len() + 1];
+    if n <= 2 * buckets {
+        for i in start..start + n {
+            out[0].push(t(i));
+            for (o, f) in out[1..].iter_mut().zip(series) {
+                o.push(f(i));
+            }
+        }
+        return out;
+    }
+    for b in 0..buckets {
+        let (lo, hi) = (start + b * n / buckets, start + (b + 1) * n / buckets);
+        out[0].push(t(lo));
+        out[0].push(t(hi - 1));
+        for (o, f) in out[1..].iter_mut().zip(series) {
+            let (mn, mx) = (lo..hi)
+                .map(f)
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
+                    (a.min(v), b.max(v))
+                });
+            o.push(mn);
+            o.push(mx);
+        }
+    }
+    out
+}
+
+impl Recorder {
+    /// Overlay of column `name` of this run and of `others` (recorded at the same sampling period),
+    /// with the differences this − other, over their common rows with t in [t0, t1]. Returns
+    /// [t, this, others..., differences...] as min/max envelopes.
+    pub fn overlay(
+        &self,
+        others: &[&Recorder],
+        name: &str,
+        t0: f64,
+        t1: f64,
+        buckets: usize,
+    ) -> Option<Vec<Vec<f64>>> {
+        let c = Self::index(name)?;
+        let rows = others.iter().map(|o| o.len()).fold(self.len(), usize::min);
+        let common = &self.rows[..rows];
+        let start = common.partition_point(|r| r.t < t0);
+        let end = common.partition_point(|r| r.t <= t1).max(start);
+        let value = |rec: &Recorder, i: usize| rec.rows[i].values()[c];
+        let mut series: Vec<Box<dyn Fn(usize) -> f64 + '_>> =
+            vec![Box::new(move |i| value(self, i))];
+        for &o in others {
+            series.push(Box::new(move |i| value(o, i)));
+        }
+        for &o in others {
+            series.push(Box::new(move |i| value(self, i) - value(o, i)));
+        }
+        let refs: Vec<&dyn Fn(usize) -> f64> = series.iter().map(|f| f.as_ref()).collect();
+        Some(bucketed(
+            |i| self.rows[i].t,
+            &refs,
+            start,
+            end - start,
+            buckets,
+        ))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -299,6 +373,32 @@ mod tests {
             r.record(|| row);
         }
         r
+    }
+
+    #[test]
+    fn overlay_differences_are_exact_sample_by_sample() {
+        let a = ramp_recorder(1000);
+        let mut b = Recorder::with_capacity(800, 1);
+        for k in 0..800 {
+            b.record(|| Row {
+                t: k as f64,
+                omega: 2.0 * k as f64,
+                ..Row::default()
+            });
+        }
+        // Few enough rows for no bucketing: the difference is a − b exactly, over the common 800 rows.
+        let o = a.overlay(&[&b], "omega", 0.0, 1e9, 1000).unwrap();
+        assert_eq!(o.len(), 4);
+        assert_eq!(o[0].len(), 800);
+        assert!((0..800).all(|k| o[3][k] == o[1][k] - o[2][k] && o[2][k] == 2.0 * k as f64));
+        // Bucketed: the envelope of the difference brackets every sample's difference.
+        let e = a.overlay(&[&b], "omega", 0.0, 1e9, 10).unwrap();
+        assert_eq!(e[0].len(), 20);
+        let a_omega = a.column("omega").unwrap();
+        let true_min = (0..800)
+            .map(|k| a_omega[k] - 2.0 * k as f64)
+            .fold(f64::INFINITY, f64::min);
+        assert_eq!(e[3].iter().cloned().fold(f64::INFINITY, f64::min), true_min);
     }
 
     #[test]

@@ -1,0 +1,173 @@
+// Analysis tab: frequency-response sweeps and seed sweeps run as independent jobs on a pool of
+// workers (one per core); every figure is computed by the core in those workers.
+import uPlot from '../vendor/uPlot.esm.js';
+
+const el = (tag, props = {}, children = []) => {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+};
+
+/** Workers running stateless jobs; results come back in job order. */
+export class Pool {
+  constructor(size) {
+    this.size = size;
+    this.workers = [];
+    this.generation = 0;
+  }
+
+  async start() {
+    while (this.workers.length < this.size) {
+      const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+      await new Promise((resolve) => {
+        w.onmessage = ({ data }) => data.type === 'ready' && resolve();
+      });
+      this.workers.push(w);
+    }
+  }
+
+  /** Runs `jobs` (messages without `type`/`job`); `onDone(count)` reports progress. */
+  async run(jobs, onDone = () => {}) {
+    await this.start();
+    const generation = ++this.generation;
+    const results = new Array(jobs.length);
+    let next = 0;
+    let done = 0;
+    const work = (w) => new Promise((resolve, reject) => {
+      const take = () => {
+        if (this.generation !== generation) return reject(new Error('cancelled'));
+        if (next >= jobs.length) return resolve();
+        const job = next++;
+        w.onmessage = ({ data }) => {
+          if (data.type !== 'job' || data.job !== job) return;
+          if (data.error) return reject(new Error(data.error));
+          results[job] = data.result;
+          onDone(++done);
+          take();
+        };
+        w.postMessage({ type: 'job', job, ...jobs[job] });
+      };
+      take();
+    });
+    await Promise.all(this.workers.map(work));
+    return results;
+  }
+
+  cancel() {
+    this.generation++;
+  }
+}
+
+// Variants offered for the sweep: the field changes that make each from the current scenario.
+export const VARIANTS = {
+  euler: { label: 'Backstepping + Euler EKF (paper)', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'euler']] },
+  rk4: { label: 'Backstepping + RK4 EKF', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'rk4']] },
+  perfect: { label: 'Backstepping + perfect observer', changes: [['controller', 'backstepping'], ['perfect', '1']] },
+  ifoc: { label: 'Classical IFOC + MRAS', changes: [['controller', 'ifoc'], ['perfect', '0']] },
+};
+const COLORS = { euler: '#d62728', rk4: '#1f77b4', perfect: '#2ca02c', ifoc: '#9467bd' };
+
+/** Sweep settings as written in the URL fragment: `sweep=lo,hi,n,amp,offset,duration,v1.v2`. */
+export function parseSweep(text) {
+  const parts = text.split(',');
+  if (parts.length !== 7) return null;
+  const [lo, hi, n, amp, offset, duration] = parts.slice(0, 6).map(Number);
+  const variants = parts[6].split('.').filter((v) => v in VARIANTS);
+  if (![lo, hi, n, amp, offset, duration].every(Number.isFinite) || !variants.length) return null;
+  return { lo, hi, n, amp, offset, duration, variants };
+}
+
+export function formatSweep(s) {
+  return [s.lo, s.hi, s.n, s.amp, s.offset, s.duration, s.variants.join('.')].join(',');
+}
+
+function bodePlot(title, unit, freqs, series, log) {
+  const opts = {
+    title, width: 700, height: 260,
+    scales: { x: { time: false, distr: 3, log: 10 }, y: log ? { distr: 3, log: 10 } : {} },
+    series: [{ label: 'f (Hz)' }, ...series.map(([label, color]) => ({ label, stroke: color, width: 2, points: { show: true } }))],
+    axes: [{ label: 'f (Hz)' }, { label: unit, size: 70 }],
+  };
+  return [opts, [freqs, ...series.map((s) => s[2])]];
+}
+
+export class Analysis {
+  constructor({ scenario }) {
+    this.scenario = scenario;
+    this.pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
+    this.points = {};
+  }
+
+  /** Runs a sweep of the current scenario; resolves with {variant: {points, summary}}. */
+  async sweep(settings, { onProgress = () => {}, workers } = {}) {
+    if (workers) this.pool.size = workers;
+    const [freqs] = await this.pool.run([{ kind: 'grid', lo: settings.lo, hi: settings.hi, n: settings.n }]);
+    const jobs = settings.variants.flatMap((v) => freqs.map((freq) => ({
+      kind: 'sweep', scenario: this.scenario(), changes: VARIANTS[v].changes,
+      freq, amp: settings.amp, duration: settings.duration, offset: settings.offset,
+    })));
+    const results = await this.pool.run(jobs, (done) => onProgress(done / jobs.length));
+    const out = {};
+    for (const [i, v] of settings.variants.entries()) {
+      const points = results.slice(i * freqs.length, (i + 1) * freqs.length);
+      const [summary] = await this.pool.run([{ kind: 'summary', points }]);
+      out[v] = { points, summary };
+    }
+    this.points = out;
+    return out;
+  }
+
+  async sweepCsv(variant) {
+    const [csv] = await this.pool.run([{ kind: 'sweep-csv', points: this.points[variant].points }]);
+    return csv;
+  }
+
+  showSweep(out, bodeBox, table) {
+    const variants = Object.keys(out);
+    const freqs = out[variants[0]].points.map((p) => p.freq);
+    // Failed points are gaps (null), never drawn.
+    const column = (v, key) => out[v].points.map((p) => (p.failure ? null : p[key]));
+    bodeBox.replaceChildren();
+    for (const [title, unit, key, log] of [['Magnitude |ω/ω_d|', '|G|', 'gain', true], ['Phase of ω against ω_d', 'degrees', 'phase', false]]) {
+      const [opts, data] = bodePlot(title, unit, freqs, variants.map((v) => [VARIANTS[v].label, COLORS[v], column(v, key)]), log);
+      const div = el('div', { className: 'plot' });
+      bodeBox.append(div);
+      new uPlot(opts, data, div);
+    }
+    const fmt = (x, unit) => (x == null ? 'not reached in the grid' : `${x.toPrecision(4)} ${unit}`);
+    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points'].map((h) => el('th', { textContent: h }))));
+    for (const v of variants) {
+      const { points, summary } = out[v];
+      const worst = Math.max(...points.map((p) => (p.failure ? 0 : p.saturated)));
+      const row = el('tr', {}, [VARIANTS[v].label, fmt(summary.bandwidth, 'Hz'), fmt(summary.phase_at_200, '°'),
+        `${(worst * 100).toFixed(1)} % of samples`, String(points.filter((p) => p.failure).length)].map((c) => el('td', { textContent: c })));
+      row.dataset.variant = v;
+      table.append(row);
+    }
+  }
+
+  /** Runs `n` seeds from the scenario's seed; resolves with {results, bands}. */
+  async seeds(n, first, steps, onProgress = () => {}) {
+    const every = Math.max(1, Math.floor(steps / 1000));
+    const jobs = Array.from({ length: n }, (_, i) => ({ kind: 'seed', scenario: this.scenario(), seed: first + i, every }));
+    const runs = await this.pool.run(jobs, (done) => onProgress(done / n));
+    const [bands] = await this.pool.run([{ kind: 'bands', runs }]);
+    const [csv] = await this.pool.run([{ kind: 'seeds-csv', results: runs.map((r) => r.result) }]);
+    return { results: runs.map((r) => r.result), bands, csv };
+  }
+
+  showSeeds({ bands }, box) {
+    box.replaceChildren();
+    for (const [title, b] of [['Speed error ω − ω_d over seeds (mean, min, max)', bands.error], ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate]]) {
+      const opts = {
+        title, width: 700, height: 240, scales: { x: { time: false } },
+        series: [{ label: 't (s)' }, { label: 'mean', stroke: '#1f77b4', width: 2 }, { label: 'min', stroke: '#aaa' }, { label: 'max', stroke: '#aaa' }],
+        bands: [{ series: [3, 2], fill: 'rgba(31,119,180,0.15)' }],
+        axes: [{ label: 't (s)' }, { label: 'rad/s', size: 70 }],
+      };
+      const div = el('div', { className: 'plot' });
+      box.append(div);
+      new uPlot(opts, [bands.t, b.mean, b.min, b.max], div);
+    }
+  }
+}
