@@ -83,7 +83,7 @@ test('each lesson loads its preset and runs', () =>
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
     const lessons = await page.$$eval('[data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
-    assert.equal(lessons.length, 6);
+    assert.equal(lessons.length, 7);
     for (const preset of lessons) {
       await page.click('[data-tab=lessons]');
       await page.click(`[data-lesson="${preset}"]`);

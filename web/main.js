@@ -54,6 +54,7 @@ const walkthrough = new Walkthrough({
 });
 const COLUMNS = columnsOf([...PLOTS, ...walkthrough.plots.defs]);
 const analysis = new Analysis({ scenario: () => state.info.encoded });
+$('sweep-form').elements.namedItem('workers').value = analysis.pool.size;
 let worker = null;
 
 function say(text, kind = 'error') {
@@ -216,6 +217,7 @@ function showTab(name) {
   }
   // Plots drawn while hidden have no width; size them now that they are visible.
   plots.resize();
+  if (name === 'walkthrough') walkthrough.draw();
   walkthrough.plots.resize();
 }
 
@@ -293,7 +295,7 @@ const handlers = {
   view({ id, view }) {
     if (id !== state.runId) return;
     plots.refine(view);
-    walkthrough.plots.refine(view);
+    walkthrough.refine(view);
   },
   inspected({ id, t, snapshot }) {
     if (id === state.runId) walkthrough.inspect(snapshot, t);
@@ -392,7 +394,7 @@ async function runSweep() {
     });
     analysis.showSweep(out, $('bode'), $('sweep-table'));
     const ms = performance.now() - started;
-    status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} workers.`;
+    status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} worker${settings.workers > 1 ? 's' : ''}.`;
     Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
     $('sweep-csv').disabled = false;
   } catch (e) {

@@ -179,6 +179,12 @@ export const LESSONS = [
     question: 'The paper suggests augmenting the state with a2 = T0/J. What would the EKF then be able to estimate, and what must Q say about it?',
   },
   {
+    preset: 'ifoc-step',
+    title: 'The classical baseline: sensorless field-oriented control',
+    text: 'This run uses indirect field-oriented control with a Schauder MRAS speed estimate, tuned by textbook rules: current loops by internal-model control (Kp = α_c·σ, Ki = α_c·R′ with R′ = R_s + (M/L_r)²R_r, α_c = 2π·1 kHz, 1/20 of the sampling rate), the MRAS with both poles at −2π·50 Hz, and the speed loop at a fifth of that (Kp = α_ω·J/K_t, Ki = Kp·α_ω/4, α_ω = 2π·10 Hz). It settles to 40 rad/s in about 0.3 s, while the backstepping design follows the same filtered step in milliseconds. Near zero speed the MRAS sees no flux rotation and cannot estimate the speed at all.',
+    question: 'In the Analysis tab, sweep both controllers around 40 rad/s (offset 40, run length 3 s, 2–100 Hz). What limits the IFOC bandwidth: its speed loop, its MRAS or its current loops?',
+  },
+  {
     preset: 'high-gain',
     title: 'Gains past what the observer supports',
     text: 'All four gains are 3000/s, 2.5× the paper’s. The loop does not go unstable from sampling: with perfect=1 (Observer group) even 20 000/s works at 20 kHz. What breaks it is the estimation noise that the higher gains amplify into the voltages, which then saturate at 400 V almost all the time.',

@@ -112,12 +112,26 @@ export class Walkthrough {
     this.container.querySelector('.lumped').replaceChildren(table);
   }
 
-  /** Draws a finished run: its view, the stability report and the NIS band (all from the core). */
+  /** Takes a finished run: its view, the stability report and the NIS band (all from the core).
+   * The plots are drawn when the walkthrough is visible, so a run on another tab does not wait for them. */
   show(view, stability, nisBand) {
     this.nisBand = nisBand;
-    this.plots.show(view);
+    this.pending = view;
+    if (this.container.offsetParent !== null) this.draw();
     const report = this.container.querySelector('.stability-report');
     report.textContent = stabilityText(stability);
+  }
+
+  /** Draws the last run's plots if they are not drawn yet. */
+  draw() {
+    if (!this.pending) return;
+    this.plots.show(this.pending);
+    this.pending = null;
+  }
+
+  /** Replaces the data inside a zoom window (only once the plots exist). */
+  refine(view) {
+    if (!this.pending) this.plots.refine(view);
   }
 
   inspect(snap, t) {

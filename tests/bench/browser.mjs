@@ -29,6 +29,15 @@ for (let i = 0; i < 3; i++) runs.push(await runAgain(page));
 runs.sort((a, b) => rate(b) - rate(a));
 describeRate('closed loop in the browser, best of 3 further runs', runs[0]);
 
+await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
+await settled(page);
+await page.waitForFunction(() => document.body.dataset.sweep === 'done', null, { timeout: 60_000 });
+const sweepFirst = await page.evaluate(() => Number(document.body.dataset.sweepMs));
+await page.click('#sweep-run');
+await page.waitForFunction((ms) => document.body.dataset.sweep === 'done' && Number(document.body.dataset.sweepMs) !== ms, sweepFirst, { timeout: 60_000 });
+const sweepAgain = await page.evaluate(() => Number(document.body.dataset.sweepMs));
+console.log(`20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`);
+
 const wasm = statSync(new URL('../../dist/pkg/imlab_bg.wasm', import.meta.url)).size;
 console.log(`WASM binary: ${(wasm / 1024).toFixed(1)} KiB (${wasm} bytes, uncompressed)`);
 if (errors.length) console.log('console errors:', errors);

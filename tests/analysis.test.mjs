@@ -1,0 +1,111 @@
+// Browser tests of the analysis tools: overlays, sweeps (parallel = serial = CLI), seeds, sharing.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync } from 'node:fs';
+import { launch, newPage, runAgain, serve, settled } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+let server;
+let browser;
+
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+async function withPage(url, body) {
+  const errors = [];
+  const page = await newPage(browser, errors);
+  try {
+    await page.goto(`${server.url}${url}`);
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  } finally {
+    await page.context().close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+}
+
+async function download(page, selector) {
+  const [d] = await Promise.all([page.waitForEvent('download'), page.click(selector)]);
+  return readFileSync(await d.path(), 'utf8');
+}
+
+const sweepDone = (page) => page.waitForFunction(() => ['done', 'failed', 'cancelled'].includes(document.body.dataset.sweep), null, { timeout: 60_000 })
+  .then(() => page.evaluate(() => document.body.dataset.sweep));
+
+test('a pinned run is overlaid with a legend of what differs, and the comparison is shared by URL', async () => {
+  let shared;
+  await withPage('?v=1&preset=step', async (page) => {
+    await page.click('#pin');
+    await page.waitForSelector('#pins li');
+    await page.fill('#field-k1', '600');
+    await page.press('#field-k1', 'Tab');
+    await page.waitForFunction(() => location.search.includes('k1=600'));
+    await runAgain(page);
+    await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
+    assert.match(await page.textContent('#pins'), /k1: 1200 → 600 1\/s/);
+    shared = page.url();
+    assert.match(shared, /#pins=v%3D1%26preset%3Dstep$/);
+  });
+  await withPage(shared.slice(server.url.length), async (page) => {
+    await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
+    assert.match(await page.textContent('#pins'), /pin 1: k1: 1200 → 600 1\/s/);
+    await page.click('#pins button');
+    await page.waitForFunction(() => document.querySelectorAll('#pins li').length === 0 && !location.hash.includes('pins'));
+  });
+});
+
+test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
+  withPage('?v=1&preset=step#sweep=10,1000,12,0.02,0,0.2,euler.ifoc', async (page) => {
+    assert.equal(await sweepDone(page), 'done');
+    const parallel = await download(page, '#sweep-csv');
+    const expected = execFileSync(cli, ['sweep', 'v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    assert.equal(parallel, expected);
+    assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 2);
+    // The IFOC variant's bandwidth is read off by the core and shown.
+    assert.match(await page.textContent('#sweep-table tr[data-variant=ifoc]'), /Hz|not reached/);
+    await page.fill('#sweep-form [name=workers]', '1');
+    await page.click('#sweep-run');
+    await page.waitForFunction(() => document.getElementById('sweep-status').textContent.includes('on 1 worker.'));
+    assert.equal(await download(page, '#sweep-csv'), parallel);
+  }));
+
+test('Cancel stops a sweep midway', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await page.click('[data-tab=analysis]');
+    await page.fill('#sweep-form [name=n]', '60');
+    await page.fill('#sweep-form [name=duration]', '1');
+    await page.click('#sweep-run');
+    await page.waitForFunction(() => document.getElementById('sweep-progress').value > 0);
+    await page.click('#sweep-cancel');
+    assert.equal(await sweepDone(page), 'cancelled');
+    assert.ok(await page.evaluate(() => document.getElementById('sweep-progress').value < 1));
+    assert.match(await page.textContent('#sweep-status'), /cancelled/);
+  }));
+
+test('a malformed sweep request is refused with a message', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await page.click('[data-tab=analysis]');
+    await page.fill('#sweep-form [name=lo]', '-5');
+    await page.click('#sweep-run');
+    assert.equal(await sweepDone(page), 'failed');
+    assert.match(await page.textContent('#sweep-status'), /frequency grid -5/);
+  }));
+
+test('a seed sweep shows mean and min–max bands and its CSV equals the CLI', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await page.click('[data-tab=analysis]');
+    await page.fill('#seeds-form [name=n]', '4');
+    await page.click('#seeds-run');
+    await page.waitForFunction(() => document.body.dataset.seeds === 'done', null, { timeout: 60_000 });
+    assert.equal(await page.locator('#seeds-plots .plot canvas').count(), 2);
+    const csv = await download(page, '#seeds-csv');
+    const expected = execFileSync(cli, ['seeds', 'v=1&preset=step', '--n', '4'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    assert.equal(csv, expected);
+  }));
