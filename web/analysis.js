@@ -81,14 +81,19 @@ export function formatSweep(s) {
   return [s.lo, s.hi, s.n, s.amp, s.offset, s.duration, s.variants.join('.')].join(',');
 }
 
-function bodePlot(title, unit, freqs, series, log) {
+function bodePlot(title, unit, freqs, series, width, marker) {
   const opts = {
-    title, width: 700, height: 260,
-    scales: { x: { time: false, distr: 3, log: 10 }, y: log ? { distr: 3, log: 10 } : {} },
-    series: [{ label: 'f (Hz)' }, ...series.map(([label, color]) => ({ label, stroke: color, width: 2, points: { show: true } }))],
+    title, width, height: 280,
+    scales: { x: { time: false, distr: 3, log: 10 } },
+    series: [{ label: 'f (Hz)' }, ...series.map(([label, color, , dash]) => ({ label, stroke: color, dash, width: 2, points: { show: true } }))],
     axes: [{ label: 'f (Hz)' }, { label: unit, size: 70 }],
   };
-  return [opts, [freqs, ...series.map((s) => s[2])]];
+  const data = [freqs, ...series.map((s) => s[2])];
+  if (marker) {
+    opts.series.push({ label: marker[0], stroke: '#999', dash: [4, 4], width: 1.5 });
+    data.push(freqs.map(() => marker[1]));
+  }
+  return [opts, data];
 }
 
 export class Analysis {
@@ -128,8 +133,12 @@ export class Analysis {
     // Failed points are gaps (null), never drawn.
     const column = (v, key) => out[v].points.map((p) => (p.failure ? null : p[key]));
     bodeBox.replaceChildren();
-    for (const [title, unit, key, log] of [['Magnitude |ω/ω_d|', '|G|', 'gain', true], ['Phase of ω against ω_d', 'degrees', 'phase', false]]) {
-      const [opts, data] = bodePlot(title, unit, freqs, variants.map((v) => [VARIANTS[v].label, COLORS[v], column(v, key)]), log);
+    const width = Math.max(400, bodeBox.clientWidth - 10);
+    // Dashed lines for variants drawn on top of others, so overlapping curves stay visible.
+    const dash = { rk4: [6, 4], perfect: [2, 3] };
+    for (const [title, unit, key, marker] of [['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]], ['Phase of ω against ω_d', 'degrees', 'phase', null]]) {
+      const series = variants.map((v) => [VARIANTS[v].label, COLORS[v], column(v, key), dash[v]]);
+      const [opts, data] = bodePlot(title, unit, freqs, series, width, marker);
       const div = el('div', { className: 'plot' });
       bodeBox.append(div);
       new uPlot(opts, data, div);

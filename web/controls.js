@@ -3,7 +3,8 @@
 
 const GROUPS = {
   reference: 'Reference',
-  gains: 'Controller gains',
+  controller: 'Controller: backstepping or classical IFOC',
+  gains: 'Backstepping gains',
   observer: 'Observer (EKF)',
   noise: 'Noise and seed',
   plant: 'Plant: the simulated motor',
@@ -11,7 +12,7 @@ const GROUPS = {
   load: 'Unknown load step',
   limits: 'Voltage limit, duration and timing',
 };
-const OPEN_GROUPS = new Set(['reference', 'gains']);
+const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 
 function el(tag, props = {}, children = []) {
   const e = Object.assign(document.createElement(tag), props);

@@ -41,9 +41,10 @@ const walkthrough = new Walkthrough({
     const f = state.info?.fields.find((x) => x.key === key && x.value !== null);
     return f ? fieldControl(f, 'knob') : null;
   },
-  onLesson: (preset) => {
+  onLesson: async (lesson) => {
     showTab('plots');
-    load(`v=1&preset=${preset}`);
+    await load(`v=1&preset=${lesson.preset}`);
+    say(`Lesson: ${lesson.title}. Question: ${lesson.question}`, 'info');
   },
   onCompare: () => {
     $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
@@ -131,6 +132,7 @@ async function load(text, { run = true } = {}) {
 
 async function formChanged() {
   const text = composeScenario(ui.form, ui.preset.value);
+  state.composed = text;
   try {
     const info = await describe(text);
     applyDescription(info);
@@ -328,7 +330,11 @@ ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`)
 ui.form.addEventListener('change', formChanged);
 ui.form.addEventListener('submit', (e) => e.preventDefault());
 $('walkthrough').addEventListener('change', (e) => forwardKnob(ui.form, e.target));
-ui.run.addEventListener('click', startRun);
+// An edit still being checked by the core must land before the run starts.
+ui.run.addEventListener('click', async () => {
+  if (composeScenario(ui.form, ui.preset.value) !== state.composed) await formChanged();
+  if (!ui.run.disabled) startRun();
+});
 ui.cancel.addEventListener('click', () => worker.postMessage({ type: 'cancel', id: state.runId }));
 ui.csv.addEventListener('click', () => worker.postMessage({ type: 'csv', id: state.runId }));
 ui.png.addEventListener('click', async () => download(await plots.png(), `${fileStem()}.png`));

@@ -2,7 +2,7 @@
 // They draw what the worker sends (min/max envelopes from the Rust recorder) and nothing else.
 import uPlot from '../vendor/uPlot.esm.js';
 
-const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
+const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e'];
 const REFERENCE = '#777';
 
 // [column, label, axis]; axis 'y2' puts a series on the right-hand scale.

@@ -37,13 +37,21 @@ export const SECTIONS = [
       t`P_{k|k} = (I - K_kC)P_{k|k-1}(I - K_kC)^T + K_kRK_k^T\quad\text{(Joseph form of (19))}`,
     ],
     plot: {
-      title: 'Innovation ỹ_a with its ±2σ band, and NIS', unit: 'A', unit2: 'NIS',
-      series: [['innov_a', 'ỹ_a (A)'], ['innov_band_a', '+2σ'], ['innov_band_a', '−2σ', null, -1], ['nis', 'NIS (right)', 'y2']],
+      title: 'Innovation ỹ_a with its ±2σ band from S_k', unit: 'A',
+      series: [['innov_a', 'ỹ_a'], ['innov_band_a', '+2σ'], ['innov_band_a', '−2σ', null, -1]],
+    },
+    plot4: {
+      title: 'Normalised innovation squared with its 95 % band (χ², 2 dof)', unit: 'NIS',
+      series: [['nis', 'NIS']],
       nisBand: true,
     },
     plot2: {
       title: 'Speed estimate and its variance', unit: 'rad/s', unit2: '(rad/s)²',
       series: [['omega', 'ω true'], ['omega_hat', 'ω̂ estimated'], ['p_omega', 'P₁₁ (right)', 'y2']],
+    },
+    plot3: {
+      title: 'Flux modulus: true and estimated', unit: 'Wb',
+      series: [['flux', '|φ| true'], ['flux_hat', '|φ̂| estimated']],
     },
     knobs: ['ekf', 'ekf.q', 'ekf.r_std'],
     compare: true,

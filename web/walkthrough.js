@@ -22,8 +22,8 @@ export function tex(source, displayMode = true) {
 function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
-    for (const plot of [s.plot, s.plot2].filter(Boolean)) {
-      const constants = plot.nisBand ? [['NIS 2.5 %', 'y2'], ['NIS 97.5 %', 'y2']] : [];
+    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3].filter(Boolean)) {
+      const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
       defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id] });
     }
   }
@@ -64,7 +64,7 @@ export class Walkthrough {
     for (const lesson of LESSONS) {
       const run = el('button', { type: 'button', textContent: `Run “${lesson.preset}”` });
       run.dataset.lesson = lesson.preset;
-      run.addEventListener('click', () => onLesson(lesson.preset));
+      run.addEventListener('click', () => onLesson(lesson));
       lessonsBox.append(el('article', { className: 'lesson' }, [
         el('h3', { textContent: lesson.title }),
         el('p', { textContent: lesson.text }),
@@ -98,6 +98,12 @@ export class Walkthrough {
 
   /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
   describe(info) {
+    const ifoc = info.fields.find((f) => f.key === 'controller')?.value === 'ifoc';
+    let note = this.container.querySelector('.ifoc-note');
+    if (ifoc && !note) {
+      note = el('p', { className: 'ifoc-note', textContent: 'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.' });
+      this.container.prepend(note);
+    } else if (!ifoc && note) note.remove();
     for (const box of this.container.querySelectorAll('.knobs')) {
       box.replaceChildren(...box.dataset.keys.split(' ').map((key) => this.knob(key)).filter(Boolean));
     }

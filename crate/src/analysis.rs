@@ -37,6 +37,8 @@ pub struct SweepPoint {
     pub freq: f64,
     /// |ω| / |ω_d| of the fundamentals.
     pub gain: f64,
+    /// The same gain in decibels, 20·log10(gain).
+    pub gain_db: f64,
     /// Phase of ω relative to ω_d (degrees, in (−270, 90]).
     pub phase: f64,
     /// |ω̂| / |ω_d| (the speed estimate the controller used).
@@ -150,6 +152,7 @@ pub fn sweep_point(
         return Ok(SweepPoint {
             freq,
             gain: f64::NAN,
+            gain_db: f64::NAN,
             phase: f64::NAN,
             gain_hat: f64::NAN,
             phase_hat: f64::NAN,
@@ -171,6 +174,7 @@ pub fn sweep_point(
     Ok(SweepPoint {
         freq,
         gain: amp / ref_amp,
+        gain_db: 20.0 * libm::log10(amp / ref_amp),
         phase: lag_degrees(phase - ref_phase),
         gain_hat: amp_hat / ref_amp,
         phase_hat: lag_degrees(phase_hat - ref_phase),
@@ -181,12 +185,13 @@ pub fn sweep_point(
 
 /// The sweep as CSV: one line per frequency, then a `#` line with the summary.
 pub fn sweep_csv(points: &[SweepPoint]) -> String {
-    let mut out = String::from("freq_hz,gain,phase_deg,gain_hat,phase_hat_deg,saturated,failure\n");
+    let mut out =
+        String::from("freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure\n");
     for p in points {
         let failure = p.failure.as_deref().unwrap_or("").replace(',', ";");
         out += &format!(
-            "{},{},{},{},{},{},{failure}\n",
-            p.freq, p.gain, p.phase, p.gain_hat, p.phase_hat, p.saturated
+            "{},{},{},{},{},{},{},{failure}\n",
+            p.freq, p.gain, p.gain_db, p.phase, p.gain_hat, p.phase_hat, p.saturated
         );
     }
     let s = summarise(points);
@@ -408,6 +413,7 @@ mod tests {
         SweepPoint {
             freq,
             gain,
+            gain_db: 20.0 * libm::log10(gain),
             phase,
             gain_hat: gain,
             phase_hat: phase,

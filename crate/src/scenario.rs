@@ -340,7 +340,7 @@ impl fmt::Display for ScenarioError {
             ),
             UnknownKey { key } => write!(
                 f,
-                "field '{key}' is not a scenario field (see `imlab describe`)"
+                "field '{key}' is not a scenario field (the settings form and `imlab describe` list them)"
             ),
             DuplicateKey { key } => write!(f, "field '{key}' is given more than once"),
             Malformed { piece } => write!(f, "'{piece}' is not of the form key=value"),
