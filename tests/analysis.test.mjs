@@ -1,35 +1,17 @@
 // Browser tests of the analysis tools: overlays, sweeps (parallel = serial = CLI), seeds, sharing.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { launch, newPage, runAgain, serve, settled } from './browser.mjs';
+import { browserSuite, runAgain, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
+const suite = browserSuite();
+/** Opens the app at `path`, waits for its run, then runs `body(page)`. */
+const withPage = (path, body) => suite.withPage(path, async (page) => {
+  assert.equal(await settled(page), 'done');
+  await body(page);
 });
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-async function withPage(url, body) {
-  const errors = [];
-  const page = await newPage(browser, errors);
-  try {
-    await page.goto(`${server.url}${url}`);
-    assert.equal(await settled(page), 'done');
-    await body(page);
-  } finally {
-    await page.context().close();
-  }
-  assert.deepEqual(errors, [], 'console errors');
-}
 
 async function download(page, selector) {
   const [d] = await Promise.all([page.waitForEvent('download'), page.click(selector)]);
@@ -53,7 +35,7 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
     shared = page.url();
     assert.match(shared, /#pins=v%3D1%26preset%3Dstep$/);
   });
-  await withPage(shared.slice(server.url.length), async (page) => {
+  await withPage(shared.slice(suite.server.url.length), async (page) => {
     await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
     assert.match(await page.textContent('#pins'), /pin 1: k1: 1200 → 600 1\/s/);
     await page.click('#pins button');

@@ -3,6 +3,8 @@
 import { spawn } from 'node:child_process';
 import { once } from 'node:events';
 import net from 'node:net';
+import { after, before } from 'node:test';
+import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
 
 const ROOT = new URL('../dist/', import.meta.url).pathname;
@@ -58,4 +60,33 @@ export async function runAgain(page) {
   await page.click('#run');
   await page.waitForFunction((n) => Number(document.body.dataset.run ?? 0) > n, before, { timeout: 30_000 });
   return page.evaluate(() => ({ ...document.body.dataset }));
+}
+
+/**
+ * Registers a server and a browser for the calling test file and returns `withPage(path, body)`:
+ * it opens `path` (query and fragment) in a fresh context, runs `body(page)`, and fails the test
+ * on any console or page error.
+ */
+export function browserSuite() {
+  const suite = {};
+  before(async () => {
+    suite.server = await serve();
+    suite.browser = await launch();
+  });
+  after(async () => {
+    await suite.browser?.close();
+    suite.server?.close();
+  });
+  suite.withPage = async (path, body) => {
+    const errors = [];
+    const page = await newPage(suite.browser, errors);
+    try {
+      await page.goto(`${suite.server.url}${path}`);
+      await body(page);
+    } finally {
+      await page.context().close();
+    }
+    assert.deepEqual(errors, [], 'console errors');
+  };
+  return suite;
 }

@@ -1,35 +1,13 @@
 // End-to-end tests of the page in headless Debian Chromium. Every test fails on a console error.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { launch, newPage, runAgain, serve, settled } from './browser.mjs';
+import { browserSuite, runAgain, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-/** Opens the app at `query`, runs `body(page)`, then fails on any console error. */
-async function withPage(query, body) {
-  const errors = [];
-  const page = await newPage(browser, errors);
-  try {
-    await page.goto(`${server.url}${query ? `?${query}` : ''}`);
-    await body(page);
-  } finally {
-    await page.context().close();
-  }
-  assert.deepEqual(errors, [], 'console errors');
-}
+const suite = browserSuite();
+const withPage = (query, body) => suite.withPage(query ? `?${query}` : '', body);
 
 async function exportCsv(page) {
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#export-csv')]);
@@ -136,7 +114,7 @@ test('an invalid edit names the field and blocks Run until fixed', () =>
 test('Cancel stops a long run', () =>
   withPage('v=1&preset=step', async (page) => {
     await settled(page);
-    await page.goto(`${server.url}?v=1&preset=ramp&duration=20`);
+    await page.goto(`${suite.server.url}?v=1&preset=ramp&duration=20`);
     await page.waitForFunction(() => document.body.dataset.state === 'running' && document.getElementById('progress').value > 0);
     await page.click('#cancel');
     assert.equal(await settled(page), 'cancelled');

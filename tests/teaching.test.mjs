@@ -1,34 +1,16 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { launch, newPage, serve, settled } from './browser.mjs';
+import { browserSuite, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
-let server;
-let browser;
-
-before(async () => {
-  server = await serve();
-  browser = await launch();
+const suite = browserSuite();
+/** Opens the app at `query`, waits for its run, then runs `body(page)`. */
+const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
+  assert.equal(await settled(page), 'done');
+  await body(page);
 });
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
-
-async function withPage(query, body) {
-  const errors = [];
-  const page = await newPage(browser, errors);
-  try {
-    await page.goto(`${server.url}?${query}`);
-    assert.equal(await settled(page), 'done');
-    await body(page);
-  } finally {
-    await page.context().close();
-  }
-  assert.deepEqual(errors, [], 'console errors');
-}
 
 test('every walkthrough section renders its equations with no KaTeX error', () =>
   withPage('v=1&preset=step', async (page) => {
