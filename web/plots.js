@@ -5,19 +5,20 @@ import uPlot from '../vendor/uPlot.esm.js';
 const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e'];
 const REFERENCE = '#777';
 
-// [column, label, axis]; axis 'y2' puts a series on the right-hand scale.
+// [column, label, axis]; axis 'y2' puts a series on the right-hand scale. Later series are drawn
+// on top, so the true signals come after their estimates and stay visible.
 export const PLOTS = [
   {
     id: 'speed', title: 'Rotor speed', unit: 'rad/s', reference: true,
-    series: [['omega_ref', 'ω_d reference'], ['omega', 'ω true'], ['omega_hat', 'ω̂ estimated']],
+    series: [['omega_ref', 'ω_d reference'], ['omega_hat', 'ω̂ estimated'], ['omega', 'ω true']],
   },
   {
     id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb', reference: true,
-    series: [['flux_ref', '√ψ_d target'], ['flux', '|φ| true'], ['flux_hat', '|φ̂| estimated']],
+    series: [['flux_ref', '√ψ_d target'], ['flux_hat', '|φ̂| estimated'], ['flux', '|φ| true']],
   },
   {
     id: 'current', title: 'Stator currents', unit: 'A',
-    series: [['i_sa', 'i_sa'], ['i_sb', 'i_sb'], ['i_sa_hat', 'î_sa'], ['i_sb_hat', 'î_sb']],
+    series: [['i_sa_hat', 'î_sa estimated'], ['i_sb_hat', 'î_sb estimated'], ['i_sa', 'i_sa true'], ['i_sb', 'i_sb true']],
   },
   {
     id: 'voltage', title: 'Applied stator voltages (after the limit)', unit: 'V',
