@@ -84,12 +84,12 @@ function startWorker() {
   };
 }
 
-/** Asks the core to validate and describe a scenario string. */
-function describe(scenario) {
+/** Asks the core to validate and describe a scenario string ('recover' keeps its good fields). */
+function describe(scenario, type = 'describe') {
   const req = ++state.req;
   return new Promise((resolve, reject) => {
     state.pending.set(req, { resolve, reject });
-    worker.postMessage({ type: 'describe', req, scenario });
+    worker.postMessage({ type, req, scenario });
   });
 }
 
@@ -120,10 +120,14 @@ async function load(text, { run = true } = {}) {
     info = await describe(text);
     say('');
   } catch (e) {
-    const preset = presetNamed(text);
-    const fallback = preset && state.presets.some((p) => p.name === preset) ? `v=1&preset=${preset}` : DEFAULT_SCENARIO;
-    say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(fallback)} instead.`);
-    info = await describe(fallback);
+    try {
+      // Keep what is valid; name every field that was left out.
+      info = await describe(text, 'recover');
+      say(`Some settings in the address were rejected and left at the preset's values: ${info.rejected.join('; ')}.`);
+    } catch {
+      say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
+      info = await describe(DEFAULT_SCENARIO);
+    }
   }
   applyDescription(info);
   showScenario(info.encoded);

@@ -142,6 +142,7 @@ export class Walkthrough {
 
   inspect(snap, t) {
     const value = Object.fromEntries(snap.columns.map((c, i) => [c, snap.values[i]]));
+    const doc = Object.fromEntries(snap.columns.map((c, i) => [c, snap.docs[i]]));
     const box = this.inspectBox;
     const close = el('button', { type: 'button', className: 'close', textContent: 'Close' });
     close.addEventListener('click', () => { box.hidden = true; });
@@ -150,7 +151,11 @@ export class Walkthrough {
     for (const [title, terms] of INSPECT) {
       const table = el('table', {}, [el('caption', { textContent: title })]);
       for (const [col, label] of terms) {
-        const row = el('tr', {}, [el('th', {}, [tex(label, false)]), el('td', { textContent: exact(value[col]) })]);
+        const row = el('tr', {}, [
+          el('th', {}, [tex(label, false)]),
+          el('td', { textContent: exact(value[col]) }),
+          el('td', { className: 'doc', textContent: doc[col] }),
+        ]);
         row.dataset.column = col;
         table.append(row);
       }

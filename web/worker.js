@@ -3,6 +3,8 @@
 //
 // Protocol (page → worker):
 //   {type: 'describe', req, scenario}          → {type: 'described', req, info} | {type: 'invalid', req, message}
+//   {type: 'recover', req, scenario}           → {type: 'described', req, info: {...info, rejected}} | invalid
+//     (keeps the acceptable fields of a bad scenario and lists the rejected ones)
 //   {type: 'run', id, scenario, columns, buckets}
 //        → {type: 'progress', id, done, total}* then {type: 'done', id, view, rows, failure, computeMs}
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
@@ -21,7 +23,7 @@
 // A view is {t0, t1, columns: {name: Float64Array}}; its buffers are transferred, not copied.
 // The column 'lyapunov_bound' is the bound (59) evaluated by the core at the view's times.
 import init, {
-  Comparison, describe, inspect, log_grid, nis_band, presets, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  Comparison, describe, inspect, log_grid, recover, nis_band, presets, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
@@ -163,6 +165,14 @@ self.onmessage = async ({ data }) => {
     case 'describe':
       try {
         post({ type: 'described', req: data.req, info: describe(data.scenario) });
+      } catch (e) {
+        post({ type: 'invalid', req: data.req, message: String(e) });
+      }
+      break;
+    case 'recover':
+      try {
+        const { encoded, rejected } = recover(data.scenario);
+        post({ type: 'described', req: data.req, info: { ...describe(encoded), rejected } });
       } catch (e) {
         post({ type: 'invalid', req: data.req, message: String(e) });
       }

@@ -1232,6 +1232,56 @@ impl Scenario {
         Ok(s)
     }
 
+    /// Parses like [`Scenario::parse`] but keeps going past bad fields: returns the scenario with
+    /// every acceptable field applied and the errors of the fields left out. Fails only when there
+    /// is no scenario to start from (bad `v` or `preset`) or the result is not physical.
+    pub fn parse_lenient(text: &str) -> Result<(Scenario, Vec<ScenarioError>), ScenarioError> {
+        if let Ok(s) = Scenario::parse(text) {
+            return Ok((s, Vec::new()));
+        }
+        let text = text.trim().trim_start_matches('?');
+        let mut errors = Vec::new();
+        let mut pairs: Vec<(&str, &str)> = Vec::new();
+        for piece in text.split('&').filter(|p| !p.is_empty()) {
+            match piece.split_once('=') {
+                Some((k, _)) if pairs.iter().any(|(seen, _)| *seen == k) => {
+                    errors.push(ScenarioError::DuplicateKey { key: k.to_string() })
+                }
+                Some(pair) => pairs.push(pair),
+                None => errors.push(ScenarioError::Malformed {
+                    piece: piece.to_string(),
+                }),
+            }
+        }
+        let lookup = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
+        let version = lookup("v").ok_or(ScenarioError::Missing { key: "v" })?;
+        if version != CODEC_VERSION.to_string() {
+            return Err(ScenarioError::UnsupportedVersion {
+                value: version.to_string(),
+            });
+        }
+        let name = lookup("preset").ok_or(ScenarioError::Missing { key: "preset" })?;
+        let mut s = preset(name).ok_or_else(|| ScenarioError::UnknownPreset {
+            name: name.to_string(),
+        })?;
+        for (k, _) in &pairs {
+            if !matches!(*k, "v" | "preset") && !fields().iter().any(|f| f.key == *k) {
+                errors.push(ScenarioError::UnknownKey { key: k.to_string() });
+            }
+        }
+        for field in fields() {
+            if let Some(value) = lookup(field.key) {
+                let mut trial = s.clone();
+                match field.set(&mut trial, value).and_then(|()| trial.validate()) {
+                    Ok(()) => s = trial,
+                    Err(e) => errors.push(e),
+                }
+            }
+        }
+        s.validate()?;
+        Ok((s, errors))
+    }
+
     /// The compact scenario string: version, preset, then only the fields that differ from it.
     pub fn encode(&self) -> String {
         let original = preset(&self.preset).expect("a scenario's preset exists");
@@ -1481,6 +1531,23 @@ mod tests {
             vec!["k1: 1200 → 1500 1/s", "noise: 0.002 → 0 A"]
         );
         assert!(a.differences(&a).is_empty());
+    }
+
+    #[test]
+    fn lenient_parse_keeps_the_good_fields_and_names_the_bad_ones() {
+        let (s, errors) =
+            Scenario::parse_lenient("v=1&preset=step&k1=-5&k2=1500&bogus=1&noise=0").unwrap();
+        assert_eq!(s.encode(), "v=1&preset=step&k2=1500&noise=0");
+        let text: Vec<String> = errors.iter().map(|e| e.to_string()).collect();
+        assert_eq!(text.len(), 2, "{text:?}");
+        assert!(
+            text.iter().any(|t| t.contains("'k1'")) && text.iter().any(|t| t.contains("'bogus'"))
+        );
+        assert!(Scenario::parse_lenient("v=1&preset=nope&k1=5").is_err());
+        assert_eq!(
+            Scenario::parse_lenient("step").unwrap(),
+            (preset("step").unwrap(), vec![])
+        );
     }
 
     #[test]

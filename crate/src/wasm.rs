@@ -175,6 +175,22 @@ pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
     })
 }
 
+/// A scenario string with its bad fields left out: `{encoded, rejected: [messages]}`; throws when
+/// there is no scenario to keep (bad `v` or `preset`).
+#[wasm_bindgen]
+pub fn recover(scenario: &str) -> Result<JsValue, JsValue> {
+    #[derive(Serialize)]
+    struct Recovered {
+        encoded: String,
+        rejected: Vec<String>,
+    }
+    let (s, errors) = Scenario::parse_lenient(scenario).map_err(js_error)?;
+    to_js(&Recovered {
+        encoded: s.encode(),
+        rejected: errors.iter().map(|e| e.to_string()).collect(),
+    })
+}
+
 /// `scenario` with one field changed, in its compact form.
 #[wasm_bindgen]
 pub fn variant(scenario: &str, key: &str, value: &str) -> Result<String, JsValue> {

@@ -5,7 +5,7 @@
 
 mod recorder;
 
-pub use recorder::{Recorder, Row, COLUMNS, NUM_COLUMNS};
+pub use recorder::{Recorder, Row, COLUMNS, COLUMN_DOCS, NUM_COLUMNS};
 
 use crate::control::{Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
 use crate::model::{self, Input, State};
@@ -487,6 +487,8 @@ pub struct Snapshot {
     pub k: usize,
     /// Column names, in CSV order.
     pub columns: &'static [&'static str],
+    /// What each column is, with its unit.
+    pub docs: &'static [&'static str],
     /// The values of sample k, in the same order.
     pub values: Vec<f64>,
     /// Kalman gain K_k (5×2).
@@ -509,6 +511,7 @@ impl Simulation {
         Ok(Snapshot {
             k,
             columns: COLUMNS,
+            docs: COLUMN_DOCS,
             values: row.values().to_vec(),
             gain,
             l: gain.map(|r| r.map(|g| g * sim.rate)),

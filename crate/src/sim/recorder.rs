@@ -14,6 +14,9 @@ macro_rules! define_row {
         /// Column names in CSV order.
         pub const COLUMNS: &[&str] = &[$(stringify!($name)),*];
 
+        /// What each column is, with its unit, in CSV order (the field docs).
+        pub const COLUMN_DOCS: &[&str] = &[$(concat!($($doc),*).trim_ascii()),*];
+
         /// Number of columns.
         pub const NUM_COLUMNS: usize = COLUMNS.len();
 
