@@ -113,7 +113,7 @@ function syncControl(control, value) {
   else control.value = value;
 }
 
-/** Loads a scenario string (from the URL, a preset or history); falls back to its preset if invalid. */
+/** Loads a scenario string (from the URL, a preset or history); a bad one keeps its valid fields. */
 async function load(text, { run = true } = {}) {
   let info;
   try {

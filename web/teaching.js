@@ -127,7 +127,7 @@ export const SECTIONS = [
       t`v_4 = v_{4a} + v_{4s},\quad v_{4a} = -\psi_4 - z_3,\quad v_{4s} = -k_4z_4 - \tfrac{h_4^2}{4\epsilon_4}z_4,\qquad \dot z_4 = -k_4z_4 - z_3 + v_{4s2} + \tilde d_4`,
       t`\begin{bmatrix}u_1\\u_2\end{bmatrix} = \frac1b\begin{bmatrix}-a_1\hat x_5 & a_1\hat x_4\\ 2a_{10}\hat x_4 & 2a_{10}\hat x_5\end{bmatrix}^{-1}\begin{bmatrix}v_2\\v_4\end{bmatrix},\qquad \det = -2a_1a_{10}(\hat x_4^2 + \hat x_5^2) \ne 0`,
     ],
-    note: 'Printed (48) has a21, a22 where a41, a42 belong (corrected above).',
+    note: 'Printed (48) has a21, a22 where a41, a42 belong (corrected above). In the first milliseconds the start-up transient commands up to ±10 kV (clipped to ±400 V) and sets the plot scale: drag across the plot to zoom past it.',
     plot: {
       title: 'Step 4: z4, v4 and the voltage before and after the limit', unit: 'V', unit2: 'Wb²/s',
       series: [['u_a_cmd', 'u_sa commanded (V)'], ['u_a', 'u_sa applied (V)'], ['z4', 'z4 (Wb²/s, right)', 'y2']],

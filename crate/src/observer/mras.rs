@@ -98,9 +98,4 @@ impl Mras {
         self.speed = self.kp * error + self.ki * self.integral;
         self.speed
     }
-
-    /// Current-model rotor flux (Wb).
-    pub fn flux(&self) -> [f64; 2] {
-        self.flux
-    }
 }
