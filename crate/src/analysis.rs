@@ -73,21 +73,38 @@ pub fn log_grid(lo: f64, hi: f64, count: usize) -> Vec<f64> {
 }
 
 /// Amplitude and phase (radians) of the component at `w` (rad/s) of a sampled signal, by least
-/// squares over whole periods: x ≈ a·sin(wt) + b·cos(wt).
+/// squares: x ≈ a·sin(wt) + b·cos(wt) + c. The constant is fitted too, because a window of whole
+/// periods rarely holds a whole number of samples, so an offset would leak into a and b.
 fn fundamental(rows: &[Row], w: f64, signal: impl Fn(&Row) -> f64) -> (f64, f64) {
-    let (mut ss, mut sc, mut cc, mut xs, mut xc) = (0.0, 0.0, 0.0, 0.0, 0.0);
+    // Normal equations G·[a, b, c] = h with basis (sin, cos, 1).
+    let mut g = [[0.0; 3]; 3];
+    let mut h = [0.0; 3];
     for r in rows {
         let (s, c) = libm::sincos(w * r.t);
+        let basis = [s, c, 1.0];
         let x = signal(r);
-        ss += s * s;
-        sc += s * c;
-        cc += c * c;
-        xs += x * s;
-        xc += x * c;
+        for i in 0..3 {
+            h[i] += basis[i] * x;
+            for j in 0..3 {
+                g[i][j] += basis[i] * basis[j];
+            }
+        }
     }
-    let det = ss * cc - sc * sc;
-    let a = (xs * cc - xc * sc) / det;
-    let b = (xc * ss - xs * sc) / det;
+    // Cramer's rule on the 3×3 system.
+    let det3 = |m: &[[f64; 3]; 3]| {
+        m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1])
+            - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0])
+            + m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0])
+    };
+    let d = det3(&g);
+    let solve = |k: usize| {
+        let mut m = g;
+        for i in 0..3 {
+            m[i][k] = h[i];
+        }
+        det3(&m) / d
+    };
+    let (a, b) = (solve(0), solve(1));
     ((a * a + b * b).sqrt(), libm::atan2(b, a))
 }
 
@@ -124,6 +141,13 @@ pub fn sweep_point(
             key: "sine.amp".to_string(),
             value: settings.amp,
             allowed: "0 < sine.amp for a sweep".to_string(),
+        });
+    }
+    if freq >= 0.5 / s.ts {
+        return Err(ScenarioError::OutOfRange {
+            key: "freq".to_string(),
+            value: freq,
+            allowed: format!("below the Nyquist frequency 1/(2·Ts) = {} Hz", 0.5 / s.ts),
         });
     }
     let half = settings.duration / 2.0;
@@ -196,9 +220,14 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
     }
     let s = summarise(points);
     let show = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
+    let bandwidth = if s.below_grid {
+        "below_lowest_frequency".to_string()
+    } else {
+        show(s.bandwidth)
+    };
     out += &format!(
         "# bandwidth_hz={} phase_at_200hz_deg={}\n",
-        show(s.bandwidth),
+        bandwidth,
         show(s.phase_at_200)
     );
     out
@@ -222,6 +251,8 @@ pub fn seeds_csv(results: &[SeedResult]) -> String {
 pub struct SweepSummary {
     /// First frequency where the gain falls below 1/√2, interpolated in log frequency (Hz).
     pub bandwidth: Option<f64>,
+    /// The gain is already below 1/√2 at the lowest frequency measured.
+    pub below_grid: bool,
     /// Phase of ω at 200 Hz, interpolated in log frequency (degrees).
     pub phase_at_200: Option<f64>,
 }
@@ -234,9 +265,17 @@ fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
 /// The −3 dB bandwidth and the phase at 200 Hz of sweep points sorted by frequency.
 pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
     let cutoff = std::f64::consts::FRAC_1_SQRT_2;
+    // Only completed points, in increasing frequency, one per frequency.
+    let mut points: Vec<&SweepPoint> = points
+        .iter()
+        .filter(|p| p.gain.is_finite() && p.phase.is_finite())
+        .collect();
+    points.sort_by(|a, b| a.freq.total_cmp(&b.freq));
+    points.dedup_by(|a, b| a.freq == b.freq);
+    let below_grid = points.first().is_some_and(|p| p.gain < cutoff);
     let mut bandwidth = None;
     for pair in points.windows(2) {
-        let (p, q) = (&pair[0], &pair[1]);
+        let (p, q) = (pair[0], pair[1]);
         if p.gain >= cutoff && q.gain < cutoff {
             bandwidth = Some(interpolate_log(p.freq, q.freq, p.gain, q.gain, cutoff));
             break;
@@ -252,6 +291,7 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
         });
     SweepSummary {
         bandwidth,
+        below_grid,
         phase_at_200,
     }
 }
@@ -388,6 +428,57 @@ pub fn seed_bands(runs: &[SeedRun]) -> SeedBands {
 mod tests {
     use super::*;
     use crate::sim::Row;
+
+    #[test]
+    fn fundamental_ignores_a_large_offset_on_a_window_of_whole_periods_but_not_whole_samples() {
+        // 183 Hz at 20 kHz: a period is 109.3 samples, so the window never holds whole samples.
+        let (w, ts) = (2.0 * PI * 183.0, 5e-5);
+        let rows: Vec<Row> = (0..(9.0 / 183.0 / ts) as usize)
+            .map(|k| {
+                let t = k as f64 * ts;
+                Row {
+                    t,
+                    omega: 40.0 + 0.05 * libm::sin(w * t - 1.2),
+                    ..Row::default()
+                }
+            })
+            .collect();
+        let (amp, phase) = fundamental(&rows, w, |r| r.omega);
+        assert!(
+            (amp - 0.05).abs() < 1e-6 && (phase + 1.2).abs() < 1e-5,
+            "{amp} {phase}"
+        );
+    }
+
+    #[test]
+    fn summary_sorts_skips_failed_points_and_flags_a_response_below_the_grid() {
+        let c = std::f64::consts::FRAC_1_SQRT_2;
+        let mut failed = point(300.0, f64::NAN, f64::NAN);
+        failed.failure = Some("diverged".to_string());
+        let s = summarise(&[
+            point(400.0, c - 0.3, -90.0),
+            failed,
+            point(100.0, c + 0.1, -30.0),
+            point(100.0, c + 0.1, -30.0),
+        ]);
+        assert!(s.bandwidth.is_some() && !s.below_grid);
+        assert!(s.phase_at_200.unwrap().is_finite());
+        let low = summarise(&[point(10.0, 0.5, -60.0), point(20.0, 0.3, -80.0)]);
+        assert!(low.below_grid && low.bandwidth.is_none());
+        assert!(
+            sweep_csv(&[point(10.0, 0.5, -60.0)]).contains("bandwidth_hz=below_lowest_frequency")
+        );
+    }
+
+    #[test]
+    fn frequencies_at_or_above_nyquist_are_refused() {
+        // Ts = 100 µs: the Nyquist frequency is 5 kHz, inside the codec's range for sine.freq.
+        let s = Scenario::parse("v=1&preset=step&ts=0.0001").unwrap();
+        let err = sweep_point(&s, 5000.0, &SweepSettings::default())
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("Nyquist"), "{err}");
+    }
 
     #[test]
     fn fundamental_recovers_a_known_sinusoid_over_whole_periods() {

@@ -393,3 +393,15 @@ fn ifoc_bandwidth_is_set_by_its_speed_loop() {
         .expect("a −3 dB point below 50 Hz");
     assert!((5.0..25.0).contains(&bw), "IFOC bandwidth {bw} Hz");
 }
+
+#[test]
+fn a_runaway_mras_estimate_is_reported_before_it_is_recorded() {
+    let s = Scenario::parse("v=1&preset=ifoc-step&ifoc.bw_mras=5000&ifoc.bw_w=1000").unwrap();
+    let mut sim = Simulation::new(&s, 1).unwrap();
+    let err = sim.run().unwrap_err();
+    assert!(matches!(err, SimError::Diverged { .. }), "{err}");
+    assert!(
+        col(&sim, "omega_used").iter().all(|w| w.abs() <= 1e5),
+        "no runaway estimate is recorded"
+    );
+}

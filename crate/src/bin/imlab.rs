@@ -145,13 +145,16 @@ fn frequencies(value: &str) -> Result<Vec<f64>, String> {
         let n: usize = n.parse().map_err(|_| bad())?;
         return checked_grid(lo, hi, n).map_err(|e| format!("--freqs: {e}"));
     }
-    let freqs = value
+    let mut freqs = value
         .split(',')
         .map(|f| f.parse::<f64>().map_err(|_| bad()))
         .collect::<Result<Vec<_>, _>>()?;
     if freqs.iter().any(|f| !(f.is_finite() && *f > 0.0)) {
         return Err(bad());
     }
+    // The summary reads the response in increasing frequency.
+    freqs.sort_by(f64::total_cmp);
+    freqs.dedup();
     Ok(freqs)
 }
 

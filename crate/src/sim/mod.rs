@@ -264,7 +264,15 @@ impl Simulation {
             // for comparison only (zero where its decoupling matrix is singular).
             Some(ifoc) => {
                 let u = ifoc.control(&y, &self.u, &speed_ref, vmax);
-                (backstepping.unwrap_or_default(), u, ifoc.speed_estimate())
+                let w = ifoc.speed_estimate();
+                if w.is_nan() || w.abs() > MAX_SPEED {
+                    return Err(SimError::Diverged {
+                        t,
+                        signal: "IFOC speed estimate",
+                        value: w,
+                    });
+                }
+                (backstepping.unwrap_or_default(), u, w)
             }
         };
         for (i, name) in ["commanded u_sa", "commanded u_sb"].into_iter().enumerate() {

@@ -266,7 +266,7 @@ impl Recorder {
         let mut lo = vec![f64::INFINITY; cols.len()];
         let mut hi = vec![f64::NEG_INFINITY; cols.len()];
         for b in 0..buckets {
-            let bucket = &window[b * n / buckets..(b + 1) * n / buckets];
+            let bucket = &window[split(b, n, buckets)..split(b + 1, n, buckets)];
             out[0].push(bucket[0].t);
             out[0].push(bucket[bucket.len() - 1].t);
             lo.fill(f64::INFINITY);
@@ -285,6 +285,12 @@ impl Recorder {
         }
         Some(out)
     }
+}
+
+/// Start of bucket `b` of `buckets` over `n` rows: b·n/buckets in 64 bits (on wasm32 the product
+/// of a large trace and a wide plot overflows usize).
+fn split(b: usize, n: usize, buckets: usize) -> usize {
+    (b as u64 * n as u64 / buckets as u64) as usize
 }
 
 /// Min/max envelopes of `series` (functions of the row index) over rows `start..start + n`, as
@@ -308,7 +314,10 @@ fn bucketed(
         return out;
     }
     for b in 0..buckets {
-        let (lo, hi) = (start + b * n / buckets, start + (b + 1) * n / buckets);
+        let (lo, hi) = (
+            start + split(b, n, buckets),
+            start + split(b + 1, n, buckets),
+        );
         out[0].push(t(lo));
         out[0].push(t(hi - 1));
         for (o, f) in out[1..].iter_mut().zip(series) {
