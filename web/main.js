@@ -405,6 +405,9 @@ async function runSweep() {
     analysis.showSweep(out, $('bode'), $('sweep-table'));
     const ms = performance.now() - started;
     status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} worker${settings.workers > 1 ? 's' : ''}.`;
+    if (settings.variants.includes('ifoc') && Math.abs(settings.offset) < 20) {
+      status.textContent += ' The IFOC figures are not meaningful here: its MRAS cannot estimate the speed near standstill. Sweep it about an operating speed (offset ≥ 20 rad/s) with longer runs (3 s).';
+    }
     Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
     $('sweep-csv').disabled = false;
   } catch (e) {
