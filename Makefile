@@ -34,4 +34,5 @@ test: dist
 
 bench: dist
 	cargo bench --bench closed_loop
+	node tests/bench/node.mjs
 	node tests/bench/browser.mjs

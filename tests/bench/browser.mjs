@@ -28,6 +28,12 @@ const runs = [];
 for (let i = 0; i < 3; i++) runs.push(await runAgain(page));
 runs.sort((a, b) => rate(b) - rate(a));
 describeRate('closed loop in the browser, best of 3 further runs', runs[0]);
+// Same length as the Node benchmark (tests/bench/node.mjs): 1 s runs of `ramp`.
+await run('v=1&preset=ramp&duration=1');
+const short = [];
+for (let i = 0; i < 10; i++) short.push(await runAgain(page));
+short.sort((a, b) => rate(b) - rate(a));
+describeRate('closed loop in the browser, best of 10 runs of 1 s', short[0]);
 
 await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
 await settled(page);
