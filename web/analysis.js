@@ -150,7 +150,7 @@ export class Analysis {
       const worst = Math.max(...points.map((p) => (p.failure ? 0 : p.saturated)));
       const bandwidth = summary.below_grid ? 'below the lowest frequency' : fmt(summary.bandwidth, 'Hz');
       const row = el('tr', {}, [VARIANTS[v].label, bandwidth, fmt(summary.phase_at_200, '°'),
-        `${(worst * 100).toFixed(1)} % of samples`, String(points.filter((p) => p.failure).length)].map((c) => el('td', { textContent: c })));
+        `${worst.toPrecision(3)} of samples`, String(points.filter((p) => p.failure).length)].map((c) => el('td', { textContent: c })));
       row.dataset.variant = v;
       table.append(row);
     }

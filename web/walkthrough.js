@@ -180,7 +180,7 @@ export class Walkthrough {
     for (const r of results) {
       const m = r.metrics;
       rows.push([r.predictor, m.tracking_rms.toPrecision(3), m.speed_estimate_rms.toPrecision(3),
-        m.flux_estimate_rms.toPrecision(3), m.mean_nis.toPrecision(3), `${(m.saturated * 100).toFixed(1)} %`]);
+        m.flux_estimate_rms.toPrecision(3), m.mean_nis.toPrecision(3), `${m.saturated.toPrecision(3)} of samples`]);
     }
     const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c) => el(i ? 'td' : 'th', { textContent: c })))));
     box.replaceChildren(
@@ -195,14 +195,11 @@ function stabilityText(st) {
   const b = st.bound;
   const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
   if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
-  const pct = (n) => `${((100 * n) / st.samples).toFixed(1)} %`;
-  let why;
-  if (st.outside_saturated > st.outside / 2) {
-    why = 'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.';
-  } else if (b.eps === 0) {
-    why = 'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold. With a perfect observer the 20 kHz loop meets it until V is tiny, then sits just above it by the sampling error.';
-  } else {
-    why = 'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.';
-  }
-  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples (${pct(st.outside)}), first at t = ${st.first_outside} s; ${st.outside_saturated} of them with the voltage saturated (${pct(st.saturated)} of all samples are saturated). ${why}`;
+  const why = {
+    saturation: 'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.',
+    sampling: 'With the perfect observer d̃2 = d̃4 = 0, and in continuous time V would follow the bound exactly; the 20 kHz sampled loop meets it while V is large and then sits just above it, by an error that halves with Ts.',
+    estimation_errors: 'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold.',
+    eps_or_sampling: 'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.',
+  }[st.cause];
+  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${st.first_outside} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
 }

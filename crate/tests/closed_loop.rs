@@ -307,8 +307,15 @@ fn lyapunov_function_meets_the_bound_up_to_the_sampling_error() {
         "V exceeds the bound by {e50} at 20 kHz"
     );
     assert!(e25 < 0.6 * e50, "excess {e25} at 25 µs vs {e50} at 50 µs");
+    assert_eq!(coarse.stability().unwrap().cause, "sampling");
     // With the EKF (d̃ ≠ 0) and no robust term the ε = 0 bound cannot hold, and it does not.
-    assert!(run("step").stability().unwrap().outside > 0);
+    let with_ekf = run("step").stability().unwrap();
+    assert!(
+        with_ekf.outside > 0 && with_ekf.cause == "estimation_errors",
+        "{with_ekf:?}"
+    );
+    // Where the voltage limit is active most of the time, saturation is named.
+    assert_eq!(run("high-gain").stability().unwrap().cause, "saturation");
 }
 
 #[test]

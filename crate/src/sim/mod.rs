@@ -413,13 +413,29 @@ impl Simulation {
             .filter(|r| r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE)
             .collect();
         let saturated = |r: &Row| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax;
+        let outside_saturated = outside.iter().filter(|r| saturated(r)).count();
+        // Most likely reason: saturation when most samples above the bound had the limit active;
+        // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
+        // estimation errors when ε = 0; otherwise ε or the sampling.
+        let cause = if outside.is_empty() {
+            "none"
+        } else if 2 * outside_saturated > outside.len() {
+            "saturation"
+        } else if self.scenario.perfect {
+            "sampling"
+        } else if bound.eps == 0.0 {
+            "estimation_errors"
+        } else {
+            "eps_or_sampling"
+        };
         Some(Stability {
             bound,
             samples: rows.len(),
             outside: outside.len(),
-            outside_saturated: outside.iter().filter(|r| saturated(r)).count(),
+            outside_saturated,
             saturated: rows.iter().filter(|r| saturated(r)).count(),
             first_outside: outside.first().map(|r| r.t),
+            cause,
         })
     }
 }
@@ -486,6 +502,9 @@ pub struct Stability {
     pub saturated: usize,
     /// First time V is above the bound (s).
     pub first_outside: Option<f64>,
+    /// Most likely reason V leaves the bound: "none", "saturation", "sampling" (perfect observer),
+    /// "estimation_errors" (ε = 0 with the robust terms off) or "eps_or_sampling".
+    pub cause: &'static str,
 }
 
 /// Every recorded value at one sample, with the Kalman gain, for the inspect panel.
