@@ -1188,69 +1188,51 @@ fn parse_number(text: &str) -> Option<f64> {
 impl Scenario {
     /// Parses a scenario string: a bare preset name, or `v=1&preset=NAME&key=value...`.
     pub fn parse(text: &str) -> Result<Scenario, ScenarioError> {
-        let text = text.trim().trim_start_matches('?');
-        if !text.contains('=') {
-            return preset(text).ok_or_else(|| ScenarioError::UnknownPreset {
-                name: text.to_string(),
-            });
-        }
-        let mut pairs: Vec<(&str, &str)> = Vec::new();
-        for piece in text.split('&').filter(|p| !p.is_empty()) {
-            let (k, v) = piece
-                .split_once('=')
-                .ok_or_else(|| ScenarioError::Malformed {
-                    piece: piece.to_string(),
-                })?;
-            if pairs.iter().any(|(seen, _)| *seen == k) {
-                return Err(ScenarioError::DuplicateKey { key: k.to_string() });
-            }
-            pairs.push((k, v));
-        }
-        let lookup = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
-        let version = lookup("v").ok_or(ScenarioError::Missing { key: "v" })?;
-        if version != CODEC_VERSION.to_string() {
-            return Err(ScenarioError::UnsupportedVersion {
-                value: version.to_string(),
-            });
-        }
-        let name = lookup("preset").ok_or(ScenarioError::Missing { key: "preset" })?;
-        let mut s = preset(name).ok_or_else(|| ScenarioError::UnknownPreset {
-            name: name.to_string(),
-        })?;
-        for (k, _) in &pairs {
-            if !matches!(*k, "v" | "preset") && !fields().iter().any(|f| f.key == *k) {
-                return Err(ScenarioError::UnknownKey { key: k.to_string() });
-            }
-        }
-        // Apply in field order so `ref=` (which resets the reference parameters) comes first.
-        for field in fields() {
-            if let Some(value) = lookup(field.key) {
-                field.set(&mut s, value)?;
-            }
-        }
-        s.validate()?;
-        Ok(s)
+        Scenario::parse_with(text, false).map(|(s, _)| s)
     }
 
     /// Parses like [`Scenario::parse`] but keeps going past bad fields: returns the scenario with
     /// every acceptable field applied and the errors of the fields left out. Fails only when there
     /// is no scenario to start from (bad `v` or `preset`) or the result is not physical.
     pub fn parse_lenient(text: &str) -> Result<(Scenario, Vec<ScenarioError>), ScenarioError> {
-        if let Ok(s) = Scenario::parse(text) {
+        match Scenario::parse(text) {
+            Ok(s) => Ok((s, Vec::new())),
+            Err(_) => Scenario::parse_with(text, true),
+        }
+    }
+
+    /// The one parser: strictly, the first problem is the answer; leniently, a problem with one
+    /// piece or field is noted and that piece is skipped.
+    fn parse_with(
+        text: &str,
+        lenient: bool,
+    ) -> Result<(Scenario, Vec<ScenarioError>), ScenarioError> {
+        let text = text.trim().trim_start_matches('?');
+        if !text.contains('=') {
+            let s = preset(text).ok_or_else(|| ScenarioError::UnknownPreset {
+                name: text.to_string(),
+            })?;
             return Ok((s, Vec::new()));
         }
-        let text = text.trim().trim_start_matches('?');
         let mut errors = Vec::new();
+        let mut note = |e: ScenarioError| {
+            if lenient {
+                errors.push(e);
+                Ok(())
+            } else {
+                Err(e)
+            }
+        };
         let mut pairs: Vec<(&str, &str)> = Vec::new();
         for piece in text.split('&').filter(|p| !p.is_empty()) {
             match piece.split_once('=') {
                 Some((k, _)) if pairs.iter().any(|(seen, _)| *seen == k) => {
-                    errors.push(ScenarioError::DuplicateKey { key: k.to_string() })
+                    note(ScenarioError::DuplicateKey { key: k.to_string() })?
                 }
                 Some(pair) => pairs.push(pair),
-                None => errors.push(ScenarioError::Malformed {
+                None => note(ScenarioError::Malformed {
                     piece: piece.to_string(),
-                }),
+                })?,
             }
         }
         let lookup = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
@@ -1266,15 +1248,22 @@ impl Scenario {
         })?;
         for (k, _) in &pairs {
             if !matches!(*k, "v" | "preset") && !fields().iter().any(|f| f.key == *k) {
-                errors.push(ScenarioError::UnknownKey { key: k.to_string() });
+                note(ScenarioError::UnknownKey { key: k.to_string() })?;
             }
         }
+        // Apply in field order so `ref=` (which resets the reference parameters) comes first.
+        // Strictly, cross-field checks wait for the whole scenario (so no order of fields matters);
+        // leniently, each field must leave a valid scenario, so a bad one can be singled out.
         for field in fields() {
             if let Some(value) = lookup(field.key) {
+                if !lenient {
+                    field.set(&mut s, value)?;
+                    continue;
+                }
                 let mut trial = s.clone();
                 match field.set(&mut trial, value).and_then(|()| trial.validate()) {
                     Ok(()) => s = trial,
-                    Err(e) => errors.push(e),
+                    Err(e) => note(e)?,
                 }
             }
         }
@@ -1531,6 +1520,19 @@ mod tests {
             vec!["k1: 1200 → 1500 1/s", "noise: 0.002 → 0 A"]
         );
         assert!(a.differences(&a).is_empty());
+    }
+
+    #[test]
+    fn cross_field_checks_wait_for_the_whole_scenario() {
+        // plant.m = 0.6 alone makes σ < 0; with plant.ls = 1 as well it is physical.
+        let s = Scenario::parse("v=1&preset=step&plant.m=0.6&plant.ls=1").unwrap();
+        assert!(s.plant.sigma() > 0.0);
+        assert_eq!(
+            Scenario::parse_lenient("v=1&preset=step&plant.m=0.6&plant.ls=1")
+                .unwrap()
+                .1,
+            vec![]
+        );
     }
 
     #[test]
