@@ -332,20 +332,16 @@ pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, Sce
     s.validate()?;
     let mut sim = Simulation::new(&s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
+    // The figures are the run's own metrics; a run that recorded nothing has none.
+    let m = sim.metrics();
+    let figure = |f: fn(&crate::sim::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
     let rows = sim.recorder().rows();
-    let tail = &rows[rows.len() / 5..];
-    let n = tail.len().max(1) as f64;
     Ok(SeedRun {
         result: SeedResult {
             seed,
-            tracking_rms: (tail.iter().map(|r| r.omega_err * r.omega_err).sum::<f64>() / n).sqrt(),
-            estimate_rms: (tail
-                .iter()
-                .map(|r| r.omega_est_err * r.omega_est_err)
-                .sum::<f64>()
-                / n)
-                .sqrt(),
-            tracking_max: tail.iter().fold(0.0, |m, r| m.max(r.omega_err.abs())),
+            tracking_rms: figure(|m| m.tracking_rms),
+            estimate_rms: figure(|m| m.speed_estimate_rms),
+            tracking_max: figure(|m| m.tracking_max),
             failure,
         },
         t: rows.iter().step_by(every.max(1)).map(|r| r.t).collect(),

@@ -447,6 +447,8 @@ pub struct Metrics {
     pub from: f64,
     /// RMS of ω − ω_d (rad/s).
     pub tracking_rms: f64,
+    /// Largest |ω − ω_d| (rad/s).
+    pub tracking_max: f64,
     /// RMS of ω − ω̂ (rad/s).
     pub speed_estimate_rms: f64,
     /// RMS of |φ| − |φ̂| (Wb).
@@ -472,6 +474,7 @@ impl Simulation {
         Some(Metrics {
             from: tail[0].t,
             tracking_rms: rms(&|r| r.omega_err),
+            tracking_max: tail.iter().fold(0.0, |m, r| m.max(r.omega_err.abs())),
             speed_estimate_rms: rms(&|r| r.omega_est_err),
             flux_estimate_rms: rms(&|r| r.flux_est_err),
             mean_nis: tail.iter().map(|r| r.nis).sum::<f64>() / n,
