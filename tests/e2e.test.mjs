@@ -24,7 +24,7 @@ test('the page loads and the default preset draws its plots', () =>
   withPage('', async (page) => {
     assert.equal(await settled(page), 'done');
     assert.equal(scenarioInUrl(page), 'v=1&preset=sine200');
-    assert.equal(await page.locator('#plots .plot canvas').count(), 7);
+    assert.equal(await page.locator('#plots .plot canvas').count(), 8);
     assert.equal(await page.evaluate(() => document.body.dataset.rows), '5000');
     assert.match(await page.textContent('#preset-doc'), /Fig 2/);
     assert.equal(await page.textContent('#message'), '');

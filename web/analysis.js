@@ -166,18 +166,38 @@ export class Analysis {
     return { results: runs.map((r) => r.result), bands, csv };
   }
 
-  showSeeds({ bands }, box) {
+  /** Draws the seed bands; with `framing().fit` the y-axes leave out t < framing().from. */
+  showSeeds({ bands }, box, framing) {
     box.replaceChildren();
-    for (const [title, b] of [['Speed error ω − ω_d over seeds (mean, min, max)', bands.error], ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate]]) {
+    // The y range over the samples after the start-up transient (all of them when framing is off).
+    const range = (u) => {
+      const { fit, from } = framing();
+      let [lo, hi] = [Infinity, -Infinity];
+      u.data[0].forEach((t, j) => {
+        if (fit && t < from) return;
+        for (const y of u.data.slice(1)) [lo, hi] = [Math.min(lo, y[j]), Math.max(hi, y[j])];
+      });
+      if (!(lo < hi)) return [lo - 1, hi + 1];
+      const pad = (hi - lo) * 0.05;
+      return [lo - pad, hi + pad];
+    };
+    this.seedCharts = [];
+    // The same colours as ω − ω_d and ω − ω̂ on the Trajectories tab.
+    for (const [title, b, color] of [['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'], ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b']]) {
       const opts = {
-        title, width: 700, height: 240, scales: { x: { time: false } },
-        series: [{ label: 't (s)' }, { label: 'mean', stroke: '#1f77b4', width: 2 }, { label: 'min', stroke: '#aaa' }, { label: 'max', stroke: '#aaa' }],
+        title, width: Math.max(320, box.clientWidth - 10), height: 240, scales: { x: { time: false }, y: { range } },
+        series: [{ label: 't (s)' }, { label: 'mean', stroke: color, width: 2 }, { label: 'min', stroke: '#8a8a8a', dash: [3, 3] }, { label: 'max', stroke: '#8a8a8a', dash: [3, 3] }],
         bands: [{ series: [3, 2], fill: 'rgba(31,119,180,0.15)' }],
         axes: [{ label: 't (s)' }, { label: 'rad/s', size: 70 }],
       };
       const div = el('div', { className: 'plot' });
       box.append(div);
-      new uPlot(opts, [bands.t, b.mean, b.min, b.max], div);
+      this.seedCharts.push(new uPlot(opts, [bands.t, b.mean, b.min, b.max], div));
     }
+  }
+
+  /** Re-fits the seed plots' y-axes (after the framing changed). */
+  refit() {
+    for (const c of this.seedCharts ?? []) c.setData(c.data, true);
   }
 }

@@ -53,7 +53,14 @@ export function renderFields(form, info) {
     const details = el('details', { open: first ? OPEN_GROUPS.has(group) : open.has(group) });
     details.dataset.group = group;
     details.append(el('summary', { textContent: title }));
-    for (const f of fields) details.append(fieldControl(f, 'field'));
+    // A field that does not act on this scenario keeps its value (it stays in the scenario
+    // string) but is not shown.
+    for (const f of fields) {
+      const control = fieldControl(f, 'field');
+      control.hidden = !f.acts;
+      details.append(control);
+    }
+    details.hidden = fields.every((f) => !f.acts);
     form.append(details);
   }
 }

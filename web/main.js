@@ -1,17 +1,20 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
-import { columnsOf, Plots, PLOTS } from './plots.js';
+import { Plots, PLOTS, png } from './plots.js';
 import { composeScenario, fieldControl, fieldValue, forwardKnob, markInvalid, renderFields } from './controls.js';
 import { DEFAULT_SCENARIO, fragment, markRun, presetNamed, scenarioFromUrl, setFragment, showScenario } from './url.js';
 import { Analysis, formatSweep, parseSweep } from './analysis.js';
 import uPlot from '../vendor/uPlot.esm.js';
 import { Walkthrough } from './walkthrough.js';
+import { LessonPanel } from './lessons.js';
+import { LESSONS } from './teaching.js';
 
 const $ = (id) => document.getElementById(id);
 const ui = {
   preset: $('preset'), presetDoc: $('preset-doc'), form: $('settings'), run: $('run'),
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
-  present: $('present'), inspect: $('inspect'),
+  present: $('present'), inspect: $('inspect'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
+  figures: $('figures'),
 };
 
 const state = {
@@ -25,35 +28,56 @@ const state = {
   started: 0,
   req: 0,
   pending: new Map(), // describe requests: req → {resolve, reject}
+  transient: null, // {t, reason}: the end of the start-up transient, from the core
+  figures: [], // the run's figures, from the core
+  knobEdit: null, // the walkthrough knob whose edit is being checked
 };
+
+/** Whether the y-axes leave out the start-up transient, and from which time. */
+const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: state.transient?.t ?? -Infinity });
+const ifocRun = () => fieldValue(state.info, 'controller') === 'ifoc';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
 const plots = new Plots(ui.plots, PLOTS, {
   onWindow: (t0, t1) => requestWindow(t0, t1),
+  onFull: () => fullRun(),
   onPick: (t) => requestInspect(t),
+  framing,
   constants: (plot) => (plot.constants ? [1, -1].map((s) => s * Number(fieldValue(state.info, 'vmax'))) : []),
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
-  lessonsBox: $('lessons'),
   inspectBox: ui.inspect,
   knob: (key) => {
-    const f = state.info?.fields.find((x) => x.key === key && x.value !== null);
+    const f = state.info?.fields.find((x) => x.key === key && x.value !== null && x.acts);
     return f ? fieldControl(f, 'knob') : null;
-  },
-  onLesson: async (lesson) => {
-    showTab('plots');
-    await load(`v=1&preset=${lesson.preset}`);
-    say(`Lesson: ${lesson.title}. Question: ${lesson.question}`, 'info');
   },
   onCompare: () => {
     $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
     worker.postMessage({ type: 'compare', id: state.runId });
   },
   onWindow: (t0, t1) => requestWindow(t0, t1),
+  onFull: () => fullRun(),
   onPick: (t) => requestInspect(t),
+  framing,
 });
-const COLUMNS = columnsOf([...PLOTS, ...walkthrough.plots.defs]);
+walkthrough.onInspect = (t) => {
+  plots.mark(t);
+  walkthrough.plots.mark(t);
+};
+const plotSets = [plots, walkthrough.plots];
+const GROUPS = Object.assign({}, ...plotSets.map((p) => p.groups()));
+const lessons = new LessonPanel({
+  panel: $('lesson-panel'),
+  list: $('lessons'),
+  lessons: LESSONS,
+  onOpen: async (lesson) => {
+    showTab(lesson.tab ?? 'plots');
+    window.scrollTo(0, 0);
+    await load(`v=1&preset=${lesson.preset}`);
+  },
+  onClose: () => document.body.classList.remove('with-lesson'),
+});
 const analysis = new Analysis({ scenario: () => state.info.encoded });
 $('sweep-form').elements.namedItem('workers').value = analysis.pool.size;
 let worker = null;
@@ -94,8 +118,9 @@ function describe(scenario, type = 'describe') {
 }
 
 function applyDescription(info) {
-  const keysBefore = state.info?.fields.filter((f) => f.value !== null).map((f) => f.key).join();
-  const keysAfter = info.fields.filter((f) => f.value !== null).map((f) => f.key).join();
+  const shown = (i) => i?.fields.filter((f) => f.value !== null).map((f) => `${f.key}${f.acts ? '' : '-'}`).join();
+  const keysBefore = shown(state.info);
+  const keysAfter = shown(info);
   const presetChanged = ui.preset.value !== presetNamed(info.encoded);
   state.info = info;
   if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
@@ -134,6 +159,8 @@ async function load(text, { run = true } = {}) {
   if (run) startRun();
 }
 
+/** Checks the form's scenario with the core; returns whether it is valid. An invalid value is
+ * marked at its field, and at the walkthrough knob when a knob was edited. */
 async function formChanged() {
   const text = composeScenario(ui.form, ui.preset.value);
   state.composed = text;
@@ -141,12 +168,24 @@ async function formChanged() {
     const info = await describe(text);
     applyDescription(info);
     showScenario(info.encoded);
+    walkthrough.markKnob(null);
     say('');
+    return true;
   } catch (e) {
     markInvalid(ui.form, e.message);
+    const field = /field '([^']+)'/.exec(e.message)?.[1] ?? null;
+    walkthrough.markKnob(field, e.message);
     ui.run.disabled = true;
     say(e.message);
+    return false;
   }
+}
+
+/** A walkthrough knob was edited: check it and re-run, so its section's plots follow. */
+async function knobChanged(knob) {
+  clearTimeout(state.knobTimer);
+  forwardKnob(ui.form, knob);
+  if (await formChanged()) startRun();
 }
 
 function startRun() {
@@ -158,16 +197,25 @@ function startRun() {
   state.started = performance.now();
   ui.progress.value = 0;
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
-  ui.inspect.hidden = true;
+  walkthrough.closeInspect();
   setBusy(true);
-  const buckets = Math.max(200, Math.round(plots.width()));
-  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, columns: COLUMNS, buckets });
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups: GROUPS, buckets: buckets() });
 }
+
+// One bucket a pixel column of the widest plot.
+const buckets = () => Math.max(200, Math.round(plots.width()));
 
 function requestWindow(t0, t1) {
   if (state.running || !plots.full) return;
-  const full = t0 <= plots.full[0] && t1 >= plots.full[1];
-  worker.postMessage({ type: 'view', id: state.runId, t0: full ? 0 : t0, t1: full ? Number.MAX_VALUE : t1, buckets: Math.round(plots.width()) });
+  for (const set of plotSets) set.window = [t0, t1];
+  worker.postMessage({ type: 'view', id: state.runId, t0, t1, buckets: buckets() });
+}
+
+/** Returns every plot to the whole run. */
+function fullRun() {
+  if (state.running || !plots.full) return;
+  for (const set of plotSets) set.unzoom();
+  worker.postMessage({ type: 'view', id: state.runId, t0: 0, t1: Number.MAX_VALUE, buckets: buckets() });
 }
 
 function requestOverlay() {
@@ -225,6 +273,41 @@ function showTab(name) {
   plots.resize();
   if (name === 'walkthrough') walkthrough.draw();
   walkthrough.plots.resize();
+  walkthrough.closeInspect();
+}
+
+/** The figures strip: each figure of the run with its unit and window (all from the core). */
+function showFigures(figures) {
+  const fmt = (f) => (f.unit === '' && f.name === 'saturated_share' ? `${Number((f.value * 100).toPrecision(3))} %` : `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`);
+  const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
+  const items = figures.filter((f) => !['mean_nis_low', 'mean_nis_high'].includes(f.name)).map((f) => {
+    let text = fmt(f);
+    if (f.name === 'mean_nis' && 'mean_nis_low' in nis) {
+      const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
+      text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;
+    }
+    const item = Object.assign(document.createElement('div'), { className: 'figure' });
+    item.dataset.name = f.name;
+    item.dataset.value = String(f.value);
+    if (f.name === 'mean_nis') Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
+    item.append(
+      Object.assign(document.createElement('dt'), { textContent: f.label }),
+      Object.assign(document.createElement('dd'), { textContent: text, title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}` }),
+      Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
+    );
+    return item;
+  });
+  ui.figures.replaceChildren(...items);
+  ui.figures.hidden = items.length === 0;
+}
+
+/** The lines the PNG export carries above the plots: the scenario and the run's figures. */
+function pngHeader() {
+  const figures = state.figures.filter((f) => !f.name.startsWith('mean_nis_'))
+    .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`);
+  const lines = [`IM Lab · ${state.info.encoded}`];
+  for (let i = 0; i < figures.length; i += 3) lines.push(figures.slice(i, i + 3).join(' · '));
+  return lines;
 }
 
 const handlers = {
@@ -252,13 +335,21 @@ const handlers = {
     ui.progress.value = done / total;
     ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
   },
-  done({ id, rows, failure, view, computeMs, stability }) {
+  done({ id, rows, failure, view, computeMs, stability, figures, transient }) {
     if (id !== state.runId) return;
     setBusy(false);
     ui.progress.value = 1;
     const arrived = performance.now();
+    state.transient = transient;
+    state.figures = figures;
+    ui.fitLabel.textContent = transient
+      ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
+      : 'Fit y-axes after the start-up transient';
+    ui.fitLabel.title = transient?.reason ?? '';
+    $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
+    showFigures(figures);
     if (view) {
-      plots.show(view);
+      plots.show(view, { ifoc: ifocRun() });
       walkthrough.show(view, stability, state.nisBand);
     }
     const ms = performance.now() - state.started;
@@ -302,9 +393,10 @@ const handlers = {
     if (id !== state.runId) return;
     plots.refine(view);
     walkthrough.refine(view);
+    document.body.dataset.view = `${view.t0},${view.t1}`;
   },
   inspected({ id, t, snapshot }) {
-    if (id === state.runId) walkthrough.inspect(snapshot, t);
+    if (id === state.runId) walkthrough.inspect(snapshot, t, Number(fieldValue(state.info, 'ts')));
   },
   compared({ id, results }) {
     if (id === state.runId) walkthrough.showComparison(results);
@@ -332,8 +424,35 @@ const handlers = {
 
 ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`));
 ui.form.addEventListener('change', formChanged);
-ui.form.addEventListener('submit', (e) => e.preventDefault());
-$('walkthrough').addEventListener('change', (e) => forwardKnob(ui.form, e.target));
+// Enter in a settings field runs the scenario.
+ui.form.addEventListener('submit', async (e) => {
+  e.preventDefault();
+  if (await formChanged()) startRun();
+});
+// A walkthrough knob re-runs on change, on Enter, or after a pause in typing.
+const walk = $('walkthrough');
+walk.addEventListener('change', (e) => e.target.closest('.knobs') && knobChanged(e.target));
+walk.addEventListener('keydown', (e) => {
+  if (e.key === 'Enter' && e.target.closest('.knobs')) {
+    e.preventDefault();
+    knobChanged(e.target);
+  }
+});
+walk.addEventListener('input', (e) => {
+  if (!e.target.closest('.knobs') || e.target.type === 'checkbox') return;
+  clearTimeout(state.knobTimer);
+  state.knobTimer = setTimeout(() => knobChanged(e.target), 800);
+});
+ui.fullRun.addEventListener('click', fullRun);
+ui.fit.addEventListener('change', () => {
+  plotSets.forEach((p) => p.refit());
+  analysis.refit();
+});
+document.addEventListener('keydown', (e) => {
+  if (e.key !== 'Escape') return;
+  if (!ui.inspect.hidden) walkthrough.closeInspect();
+  else fullRun();
+});
 // An edit still being checked by the core must land before the run starts.
 ui.run.addEventListener('click', async () => {
   if (composeScenario(ui.form, ui.preset.value) !== state.composed) await formChanged();
@@ -341,7 +460,11 @@ ui.run.addEventListener('click', async () => {
 });
 ui.cancel.addEventListener('click', () => worker.postMessage({ type: 'cancel', id: state.runId }));
 ui.csv.addEventListener('click', () => worker.postMessage({ type: 'csv', id: state.runId }));
-ui.png.addEventListener('click', async () => download(await plots.png(), `${fileStem()}.png`));
+ui.png.addEventListener('click', async () => {
+  const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
+  const set = tab === 'walkthrough' ? walkthrough.plots : plots;
+  download(await png(set.figures(), pngHeader()), `${fileStem()}.png`);
+});
 ui.copy.addEventListener('click', async () => {
   try {
     await navigator.clipboard.writeText(location.href);
@@ -430,7 +553,7 @@ async function runSeeds() {
   try {
     const first = Number(fieldValue(state.info, 'seed'));
     const out = await analysis.seeds(n, first, state.info.steps, (p) => { status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`; });
-    analysis.showSeeds(out, $('seeds-plots'));
+    analysis.showSeeds(out, $('seeds-plots'), framing);
     state.seedsCsv = out.csv;
     $('seeds-csv').disabled = false;
     status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
@@ -450,6 +573,9 @@ $('sweep-csv').addEventListener('click', async () => {
 });
 $('seeds-run').addEventListener('click', runSeeds);
 $('seeds-csv').addEventListener('click', () => download(new Blob([state.seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'));
+
+// The page's plot sets, for the browser tests and the console.
+window.imlab = { plots, walkthrough: walkthrough.plots };
 
 setBusy(false);
 startWorker();

@@ -1,19 +1,43 @@
 // The trajectory plots: uPlot charts with a shared, synchronised time axis.
-// They draw what the worker sends (min/max envelopes from the Rust recorder) and nothing else.
+// Each plot draws the M4 envelope the worker sends for its own columns: every point is a recorded
+// sample at its own time, so no zoom draws an edge the samples do not have.
 import uPlot from '../vendor/uPlot.esm.js';
 
-const COLORS = ['#1f77b4', '#d62728', '#2ca02c', '#9467bd', '#ff7f0e'];
-const REFERENCE = '#777';
+// One visual language in every tab: a signal has the same colour and dash wherever it is drawn.
+// References and bands are dashed grey, true signals blue, estimates orange (b-axis components
+// a darker shade of the same colour).
+const REFERENCE = { stroke: '#6b6b6b', dash: [6, 4] };
+const BAND = { stroke: '#8a8a8a', dash: [3, 3] };
+export const STYLE = {
+  omega_ref: REFERENCE, flux_ref: REFERENCE,
+  omega: { stroke: '#1f77b4' }, flux: { stroke: '#1f77b4' }, i_sa: { stroke: '#1f77b4' }, i_sb: { stroke: '#0b3d6e' },
+  omega_hat: { stroke: '#ff7f0e' }, flux_hat: { stroke: '#ff7f0e' }, i_sa_hat: { stroke: '#ff7f0e' }, i_sb_hat: { stroke: '#a34a00' },
+  u_a: { stroke: '#2ca02c' }, u_b: { stroke: '#135f13' }, u_a_cmd: { stroke: '#9467bd' },
+  omega_err: { stroke: '#d62728' }, omega_est_err: { stroke: '#8c564b' }, flux_est_err: { stroke: '#bcbd22' },
+  z1: { stroke: '#e377c2' }, z2: { stroke: '#17becf' }, z3: { stroke: '#7b4173' }, z4: { stroke: '#e7969c' },
+  v1: { stroke: '#333333' }, v2: { stroke: '#333333' }, v3: { stroke: '#333333' }, v4: { stroke: '#333333' },
+  v1a: { stroke: '#9467bd' }, v2a: { stroke: '#9467bd' }, v3a: { stroke: '#9467bd' }, v4a: { stroke: '#9467bd' },
+  v1s: { stroke: '#2ca02c' }, v2s: { stroke: '#2ca02c' }, v3s: { stroke: '#2ca02c' }, v4s: { stroke: '#2ca02c' },
+  torque_hat: { stroke: '#ff7f0e' },
+  innov_a: { stroke: '#9467bd' }, innov_band_a: BAND, nis: { stroke: '#9467bd' }, p_omega: { stroke: '#8c564b' },
+  lyapunov: { stroke: '#d62728' }, lyapunov_bound: BAND,
+};
+const CONSTANT = BAND;
 
-// [column, label, axis]; axis 'y2' puts a series on the right-hand scale. Later series are drawn
-// on top, so the true signals come after their estimates and stay visible.
+// Each plot: [column, label, axis, sign]; axis 'y2' puts a series on the right-hand scale, sign −1
+// draws the column negated (the lower half of a ±band). Later series are drawn on top, so the true
+// signals come after their estimates and stay visible.
 export const PLOTS = [
   {
-    id: 'speed', title: 'Rotor speed', unit: 'rad/s', reference: true,
+    id: 'speed', title: 'Rotor speed', unit: 'rad/s',
     series: [['omega_ref', 'ω_d reference'], ['omega_hat', 'ω̂ estimated'], ['omega', 'ω true']],
   },
   {
-    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb', reference: true,
+    id: 'speed-error', title: 'Speed tracking error ω − ω_d', unit: 'rad/s',
+    series: [['omega_err', 'ω − ω_d']],
+  },
+  {
+    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb',
     series: [['flux_ref', '√ψ_d target'], ['flux_hat', '|φ̂| estimated'], ['flux', '|φ| true']],
   },
   {
@@ -26,11 +50,11 @@ export const PLOTS = [
     series: [['u_a', 'u_sa'], ['u_b', 'u_sb']],
   },
   {
-    id: 'z13', title: 'Tracking errors', unit: 'rad/s', unit2: 'Wb²',
+    id: 'z13', title: 'Tracking errors', unit: 'rad/s', unit2: 'Wb²', backstepping: true,
     series: [['z1', 'z1 = ω̂ − ω_d (rad/s)'], ['z3', 'z3 = |φ̂|² − ψ_d (Wb², right)', 'y2']],
   },
   {
-    id: 'z24', title: 'Virtual-control errors', unit: 'rad/s²', unit2: 'Wb²/s',
+    id: 'z24', title: 'Virtual-control errors', unit: 'rad/s²', unit2: 'Wb²/s', backstepping: true,
     series: [['z2', 'z2 torque error (rad/s²)'], ['z4', 'z4 flux-rate error (Wb²/s, right)', 'y2']],
   },
   {
@@ -38,6 +62,9 @@ export const PLOTS = [
     series: [['omega_est_err', 'ω − ω̂ (rad/s)'], ['flux_est_err', '|φ| − |φ̂| (Wb, right)', 'y2']],
   },
 ];
+
+/** The backstepping plots' title suffix when the IFOC baseline drives the motor. */
+export const NOT_DRIVING = ' (computed for comparison; not driving the motor)';
 
 const SYNC_KEY = 'imlab-time';
 
@@ -53,79 +80,169 @@ function tickLabels(u, splits) {
   return splits.map((v) => (v == null ? '' : String(Number(v.toPrecision(3)))));
 }
 
-/** Every column a list of plot definitions needs. */
-export function columnsOf(defs) {
-  return [...new Set(defs.flatMap((p) => p.series.map((s) => s[0])))];
-}
+/** A value as the read-out shows it: 6 significant digits. */
+export const six = (v) => (v == null ? '–' : String(Number(v.toPrecision(6))));
 
-function options(plot, width, height, onZoom, onPick) {
-  const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : v.toFixed(5)) }];
-  plot.series.forEach(([, label, axis], i) => {
-    const isRef = i === 0 && plot.reference;
-    series.push({
-      label,
-      scale: axis === 'y2' ? 'y2' : 'y',
-      stroke: isRef ? REFERENCE : COLORS[i % COLORS.length],
-      dash: isRef ? [6, 4] : undefined,
-      width: 2,
-      value: (u, v) => (v == null ? '–' : v.toPrecision(6)),
-    });
-  });
-  for (const [label, axis] of plot.constants ?? []) {
-    series.push({ label, scale: axis ?? 'y', stroke: '#999', dash: [3, 3], width: 1.5 });
-  }
-  const font = { font: '14px system-ui', labelFont: '14px system-ui' };
-  const axes = [
-    { label: 't (s)', ...font },
-    { label: plot.unit, scale: 'y', ...font, size: 80, values: tickLabels },
-  ];
-  if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80, values: tickLabels });
-  const scales = { x: { time: false } };
-  if (plot.log) scales.y = { distr: 3, log: 10, range: logRange };
-  return {
-    title: plot.title,
-    width,
-    height,
-    scales,
-    series,
-    axes,
-    cursor: { sync: { key: SYNC_KEY, setSeries: false }, drag: { x: true, y: false } },
-    hooks: {
-      setScale: [(u, key) => key === 'x' && onZoom(u)],
-      ready: [(u) => pickOnClick(u, onPick)],
-    },
+/** Min and max of the series on `scale` over the samples with t ≥ from (all of them if none). */
+function extent(u, scale, from) {
+  const t = u.data[0];
+  const scan = (start) => {
+    let lo = Infinity;
+    let hi = -Infinity;
+    for (let s = 1; s < u.series.length; s++) {
+      if (u.series[s].scale !== scale || !u.series[s].show) continue;
+      const y = u.data[s];
+      for (let j = 0; j < t.length; j++) {
+        if (t[j] < start) continue;
+        const v = y[j];
+        if (v < lo) lo = v;
+        if (v > hi) hi = v;
+      }
+    }
+    return [lo, hi];
   };
+  const fitted = scan(from);
+  return fitted[0] <= fitted[1] ? fitted : scan(-Infinity);
 }
 
-// A click (not a drag-to-zoom) on the plot area picks the time under the cursor.
-function pickOnClick(u, onPick) {
-  let downX = null;
-  u.over.addEventListener('mousedown', (e) => { downX = e.clientX; });
-  u.over.addEventListener('click', (e) => {
-    if (downX !== null && Math.abs(e.clientX - downX) < 3 && u.cursor.left >= 0) onPick(u.posToVal(u.cursor.left, 'x'));
-  });
+/** [lo, hi] padded by 5 % (a flat signal gets a band of its own size, or ±1 at zero). */
+function padded([lo, hi]) {
+  if (!(lo <= hi)) return [-1, 1];
+  if (lo === hi) {
+    const d = Math.abs(lo) * 0.1 || 1;
+    return [lo - d, hi + d];
+  }
+  const d = (hi - lo) * 0.05;
+  return [lo - d, hi + d];
+}
+
+/** Widens two ranges so that zero sits at the same height on both axes. */
+function shareZero(a, b) {
+  const withZero = ([lo, hi]) => [Math.min(lo, 0), Math.max(hi, 0)];
+  const [r1, r2] = [withZero(a), withZero(b)];
+  const below = ([lo, hi]) => -lo / (hi - lo); // zero's height as a fraction of the axis
+  const f = Math.max(below(r1), below(r2));
+  const fit = ([lo, hi]) => (f >= 1 ? [lo, 0] : [Math.min(lo, (-f * hi) / (1 - f)), hi]);
+  return [fit(r1), fit(r2)];
 }
 
 /**
- * A set of plots sharing the synchronised time axis. `onWindow(t0, t1)` is called when the user
- * zooms; `onPick(t)` when the user clicks a time. `constants(plot)` gives the values of a plot's
- * constant lines (limits, bands), which come from the core.
+ * A set of plots sharing the synchronised time axis. `onWindow(t0, t1)` asks for the data of a
+ * zoom window, `onFull()` for the whole run, `onPick(t)` inspects a time. `constants(plot)` gives
+ * the values of a plot's constant lines (limits, bands), which come from the core. `framing()`
+ * says whether the y-axes leave out the start-up transient, and where it ends.
  */
 export class Plots {
-  constructor(container, defs, { onWindow, onPick, constants = () => [], height = 260 }) {
-    Object.assign(this, { container, defs, onWindow, onPick, constants, height });
+  constructor(container, defs, { onWindow, onFull, onPick, constants = () => [], framing, height = 260 }) {
+    Object.assign(this, { container, defs, onWindow, onFull, onPick, constants, framing, height });
     this.charts = [];
     this.syncing = false;
     this.full = null; // [t0, t1] of the whole run
+    this.window = null; // the zoom window, or null for the whole run
+    this.marker = null; // the inspected time
+    this.ifoc = false;
   }
 
   width() {
-    return Math.max(320, this.container.clientWidth - 8);
+    return Math.max(280, this.container.clientWidth - 8);
+  }
+
+  /** The columns each plot needs, by plot id (the worker sends one envelope per plot). */
+  groups() {
+    return Object.fromEntries(this.defs.map((p) => [p.id, [...new Set(p.series.map((s) => s[0]))]]));
+  }
+
+  title(plot) {
+    return plot.backstepping && this.ifoc ? plot.title + NOT_DRIVING : plot.title;
+  }
+
+  options(plot, width) {
+    const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
+    for (const [column, label, axis] of plot.series) {
+      const style = STYLE[column] ?? { stroke: '#444' };
+      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: 2, value: (u, v) => six(v) });
+    }
+    for (const [label, axis] of plot.constants ?? []) {
+      series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: 1.5, value: (u, v) => six(v) });
+    }
+    const font = { font: '14px system-ui', labelFont: '14px system-ui' };
+    const axes = [
+      { label: 't (s)', ...font },
+      { label: plot.unit, scale: 'y', ...font, size: 80, values: tickLabels },
+    ];
+    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80, values: tickLabels });
+    const range = (u, min, max, key) => this.range(u, key, !!plot.unit2);
+    const scales = {
+      // While zoomed, new data keeps the window; otherwise the axis spans the data.
+      x: { time: false, auto: () => this.window === null },
+      y: plot.log ? { distr: 3, log: 10, range: logRange } : { range },
+    };
+    if (plot.unit2) scales.y2 = { range };
+    return {
+      title: this.title(plot),
+      width,
+      height: this.height,
+      scales,
+      series,
+      axes,
+      cursor: {
+        sync: { key: SYNC_KEY, setSeries: false },
+        drag: { x: true, y: false },
+        bind: { dblclick: () => () => { this.onFull(); return null; } },
+      },
+      hooks: {
+        setScale: [(u, key) => key === 'x' && this.zoomed(u)],
+        ready: [(u) => this.pickOnClick(u)],
+        draw: [(u) => this.drawMarker(u)],
+      },
+    };
+  }
+
+  /** The y range of `key`: fitted after the start-up transient when framing is on. */
+  range(u, key, twoAxes) {
+    const { fit, from } = this.framing();
+    const start = fit ? from : -Infinity;
+    const y = padded(extent(u, 'y', start));
+    if (!twoAxes) return y;
+    const [a, b] = shareZero(y, padded(extent(u, 'y2', start)));
+    return key === 'y2' ? b : a;
+  }
+
+  // A click (not a drag-to-zoom) on the plot area picks the time under the cursor.
+  pickOnClick(u) {
+    let downX = null;
+    u.over.addEventListener('mousedown', (e) => { downX = e.clientX; });
+    u.over.addEventListener('click', (e) => {
+      if (downX !== null && Math.abs(e.clientX - downX) < 3 && u.cursor.left >= 0) this.onPick(u.posToVal(u.cursor.left, 'x'));
+    });
+  }
+
+  drawMarker(u) {
+    if (this.marker === null) return;
+    const x = Math.round(u.valToPos(this.marker, 'x', true));
+    if (x < u.bbox.left || x > u.bbox.left + u.bbox.width) return;
+    const { ctx } = u;
+    ctx.save();
+    ctx.strokeStyle = '#b00020';
+    ctx.lineWidth = 1.5 * devicePixelRatio;
+    ctx.setLineDash([4 * devicePixelRatio, 3 * devicePixelRatio]);
+    ctx.beginPath();
+    ctx.moveTo(x, u.bbox.top);
+    ctx.lineTo(x, u.bbox.top + u.bbox.height);
+    ctx.stroke();
+    ctx.restore();
+  }
+
+  /** Marks the inspected time on every plot (null clears it). */
+  mark(t) {
+    this.marker = t;
+    for (const c of this.charts) c.redraw(false);
   }
 
   zoomed(source) {
     if (this.syncing) return;
     const { min, max } = source.scales.x;
+    this.window = [min, max];
     this.syncing = true;
     for (const c of this.charts) if (c !== source) c.setScale('x', { min, max });
     this.syncing = false;
@@ -133,38 +250,57 @@ export class Plots {
   }
 
   data(plot, view) {
-    const t = view.columns.t;
-    // A series may show a column negated (the lower half of a ±band).
-    const rows = [t, ...plot.series.map(([col, , , sign]) => (sign === -1 ? view.columns[col].map((v) => -v) : view.columns[col]))];
+    const group = view.plots[plot.id];
+    const t = group.t;
+    const rows = [t, ...plot.series.map(([col, , , sign]) => (sign === -1 ? group.columns[col].map((v) => -v) : group.columns[col]))];
     for (const value of this.constants(plot)) rows.push(new Float64Array(t.length).fill(value));
     return rows;
   }
 
   /** Draws a whole run. */
-  show(view) {
-    const t = view.columns.t;
+  show(view, { ifoc = false } = {}) {
+    const t = view.plots[this.defs[0].id].t;
     this.full = [t[0], t[t.length - 1]];
+    this.window = null;
+    this.marker = null;
+    this.ifoc = ifoc;
     if (this.charts.length === 0) {
       const width = this.width();
       for (const plot of this.defs) {
         const div = document.createElement('div');
         div.className = 'plot';
-        div.dataset.plot = plot.id ?? plot.title;
+        div.dataset.plot = plot.id;
         (plot.container ?? this.container).append(div);
-        const opts = options(plot, width, this.height, (u) => this.zoomed(u), (time) => this.onPick(time));
-        this.charts.push(new uPlot(opts, this.data(plot, view), div));
+        this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), div));
       }
     } else {
       this.syncing = true;
-      this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
+      this.defs.forEach((plot, i) => {
+        const title = this.charts[i].root.querySelector('.u-title');
+        if (title) title.textContent = this.title(plot);
+        this.charts[i].setData(this.data(plot, view), true);
+      });
       this.syncing = false;
     }
   }
 
-  /** Replaces the data inside a zoom window without moving the axes. */
+  /** Replaces the data with that of a zoom window (the axes keep the window) or the whole run. */
   refine(view) {
+    if (!this.charts.length) return;
     this.syncing = true;
-    this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), false));
+    this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
+    this.syncing = false;
+  }
+
+  /** Forgets the zoom window; the next view shows the whole run. */
+  unzoom() {
+    this.window = null;
+  }
+
+  /** Re-fits the y-axes (after the framing changed). */
+  refit() {
+    this.syncing = true;
+    for (const c of this.charts) c.setData(c.data, true);
     this.syncing = false;
   }
 
@@ -174,25 +310,75 @@ export class Plots {
     for (const c of this.charts) c.setSize({ width, height });
   }
 
-  /** One PNG of every plot with its title and legend labels. */
-  async png() {
-    const scale = devicePixelRatio || 1;
-    const canvases = this.charts.map((c) => c.ctx.canvas);
-    const titleH = 28 * scale;
-    const width = Math.max(...canvases.map((c) => c.width));
-    const height = canvases.reduce((h, c) => h + c.height + titleH, 0);
-    const out = Object.assign(document.createElement('canvas'), { width, height });
-    const ctx = out.getContext('2d');
-    ctx.fillStyle = '#fff';
-    ctx.fillRect(0, 0, width, height);
-    let y = 0;
-    this.defs.forEach((plot, i) => {
-      ctx.fillStyle = '#000';
-      ctx.font = `${16 * scale}px system-ui`;
-      ctx.fillText(`${plot.title}: ${plot.series.map((s) => s[1]).join(', ')}`, 8 * scale, y + 20 * scale);
-      ctx.drawImage(canvases[i], 0, y + titleH);
-      y += canvases[i].height + titleH;
-    });
-    return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
+  /** Each chart's canvas with its title and colour key, for the PNG export. */
+  figures() {
+    return this.charts.map((c, i) => ({
+      canvas: c.ctx.canvas,
+      title: this.title(this.defs[i]),
+      key: c.series.slice(1).map((s) => ({ label: s.label, stroke: s._stroke ?? s.stroke, dash: s.dash })),
+    }));
   }
+}
+
+/**
+ * One PNG of `figures` (from Plots.figures()) under a header of text lines (the scenario and the
+ * run's figures): each plot with its title and a colour key of its series.
+ */
+export async function png(figures, header) {
+  const scale = devicePixelRatio || 1;
+  const line = 22 * scale;
+  const font = `${15 * scale}px system-ui`;
+  const width = Math.max(...figures.map((f) => f.canvas.width));
+  const out = document.createElement('canvas');
+  const ctx = out.getContext('2d');
+  // Lay out the colour keys first to know each one's height.
+  ctx.font = font;
+  const keyRows = figures.map((f) => {
+    const rows = [[]];
+    let x = 8 * scale;
+    for (const k of f.key) {
+      const w = 40 * scale + ctx.measureText(k.label).width + 16 * scale;
+      if (x + w > width && rows.at(-1).length) {
+        rows.push([]);
+        x = 8 * scale;
+      }
+      rows.at(-1).push({ ...k, x });
+      x += w;
+    }
+    return rows;
+  });
+  const headerH = header.length * line + 8 * scale;
+  out.width = width;
+  out.height = headerH + figures.reduce((h, f, i) => h + line * (1 + keyRows[i].length) + f.canvas.height + 8 * scale, 0);
+  ctx.fillStyle = '#fff';
+  ctx.fillRect(0, 0, out.width, out.height);
+  ctx.fillStyle = '#000';
+  ctx.font = font;
+  header.forEach((text, i) => ctx.fillText(text, 8 * scale, (i + 1) * line - 6 * scale));
+  let y = headerH;
+  figures.forEach((f, i) => {
+    ctx.fillStyle = '#000';
+    ctx.font = `bold ${16 * scale}px system-ui`;
+    ctx.fillText(f.title, 8 * scale, y + line - 6 * scale);
+    y += line;
+    ctx.font = font;
+    for (const row of keyRows[i]) {
+      for (const k of row) {
+        ctx.strokeStyle = k.stroke;
+        ctx.lineWidth = 2 * scale;
+        ctx.setLineDash((k.dash ?? []).map((d) => d * scale));
+        ctx.beginPath();
+        ctx.moveTo(k.x, y + line / 2);
+        ctx.lineTo(k.x + 32 * scale, y + line / 2);
+        ctx.stroke();
+        ctx.setLineDash([]);
+        ctx.fillStyle = '#000';
+        ctx.fillText(k.label, k.x + 38 * scale, y + line - 6 * scale);
+      }
+      y += line;
+    }
+    ctx.drawImage(f.canvas, 0, y);
+    y += f.canvas.height + 8 * scale;
+  });
+  return new Promise((resolve) => out.toBlob(resolve, 'image/png'));
 }

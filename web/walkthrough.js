@@ -2,8 +2,8 @@
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
 // Every number shown here comes from the core (through the worker); the page only formats it.
 import katex from '../vendor/katex/katex.mjs';
-import { Plots } from './plots.js';
-import { LESSONS, SECTIONS } from './teaching.js';
+import { Plots, six } from './plots.js';
+import { SECTIONS } from './teaching.js';
 
 function el(tag, props = {}, children = []) {
   const e = Object.assign(document.createElement(tag), props);
@@ -18,13 +18,16 @@ export function tex(source, displayMode = true) {
   return span;
 }
 
+// Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
+const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
+
 /** Plot definitions of every section, each drawn inside its section. */
 function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
     for (const plot of [s.plot, s.plot4, s.plot2, s.plot3].filter(Boolean)) {
       const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
-      defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id] });
+      defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id], backstepping: BACKSTEPPING.has(s.id) });
     }
   }
   return defs;
@@ -46,32 +49,27 @@ const INSPECT = [
 /** Shortest text that reads back as the same double (as the CLI's CSV writes it). */
 const exact = (v) => String(v);
 
+/** A column's doc split into its meaning and its unit: "Speed error z1 (rad/s)." → [meaning, unit]. */
+function meaningAndUnit(doc) {
+  const m = /^(.*?)\s*\(([^()]*)\)\.?$/.exec(doc);
+  return m ? [m[1], m[2]] : [doc.replace(/\.$/, ''), ''];
+}
+
 export class Walkthrough {
   /**
    * `container` receives the sections, `lessonsBox` the lessons, `inspectBox` the inspect panel.
    * `knob(key)` returns the settings control for a field; `onLesson(preset)` loads a lesson;
    * `onCompare()` asks for the Euler/RK4 comparison.
    */
-  constructor({ container, lessonsBox, inspectBox, knob, onLesson, onCompare, onWindow, onPick }) {
+  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing }) {
     Object.assign(this, { container, inspectBox, knob });
     this.sectionDivs = {};
     this.nisBand = [0, 0];
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
-      onWindow, onPick, height: 220,
+      onWindow, onFull, onPick, framing, height: 220,
       constants: (plot) => (plot.nisBand ? this.nisBand : []),
     });
-    for (const lesson of LESSONS) {
-      const run = el('button', { type: 'button', textContent: `Run “${lesson.preset}”` });
-      run.dataset.lesson = lesson.preset;
-      run.addEventListener('click', () => onLesson(lesson));
-      lessonsBox.append(el('article', { className: 'lesson' }, [
-        el('h3', { textContent: lesson.title }),
-        el('p', { textContent: lesson.text }),
-        el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
-        run,
-      ]));
-    }
   }
 
   section(s, onCompare) {
@@ -99,13 +97,30 @@ export class Walkthrough {
   /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
   describe(info) {
     const ifoc = info.fields.find((f) => f.key === 'controller')?.value === 'ifoc';
+    this.ifoc = ifoc;
     let note = this.container.querySelector('.ifoc-note');
     if (ifoc && !note) {
       note = el('p', { className: 'ifoc-note', textContent: 'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.' });
       this.container.prepend(note);
     } else if (!ifoc && note) note.remove();
+    // Knobs are rebuilt only when the set of fields that act changes, so an edit keeps its focus
+    // and the section does not move.
     for (const box of this.container.querySelectorAll('.knobs')) {
-      box.replaceChildren(...box.dataset.keys.split(' ').map((key) => this.knob(key)).filter(Boolean));
+      const knobs = box.dataset.keys.split(' ').map((key) => this.knob(key)).filter(Boolean);
+      const names = (labels) => labels.map((l) => l.querySelector('input, select').name).join();
+      const shown = [...box.querySelectorAll('label.field')];
+      if (names(knobs) !== names(shown)) {
+        box.replaceChildren(...knobs);
+        continue;
+      }
+      knobs.forEach((fresh, i) => {
+        const [now, value] = [shown[i].querySelector('input, select'), fresh.querySelector('input, select')];
+        now.classList.remove('invalid');
+        shown[i].querySelector('.knob-error')?.remove();
+        if (now === document.activeElement) return;
+        if (now.type === 'checkbox') now.checked = value.checked;
+        else now.value = value.value;
+      });
     }
     const table = el('table', {}, [el('tr', {}, [el('th', { textContent: '' }), ...LUMPED.map((k) => el('th', { textContent: k }))])]);
     for (const which of ['plant', 'model']) {
@@ -123,6 +138,7 @@ export class Walkthrough {
   show(view, stability, nisBand) {
     this.nisBand = nisBand;
     this.pending = view;
+    this.plots.ifoc = this.ifoc;
     if (this.container.offsetParent !== null) this.draw();
     const report = this.container.querySelector('.stability-report');
     report.textContent = stabilityText(stability);
@@ -131,7 +147,7 @@ export class Walkthrough {
   /** Draws the last run's plots if they are not drawn yet. */
   draw() {
     if (!this.pending) return;
-    this.plots.show(this.pending);
+    this.plots.show(this.pending, { ifoc: this.ifoc });
     this.pending = null;
   }
 
@@ -140,38 +156,78 @@ export class Walkthrough {
     if (!this.pending) this.plots.refine(view);
   }
 
-  inspect(snap, t) {
+  /** Marks the knob named `key` invalid with the codec's message (null clears every mark). */
+  markKnob(key, message) {
+    for (const control of this.container.querySelectorAll('.knobs input, .knobs select')) {
+      const bad = key !== null && control.name === key;
+      control.classList.toggle('invalid', bad);
+      control.setAttribute('aria-invalid', bad);
+      const label = control.closest('label');
+      label.querySelector('.knob-error')?.remove();
+      if (bad) label.append(el('span', { className: 'knob-error', role: 'alert', textContent: message }));
+    }
+  }
+
+  /** Shows every term at one sample: 6 significant digits with units; the exact value in a
+   * tooltip and in the copied text. `ts` is the sampling period (s), for rounding t to its sample. */
+  inspect(snap, t, ts) {
     const value = Object.fromEntries(snap.columns.map((c, i) => [c, snap.values[i]]));
-    const doc = Object.fromEntries(snap.columns.map((c, i) => [c, snap.docs[i]]));
+    const doc = Object.fromEntries(snap.columns.map((c, i) => [c, meaningAndUnit(snap.docs[i])]));
     const box = this.inspectBox;
-    const close = el('button', { type: 'button', className: 'close', textContent: 'Close' });
-    close.addEventListener('click', () => { box.hidden = true; });
-    box.replaceChildren(close, el('h3', { textContent: `Inspect sample k = ${snap.k}, t = ${exact(value.t)} s (clicked ${t.toPrecision(6)} s)` }));
+    const digits = Math.max(0, -Math.floor(Math.log10(ts)) + 1);
+    const time = value.t.toFixed(digits).replace(/0+$/, '').replace(/\.$/, '');
+    const close = el('button', { type: 'button', className: 'close', textContent: 'Close (Esc)' });
+    close.addEventListener('click', () => this.closeInspect());
+    const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
+    const lines = snap.columns.map((c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
+    copy.addEventListener('click', async () => {
+      const text = [`k\t${snap.k}`, ...lines].join('\n');
+      try {
+        await navigator.clipboard.writeText(text);
+        copy.textContent = 'Copied';
+      } catch {
+        copy.textContent = 'Copy failed: select the table instead';
+      }
+    });
+    box.replaceChildren(close, copy, el('h3', { textContent: `Inspect sample k = ${snap.k}, t = ${time} s` }));
+    box.dataset.t = String(value.t);
     const grid = el('div', { className: 'inspect-grid' });
+    const head = () => el('tr', {}, ['term', 'value', 'unit', 'meaning'].map((h) => el('th', { scope: 'col', textContent: h })));
     for (const [title, terms] of INSPECT) {
-      const table = el('table', {}, [el('caption', { textContent: title })]);
+      const table = el('table', {}, [el('caption', { textContent: title }), head()]);
       for (const [col, label] of terms) {
+        const [meaning, unit] = doc[col];
+        const cell = el('td', { textContent: six(value[col]), title: `exact: ${exact(value[col])}` });
+        cell.dataset.exact = exact(value[col]);
         const row = el('tr', {}, [
-          el('th', {}, [tex(label, false)]),
-          el('td', { textContent: exact(value[col]) }),
-          el('td', { className: 'doc', textContent: doc[col] }),
+          el('th', { scope: 'row' }, [tex(label, false)]),
+          cell,
+          el('td', { className: 'unit', textContent: unit }),
+          el('td', { className: 'doc', textContent: meaning }),
         ]);
         row.dataset.column = col;
         table.append(row);
       }
       grid.append(table);
     }
-    const gain = el('table', {}, [el('caption', { textContent: 'Kalman gain K_k and L = K_k/Ts' })]);
+    const gain = el('table', {}, [el('caption', { textContent: 'Kalman gain K_k (A⁻¹ × state unit) and L = K_k/Ts (per second)' }),
+      el('tr', {}, ['row', 'K·1', 'K·2', 'L·1', 'L·2'].map((h) => el('th', { scope: 'col', textContent: h })))]);
     snap.gain.forEach((row, i) => {
       gain.append(el('tr', {}, [
-        el('th', {}, [tex(`K_{${i + 1}\\cdot}`, false)]),
-        ...row.map((v) => el('td', { textContent: v.toPrecision(6) })),
-        ...snap.l[i].map((v) => el('td', { textContent: v.toPrecision(6) })),
+        el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false)]),
+        ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
+        ...snap.l[i].map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
       ]));
     });
     grid.append(gain);
     box.append(grid);
     box.hidden = false;
+    this.onInspect?.(value.t);
+  }
+
+  closeInspect() {
+    this.inspectBox.hidden = true;
+    this.onInspect?.(null);
   }
 
   showComparison(results) {

@@ -5,8 +5,9 @@
 //   {type: 'describe', req, scenario}          → {type: 'described', req, info} | {type: 'invalid', req, message}
 //   {type: 'recover', req, scenario}           → {type: 'described', req, info: {...info, rejected}} | invalid
 //     (keeps the acceptable fields of a bad scenario and lists the rejected ones)
-//   {type: 'run', id, scenario, columns, buckets}
-//        → {type: 'progress', id, done, total}* then {type: 'done', id, view, rows, failure, computeMs}
+//   {type: 'run', id, scenario, groups, buckets}
+//        → {type: 'progress', id, done, total}* then
+//          {type: 'done', id, view, rows, failure, computeMs, stability, figures, transient}
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
 //   {type: 'cancel', id}
 //   {type: 'view', id, t0, t1, buckets}        → {type: 'view', id, view}
@@ -20,8 +21,10 @@
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
 //     'grid' {lo, hi, n}, 'bands' {runs}, 'summary' {points}, 'sweep-csv' {points}, 'seeds-csv' {results}
 //     (stateless, so any worker of a pool can take any job)
-// A view is {t0, t1, columns: {name: Float64Array}}; its buffers are transferred, not copied.
-// The column 'lyapunov_bound' is the bound (59) evaluated by the core at the view's times.
+// `groups` is {plotId: [column, ...]}: each plot gets its own M4 envelope (every point a recorded
+// sample at its own time). A view is {t0, t1, plots: {plotId: {t, columns: {name: Float64Array}}}};
+// its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
+// evaluated by the core at the plot's times.
 import init, {
   Comparison, describe, inspect, log_grid, recover, nis_band, presets, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
@@ -29,24 +32,30 @@ import init, {
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
 // compiled in the background is picked up at the next chunk
 
-let current = null; // {id, sim, columns, cancelled}
+let current = null; // {id, sim, groups, cancelled}
 let comparison = null; // pinned runs, created with the module
 
 const BOUND = 'lyapunov_bound';
 
-function view(run, t0, t1, buckets) {
-  const recorded = run.columns.filter((c) => c !== BOUND);
-  const cols = run.sim.envelope(recorded, t0, t1, buckets);
-  const columns = { t: cols[0] };
+function envelope(sim, names, t0, t1, buckets) {
+  const recorded = names.filter((c) => c !== BOUND);
+  const cols = sim.envelope(recorded, t0, t1, buckets);
+  const columns = {};
   recorded.forEach((name, i) => {
     columns[name] = cols[i + 1];
   });
-  if (run.columns.includes(BOUND)) columns[BOUND] = run.sim.lyapunov_bound(cols[0]);
-  return { t0, t1, columns };
+  if (names.includes(BOUND)) columns[BOUND] = sim.lyapunov_bound(cols[0]);
+  return { t: cols[0], columns };
+}
+
+function view(run, t0, t1, buckets) {
+  const plots = {};
+  for (const [id, names] of Object.entries(run.groups)) plots[id] = envelope(run.sim, names, t0, t1, buckets);
+  return { t0, t1, plots };
 }
 
 function post(message, view) {
-  const transfer = view ? Object.values(view.columns).map((a) => a.buffer) : [];
+  const transfer = view ? Object.values(view.plots).flatMap((p) => [p.t.buffer, ...Object.values(p.columns).map((a) => a.buffer)]) : [];
   self.postMessage(message, transfer);
 }
 
@@ -62,7 +71,7 @@ function yieldToMessages() {
   });
 }
 
-async function run({ id, scenario, columns, buckets }) {
+async function run({ id, scenario, groups, buckets }) {
   if (current) current.sim.free();
   current = null;
   let sim;
@@ -72,7 +81,7 @@ async function run({ id, scenario, columns, buckets }) {
     post({ type: 'invalid', id, message: String(e) });
     return;
   }
-  const me = { id, sim, columns, cancelled: false };
+  const me = { id, sim, groups, cancelled: false };
   current = me;
   let failure = null;
   let computeMs = 0;
@@ -93,9 +102,12 @@ async function run({ id, scenario, columns, buckets }) {
       return;
     }
   }
-  const v = sim.rows > 0 ? view(me, 0, Number.MAX_VALUE, buckets) : null;
-  const stability = sim.rows > 0 ? sim.stability() : null;
-  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability }, v);
+  const recorded = sim.rows > 0;
+  const v = recorded ? view(me, 0, Number.MAX_VALUE, buckets) : null;
+  const stability = recorded ? sim.stability() : null;
+  const figures = recorded ? sim.figures() : [];
+  const transient = recorded ? sim.transient() : null;
+  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, transient }, v);
 }
 
 /** Runs `scenario` to the end in chunks, yielding between them; returns its metrics. */

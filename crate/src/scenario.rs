@@ -94,7 +94,7 @@ pub const PRESETS: &[Preset] = &[
     Preset { name: "load-step", description: "Hold 50 rad/s; an unknown 2 N m load step at 0.15 s that the 5-state EKF cannot see" },
     Preset { name: "decay", description: "Perfect observer, no noise, ω_d ≡ 0: the errors decay at the designed 1200/s" },
     Preset { name: "ifoc-step", description: "Classical baseline: sensorless IFOC with an MRAS, step to 40 rad/s (MRAS is blind near zero speed)" },
-    Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): estimate noise through the gains saturates the 400 V limit" },
+    Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): the Euler EKF's prediction errors through the gains saturate the 400 V limit" },
 ];
 
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
@@ -435,6 +435,20 @@ pub struct FieldInfo {
     pub doc: &'static str,
     /// Current value as written in the codec, or None when it does not apply.
     pub value: Option<String>,
+    /// Whether the field acts on this scenario (the page shows only those): the IFOC tuning only
+    /// with the IFOC controller, ε and h only with the robust terms on.
+    pub acts: bool,
+}
+
+/// Whether field `key` changes anything in scenario `s`.
+fn acts(key: &str, s: &Scenario) -> bool {
+    if key.starts_with("ifoc.") {
+        s.controller == ControllerKind::Ifoc
+    } else if matches!(key, "eps2" | "h2" | "eps4" | "h4") {
+        s.gains.robust
+    } else {
+        true
+    }
 }
 
 macro_rules! num {
@@ -1167,6 +1181,7 @@ impl Field {
             },
             doc: self.doc,
             value: self.get(s),
+            acts: acts(self.key, s),
         }
     }
 }
@@ -1401,6 +1416,19 @@ mod tests {
             assert_eq!(Scenario::parse(&text).unwrap(), s);
             assert_eq!(Scenario::parse(p.name).unwrap(), s);
         }
+    }
+
+    #[test]
+    fn only_fields_that_act_are_marked_so() {
+        let acting = |text: &str, key: &str| {
+            let s = Scenario::parse(text).unwrap();
+            s.describe().iter().find(|f| f.key == key).unwrap().acts
+        };
+        assert!(!acting("v=1&preset=step", "ifoc.bw_i"));
+        assert!(acting("v=1&preset=ifoc-step", "ifoc.bw_i"));
+        assert!(!acting("v=1&preset=step&robust=0", "eps2"));
+        assert!(acting("v=1&preset=step&robust=1", "h4"));
+        assert!(acting("v=1&preset=step", "k1"));
     }
 
     #[test]

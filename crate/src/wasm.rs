@@ -120,6 +120,17 @@ impl Simulation {
         to_js(&self.inner.metrics())
     }
 
+    /// The figures of the run so far, `[{name, label, value, unit, window}]` as `imlab metrics`
+    /// prints them, or null when nothing is recorded.
+    pub fn figures(&self) -> Result<JsValue, JsValue> {
+        to_js(&sim::figures(&self.inner))
+    }
+
+    /// Where the start-up transient ends: `{t, reason}`.
+    pub fn transient(&self) -> Result<JsValue, JsValue> {
+        to_js(&sim::transient_end(&self.inner))
+    }
+
     /// The recorded trace as CSV, byte-identical to `imlab run`.
     pub fn csv(&self) -> String {
         self.inner.recorder().csv()

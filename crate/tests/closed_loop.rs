@@ -75,6 +75,13 @@ fn step_settles_within_6_ms() {
         .fold(step_time, f64::max);
     let settling = last_out - step_time;
     assert!(settling < 0.006, "2 % settling time {settling} s");
+    // The run's figures compute the same thing.
+    let figure = imlab::sim::figures(&sim)
+        .unwrap()
+        .into_iter()
+        .find(|f| f.name == "settling_time")
+        .expect("a step has a settling time");
+    assert_eq!(figure.value, settling);
 }
 
 fn tracking_rms(sim: &Simulation, t0: f64, t1: f64) -> f64 {

@@ -79,3 +79,48 @@ fn errors_are_readable_messages() {
     );
     assert!(e.contains("nope"), "{e}");
 }
+
+#[wasm_bindgen_test]
+fn figures_and_transient_are_the_core_values() {
+    #[derive(serde::Deserialize)]
+    struct Figure {
+        name: String,
+        label: String,
+        value: f64,
+        unit: String,
+        window: String,
+    }
+    #[derive(serde::Deserialize)]
+    struct Transient {
+        t: f64,
+        reason: String,
+    }
+    let mut js = Simulation::new("step").unwrap();
+    js.step(u32::MAX).unwrap();
+    let mut core = sim::Simulation::new(&Scenario::parse("step").unwrap(), 1).unwrap();
+    core.run().unwrap();
+    let got: Vec<Figure> = serde_wasm_bindgen::from_value(js.figures().unwrap()).unwrap();
+    let expected = sim::figures(&core).unwrap();
+    assert_eq!(got.len(), expected.len());
+    for (g, e) in got.iter().zip(&expected) {
+        assert_eq!(
+            (
+                g.name.as_str(),
+                g.label.as_str(),
+                g.unit.as_str(),
+                g.window.as_str()
+            ),
+            (e.name, e.label, e.unit, e.window.as_str())
+        );
+        assert_eq!(g.value.to_bits(), e.value.to_bits(), "{}", e.name);
+    }
+    let got: Transient = serde_wasm_bindgen::from_value(js.transient().unwrap()).unwrap();
+    let expected = sim::transient_end(&core);
+    assert_eq!((got.t, got.reason), (expected.t, expected.reason));
+    // Before any sample: no figures.
+    assert!(Simulation::new("step")
+        .unwrap()
+        .figures()
+        .unwrap()
+        .is_null());
+}

@@ -4,7 +4,7 @@ use imlab::analysis::{
     checked_grid, log_grid, seed_run, seeds_csv, sweep_csv, sweep_point, SweepSettings,
 };
 use imlab::scenario::{Scenario, PRESETS};
-use imlab::sim::Simulation;
+use imlab::sim::{figures, Simulation};
 use std::io::{BufWriter, Write};
 use std::process::ExitCode;
 
@@ -12,6 +12,7 @@ const USAGE: &str = "usage:
   imlab list                                   presets, one line each
   imlab describe SCENARIO                      every field of the effective scenario
   imlab run SCENARIO [--every N] [--out FILE]  CSV trace to stdout or FILE
+  imlab metrics SCENARIO                       figures of the run as CSV: name,value,unit
   imlab sweep SCENARIO [--freqs LO:HI:N | F1,F2,...] [--amp A] [--offset W] [--duration D]
                                                closed-loop frequency response as CSV (default
                                                10:1000:20 Hz, 0.02 rad/s about 0 rad/s, 0.2 s)
@@ -96,6 +97,7 @@ fn run(args: &[String]) -> Result<(), String> {
             // The trace up to the failure is written; the failure itself is an error.
             result.map_err(|e| format!("{e} (trace written up to the failure)"))
         }
+        Some("metrics") if args.len() == 2 => metrics(&args[1]),
         Some("sweep") if args.len() >= 2 => sweep(
             &args[1],
             &options(&args[2..], &["--freqs", "--amp", "--offset", "--duration"])?,
@@ -105,6 +107,30 @@ fn run(args: &[String]) -> Result<(), String> {
         }
         _ => Err(USAGE.to_string()),
     }
+}
+
+/// Runs the scenario, recording every sample, and prints its figures as `name,value,unit` lines;
+/// after a failure, the figures of the samples before it, then the failure as the error.
+fn metrics(text: &str) -> Result<(), String> {
+    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
+    let mut sim = Simulation::new(&s, 1).map_err(|e| e.to_string())?;
+    let result = sim.run();
+    let list = figures(&sim);
+    let write = |w: &mut dyn Write| -> std::io::Result<()> {
+        let mut w = BufWriter::new(w);
+        writeln!(w, "name,value,unit")?;
+        for f in list.iter().flatten() {
+            writeln!(w, "{},{},{}", f.name, f.value, f.unit)?;
+        }
+        w.flush()
+    };
+    write(&mut std::io::stdout().lock()).map_err(|e| format!("stdout: {e}"))?;
+    let printed = if list.is_some() {
+        "figures printed of the samples before the failure"
+    } else {
+        "nothing recorded before the failure"
+    };
+    result.map_err(|e| format!("{e} ({printed})"))
 }
 
 /// `--flag value` pairs, each flag one of `allowed`.

@@ -3,8 +3,10 @@
 //! This is the only module that sees the true plant state; the observer and controller get the
 //! measured currents and the applied voltages (or, with the `perfect` teaching switch, the truth).
 
+mod figures;
 mod recorder;
 
+pub use figures::{figures, transient_end, Figure, Transient};
 pub use recorder::{Recorder, Row, COLUMNS, COLUMN_DOCS, NUM_COLUMNS};
 
 use crate::control::{Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
@@ -81,6 +83,11 @@ pub struct Simulation {
     failure: Option<SimError>,
     /// Sampling rate 1/Ts (Hz).
     rate: f64,
+}
+
+/// Whether a commanded voltage component of `row` is beyond the limit `vmax` (V).
+fn is_saturated(row: &Row, vmax: f64) -> bool {
+    row.u_a_cmd.abs() > vmax || row.u_b_cmd.abs() > vmax
 }
 
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
@@ -412,7 +419,7 @@ impl Simulation {
             .iter()
             .filter(|r| r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE)
             .collect();
-        let saturated = |r: &Row| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax;
+        let saturated = |r: &Row| is_saturated(r, vmax);
         let outside_saturated = outside.iter().filter(|r| saturated(r)).count();
         // Most likely reason: saturation when most samples above the bound had the limit active;
         // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
@@ -478,11 +485,7 @@ impl Simulation {
             speed_estimate_rms: rms(&|r| r.omega_est_err),
             flux_estimate_rms: rms(&|r| r.flux_est_err),
             mean_nis: tail.iter().map(|r| r.nis).sum::<f64>() / n,
-            saturated: tail
-                .iter()
-                .filter(|r| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax)
-                .count() as f64
-                / n,
+            saturated: tail.iter().filter(|r| is_saturated(r, vmax)).count() as f64 / n,
         })
     }
 }

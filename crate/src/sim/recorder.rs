@@ -86,35 +86,35 @@ define_row! {
     flux_sq_hat,
     /// Estimated torque term a1(x3·x̂4 − x2·x̂5) (rad/s²).
     torque_hat,
-    /// v1 (rad/s²).
+    /// Virtual control v1 = v1a + v1s, eq (26): the torque term step 1 asks for (rad/s²).
     v1,
-    /// v1a.
+    /// Feedforward part v1a of v1, eq (27) (rad/s²).
     v1a,
-    /// v1s.
+    /// Feedback part v1s = −k1s1·z1 of v1, eq (28) (rad/s²).
     v1s,
-    /// v2 (rad/s³).
+    /// Input v2 = v2a + v2s of step 2, eq (34) (rad/s³).
     v2,
-    /// v2a.
+    /// Feedforward part v2a = −ψ2 − z1 of v2, eq (35) (rad/s³).
     v2a,
-    /// v2s.
+    /// Feedback part v2s = v2s1 + v2s2 of v2, eq (36) (rad/s³).
     v2s,
-    /// v3 (Wb²/s).
+    /// Virtual control v3 = v3a + v3s of step 3, eq (45) (Wb²/s).
     v3,
-    /// v3a.
+    /// Feedforward part v3a = −ψ3 of v3 (Wb²/s).
     v3a,
-    /// v3s.
+    /// Feedback part v3s = −k3·z3 of v3 (Wb²/s).
     v3s,
-    /// v4 (Wb²/s²).
+    /// Input v4 = v4a + v4s of step 4, eq (49) (Wb²/s²).
     v4,
-    /// v4a.
+    /// Feedforward part v4a = −ψ4 − z3 of v4, eq (50) (Wb²/s²).
     v4a,
-    /// v4s.
+    /// Feedback part v4s = v4s1 + v4s2 of v4, eq (51) (Wb²/s²).
     v4s,
-    /// ψ2.
+    /// Known part ψ2 of ż2, eq (33) (rad/s³).
     psi2,
-    /// ψ3.
+    /// Known part ψ3 of ż3, eq (43) (Wb²/s).
     psi3,
-    /// ψ4.
+    /// Known part ψ4 of ż4, eq (47) (Wb²/s²).
     psi4,
     /// Commanded u_sa before saturation (V).
     u_a_cmd,
@@ -122,7 +122,7 @@ define_row! {
     u_b_cmd,
     /// Speed estimate the controller used: x̂1 (EKF) for backstepping, the MRAS estimate for IFOC (rad/s).
     omega_used,
-    /// Lyapunov function V = ½ Σ z_i².
+    /// Lyapunov function V = ½ Σ z_i² (mixed units).
     lyapunov,
     /// Innovation ỹ_a (A).
     innov_a,
@@ -138,7 +138,7 @@ define_row! {
     s_ab,
     /// Innovation covariance S_bb (A²).
     s_bb,
-    /// Normalised innovation squared.
+    /// Normalised innovation squared ỹᵀS⁻¹ỹ (dimensionless).
     nis,
     /// Posterior speed variance P_11 ((rad/s)²).
     p_omega,
@@ -233,9 +233,9 @@ impl Recorder {
         String::from_utf8(buf).expect("CSV is ASCII")
     }
 
-    /// Min/max envelope of the named columns over rows with t in [t0, t1], in at most `buckets`
-    /// buckets. Each bucket gives two points: (first t, min) and (last t, max), so a plot of the
-    /// result shows every excursion of the full-rate trace. Returns [t, col1, col2, ...].
+    /// M4 envelope (Jugel et al., VLDB 2014) of the named columns over rows with t in [t0, t1],
+    /// in at most `buckets` buckets: see [`m4`]. Returns [t, col1, col2, ...]; every point is a
+    /// recorded sample, so a line plot of it draws no edge the samples do not have.
     pub fn envelope(
         &self,
         names: &[&str],
@@ -247,44 +247,22 @@ impl Recorder {
             .iter()
             .map(|n| Self::index(n))
             .collect::<Option<_>>()?;
-        let start = self.rows.partition_point(|r| r.t < t0);
-        let end = self.rows.partition_point(|r| r.t <= t1).max(start);
-        let window = &self.rows[start..end];
-        let n = window.len();
-        let buckets = buckets.max(1);
-        let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); cols.len() + 1];
-        if n <= 2 * buckets {
-            for r in window {
-                let v = r.values();
-                out[0].push(r.t);
-                for (o, &c) in out[1..].iter_mut().zip(&cols) {
-                    o.push(v[c]);
-                }
-            }
-            return Some(out);
-        }
-        let mut lo = vec![f64::INFINITY; cols.len()];
-        let mut hi = vec![f64::NEG_INFINITY; cols.len()];
-        for b in 0..buckets {
-            let bucket = &window[split(b, n, buckets)..split(b + 1, n, buckets)];
-            out[0].push(bucket[0].t);
-            out[0].push(bucket[bucket.len() - 1].t);
-            lo.fill(f64::INFINITY);
-            hi.fill(f64::NEG_INFINITY);
-            for r in bucket {
-                let v = r.values();
-                for (k, &c) in cols.iter().enumerate() {
-                    lo[k] = lo[k].min(v[c]);
-                    hi[k] = hi[k].max(v[c]);
-                }
-            }
-            for (k, o) in out[1..].iter_mut().enumerate() {
-                o.push(lo[k]);
-                o.push(hi[k]);
-            }
-        }
-        Some(out)
+        let (start, end) = window(&self.rows, t0, t1);
+        let rows = &self.rows;
+        let series: Vec<Box<dyn Fn(usize) -> f64 + '_>> = cols
+            .iter()
+            .map(|&c| Box::new(move |i: usize| rows[i].values()[c]) as Box<dyn Fn(usize) -> f64>)
+            .collect();
+        let refs: Vec<&dyn Fn(usize) -> f64> = series.iter().map(|f| f.as_ref()).collect();
+        Some(m4(|i| rows[i].t, &refs, start, end - start, buckets))
     }
+}
+
+/// Row range of `rows` with t in [t0, t1].
+fn window(rows: &[Row], t0: f64, t1: f64) -> (usize, usize) {
+    let start = rows.partition_point(|r| r.t < t0);
+    let end = rows.partition_point(|r| r.t <= t1).max(start);
+    (start, end)
 }
 
 /// Start of bucket `b` of `buckets` over `n` rows: b·n/buckets in 64 bits (on wasm32 the product
@@ -293,9 +271,17 @@ fn split(b: usize, n: usize, buckets: usize) -> usize {
     (b as u64 * n as u64 / buckets as u64) as usize
 }
 
-/// Min/max envelopes of `series` (functions of the row index) over rows `start..start + n`, as
-/// [t, series...] with two points per bucket, like [`Recorder::envelope`].
-fn bucketed(
+/// Rows per bucket up to which a window is sent whole: M4 keeps up to four per bucket anyway.
+const M4_POINTS: usize = 4;
+
+/// M4 envelope of `series` (functions of the row index) over rows `start..start + n`, as
+/// [t, series...]. The rows are split into `buckets` equal buckets; each bucket keeps its first
+/// and last row and, for every series, the row of its minimum and of its maximum (the first such
+/// row on ties), in row order and without repeats. Every series is given at every kept row, so
+/// each emitted (t, value) pair is a recorded sample, t never decreases, and each bucket keeps
+/// the extremes of every series at their own times. Windows of at most four rows per bucket are
+/// returned whole.
+pub fn m4(
     t: impl Fn(usize) -> f64,
     series: &[&dyn Fn(usize) -> f64],
     start: usize,
@@ -303,31 +289,52 @@ fn bucketed(
     buckets: usize,
 ) -> Vec<Vec<f64>> {
     let buckets = buckets.max(1);
-    let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(2 * buckets.min(n)); series.len() + 1];
-    if n <= 2 * buckets {
+    let whole = n <= M4_POINTS * buckets;
+    let per_bucket = 2 + 2 * series.len();
+    let capacity = if whole {
+        n
+    } else {
+        buckets * per_bucket.min(n / buckets + 1)
+    };
+    let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(capacity); series.len() + 1];
+    let emit = |i: usize, out: &mut Vec<Vec<f64>>| {
+        out[0].push(t(i));
+        for (o, f) in out[1..].iter_mut().zip(series) {
+            o.push(f(i));
+        }
+    };
+    if whole {
         for i in start..start + n {
-            out[0].push(t(i));
-            for (o, f) in out[1..].iter_mut().zip(series) {
-                o.push(f(i));
-            }
+            emit(i, &mut out);
         }
         return out;
     }
+    let mut kept = Vec::with_capacity(per_bucket);
     for b in 0..buckets {
         let (lo, hi) = (
             start + split(b, n, buckets),
             start + split(b + 1, n, buckets),
         );
-        out[0].push(t(lo));
-        out[0].push(t(hi - 1));
-        for (o, f) in out[1..].iter_mut().zip(series) {
-            let (mn, mx) = (lo..hi)
-                .map(f)
-                .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| {
-                    (a.min(v), b.max(v))
-                });
-            o.push(mn);
-            o.push(mx);
+        kept.clear();
+        kept.extend([lo, hi - 1]);
+        for f in series {
+            let (mut min_at, mut max_at) = (lo, lo);
+            let (mut min, mut max) = (f(lo), f(lo));
+            for i in lo + 1..hi {
+                let v = f(i);
+                if v < min {
+                    (min, min_at) = (v, i);
+                }
+                if v > max {
+                    (max, max_at) = (v, i);
+                }
+            }
+            kept.extend([min_at, max_at]);
+        }
+        kept.sort_unstable();
+        kept.dedup();
+        for &i in &kept {
+            emit(i, &mut out);
         }
     }
     out
@@ -336,7 +343,7 @@ fn bucketed(
 impl Recorder {
     /// Overlay of column `name` of this run and of `others` (recorded at the same sampling period),
     /// with the differences this − other, over their common rows with t in [t0, t1]. Returns
-    /// [t, this, others..., differences...] as min/max envelopes.
+    /// [t, this, others..., differences...] as one M4 envelope ([`m4`]).
     pub fn overlay(
         &self,
         others: &[&Recorder],
@@ -348,8 +355,7 @@ impl Recorder {
         let c = Self::index(name)?;
         let rows = others.iter().map(|o| o.len()).fold(self.len(), usize::min);
         let common = &self.rows[..rows];
-        let start = common.partition_point(|r| r.t < t0);
-        let end = common.partition_point(|r| r.t <= t1).max(start);
+        let (start, end) = window(common, t0, t1);
         let value = |rec: &Recorder, i: usize| rec.rows[i].values()[c];
         let mut series: Vec<Box<dyn Fn(usize) -> f64 + '_>> =
             vec![Box::new(move |i| value(self, i))];
@@ -360,13 +366,7 @@ impl Recorder {
             series.push(Box::new(move |i| value(self, i) - value(o, i)));
         }
         let refs: Vec<&dyn Fn(usize) -> f64> = series.iter().map(|f| f.as_ref()).collect();
-        Some(bucketed(
-            |i| self.rows[i].t,
-            &refs,
-            start,
-            end - start,
-            buckets,
-        ))
+        Some(m4(|i| self.rows[i].t, &refs, start, end - start, buckets))
     }
 }
 
@@ -403,9 +403,9 @@ mod tests {
         assert_eq!(o.len(), 4);
         assert_eq!(o[0].len(), 800);
         assert!((0..800).all(|k| o[3][k] == o[1][k] - o[2][k] && o[2][k] == 2.0 * k as f64));
-        // Bucketed: the envelope of the difference brackets every sample's difference.
+        // Bucketed: the envelope of the difference keeps every sample's extreme difference.
         let e = a.overlay(&[&b], "omega", 0.0, 1e9, 10).unwrap();
-        assert_eq!(e[0].len(), 20);
+        assert!(e[0].len() <= 10 * 8);
         let a_omega = a.column("omega").unwrap();
         let true_min = (0..800)
             .map(|k| a_omega[k] - 2.0 * k as f64)
@@ -421,16 +421,90 @@ mod tests {
     }
 
     #[test]
-    fn envelope_keeps_extremes_and_bucket_count() {
+    fn envelope_keeps_extremes_at_their_own_times() {
         let r = ramp_recorder(1000);
         let env = r.envelope(&["omega"], 0.0, 1e9, 50).unwrap();
-        assert_eq!(env[0].len(), 100);
+        // 20 rows a bucket; the extremes of omega = k mod 7 (and the spike at 37) are kept.
         let max = env[1].iter().cloned().fold(f64::NEG_INFINITY, f64::max);
         let min = env[1].iter().cloned().fold(f64::INFINITY, f64::min);
         assert_eq!((min, max), (0.0, 100.0));
-        // A window narrower than the bucket count returns the raw samples.
+        let spike = env[0].iter().position(|&t| t == 37.0).unwrap();
+        assert_eq!(env[1][spike], 100.0);
+        assert!(env[0].len() <= 4 * 50);
+        // A window of at most four rows a bucket returns the raw samples.
         let win = r.envelope(&["omega"], 30.0, 40.0, 50).unwrap();
         assert_eq!(win[0], (30..=40).map(|k| k as f64).collect::<Vec<_>>());
         assert!(r.envelope(&["nope"], 0.0, 1.0, 10).is_none());
+    }
+
+    /// A falling edge inside one bucket: the old envelope drew (first t, min), (last t, max),
+    /// a rising sawtooth the samples do not have.
+    #[test]
+    fn a_falling_edge_stays_falling() {
+        let mut r = Recorder::with_capacity(1000, 1);
+        for k in 0..1000 {
+            r.record(|| Row {
+                t: k as f64,
+                omega: -(k as f64),
+                ..Row::default()
+            });
+        }
+        let env = r.envelope(&["omega"], 0.0, 1e9, 10).unwrap();
+        assert!(env[1].windows(2).all(|w| w[1] <= w[0]), "{:?}", env[1]);
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    use proptest::prelude::*;
+
+    #[cfg(not(target_arch = "wasm32"))]
+    proptest! {
+        /// For random traces, windows and bucket counts: every emitted (t, value) pair is a
+        /// recorded sample, t never decreases, and each bucket keeps its samples' min and max.
+        #[test]
+        fn m4_emits_only_recorded_samples_and_keeps_bucket_extremes(
+            values in prop::collection::vec((-1e3f64..1e3, -1e3f64..1e3), 1..3000),
+            from in 0usize..3000,
+            len in 0usize..3000,
+            buckets in 1usize..400,
+        ) {
+            let mut r = Recorder::with_capacity(values.len(), 1);
+            for (k, &(a, b)) in values.iter().enumerate() {
+                r.record(|| Row { t: k as f64 * 5e-5, omega: a, z1: b, ..Row::default() });
+            }
+            let n = values.len();
+            let start = from.min(n);
+            let end = (start + len).min(n);
+            let (t0, t1) = (start as f64 * 5e-5, if end > start { (end - 1) as f64 * 5e-5 } else { -1.0 });
+            let env = r.envelope(&["omega", "z1"], t0, t1, buckets).unwrap();
+            let index = |t: f64| {
+                let k = r.rows().partition_point(|row| row.t < t);
+                assert_eq!(r.rows()[k].t, t, "t = {t} is not a recorded time");
+                k
+            };
+            for (j, &t) in env[0].iter().enumerate() {
+                let k = index(t);
+                prop_assert!(k >= start && k < end);
+                prop_assert_eq!(env[1][j], values[k].0);
+                prop_assert_eq!(env[2][j], values[k].1);
+            }
+            prop_assert!(env[0].windows(2).all(|w| w[0] < w[1]));
+            let rows = end.saturating_sub(start);
+            if rows > M4_POINTS * buckets {
+                prop_assert!(env[0].len() <= 6 * buckets);
+                for b in 0..buckets {
+                    let (lo, hi) = (start + split(b, rows, buckets), start + split(b + 1, rows, buckets));
+                    let inside: Vec<usize> = (0..env[0].len()).filter(|&j| (lo..hi).contains(&index(env[0][j]))).collect();
+                    for (c, pick) in [(1, 0), (2, 1)] {
+                        let field = |k: usize| if pick == 0 { values[k].0 } else { values[k].1 };
+                        let min = (lo..hi).map(field).fold(f64::INFINITY, f64::min);
+                        let max = (lo..hi).map(field).fold(f64::NEG_INFINITY, f64::max);
+                        prop_assert_eq!(inside.iter().map(|&j| env[c][j]).fold(f64::INFINITY, f64::min), min);
+                        prop_assert_eq!(inside.iter().map(|&j| env[c][j]).fold(f64::NEG_INFINITY, f64::max), max);
+                    }
+                }
+            } else {
+                prop_assert_eq!(env[0].len(), rows);
+            }
+        }
     }
 }

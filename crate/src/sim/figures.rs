@@ -1,0 +1,583 @@
+//! Figures of a run: the end of the start-up transient and what tracking, saturation, the EKF's
+//! consistency and the final errors look like after it, each with its unit and its window.
+//!
+//! Everything here reads the recorded trace; `imlab metrics` prints the list and the page shows it
+//! as given.
+
+use super::{is_saturated, Row, Simulation};
+use crate::control::Reference;
+use crate::scenario::{ControllerKind, Scenario};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// Time constants of the slowest designed rate after which the controller's start-up is over:
+/// e^−5 < 1 % of the initial error remains.
+const CONTROLLER_TIME_CONSTANTS: f64 = 5.0;
+
+/// The innovation band counts as settled within this fraction of its value at the last sample.
+const BAND_SETTLED: f64 = 0.10;
+
+/// Window of the moving mean NIS that tells when the EKF's estimates have converged (s).
+const NIS_WINDOW: f64 = 2e-3;
+
+/// The estimates count as converged once the moving mean NIS stays within this factor of the
+/// mean NIS over the second half of the run.
+const NIS_SETTLED: f64 = 2.0;
+
+/// Settling band of the step response: 2 % of the step size.
+const SETTLING_BAND: f64 = 0.02;
+
+/// Standard-normal quantile of 97.5 %: the 95 % two-sided band.
+const Z_975: f64 = 1.959963984540054;
+
+/// One figure of a run.
+#[derive(Clone, Debug, Serialize)]
+pub struct Figure {
+    /// Machine name, used by `imlab metrics` and the tests, e.g. "tracking_rms".
+    pub name: &'static str,
+    /// Short human label with symbols, e.g. "RMS of ω − ω_d".
+    pub label: &'static str,
+    /// The value, in `unit`.
+    pub value: f64,
+    /// Unit of `value` ("" for fractions and ratios).
+    pub unit: &'static str,
+    /// The part of the run it covers, e.g. "t ≥ 4.2 ms" or "last sample, t = 99.95 ms".
+    pub window: String,
+}
+
+/// Where the start-up transient ends, and why there.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Transient {
+    /// End of the transient (s): a recorded sample time.
+    pub t: f64,
+    /// One line naming the controller's and the observer's start-up times.
+    pub reason: String,
+}
+
+/// The end of the start-up transient of `sim`: the first recorded sample time at or after the
+/// later of
+///
+/// - (a) the observer's start-up: the first recorded time from which the EKF innovation band
+///   `innov_band_a` (2·S_aa^½) stays within 10 % of its value at the last recorded sample (P0
+///   starts it near 0.4 A; on the presets it settles to about 4 mA within 0.5–1.4 ms), and
+/// - (b) the controller's start-up: five time constants of its slowest designed rate,
+///   5/min(k1, k2, k3, k4) for backstepping (4.17 ms at the paper's 1200/s), or
+///   5/(2π·current_bw) for the IFOC baseline (its current loops), and
+/// - (c) the EKF's estimates: the end of the first full 2 ms window whose mean NIS is within
+///   twice the mean NIS of the second half of the run (the estimates start 10 % off and take
+///   about 10 ms to converge; until then the NIS is far above its later level); left out when no
+///   window in the first half gets there (a noise-free run, whose NIS decays towards zero),
+///
+/// clamped to at most half the recorded run, so that a window of samples always remains after
+/// it. With nothing recorded yet, t = 0.
+pub fn transient_end(sim: &Simulation) -> Transient {
+    transient(sim.scenario(), sim.recorder().rows()).0
+}
+
+/// The figures of `sim` over the samples recorded so far (see [`Figure`]), in this order:
+/// `transient_end`, `tracking_rms`, `tracking_peak`, `settling_time` (step references only),
+/// `saturated_share`, `mean_nis`, `mean_nis_low`, `mean_nis_high`, `current_peak`,
+/// `flux_error_final`, `speed_error_final`, `speed_estimate_error_final`. The window figures
+/// cover W = [transient end, last recorded sample]. A figure whose value is not finite is left
+/// out. None when nothing is recorded.
+pub fn figures(sim: &Simulation) -> Option<Vec<Figure>> {
+    figures_of(sim.scenario(), sim.recorder().rows())
+}
+
+/// The transient (see [`transient_end`]) and the index of its first row in `rows`.
+fn transient(s: &Scenario, rows: &[Row]) -> (Transient, usize) {
+    let (Some(first), Some(last)) = (rows.first(), rows.last()) else {
+        return (
+            Transient {
+                t: 0.0,
+                reason: "nothing recorded yet".to_string(),
+            },
+            0,
+        );
+    };
+    // (a) The last row outside the band settles nothing; the one after it starts the settled run.
+    // A NaN band counts as not settled.
+    let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
+    let observer = rows
+        .iter()
+        .rposition(|r| !settled(r.innov_band_a))
+        .map_or(0, |i| (i + 1).min(rows.len() - 1));
+    let t_observer = rows[observer].t;
+    // (b)
+    let (t_controller, controller) = match s.controller {
+        ControllerKind::Backstepping => {
+            let g = &s.gains;
+            let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
+            let t = CONTROLLER_TIME_CONSTANTS / k;
+            (
+                t,
+                format!(
+                    "5 time constants of the slowest designed error rate (1/{k} s) = {}",
+                    time_text(t)
+                ),
+            )
+        }
+        ControllerKind::Ifoc => {
+            let bw = s.ifoc.current_bw;
+            let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
+            (
+                t,
+                format!(
+                    "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
+                    time_text(t)
+                ),
+            )
+        }
+    };
+    let half = first.t + 0.5 * (last.t - first.t);
+    // (c)
+    let half_index = rows.partition_point(|r| r.t < half).min(rows.len() - 1);
+    let late = &rows[half_index..];
+    let late_mean = late.iter().map(|r| r.nis).sum::<f64>() / late.len() as f64;
+    let (mut sum, mut start, mut estimates) = (0.0, 0, None);
+    for (i, r) in rows[..half_index].iter().enumerate() {
+        sum += r.nis;
+        while r.t - rows[start].t >= NIS_WINDOW {
+            sum -= rows[start].nis;
+            start += 1;
+        }
+        if start > 0 && sum / (i + 1 - start) as f64 <= NIS_SETTLED * late_mean {
+            estimates = Some(r.t);
+            break;
+        }
+    }
+    let t_estimates = estimates.unwrap_or(first.t);
+    let later = t_controller.max(t_observer).max(t_estimates);
+    let target = later.min(half);
+    // The rows are in time order and the last one is at or after `half`.
+    let index = rows.partition_point(|r| r.t < target).min(rows.len() - 1);
+    let mut reason = format!(
+        "{controller}; EKF innovation covariance settled at {} (2σ band within 10 % of its final value); EKF estimates converged at {} (2 ms mean NIS within twice its level in the second half)",
+        time_text(t_observer),
+        estimates.map_or("never in the first half: not used".to_string(), time_text)
+    );
+    if later > half {
+        reason.push_str(&format!(
+            "; clamped to half the recorded run ({})",
+            time_text(half)
+        ));
+    }
+    (
+        Transient {
+            t: rows[index].t,
+            reason,
+        },
+        index,
+    )
+}
+
+/// The figures of a trace `rows` recorded from scenario `s`.
+fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
+    let last = rows.last()?;
+    let (end, start) = transient(s, rows);
+    let w = &rows[start..];
+    let n = w.len() as f64;
+    let in_w = format!("t ≥ {}", time_text(end.t));
+    let at_last = format!("last sample, t = {}", time_text(last.t));
+    let mut out = Vec::new();
+    let mut push = |name, label, value: f64, unit, window: &String| {
+        if value.is_finite() {
+            out.push(Figure {
+                name,
+                label,
+                value,
+                unit,
+                window: window.clone(),
+            });
+        }
+    };
+    push(
+        "transient_end",
+        "start-up transient ends",
+        end.t,
+        "s",
+        &format!("start-up, t < {}", time_text(end.t)),
+    );
+    let mean = |f: &dyn Fn(&Row) -> f64| w.iter().map(f).sum::<f64>() / n;
+    let peak = |f: &dyn Fn(&Row) -> f64| w.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
+    push(
+        "tracking_rms",
+        "RMS of ω − ω_d",
+        mean(&|r| r.omega_err * r.omega_err).sqrt(),
+        "rad/s",
+        &in_w,
+    );
+    push(
+        "tracking_peak",
+        "peak |ω − ω_d|",
+        peak(&|r| r.omega_err.abs()),
+        "rad/s",
+        &in_w,
+    );
+    if let Some((value, time)) = settling_time(&s.reference, s.ts, rows) {
+        push(
+            "settling_time",
+            "2 % settling time of ω after the step",
+            value,
+            "s",
+            &format!("from the step at {}", time_text(time)),
+        );
+    }
+    let vmax = s.voltage_limit;
+    push(
+        "saturated_share",
+        "share of samples at the voltage limit",
+        w.iter().filter(|r| is_saturated(r, vmax)).count() as f64 / n,
+        "",
+        &in_w,
+    );
+    let (low, high) = mean_nis_band(w.len());
+    push("mean_nis", "mean NIS", mean(&|r| r.nis), "", &in_w);
+    push(
+        "mean_nis_low",
+        "mean NIS, low end of a consistent filter's 95 % band",
+        low,
+        "",
+        &in_w,
+    );
+    push(
+        "mean_nis_high",
+        "mean NIS, high end of a consistent filter's 95 % band",
+        high,
+        "",
+        &in_w,
+    );
+    push(
+        "current_peak",
+        "peak stator current |i_s|",
+        peak(&|r| (r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt()),
+        "A",
+        &in_w,
+    );
+    push(
+        "flux_error_final",
+        "final flux error |φ_r| − √ψ_d",
+        last.flux - last.flux_ref,
+        "Wb",
+        &at_last,
+    );
+    push(
+        "speed_error_final",
+        "final speed error ω − ω_d",
+        last.omega_err,
+        "rad/s",
+        &at_last,
+    );
+    push(
+        "speed_estimate_error_final",
+        "final speed-estimate error ω − ω̂",
+        last.omega_est_err,
+        "rad/s",
+        &at_last,
+    );
+    Some(out)
+}
+
+/// The 2 % settling time of the true speed after a step reference, and the step time (s):
+/// the last recorded time after the step with |ω − (ω_d before the step + size)| above 2 % of
+/// |size|, minus the step time; 0 when ω never leaves the band. None for other references, when
+/// the recording stops before the step, or when ω is still outside the band at the last sample
+/// (not settled: the settling time is unknown).
+fn settling_time(reference: &Reference, ts: f64, rows: &[Row]) -> Option<(f64, f64)> {
+    let Reference::Step { size, time, .. } = *reference else {
+        return None;
+    };
+    if rows.last()?.t < time {
+        return None;
+    }
+    let target = reference.sample(time - ts).value + size;
+    let band = SETTLING_BAND * size.abs();
+    let outside = |r: &Row| (r.omega - target).abs() > band;
+    if rows.last().is_some_and(outside) {
+        return None;
+    }
+    let last_out = rows
+        .iter()
+        .filter(|r| r.t >= time && outside(r))
+        .map(|r| r.t)
+        .next_back();
+    Some((last_out.map_or(0.0, |t| t - time), time))
+}
+
+/// The 95 % band (low, high) of the mean NIS of a consistent filter over `samples` samples.
+///
+/// For a consistent filter with 2 measurements, each NIS is χ²(2); if the samples were
+/// independent, N·mean would be χ²(2N). Its quantiles come from the Wilson–Hilferty
+/// approximation k(1 − 2/(9k) + z·(2/(9k))^½)³ with k = 2N, z = ∓1.96. The NIS of a filter that
+/// is not consistent is correlated from sample to sample, so the band only tells a consistent
+/// filter from one that is not; it is not a confidence interval for an inconsistent one.
+fn mean_nis_band(samples: usize) -> (f64, f64) {
+    let n = samples as f64;
+    let k = 2.0 * n;
+    let a = 2.0 / (9.0 * k);
+    let quantile = |z: f64| {
+        let c = 1.0 - a + z * a.sqrt();
+        k * c * c * c / n
+    };
+    (quantile(-Z_975), quantile(Z_975))
+}
+
+/// `t` (s) with up to 4 significant digits: in ms below 1 s, in s from 1 s on.
+fn time_text(t: f64) -> String {
+    if t.abs() < 1.0 {
+        format!("{} ms", significant(t * 1e3, 4))
+    } else {
+        format!("{} s", significant(t, 4))
+    }
+}
+
+/// `v` rounded to `digits` significant digits (all digits before the point are kept), without
+/// trailing zeros.
+fn significant(v: f64, digits: i32) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let mut decimals = digits - 1;
+    let mut m = v.abs();
+    while m >= 10.0 && decimals > 0 {
+        m /= 10.0;
+        decimals -= 1;
+    }
+    while m < 1.0 {
+        m *= 10.0;
+        decimals += 1;
+    }
+    let text = format!("{v:.*}", decimals as usize);
+    if text.contains('.') {
+        text.trim_end_matches('0').trim_end_matches('.').to_string()
+    } else {
+        text
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::preset;
+
+    /// Sample period of the hand-made traces (s).
+    const TS: f64 = 1e-3;
+
+    fn trace(n: usize, fill: impl Fn(usize, &mut Row)) -> Vec<Row> {
+        (0..n)
+            .map(|k| {
+                let mut r = Row {
+                    t: k as f64 * TS,
+                    ..Row::default()
+                };
+                fill(k, &mut r);
+                r
+            })
+            .collect()
+    }
+
+    fn value(figures: &[Figure], name: &str) -> Option<f64> {
+        figures.iter().find(|f| f.name == name).map(|f| f.value)
+    }
+
+    #[test]
+    fn mean_nis_band_matches_the_normal_limit_and_chi_square_tables() {
+        // Large N: N·mean ~ χ²(2N) is nearly normal, mean 2 and sd 2/√N. The skew of χ² shifts
+        // both ends by (2/3)(z² − 1)/N, 0.5 % of the half-width at N = 10 000.
+        let n = 10_000;
+        let (low, high) = mean_nis_band(n);
+        let half = Z_975 * 2.0 / (n as f64).sqrt();
+        assert!(((2.0 - low) / half - 1.0).abs() < 0.01, "low {low}");
+        assert!(((high - 2.0) / half - 1.0).abs() < 0.01, "high {high}");
+        // N = 50: χ²(100) has the tabulated 2.5 % and 97.5 % quantiles 74.2219 and 129.5612;
+        // Wilson–Hilferty is within 0.01 of them at 100 degrees of freedom.
+        let (low, high) = mean_nis_band(50);
+        assert!((50.0 * low - 74.2219).abs() < 0.01, "{}", 50.0 * low);
+        assert!((50.0 * high - 129.5612).abs() < 0.01, "{}", 50.0 * high);
+    }
+
+    #[test]
+    fn settling_time_is_the_last_exit_from_the_2_percent_band() {
+        let step = Reference::Step {
+            size: 2.0,
+            time: 0.003,
+            wn: 1000.0,
+        };
+        // Band 0.04 about 2: the sample at 7 ms (2.05) is the last one outside.
+        let speeds = [0.0, 0.0, 0.0, 0.5, 1.5, 1.97, 2.03, 2.05, 1.99, 2.01, 2.0];
+        let rows = trace(speeds.len(), |k, r| r.omega = speeds[k]);
+        let (settling, time) = settling_time(&step, TS, &rows).unwrap();
+        assert_eq!(time, 0.003);
+        assert!((settling - 0.004).abs() < 1e-15, "{settling}");
+        // Never outside after the step: 0.
+        let rows = trace(6, |k, r| r.omega = if k >= 3 { 2.0 } else { 0.0 });
+        assert_eq!(settling_time(&step, TS, &rows), Some((0.0, 0.003)));
+        // A negative step: the band is 2 % of |size|.
+        let down = Reference::Step {
+            size: -2.0,
+            time: 0.003,
+            wn: 1000.0,
+        };
+        let rows = trace(speeds.len(), |k, r| r.omega = -speeds[k]);
+        assert!((settling_time(&down, TS, &rows).unwrap().0 - 0.004).abs() < 1e-15);
+        // Still outside at the end, stopped before the step, or no step at all: no figure.
+        let rows = trace(8, |k, r| r.omega = speeds[k]);
+        assert_eq!(settling_time(&step, TS, &rows), None);
+        let rows = trace(3, |_, _| ());
+        assert_eq!(settling_time(&step, TS, &rows), None);
+        let constant = Reference::Constant { value: 2.0 };
+        let rows = trace(speeds.len(), |k, r| r.omega = speeds[k]);
+        assert_eq!(settling_time(&constant, TS, &rows), None);
+    }
+
+    /// A band that starts at 0.4 A and settles to 4 mA at sample `settled`.
+    fn band(k: usize, settled: usize) -> f64 {
+        if k < settled {
+            0.4
+        } else {
+            0.004
+        }
+    }
+
+    #[test]
+    fn transient_ends_at_the_later_of_controller_and_observer_start_up() {
+        let mut s = preset("step").unwrap();
+        s.ts = TS;
+        s.gains.k1 = 1000.0; // 5/1000 s = 5 ms: the slowest of 1000, 1200, 1200, 1200
+                             // Observer settled at 2 ms: the controller's 5 ms decides.
+        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
+        let (t, i) = transient(&s, &rows);
+        assert_eq!((t.t, i), (rows[5].t, 5));
+        assert!(t.reason.contains("(1/1000 s) = 5 ms"), "{}", t.reason);
+        assert!(t.reason.contains("settled at 2 ms"), "{}", t.reason);
+        // Within 10 % counts as settled; 11 % off at 19 ms does not.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = match k {
+                19 => 0.00444,
+                30 => 0.0043,
+                _ => band(k, 2),
+            }
+        });
+        assert_eq!(transient(&s, &rows).1, 20);
+        // IFOC: 5/(2π·100 Hz) = 7.96 ms, so the first sample at or after it is 8 ms.
+        s.controller = ControllerKind::Ifoc;
+        s.ifoc.current_bw = 100.0;
+        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
+        let (t, _) = transient(&s, &rows);
+        assert_eq!(t.t, rows[8].t);
+        assert!(t.reason.contains("IFOC current loops"), "{}", t.reason);
+        // A run of 10 samples (0–9 ms) is clamped to its half, 4.5 ms: first sample 5 ms.
+        let rows = trace(10, |k, r| r.innov_band_a = band(k, 2));
+        let (t, i) = transient(&s, &rows);
+        assert_eq!(i, 5);
+        assert!(t.reason.contains("clamped to half"), "{}", t.reason);
+        // One sample: the window is that sample.
+        assert_eq!(transient(&s, &rows[..1]).1, 0);
+        // The estimates: NIS 50 until 30 ms, then 2. The first full 2 ms window with a mean
+        // within 2 × 2 is [30, 31] ms (mean 2), later than the controller's 8 ms; whether
+        // 31 − 29 ms counts as a whole window is up to rounding, so 31 or 32 ms.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = band(k, 2);
+            r.nis = if k < 30 { 50.0 } else { 2.0 };
+        });
+        let (t, i) = transient(&s, &rows);
+        assert!((31..=32).contains(&i), "{}", t.reason);
+        let converged = format!("EKF estimates converged at {i} ms");
+        assert!(t.reason.contains(&converged), "{}", t.reason);
+        // A noise-free run whose NIS decays to zero: the estimates' part is not used.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = band(k, 2);
+            r.nis = 100.0 * 0.5f64.powi(k as i32);
+        });
+        assert!(transient(&s, &rows).0.reason.contains("not used"));
+    }
+
+    #[test]
+    fn window_figures_cover_only_the_samples_after_the_transient() {
+        let mut s = preset("ramp").unwrap();
+        s.ts = TS;
+        s.voltage_limit = 100.0;
+        // Transient ends at 5 ms (5/1200 s rounded up to a sample). Before it, wild values that
+        // must not count; after it, ω − ω_d = ±0.3, one sample in four at the limit, NIS 1 or 3,
+        // currents (3, 4).
+        let rows = trace(20, |k, r| {
+            r.innov_band_a = 0.004;
+            r.nis = if k % 2 == 0 { 1.0 } else { 3.0 };
+            // The estimates settle (2 ms mean NIS ≤ 2 × 2) at 4 ms, before the controller.
+            if k < 3 {
+                r.nis = 1e3;
+            }
+            if k < 5 {
+                r.omega_err = 100.0;
+                r.u_a_cmd = 1e3;
+                r.i_sa = 1e3;
+                return;
+            }
+            r.omega_err = if k % 2 == 0 { 0.3 } else { -0.3 };
+            r.u_b_cmd = if k % 4 == 0 { -101.0 } else { 99.0 };
+            (r.i_sa, r.i_sb) = (3.0, if k == 7 { -4.0 } else { 0.0 });
+            r.omega_est_err = 0.25;
+            r.flux = 0.7;
+            r.flux_ref = 0.5;
+        });
+        let f = figures_of(&s, &rows).unwrap();
+        let names: Vec<&str> = f.iter().map(|f| f.name).collect();
+        assert_eq!(
+            names,
+            [
+                "transient_end",
+                "tracking_rms",
+                "tracking_peak",
+                "saturated_share",
+                "mean_nis",
+                "mean_nis_low",
+                "mean_nis_high",
+                "current_peak",
+                "flux_error_final",
+                "speed_error_final",
+                "speed_estimate_error_final"
+            ]
+        );
+        assert_eq!(value(&f, "transient_end"), Some(rows[5].t));
+        assert!((value(&f, "tracking_rms").unwrap() - 0.3).abs() < 1e-15);
+        assert_eq!(value(&f, "tracking_peak"), Some(0.3));
+        // Samples 5..20: 8, 12 and 16 are beyond the limit, 3 of 15.
+        assert_eq!(value(&f, "saturated_share"), Some(3.0 / 15.0));
+        // 7 samples (even k) of NIS 1 and 8 (odd k) of NIS 3.
+        assert!((value(&f, "mean_nis").unwrap() - 31.0 / 15.0).abs() < 1e-15);
+        assert_eq!(value(&f, "mean_nis_low"), Some(mean_nis_band(15).0));
+        assert_eq!(value(&f, "current_peak"), Some(5.0));
+        assert!((value(&f, "flux_error_final").unwrap() - 0.2).abs() < 1e-15);
+        assert_eq!(value(&f, "speed_error_final"), Some(-0.3));
+        assert_eq!(value(&f, "speed_estimate_error_final"), Some(0.25));
+        let window = |name| &f.iter().find(|f| f.name == name).unwrap().window;
+        assert_eq!(window("tracking_rms"), "t ≥ 5 ms");
+        assert_eq!(window("speed_error_final"), "last sample, t = 19 ms");
+        // A value that is not finite is left out rather than shown as NaN.
+        let mut bad = rows.clone();
+        bad[10].nis = f64::INFINITY;
+        let f = figures_of(&s, &bad).unwrap();
+        assert_eq!(value(&f, "mean_nis"), None);
+        assert!(value(&f, "mean_nis_high").is_some());
+        assert!(f.iter().all(|f| f.value.is_finite()));
+        // Nothing recorded: no figures.
+        assert!(figures_of(&s, &[]).is_none());
+    }
+
+    #[test]
+    fn times_read_with_up_to_4_significant_digits() {
+        for (t, text) in [
+            (0.0, "0 ms"),
+            (5.0 / 1200.0, "4.167 ms"),
+            (84.0 * 50e-6, "4.2 ms"),
+            (0.00045, "0.45 ms"),
+            (0.09995, "99.95 ms"),
+            (0.05, "50 ms"),
+            (0.6, "600 ms"),
+            (1.0, "1 s"),
+            (12.34567, "12.35 s"),
+        ] {
+            assert_eq!(time_text(t), text);
+        }
+    }
+}

@@ -1,0 +1,175 @@
+// Browser tests of issue 8: plots true to the samples at every zoom, the run's figures, knobs
+// that run, and lessons with their panel. Every test fails on a console error.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { browserSuite, settled } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+const suite = browserSuite();
+const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
+  assert.equal(await settled(page), 'done');
+  await body(page);
+});
+
+function cliRows(scenario) {
+  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
+  const names = header.split(',');
+  return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
+}
+
+function cliMetrics(scenario) {
+  const [header, ...lines] = execFileSync(cli, ['metrics', scenario]).toString().trim().split('\n');
+  assert.equal(header, 'name,value,unit');
+  return Object.fromEntries(lines.map((l) => l.split(',')).map(([name, value]) => [name, Number(value)]));
+}
+
+/** The speed plot's data and x window, as uPlot holds them. */
+const speedPlot = (page) => page.evaluate(() => {
+  const u = window.imlab.plots.charts[0];
+  return { data: u.data.map((a) => [...a]), min: u.scales.x.min, max: u.scales.x.max };
+});
+
+/** Drags across the speed plot from time t0 to t1 (of a run shown in full) and waits for the view. */
+async function zoom(page, t0, t1, duration) {
+  const box = await page.locator('#plots .plot[data-plot=speed] .u-over').boundingBox();
+  const x = (t) => box.x + (box.width * t) / duration;
+  await page.mouse.move(x(t0), box.y + box.height / 2);
+  await page.mouse.down();
+  await page.mouse.move(x(t1), box.y + box.height / 2, { steps: 5 });
+  await page.mouse.up();
+  await page.waitForFunction(() => document.body.dataset.view && !document.body.dataset.view.startsWith('0,'));
+}
+
+test('a zoomed plot draws exactly the recorded samples, reads out, and returns to the full run', () =>
+  withPage('v=1&preset=sine200-1rad', async (page) => {
+    await zoom(page, 0.2, 0.21, 0.25);
+    const { data, min, max } = await speedPlot(page);
+    assert.ok(min > 0.199 && max < 0.211 && max - min > 0.008, `window ${min}–${max}`);
+    const rows = cliRows('v=1&preset=sine200-1rad');
+    const inside = rows.filter((r) => r.t >= min && r.t <= max);
+    // Every sample of the window, each at its own time with its own values.
+    assert.deepEqual(data[0], inside.map((r) => r.t));
+    assert.deepEqual(data[1], inside.map((r) => r.omega_ref));
+    assert.deepEqual(data[2], inside.map((r) => r.omega_hat));
+    assert.deepEqual(data[3], inside.map((r) => r.omega));
+
+    // The read-out follows the cursor and shows the recorded value at the nearest sample.
+    const box = await page.locator('#plots .plot[data-plot=speed] .u-over').boundingBox();
+    const readout = async (fraction) => {
+      await page.mouse.move(box.x + box.width * fraction, box.y + box.height / 2);
+      return page.$eval('#plots .plot[data-plot=speed] .u-legend', (l) => [...l.querySelectorAll('.u-value')].map((v) => v.textContent));
+    };
+    const [a, b] = [await readout(0.3), await readout(0.7)];
+    assert.notDeepEqual(a, b);
+    const t = Number(b[0].replace(' s', ''));
+    const row = inside.reduce((best, r) => (Math.abs(r.t - t) < Math.abs(best.t - t) ? r : best));
+    assert.equal(Number(b[3]), Number(row.omega.toPrecision(6)));
+
+    await page.click('#full-run');
+    await page.waitForFunction(() => document.body.dataset.view?.startsWith('0,'));
+    const full = await speedPlot(page);
+    assert.equal(full.min, 0);
+    assert.equal(full.max, rows.at(-1).t);
+
+    // Double-click and Escape return to the full run too.
+    await zoom(page, 0.1, 0.12, 0.25);
+    await page.mouse.dblclick(box.x + box.width / 2, box.y + box.height / 2);
+    await page.waitForFunction(() => document.body.dataset.view?.startsWith('0,'));
+    // The double-click's clicks also inspect; Escape closes the inspect panel first.
+    if (await page.isVisible('#inspect')) await page.keyboard.press('Escape');
+    await zoom(page, 0.1, 0.12, 0.25);
+    await page.keyboard.press('Escape');
+    await page.waitForFunction(() => document.body.dataset.view?.startsWith('0,'));
+  }));
+
+test('the full-run envelope is made of recorded samples only', () =>
+  withPage('v=1&preset=sine200-1rad', async (page) => {
+    const { data } = await speedPlot(page);
+    const rows = new Map(cliRows('v=1&preset=sine200-1rad').map((r) => [r.t, r]));
+    assert.ok(data[0].length < rows.size, 'the full view is decimated');
+    data[0].forEach((t, j) => {
+      const r = rows.get(t);
+      assert.ok(r, `t = ${t} is not a sample`);
+      assert.deepEqual([data[1][j], data[2][j], data[3][j]], [r.omega_ref, r.omega_hat, r.omega]);
+    });
+  }));
+
+test('the figures strip equals imlab metrics, and the y-axes leave out the start-up transient', () =>
+  withPage('v=1&preset=step', async (page) => {
+    const shown = await page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
+      [f.dataset.name, Number(f.dataset.value)],
+      ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
+    ])));
+    const cli = cliMetrics('v=1&preset=step');
+    assert.deepEqual(shown, cli);
+    assert.match(await page.textContent('#fit-label'), new RegExp(`t ≥ ${Number((cli.transient_end * 1e3).toPrecision(3))} ms`));
+    // The voltage plot with the fit on ignores the ±10 kV... start-up command; off, it shows it.
+    const yRange = () => page.evaluate(() => { const u = window.imlab.walkthrough.charts.find((c) => c.root.closest('#section-step4')); return u ? [u.scales.y.min, u.scales.y.max] : null; });
+    await page.click('[data-tab=walkthrough]');
+    const fitted = await yRange();
+    await page.uncheck('#fit');
+    const full = await yRange();
+    assert.ok(full[1] - full[0] > 10 * (fitted[1] - fitted[0]), `fitted ${fitted}, full ${full}`);
+  }));
+
+test('a walkthrough knob re-runs the scenario, and an invalid value is marked at the knob', () =>
+  withPage('v=1&preset=step', async (page) => {
+    // Halving k1 doubles the peak tracking error (the settling time stays at the filter's: the
+    // reference's derivatives are fed forward).
+    const settling = () => page.$eval('#figures [data-name=tracking_peak]', (f) => Number(f.dataset.value));
+    const before = await settling();
+    await page.click('[data-tab=walkthrough]');
+    const run = Number(await page.evaluate(() => document.body.dataset.run));
+    await page.fill('#knob-k1', '600');
+    await page.press('#knob-k1', 'Enter');
+    await page.waitForFunction((n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done', run);
+    assert.ok(new URL(page.url()).search.includes('k1=600'));
+    const after = await settling();
+    assert.ok(after > 1.5 * before, `peak |ω − ω_d| ${before} → ${after} rad/s`);
+    assert.equal(await page.isVisible('#section-step1 .plot'), true);
+
+    await page.fill('#knob-k1', '-5');
+    await page.press('#knob-k1', 'Enter');
+    await page.waitForSelector('#section-step1 .knob-error');
+    assert.match(await page.textContent('#section-step1 .knob-error'), /k1/);
+    assert.equal(await page.getAttribute('#knob-k1', 'aria-invalid'), 'true');
+  }));
+
+test('each lesson opens its panel with the question, a hint and an answer toggle', () =>
+  withPage('v=1&preset=decay', async (page) => {
+    await page.click('[data-tab=lessons]');
+    const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
+    assert.equal(lessons.length, 7);
+    await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
+    for (const [i, preset] of lessons.entries()) {
+      await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `v=1&preset=${preset}`);
+      assert.equal(await page.isVisible('#lesson-panel'), true);
+      assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), preset);
+      assert.ok((await page.textContent('#lesson-panel .question')).length > 20);
+      assert.equal(await page.isVisible('#lesson-panel .answer p'), false);
+      await page.click('#lesson-panel .answer summary');
+      assert.equal(await page.isVisible('#lesson-panel .answer p'), true);
+      await page.click('#lesson-panel .hint summary');
+      assert.equal(await page.isVisible('#lesson-panel .hint p'), true);
+      assert.equal(await page.evaluate(() => window.scrollY), 0, `lesson ${i + 1} opens at the top`);
+      if (i < lessons.length - 1) await page.click('#lesson-panel >> text=Next →');
+    }
+  }));
+
+test('the inspect panel rounds t to its sample, shows units, marks the instant and closes with Escape', () =>
+  withPage('v=1&preset=step', async (page) => {
+    const over = page.locator('#plots .plot .u-over').first();
+    const box = await over.boundingBox();
+    await page.mouse.click(box.x + box.width * 0.5, box.y + box.height / 2);
+    await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
+    const heading = await page.textContent('#inspect h3');
+    const [, k, t] = /k = (\d+), t = ([\d.]+) s/.exec(heading);
+    assert.equal(Number(t), Number((Number(k) * 5e-5).toFixed(6)));
+    assert.ok(t.length <= 7, heading);
+    assert.equal(await page.textContent('#inspect tr[data-column=z1] td.unit'), 'rad/s');
+    assert.equal(await page.evaluate(() => window.imlab.plots.marker !== null), true);
+    await page.keyboard.press('Escape');
+    assert.equal(await page.isHidden('#inspect'), true);
+    assert.equal(await page.evaluate(() => window.imlab.plots.marker), null);
+  }));

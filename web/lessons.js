@@ -1,0 +1,67 @@
+// Guided lessons: a list in the Lessons tab, and a lesson panel beside the plots that keeps the
+// lesson's context (what to look for, the question, a hint, the answer) while its plots are shown.
+
+function el(tag, props = {}, children = []) {
+  const e = Object.assign(document.createElement(tag), props);
+  e.append(...children);
+  return e;
+}
+
+export class LessonPanel {
+  /**
+   * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
+   * lesson's preset; `onClose()` is called when the panel closes.
+   */
+  constructor({ panel, list, lessons, onOpen, onClose }) {
+    Object.assign(this, { panel, lessons, onOpen, onClose });
+    this.index = null;
+    lessons.forEach((lesson, i) => {
+      const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
+      start.dataset.lesson = lesson.preset;
+      start.addEventListener('click', () => this.open(i));
+      list.append(el('article', { className: 'lesson' }, [
+        el('h3', { textContent: `${i + 1}. ${lesson.title}` }),
+        el('p', { textContent: lesson.look }),
+        el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
+        start,
+      ]));
+    });
+  }
+
+  /** Opens lesson `i`: shows its panel, scrolled to the top, and runs its preset. */
+  async open(i) {
+    this.index = i;
+    const lesson = this.lessons[i];
+    const previous = el('button', { type: 'button', textContent: '← Previous', disabled: i === 0 });
+    const next = el('button', { type: 'button', textContent: 'Next →', disabled: i === this.lessons.length - 1 });
+    const close = el('button', { type: 'button', className: 'close', textContent: 'Close lesson' });
+    previous.addEventListener('click', () => this.open(i - 1));
+    next.addEventListener('click', () => this.open(i + 1));
+    close.addEventListener('click', () => this.close());
+    const hint = el('details', { className: 'hint' }, [el('summary', { textContent: 'Hint' }), el('p', { textContent: lesson.hint })]);
+    const answer = el('details', { className: 'answer' }, [el('summary', { textContent: 'Show answer (for the lecturer)' }), el('p', { textContent: lesson.answer })]);
+    this.panel.replaceChildren(
+      close,
+      el('p', { className: 'lesson-count', textContent: `Lesson ${i + 1} of ${this.lessons.length} · preset ${lesson.preset}` }),
+      el('h2', { textContent: lesson.title }),
+      el('h3', { textContent: 'What to look for' }),
+      el('p', { className: 'look', textContent: lesson.look }),
+      el('h3', { textContent: 'Question' }),
+      el('p', { className: 'question', textContent: lesson.question }),
+      hint,
+      answer,
+      el('div', { className: 'buttons' }, [previous, next]),
+    );
+    this.panel.dataset.open = lesson.preset;
+    this.panel.hidden = false;
+    this.panel.scrollTop = 0;
+    document.body.classList.add('with-lesson');
+    await this.onOpen(lesson);
+  }
+
+  close() {
+    this.index = null;
+    this.panel.hidden = true;
+    this.onClose();
+  }
+}
