@@ -47,11 +47,11 @@ export const SECTIONS = [
     },
     plot2: {
       title: 'Speed estimate and its variance', unit: 'rad/s', unit2: '(rad/s)²',
-      series: [['omega', 'ω true'], ['omega_hat', 'ω̂ estimated'], ['p_omega', 'P₁₁ (right)', 'y2']],
+      series: [['omega_hat', 'ω̂ estimated'], ['omega', 'ω true'], ['p_omega', 'P₁₁ (right)', 'y2']],
     },
     plot3: {
       title: 'Flux modulus: true and estimated', unit: 'Wb',
-      series: [['flux', '|φ| true'], ['flux_hat', '|φ̂| estimated']],
+      series: [['flux_hat', '|φ̂| estimated'], ['flux', '|φ| true']],
     },
     knobs: ['ekf', 'ekf.q', 'ekf.r_std'],
     compare: true,
