@@ -278,7 +278,11 @@ function showTab(name) {
 
 /** The figures strip: each figure of the run with its unit and window (all from the core). */
 function showFigures(figures) {
-  const fmt = (f) => (f.unit === '' && f.name === 'saturated_share' ? `${Number((f.value * 100).toPrecision(3))} %` : `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`);
+  const fmt = (f) => {
+    if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
+    if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
+    return `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`;
+  };
   const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
   const items = figures.filter((f) => !['mean_nis_low', 'mean_nis_high'].includes(f.name)).map((f) => {
     let text = fmt(f);
@@ -335,7 +339,7 @@ const handlers = {
     ui.progress.value = done / total;
     ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
   },
-  done({ id, rows, failure, view, computeMs, stability, figures, transient }) {
+  async done({ id, rows, failure, view, computeMs, stability, figures, transient }) {
     if (id !== state.runId) return;
     setBusy(false);
     ui.progress.value = 1;
@@ -349,8 +353,9 @@ const handlers = {
     $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
     showFigures(figures);
     if (view) {
-      plots.show(view, { ifoc: ifocRun() });
       walkthrough.show(view, stability, state.nisBand);
+      await plots.show(view, { ifoc: ifocRun(), chunked: true });
+      if (id !== state.runId) return;
     }
     const ms = performance.now() - state.started;
     Object.assign(document.body.dataset, {

@@ -68,6 +68,9 @@ export const NOT_DRIVING = ' (computed for comparison; not driving the motor)';
 
 const SYNC_KEY = 'imlab-time';
 
+// One chart is drawn per task, so drawing a long run's plots never blocks the page for long.
+const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
+
 // A log axis spanning whole decades (uPlot's log splits need them), at most 14 below the maximum.
 function logRange(u, min, max) {
   const top = Math.ceil(Math.log10(max));
@@ -235,6 +238,7 @@ export class Plots {
 
   /** Marks the inspected time on every plot (null clears it). */
   mark(t) {
+    if (t === this.marker) return;
     this.marker = t;
     for (const c of this.charts) c.redraw(false);
   }
@@ -257,8 +261,8 @@ export class Plots {
     return rows;
   }
 
-  /** Draws a whole run. */
-  show(view, { ifoc = false } = {}) {
+  /** Draws a whole run; with `chunked`, one chart per task. Resolves when every chart is drawn. */
+  async show(view, { ifoc = false, chunked = false } = {}) {
     const t = view.plots[this.defs[0].id].t;
     this.full = [t[0], t[t.length - 1]];
     this.window = null;
@@ -266,27 +270,32 @@ export class Plots {
     this.ifoc = ifoc;
     if (this.charts.length === 0) {
       const width = this.width();
-      for (const plot of this.defs) {
+      const divs = this.defs.map((plot) => {
         const div = document.createElement('div');
         div.className = 'plot';
         div.dataset.plot = plot.id;
         (plot.container ?? this.container).append(div);
-        this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), div));
+        return div;
+      });
+      for (const [i, plot] of this.defs.entries()) {
+        this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), divs[i]));
+        if (chunked) await nextTask();
       }
     } else {
-      this.syncing = true;
-      this.defs.forEach((plot, i) => {
+      for (const [i, plot] of this.defs.entries()) {
         const title = this.charts[i].root.querySelector('.u-title');
         if (title) title.textContent = this.title(plot);
+        this.syncing = true;
         this.charts[i].setData(this.data(plot, view), true);
-      });
-      this.syncing = false;
+        this.syncing = false;
+        if (chunked) await nextTask();
+      }
     }
   }
 
   /** Replaces the data with that of a zoom window (the axes keep the window) or the whole run. */
   refine(view) {
-    if (!this.charts.length) return;
+    if (this.charts.length < this.defs.length) return;
     this.syncing = true;
     this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
     this.syncing = false;

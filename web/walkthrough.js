@@ -147,8 +147,9 @@ export class Walkthrough {
   /** Draws the last run's plots if they are not drawn yet. */
   draw() {
     if (!this.pending) return;
-    this.plots.show(this.pending, { ifoc: this.ifoc });
+    const view = this.pending;
     this.pending = null;
+    this.plots.show(view, { ifoc: this.ifoc });
   }
 
   /** Replaces the data inside a zoom window (only once the plots exist). */
