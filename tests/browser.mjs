@@ -1,6 +1,6 @@
 // Shared helpers for the browser tests and the browser benchmark: a static server for dist/
 // on loopback and headless Debian Chromium through playwright-core.
-import { spawn } from 'node:child_process';
+import { execFileSync, spawn } from 'node:child_process';
 import { once } from 'node:events';
 import net from 'node:net';
 import { after, before } from 'node:test';
@@ -89,4 +89,19 @@ export function browserSuite() {
     assert.deepEqual(errors, [], 'console errors');
   };
   return suite;
+}
+
+/** The native CLI's CSV of `scenario` as rows of numbers keyed by column name. */
+export function cliRows(scenario) {
+  const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
+  const names = header.split(',');
+  return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
+}
+
+/** Clicks the first trajectory plot at `fraction` of its width and waits for the inspect panel. */
+export async function inspectAt(page, fraction) {
+  const box = await page.locator('#plots .plot .u-over').first().boundingBox();
+  await page.mouse.click(box.x + box.width * fraction, box.y + box.height / 2);
+  await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
 }

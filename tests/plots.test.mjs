@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { browserSuite, settled } from './browser.mjs';
+import { browserSuite, cliRows, inspectAt, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -11,12 +11,6 @@ const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
   assert.equal(await settled(page), 'done');
   await body(page);
 });
-
-function cliRows(scenario) {
-  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
-  const names = header.split(',');
-  return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
-}
 
 function cliMetrics(scenario) {
   const [header, ...lines] = execFileSync(cli, ['metrics', scenario]).toString().trim().split('\n');
@@ -159,10 +153,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
 
 test('the inspect panel rounds t to its sample, shows units, marks the instant and closes with Escape', () =>
   withPage('v=1&preset=step', async (page) => {
-    const over = page.locator('#plots .plot .u-over').first();
-    const box = await over.boundingBox();
-    await page.mouse.click(box.x + box.width * 0.5, box.y + box.height / 2);
-    await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
+    await inspectAt(page, 0.5);
     const heading = await page.textContent('#inspect h3');
     const [, k, t] = /k = (\d+), t = ([\d.]+) s/.exec(heading);
     assert.equal(Number(t), Number((Number(k) * 5e-5).toFixed(6)));

@@ -1,10 +1,8 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
-import { browserSuite, settled } from './browser.mjs';
+import { browserSuite, cliRows, inspectAt, settled } from './browser.mjs';
 
-const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
 /** Opens the app at `query`, waits for its run, then runs `body(page)`. */
 const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
@@ -38,18 +36,9 @@ test('a design knob edits the scenario like the settings form', () =>
     assert.equal(await page.inputValue('#field-k3'), '900');
   }));
 
-function cliRows(scenario) {
-  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
-  const names = header.split(',');
-  return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
-}
-
 test('the inspect panel holds the CLI CSV values of the clicked sample', () =>
   withPage('v=1&preset=step&seed=3', async (page) => {
-    const over = page.locator('#plots .plot .u-over').first();
-    const box = await over.boundingBox();
-    await page.mouse.click(box.x + box.width * 0.53, box.y + box.height / 2);
-    await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
+    await inspectAt(page, 0.53);
     const shown = await page.$$eval('#inspect tr[data-column]', (rows) =>
       rows.map((r) => [r.dataset.column, r.querySelector('td').dataset.exact]));
     const heading = await page.textContent('#inspect h3');

@@ -10,10 +10,10 @@ function el(tag, props = {}, children = []) {
 export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
-   * lesson's preset; `onClose()` is called when the panel closes.
+   * lesson's preset.
    */
-  constructor({ panel, list, lessons, onOpen, onClose }) {
-    Object.assign(this, { panel, lessons, onOpen, onClose });
+  constructor({ panel, list, lessons, onOpen }) {
+    Object.assign(this, { panel, lessons, onOpen });
     this.index = null;
     lessons.forEach((lesson, i) => {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
@@ -62,6 +62,6 @@ export class LessonPanel {
   close() {
     this.index = null;
     this.panel.hidden = true;
-    this.onClose();
+    document.body.classList.remove('with-lesson');
   }
 }

@@ -30,7 +30,6 @@ const state = {
   pending: new Map(), // describe requests: req → {resolve, reject}
   transient: null, // {t, reason}: the end of the start-up transient, from the core
   figures: [], // the run's figures, from the core
-  knobEdit: null, // the walkthrough knob whose edit is being checked
 };
 
 /** Whether the y-axes leave out the start-up transient, and from which time. */
@@ -76,7 +75,6 @@ const lessons = new LessonPanel({
     window.scrollTo(0, 0);
     await load(`v=1&preset=${lesson.preset}`);
   },
-  onClose: () => document.body.classList.remove('with-lesson'),
 });
 const analysis = new Analysis({ scenario: () => state.info.encoded });
 $('sweep-form').elements.namedItem('workers').value = analysis.pool.size;

@@ -8,7 +8,7 @@ import uPlot from '../vendor/uPlot.esm.js';
 // a darker shade of the same colour).
 const REFERENCE = { stroke: '#6b6b6b', dash: [6, 4] };
 const BAND = { stroke: '#8a8a8a', dash: [3, 3] };
-export const STYLE = {
+const STYLE = {
   omega_ref: REFERENCE, flux_ref: REFERENCE,
   omega: { stroke: '#1f77b4' }, flux: { stroke: '#1f77b4' }, i_sa: { stroke: '#1f77b4' }, i_sb: { stroke: '#0b3d6e' },
   omega_hat: { stroke: '#ff7f0e' }, flux_hat: { stroke: '#ff7f0e' }, i_sa_hat: { stroke: '#ff7f0e' }, i_sb_hat: { stroke: '#a34a00' },
@@ -64,7 +64,7 @@ export const PLOTS = [
 ];
 
 /** The backstepping plots' title suffix when the IFOC baseline drives the motor. */
-export const NOT_DRIVING = ' (computed for comparison; not driving the motor)';
+const NOT_DRIVING = ' (computed for comparison; not driving the motor)';
 
 const SYNC_KEY = 'imlab-time';
 

@@ -57,8 +57,8 @@ function meaningAndUnit(doc) {
 
 export class Walkthrough {
   /**
-   * `container` receives the sections, `lessonsBox` the lessons, `inspectBox` the inspect panel.
-   * `knob(key)` returns the settings control for a field; `onLesson(preset)` loads a lesson;
+   * `container` receives the sections, `inspectBox` the inspect panel.
+   * `knob(key)` returns the settings control for a field;
    * `onCompare()` asks for the Euler/RK4 comparison.
    */
   constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing }) {
@@ -138,7 +138,6 @@ export class Walkthrough {
   show(view, stability, nisBand) {
     this.nisBand = nisBand;
     this.pending = view;
-    this.plots.ifoc = this.ifoc;
     if (this.container.offsetParent !== null) this.draw();
     const report = this.container.querySelector('.stability-report');
     report.textContent = stabilityText(stability);
