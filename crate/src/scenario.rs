@@ -243,6 +243,30 @@ fn default_reference(kind: &str) -> Option<Reference> {
     })
 }
 
+/// Longest excerpt of user input quoted in a message (characters).
+pub const EXCERPT_CHARS: usize = 40;
+
+/// `text` as quoted in a message: control and other invisible characters written as escapes
+/// (`\n`, `\u{7f}`), cut to [`EXCERPT_CHARS`] characters with the full length noted.
+pub fn excerpt(text: &str) -> String {
+    let count = text.chars().count();
+    let mut out: String = text
+        .chars()
+        .take(EXCERPT_CHARS)
+        .flat_map(|c| {
+            if c.is_control() || c == '\u{200b}' || c == '\u{feff}' {
+                c.escape_default().collect::<Vec<_>>()
+            } else {
+                vec![c]
+            }
+        })
+        .collect();
+    if count > EXCERPT_CHARS {
+        out.push_str(&format!("… ({count} characters)"));
+    }
+    out
+}
+
 /// Why a scenario string or value was refused. Every variant names the field.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ScenarioError {

@@ -8,6 +8,27 @@ use js_sys::{Array, Float64Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+thread_local! {
+    /// The text of the last Rust panic, kept for the worker to report after the trap it causes.
+    static LAST_PANIC: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
+}
+
+/// Installs the panic hook when the module starts: a panic's text goes to the console (the
+/// maintained `console_error_panic_hook`) and is kept for [`panic_message`].
+#[wasm_bindgen(start)]
+fn start() {
+    std::panic::set_hook(Box::new(|info| {
+        LAST_PANIC.with(|p| *p.borrow_mut() = Some(info.to_string()));
+        console_error_panic_hook::hook(info);
+    }));
+}
+
+/// The text of the last Rust panic in this module, if one happened (the module is unusable after it).
+#[wasm_bindgen]
+pub fn panic_message() -> Option<String> {
+    LAST_PANIC.with(|p| p.borrow().clone())
+}
+
 fn js_error(e: impl std::fmt::Display) -> JsValue {
     JsValue::from_str(&e.to_string())
 }
@@ -134,6 +155,17 @@ impl Simulation {
     /// The recorded trace as CSV, byte-identical to `imlab run`.
     pub fn csv(&self) -> String {
         self.inner.recorder().csv()
+    }
+
+    /// Recorded rows `start..start + count` as CSV bytes (with the header when `start` is 0):
+    /// the chunks of a run, in order, concatenate to [`Simulation::csv`].
+    pub fn csv_chunk(&self, start: u32, count: u32) -> Vec<u8> {
+        let mut out = Vec::new();
+        self.inner
+            .recorder()
+            .write_csv_rows(&mut out, start as usize, count as usize)
+            .expect("writing to a Vec");
+        out
     }
 }
 

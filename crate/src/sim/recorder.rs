@@ -210,9 +210,23 @@ impl Recorder {
 
     /// Writes the header and every row as CSV (shortest round-trip number format).
     pub fn write_csv(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
-        writeln!(out, "{}", COLUMNS.join(","))?;
+        self.write_csv_rows(out, 0, self.rows.len())
+    }
+
+    /// Writes kept rows `start..start + count` (clamped to those recorded) as CSV lines, preceded
+    /// by the header when `start` is 0, so that consecutive chunks concatenate to [`Self::csv`].
+    pub fn write_csv_rows(
+        &self,
+        out: &mut impl std::io::Write,
+        start: usize,
+        count: usize,
+    ) -> std::io::Result<()> {
+        if start == 0 {
+            writeln!(out, "{}", COLUMNS.join(","))?;
+        }
+        let end = start.saturating_add(count).min(self.rows.len());
         let mut line = String::with_capacity(NUM_COLUMNS * 24);
-        for row in &self.rows {
+        for row in self.rows.get(start..end).unwrap_or(&[]) {
             line.clear();
             for (i, v) in row.values().iter().enumerate() {
                 if i > 0 {
