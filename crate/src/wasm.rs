@@ -340,6 +340,10 @@ pub struct Comparison {
 
 /// Most pinned runs at once.
 const MAX_PINS: usize = 4;
+/// Most bytes of pinned traces at once: two of the largest runs. With the current run, a replay
+/// for the inspect panel and an export chunk, the worker's WASM memory stays well inside the
+/// 4 GiB a 32-bit module can address.
+const MAX_PINNED_BYTES: usize = 2 * sim::MAX_TRACE_BYTES;
 
 #[wasm_bindgen]
 impl Comparison {
@@ -357,6 +361,21 @@ impl Comparison {
             )));
         }
         let s = Scenario::parse(scenario).map_err(js_error)?;
+        let pinned: usize = self
+            .pins
+            .iter()
+            .map(|p| sim::trace_bytes(p.scenario(), 1))
+            .sum();
+        let bytes = sim::trace_bytes(&s, 1);
+        if pinned + bytes > MAX_PINNED_BYTES {
+            return Err(js_error(format!(
+                "pinning this run would hold {} MiB of traces, more than the {} MiB allowed for pins \
+                 ({} MiB pinned now); unpin a run or pin a shorter one",
+                sim::mib(pinned + bytes),
+                MAX_PINNED_BYTES >> 20,
+                sim::mib(pinned)
+            )));
+        }
         let mut sim = sim::Simulation::new(&s, 1).map_err(js_error)?;
         // A run that stops early stays pinned with the samples before its failure.
         let _ = sim.run();

@@ -21,6 +21,22 @@ use std::fmt;
 /// Largest trace a run may record (bytes); beyond it the run is refused before it starts.
 pub const MAX_TRACE_BYTES: usize = 512 << 20;
 
+/// Bytes the trace of `scenario` takes when every `every`-th sample is kept.
+pub fn trace_bytes(scenario: &Scenario, every: usize) -> usize {
+    scenario
+        .steps()
+        .div_ceil(every.max(1))
+        .saturating_mul(Recorder::ROW_BYTES)
+}
+
+/// `bytes` in MiB, rounded up to a tenth, so a size just over a limit never reads as equal to it.
+pub fn mib(bytes: usize) -> String {
+    format!(
+        "{:.1}",
+        (bytes as f64 / f64::from(1 << 20) * 10.0).ceil() / 10.0
+    )
+}
+
 /// Bounds past which the plant or the estimate is declared diverged.
 const MAX_SPEED: f64 = 1e5; // rad/s, ~1 million rpm
 const MAX_CURRENT: f64 = 1e5; // A
@@ -36,6 +52,15 @@ pub enum SimError {
         /// Which signal.
         signal: &'static str,
         /// Its value.
+        value: f64,
+    },
+    /// A recorded signal would not be a finite number (the trace keeps finite numbers only).
+    NotFinite {
+        /// Time of the sample (s).
+        t: f64,
+        /// The column.
+        column: &'static str,
+        /// Its value (±inf or NaN).
         value: f64,
     },
     /// The controller could not compute a voltage.
@@ -56,6 +81,10 @@ impl fmt::Display for SimError {
                     "diverged at t = {t:.5} s: {signal} = {value:e} left its bounds"
                 )
             }
+            SimError::NotFinite { t, column, value } => write!(
+                f,
+                "stopped at t = {t:.5} s: column '{column}' would record {value}, not a finite number"
+            ),
             SimError::Control { t, error } => {
                 write!(f, "controller failed at t = {t:.5} s: {error}")
             }
@@ -132,13 +161,13 @@ impl Simulation {
         }
         let steps = scenario.steps();
         let rows = steps.div_ceil(every);
-        let bytes = rows.saturating_mul(Recorder::ROW_BYTES);
+        let bytes = trace_bytes(scenario, every);
         if bytes > MAX_TRACE_BYTES {
             return Err(ScenarioError::TooLarge {
                 what: format!(
                     "recording {rows} samples × {NUM_COLUMNS} columns needs {} MiB, more than the {} MiB allowed; \
                      shorten 'duration' or keep fewer samples (--every)",
-                    bytes >> 20,
+                    mib(bytes),
                     MAX_TRACE_BYTES >> 20
                 ),
             });
@@ -300,7 +329,7 @@ impl Simulation {
         let p = self.ekf.covariance();
         let [innov_a, innov_b] = self.ekf.innovation();
         let [s_aa, s_ab, s_bb] = self.ekf.innovation_cov();
-        self.recorder.record(|| Row {
+        let recorded = self.recorder.record(|| Row {
             t,
             omega_ref: speed_ref.value,
             omega: x[0],
@@ -358,6 +387,9 @@ impl Simulation {
             nis: self.ekf.nis(),
             p_omega: p[(0, 0)],
         });
+        if let Err((column, value)) = recorded {
+            return Err(SimError::NotFinite { t, column, value });
+        }
 
         // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
         let extra_load = if t >= s.load_step.time {

@@ -168,14 +168,21 @@ impl Recorder {
     }
 
     /// Records the next sample if it is kept (samples 0, every, 2·every, ...); `row` is only
-    /// evaluated then. Never allocates within the capacity given.
+    /// evaluated then. A row with a value that is not finite is refused, naming the first such
+    /// column, so the trace holds finite numbers only. Never allocates within the capacity given.
     #[inline]
-    pub fn record(&mut self, row: impl FnOnce() -> Row) {
+    pub fn record(&mut self, row: impl FnOnce() -> Row) -> Result<(), (&'static str, f64)> {
         if self.skip == 0 {
-            self.rows.push(row());
+            let row = row();
+            let values = row.values();
+            if let Some(i) = values.iter().position(|v| !v.is_finite()) {
+                return Err((COLUMNS[i], values[i]));
+            }
+            self.rows.push(row);
             self.skip = self.every;
         }
         self.skip -= 1;
+        Ok(())
     }
 
     /// Number of kept rows.
@@ -396,7 +403,7 @@ mod tests {
                 omega: if k == 37 { 100.0 } else { (k % 7) as f64 },
                 ..Row::default()
             };
-            r.record(|| row);
+            r.record(|| row).unwrap();
         }
         r
     }
@@ -410,7 +417,8 @@ mod tests {
                 t: k as f64,
                 omega: 2.0 * k as f64,
                 ..Row::default()
-            });
+            })
+            .unwrap();
         }
         // Few enough rows for no bucketing: the difference is a − b exactly, over the common 800 rows.
         let o = a.overlay(&[&b], "omega", 0.0, 1e9, 1000).unwrap();
@@ -425,6 +433,32 @@ mod tests {
             .map(|k| a_omega[k] - 2.0 * k as f64)
             .fold(f64::INFINITY, f64::min);
         assert_eq!(e[3].iter().cloned().fold(f64::INFINITY, f64::min), true_min);
+    }
+
+    #[test]
+    fn rows_with_a_value_that_is_not_finite_are_refused_naming_the_column() {
+        let mut r = Recorder::with_capacity(2, 1);
+        r.record(Row::default).unwrap();
+        let bad = Row {
+            v2s: f64::INFINITY,
+            nis: f64::NAN,
+            ..Row::default()
+        };
+        assert_eq!(r.record(|| bad), Err(("v2s", f64::INFINITY)));
+        assert_eq!(r.len(), 1);
+    }
+
+    #[test]
+    fn chunks_of_rows_concatenate_to_the_whole_csv() {
+        let r = ramp_recorder(1000);
+        let mut chunks = Vec::new();
+        for start in (0..1000).step_by(333) {
+            r.write_csv_rows(&mut chunks, start, 333).unwrap();
+        }
+        assert_eq!(String::from_utf8(chunks).unwrap(), r.csv());
+        let mut past = Vec::new();
+        r.write_csv_rows(&mut past, 5000, 10).unwrap();
+        assert!(past.is_empty());
     }
 
     #[test]
@@ -461,7 +495,8 @@ mod tests {
                 t: k as f64,
                 omega: -(k as f64),
                 ..Row::default()
-            });
+            })
+            .unwrap();
         }
         let env = r.envelope(&["omega"], 0.0, 1e9, 10).unwrap();
         assert!(env[1].windows(2).all(|w| w[1] <= w[0]), "{:?}", env[1]);
@@ -483,7 +518,7 @@ mod tests {
         ) {
             let mut r = Recorder::with_capacity(values.len(), 1);
             for (k, &(a, b)) in values.iter().enumerate() {
-                r.record(|| Row { t: k as f64 * 5e-5, omega: a, z1: b, ..Row::default() });
+                r.record(|| Row { t: k as f64 * 5e-5, omega: a, z1: b, ..Row::default() }).unwrap();
             }
             let n = values.len();
             let start = from.min(n);

@@ -1,0 +1,492 @@
+//! The field table of the codec, written once: each field's key, group, unit, allowed values,
+//! meaning and place in [`Scenario`].
+
+use super::presets::default_reference;
+use super::{ControllerKind, Scenario, ScenarioError};
+use crate::control::Reference;
+use crate::observer::Predictor;
+use serde::Serialize;
+
+/// Largest integer a JavaScript number holds exactly (2^53 − 1), the bound for seeds.
+const MAX_SEED: f64 = 9_007_199_254_740_991.0;
+
+/// Longest simulated time accepted (s).
+pub const MAX_DURATION: f64 = 20.0;
+
+/// How a field's value is read and written.
+#[derive(Clone, Copy)]
+pub(super) enum Access {
+    Number {
+        get: fn(&Scenario) -> Option<f64>,
+        set: fn(&mut Scenario, f64) -> bool,
+    },
+    Choice {
+        options: &'static [&'static str],
+        get: fn(&Scenario) -> &'static str,
+        set: fn(&mut Scenario, &str),
+    },
+}
+
+/// The values a number field takes.
+#[derive(Clone, Copy)]
+struct Range {
+    min: f64,
+    min_open: bool,
+    max: f64,
+    integer: bool,
+}
+
+/// min ≤ value ≤ max.
+const fn closed(min: f64, max: f64) -> Range {
+    Range {
+        min,
+        min_open: false,
+        max,
+        integer: false,
+    }
+}
+
+/// min < value ≤ max.
+const fn above(min: f64, max: f64) -> Range {
+    Range {
+        min,
+        min_open: true,
+        max,
+        integer: false,
+    }
+}
+
+/// Whole numbers from min to max.
+const fn whole(min: f64, max: f64) -> Range {
+    Range {
+        min,
+        min_open: false,
+        max,
+        integer: true,
+    }
+}
+
+/// One field of the codec: its key, unit, allowed range and meaning.
+#[derive(Clone, Copy)]
+pub(super) struct Field {
+    pub(super) key: &'static str,
+    group: &'static str,
+    pub(super) unit: &'static str,
+    range: Range,
+    doc: &'static str,
+    pub(super) access: Access,
+}
+
+/// A field as data, for the UI and `describe`.
+#[derive(Clone, Debug, Serialize)]
+pub struct FieldInfo {
+    /// Key in the query string.
+    pub key: &'static str,
+    /// Settings group.
+    pub group: &'static str,
+    /// Unit.
+    pub unit: &'static str,
+    /// Smallest allowed value (numbers only).
+    pub min: f64,
+    /// Whether `min` is excluded.
+    pub min_open: bool,
+    /// Largest allowed value.
+    pub max: f64,
+    /// Whole numbers only.
+    pub integer: bool,
+    /// Allowed names for choice fields; empty for numbers.
+    pub options: &'static [&'static str],
+    /// Meaning.
+    pub doc: &'static str,
+    /// Current value as written in the codec, or None when it does not apply.
+    pub value: Option<String>,
+    /// Whether the field acts on this scenario (the page shows only those): the IFOC tuning only
+    /// with the IFOC controller, ε and h only with the robust terms on.
+    pub acts: bool,
+}
+
+/// Whether field `key` changes anything in scenario `s`.
+fn acts(key: &str, s: &Scenario) -> bool {
+    if key.starts_with("ifoc.") {
+        s.controller == ControllerKind::Ifoc
+    } else if matches!(key, "eps2" | "h2" | "eps4" | "h4") {
+        s.gains.robust
+    } else {
+        true
+    }
+}
+
+/// A number stored at `s.<path>` (any numeric type).
+macro_rules! at {
+    ($($path:ident).+) => {
+        Access::Number {
+            get: |s| Some(s.$($path).+ as f64),
+            set: |s, v| {
+                s.$($path).+ = v as _;
+                true
+            },
+        }
+    };
+}
+
+/// A 0/1 switch stored as a bool at `s.<path>`.
+macro_rules! flag {
+    ($($path:ident).+) => {
+        Access::Number {
+            get: |s| Some(if s.$($path).+ { 1.0 } else { 0.0 }),
+            set: |s, v| {
+                s.$($path).+ = v == 1.0;
+                true
+            },
+        }
+    };
+}
+
+/// Parameter `field` of the reference kind `Variant`; absent under the other kinds.
+macro_rules! reference {
+    ($variant:ident . $field:ident) => {
+        Access::Number {
+            get: |s| match s.reference {
+                Reference::$variant { $field, .. } => Some($field),
+                _ => None,
+            },
+            set: |s, v| match &mut s.reference {
+                Reference::$variant { $field, .. } => {
+                    *$field = v;
+                    true
+                }
+                _ => false,
+            },
+        }
+    };
+}
+
+/// The nine parameters of one motor (`plant` or `model`). The lower bounds keep the lumped
+/// parameters (a1 = np·M/(J·Lr), 1/σ, ...) finite: a value that is numerically zero is refused.
+macro_rules! motor {
+    ($which:ident) => {
+        [
+            number(
+                concat!(stringify!($which), ".rs"),
+                stringify!($which),
+                "Ω",
+                closed(1e-6, 1000.0),
+                "stator resistance Rs",
+                at!($which.rs),
+            ),
+            number(
+                concat!(stringify!($which), ".rr"),
+                stringify!($which),
+                "Ω",
+                closed(1e-6, 1000.0),
+                "rotor resistance Rr",
+                at!($which.rr),
+            ),
+            number(
+                concat!(stringify!($which), ".m"),
+                stringify!($which),
+                "H",
+                closed(1e-6, 100.0),
+                "mutual inductance M",
+                at!($which.m),
+            ),
+            number(
+                concat!(stringify!($which), ".ls"),
+                stringify!($which),
+                "H",
+                closed(1e-6, 100.0),
+                "stator inductance Ls",
+                at!($which.ls),
+            ),
+            number(
+                concat!(stringify!($which), ".lr"),
+                stringify!($which),
+                "H",
+                closed(1e-6, 100.0),
+                "rotor inductance Lr",
+                at!($which.lr),
+            ),
+            number(
+                concat!(stringify!($which), ".j"),
+                stringify!($which),
+                "kg m²",
+                closed(1e-6, 1e4),
+                "rotor inertia J",
+                at!($which.j),
+            ),
+            number(
+                concat!(stringify!($which), ".np"),
+                stringify!($which),
+                "",
+                whole(1.0, 50.0),
+                "pole pairs np",
+                at!($which.np),
+            ),
+            number(
+                concat!(stringify!($which), ".t0"),
+                stringify!($which),
+                "N m",
+                closed(0.0, 1e4),
+                "constant load torque T0",
+                at!($which.t0),
+            ),
+            number(
+                concat!(stringify!($which), ".cf"),
+                stringify!($which),
+                "N m s",
+                closed(0.0, 1e3),
+                "viscous friction Cf",
+                at!($which.cf),
+            ),
+        ]
+    };
+}
+
+const fn number(
+    key: &'static str,
+    group: &'static str,
+    unit: &'static str,
+    range: Range,
+    doc: &'static str,
+    access: Access,
+) -> Field {
+    Field {
+        key,
+        group,
+        unit,
+        range,
+        doc,
+        access,
+    }
+}
+
+const fn choice(
+    key: &'static str,
+    group: &'static str,
+    doc: &'static str,
+    access: Access,
+) -> Field {
+    Field {
+        key,
+        group,
+        unit: "",
+        range: closed(0.0, 0.0),
+        doc,
+        access,
+    }
+}
+
+fn set_reference(s: &mut Scenario, name: &str) {
+    // Keep the parameters when the kind does not change.
+    if s.reference.kind() != name {
+        s.reference = default_reference(name).expect("checked option");
+    }
+}
+
+/// Every field of the codec, in the order the encoder writes them (`ref` first: it resets the
+/// reference parameters).
+#[rustfmt::skip]
+fn table() -> Vec<Field> {
+    let mut v = vec![
+        choice("ref", "reference", "speed reference kind", Access::Choice {
+            options: &["constant", "sine", "step", "ramp"], get: |s| s.reference.kind(), set: set_reference,
+        }),
+        number("ref.value", "reference", "rad/s", closed(-1000.0, 1000.0), "constant speed", reference!(Constant.value)),
+        number("sine.amp", "reference", "rad/s", closed(0.0, 1000.0), "sine amplitude", reference!(Sine.amp)),
+        number("sine.freq", "reference", "Hz", closed(0.0, 5000.0), "sine frequency", reference!(Sine.freq)),
+        number("sine.offset", "reference", "rad/s", closed(-1000.0, 1000.0), "constant added to the sine", reference!(Sine.offset)),
+        number("step.size", "reference", "rad/s", closed(-1000.0, 1000.0), "step size", reference!(Step.size)),
+        number("step.time", "reference", "s", closed(0.0, 10.0), "step time", reference!(Step.time)),
+        number("step.wn", "reference", "rad/s", above(0.0, 1e5), "step filter natural frequency ωn", reference!(Step.wn)),
+        number("ramp.start", "reference", "s", closed(0.0, 10.0), "ramp start time", reference!(Ramp.start)),
+        number("ramp.level", "reference", "rad/s", closed(-1000.0, 1000.0), "ramp plateau level", reference!(Ramp.level)),
+        number("ramp.slope", "reference", "rad/s²", above(0.0, 1e6), "ramp slope magnitude", reference!(Ramp.slope)),
+        number("ramp.hold", "reference", "s", closed(0.0, 10.0), "ramp plateau duration", reference!(Ramp.hold)),
+        number("psi_d", "reference", "Wb²", above(0.0, 4.0), "flux target for φa² + φb²", at!(psi_d)),
+        number("k1", "gains", "1/s", above(0.0, 1e6), "speed-error rate k1", at!(gains.k1)),
+        number("k2", "gains", "1/s", above(0.0, 1e6), "torque-error rate k2 = a7 + a8 + k2s1", at!(gains.k2)),
+        number("k3", "gains", "1/s", above(0.0, 1e6), "flux-error rate k3", at!(gains.k3)),
+        number("k4", "gains", "1/s", above(0.0, 1e6), "flux-derivative-error rate k4", at!(gains.k4)),
+        number("robust", "gains", "", whole(0.0, 1.0), "apply robust terms (38) and (53) (0/1)", flag!(gains.robust)),
+        number("eps2", "gains", "", above(0.0, 1e6), "ε2 of (38)", at!(gains.eps2)),
+        number("h2", "gains", "", closed(0.0, 1e9), "h2 of (38): bound on |d̃2|", at!(gains.h2)),
+        number("eps4", "gains", "", above(0.0, 1e6), "ε4 of (53)", at!(gains.eps4)),
+        number("h4", "gains", "", closed(0.0, 1e9), "h4 of (53): bound on |d̃4|", at!(gains.h4)),
+        choice("controller", "controller", "backstepping (paper) or ifoc (classical sensorless FOC baseline)", Access::Choice {
+            options: &["backstepping", "ifoc"],
+            get: |s| match s.controller { ControllerKind::Backstepping => "backstepping", ControllerKind::Ifoc => "ifoc" },
+            set: |s, name| s.controller = if name == "ifoc" { ControllerKind::Ifoc } else { ControllerKind::Backstepping },
+        }),
+        number("ifoc.bw_i", "controller", "Hz", above(0.0, 5000.0), "IFOC current-loop bandwidth", at!(ifoc.current_bw)),
+        number("ifoc.bw_w", "controller", "Hz", above(0.0, 1000.0), "IFOC speed-loop bandwidth", at!(ifoc.speed_bw)),
+        number("ifoc.bw_mras", "controller", "Hz", above(0.0, 5000.0), "IFOC MRAS speed-estimator bandwidth", at!(ifoc.mras_bw)),
+        number("ifoc.i_max", "controller", "A", above(0.0, 1000.0), "IFOC q-current limit", at!(ifoc.current_limit)),
+        choice("ekf", "observer", "EKF predictor: euler (paper) or rk4", Access::Choice {
+            options: &["euler", "rk4"],
+            get: |s| match s.ekf.predictor { Predictor::Euler => "euler", Predictor::Rk4 => "rk4" },
+            set: |s, name| s.ekf.predictor = if name == "rk4" { Predictor::Rk4 } else { Predictor::Euler },
+        }),
+        number("ekf.q", "observer", "1/s", above(0.0, 1e6), "process noise Q = q·Ts·I", at!(ekf.q)),
+        // R = r_std²·I must stay a positive number: below 1 µA it is numerically zero for the
+        // innovation covariance S = HPHᵀ + R once P has converged.
+        number("ekf.r_std", "observer", "A", closed(1e-6, 10.0), "assumed current noise, R = r_std²·I", at!(ekf.r_std)),
+        number("init_err", "observer", "", closed(0.0, 1.0), "initial relative estimation error", at!(init_error)),
+        number("perfect", "observer", "", whole(0.0, 1.0), "perfect observer: controller gets the true state (0/1)", flag!(perfect)),
+        number("noise", "noise", "A", closed(0.0, 10.0), "current-measurement noise std", at!(noise)),
+        number("seed", "noise", "", whole(0.0, MAX_SEED), "noise seed", at!(seed)),
+    ];
+    v.extend(motor!(plant));
+    v.extend(motor!(model));
+    v.extend([
+        number("load.time", "load", "s", closed(0.0, 10.0), "time of the unknown load step", at!(load_step.time)),
+        number("load.torque", "load", "N m", closed(-1e4, 1e4), "size of the unknown load step", at!(load_step.torque)),
+        number("vmax", "limits", "V", above(0.0, 1e5), "voltage limit per component", at!(voltage_limit)),
+        number("duration", "limits", "s", above(0.0, MAX_DURATION), "simulated time", at!(duration)),
+        number("ts", "limits", "s", closed(1e-7, 1e-2), "sampling period Ts", at!(ts)),
+        number("substeps", "limits", "", whole(1.0, 1000.0), "plant RK4 substeps per sample", at!(substeps)),
+    ]);
+    v
+}
+
+/// Every field of the codec, in the order the encoder writes them.
+pub(super) fn fields() -> &'static [Field] {
+    static FIELDS: std::sync::OnceLock<Vec<Field>> = std::sync::OnceLock::new();
+    FIELDS.get_or_init(table)
+}
+
+/// The field called `key`, found by hashing (parsing stays linear in the number of pieces).
+pub(super) fn field(key: &str) -> Option<&'static Field> {
+    static INDEX: std::sync::OnceLock<std::collections::HashMap<&'static str, usize>> =
+        std::sync::OnceLock::new();
+    let index = INDEX.get_or_init(|| {
+        fields()
+            .iter()
+            .enumerate()
+            .map(|(i, f)| (f.key, i))
+            .collect()
+    });
+    index.get(key).map(|&i| &fields()[i])
+}
+
+impl Field {
+    fn allowed(&self) -> String {
+        match self.access {
+            Access::Choice { options, .. } => options.join(" | "),
+            Access::Number { .. } => {
+                let Range {
+                    min,
+                    min_open,
+                    max,
+                    integer,
+                } = self.range;
+                let lo = if min_open { "<" } else { "≤" };
+                let unit = if self.unit.is_empty() {
+                    String::new()
+                } else {
+                    format!(" ({})", self.unit)
+                };
+                let int = if integer { ", whole number" } else { "" };
+                format!("{min} {lo} {} ≤ {max}{unit}{int}", self.key)
+            }
+        }
+    }
+
+    /// Whether `value` is in the field's range.
+    pub(super) fn check(&self, value: f64) -> Result<(), ScenarioError> {
+        let Range {
+            min,
+            min_open,
+            max,
+            integer,
+        } = self.range;
+        let below = if min_open { value <= min } else { value < min };
+        if !value.is_finite() || below || value > max || (integer && value.fract() != 0.0) {
+            return Err(ScenarioError::OutOfRange {
+                key: self.key.to_string(),
+                value,
+                allowed: self.allowed(),
+            });
+        }
+        Ok(())
+    }
+
+    /// The field's value in `s` as written in the codec, or None when it does not apply.
+    pub(super) fn get(&self, s: &Scenario) -> Option<String> {
+        match self.access {
+            Access::Number { get, .. } => get(s).map(|v| format!("{v}")),
+            Access::Choice { get, .. } => Some(get(s).to_string()),
+        }
+    }
+
+    /// Sets the field in `s` from its codec text, checking the field's own range.
+    pub(super) fn set(&self, s: &mut Scenario, value: &str) -> Result<(), ScenarioError> {
+        match self.access {
+            Access::Choice { options, set, .. } => {
+                if !options.contains(&value) {
+                    return Err(ScenarioError::BadValue {
+                        key: self.key.to_string(),
+                        value: value.to_string(),
+                        expected: format!("one of {}", options.join(", ")),
+                    });
+                }
+                set(s, value);
+                Ok(())
+            }
+            Access::Number { set, .. } => {
+                let v: f64 = parse_number(value).ok_or_else(|| ScenarioError::BadValue {
+                    key: self.key.to_string(),
+                    value: value.to_string(),
+                    expected: "a decimal number".to_string(),
+                })?;
+                self.check(v)?;
+                if !set(s, v) {
+                    return Err(ScenarioError::NotApplicable {
+                        key: self.key.to_string(),
+                        reference: s.reference.kind(),
+                    });
+                }
+                Ok(())
+            }
+        }
+    }
+
+    /// This field as data, with its value in `s`.
+    pub(super) fn info(&self, s: &Scenario) -> FieldInfo {
+        let Range {
+            min,
+            min_open,
+            max,
+            integer,
+        } = self.range;
+        FieldInfo {
+            key: self.key,
+            group: self.group,
+            unit: self.unit,
+            min,
+            min_open,
+            max,
+            integer,
+            options: match self.access {
+                Access::Choice { options, .. } => options,
+                Access::Number { .. } => &[],
+            },
+            doc: self.doc,
+            value: self.get(s),
+            acts: acts(self.key, s),
+        }
+    }
+}
+
+/// Parses a plain decimal number; refuses Rust's extras ("inf", "nan", "+") that a URL should not carry.
+fn parse_number(text: &str) -> Option<f64> {
+    let ok = !text.is_empty()
+        && text
+            .bytes()
+            .all(|c| c.is_ascii_digit() || matches!(c, b'.' | b'-' | b'e' | b'E'))
+        && text.bytes().any(|c| c.is_ascii_digit());
+    if ok {
+        text.parse().ok()
+    } else {
+        None
+    }
+}
