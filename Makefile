@@ -34,5 +34,6 @@ test: dist
 
 bench: dist
 	cargo bench --bench closed_loop
+	cargo bench --bench codec
 	node tests/bench/node.mjs
 	node tests/bench/browser.mjs

@@ -112,6 +112,17 @@ pub fn excerpt(text: &str) -> String {
     out
 }
 
+/// `v` for a message: the codec's shortest form, or scientific notation where that is long
+/// (5e-324 rather than 324 digits).
+fn short(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.len() > 12 {
+        format!("{v:e}")
+    } else {
+        plain
+    }
+}
+
 /// Why a scenario string or value was refused. Every variant names the field (or the piece of
 /// the string); input quoted in the message is shown through [`excerpt`].
 #[derive(Clone, Debug, PartialEq)]
@@ -234,7 +245,11 @@ impl fmt::Display for ScenarioError {
                 key,
                 value,
                 allowed,
-            } => write!(f, "field '{key}' = {value}: out of range, allowed {allowed}"),
+            } => write!(
+                f,
+                "field '{key}' = {}: out of range, allowed {allowed}",
+                short(*value)
+            ),
             NotApplicable { key, reference } => write!(
                 f,
                 "field '{key}' does not apply to the reference '{reference}' (set ref= first)"
@@ -400,20 +415,20 @@ impl Scenario {
         }
         // In f64, so that a count past usize (or the clamp in `steps`) is still shown as it is.
         let samples = (self.duration / self.ts).round();
+        let (duration, ts) = (short(self.duration), short(self.ts));
         if samples > MAX_STEPS as f64 {
             return Err(ScenarioError::TooLarge {
                 what: format!(
-                    "duration/ts = {} s / {} s = {samples} samples is more than the {MAX_STEPS} allowed; \
+                    "'duration'/'ts' = {duration} s / {ts} s = {} samples is more than the {MAX_STEPS} allowed; \
                      shorten 'duration' or raise 'ts'",
-                    self.duration, self.ts
+                    short(samples)
                 ),
             });
         }
         if samples < 1.0 {
             return Err(ScenarioError::TooLarge {
                 what: format!(
-                    "duration {} s is shorter than one sample ts = {} s",
-                    self.duration, self.ts
+                    "'duration' = {duration} s is shorter than one sample, 'ts' = {ts} s"
                 ),
             });
         }
