@@ -3,7 +3,7 @@
 //! parallel workers and the tests share these functions.
 
 use crate::control::Reference;
-use crate::scenario::{Scenario, ScenarioError};
+use crate::scenario::{short, Scenario, ScenarioError};
 use crate::sim::{Row, Simulation};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -55,7 +55,9 @@ pub struct SweepPoint {
 pub fn checked_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, String> {
     if !(lo.is_finite() && hi.is_finite() && lo > 0.0 && hi >= lo && (1..=200).contains(&count)) {
         return Err(format!(
-            "frequency grid {lo}:{hi}:{count}: expected 0 < lo ≤ hi (Hz) and 1 to 200 points"
+            "frequency grid {}:{}:{count}: expected 0 < lo ≤ hi (Hz) and 1 to 200 points",
+            short(lo),
+            short(hi)
         ));
     }
     Ok(log_grid(lo, hi, count))

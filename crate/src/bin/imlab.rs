@@ -1,154 +1,283 @@
 //! `imlab`: run IM Lab scenarios from the command line.
 
-use imlab::analysis::{
-    checked_grid, log_grid, seed_run, seeds_csv, sweep_csv, sweep_point, SweepSettings,
-};
-use imlab::scenario::{Scenario, PRESETS};
-use imlab::sim::{figures, Simulation};
-use std::io::{BufWriter, Write};
+use clap::error::{ContextKind, ContextValue};
+use clap::{Args, Parser, Subcommand};
+use imlab::analysis::{checked_grid, seed_run, seeds_csv, sweep_csv, sweep_point, SweepSettings};
+use imlab::scenario::{excerpt, Scenario, PRESETS};
+use imlab::sim::{figures, Figure, Simulation};
+use std::fmt;
+use std::fs::File;
+use std::io::{self, BufWriter, ErrorKind, Write};
 use std::process::ExitCode;
 
-const USAGE: &str = "usage:
-  imlab list                                   presets, one line each
-  imlab describe SCENARIO                      every field of the effective scenario
-  imlab run SCENARIO [--every N] [--out FILE]  CSV trace to stdout or FILE
-  imlab metrics SCENARIO                       figures of the run as CSV: name,value,unit
-  imlab sweep SCENARIO [--freqs LO:HI:N | F1,F2,...] [--amp A] [--offset W] [--duration D]
-                                               closed-loop frequency response as CSV (default
-                                               10:1000:20 Hz, 0.02 rad/s about 0 rad/s, 0.2 s)
-  imlab seeds SCENARIO [--n N] [--first SEED]  per-seed figures as CSV (default 10 seeds
-                                               from the scenario's seed)
+/// Run IM Lab scenarios: speed-sensorless induction-motor control (Zhang et al. 2015).
+#[derive(Parser)]
+#[command(
+    name = "imlab",
+    // The hand-rolled parser this replaces let a repeated option override the earlier one.
+    args_override_self = true,
+    after_help = "SCENARIO is a preset name or a query string such as \
+                  'v=1&preset=step&step.size=0.3'; `imlab list` names the presets."
+)]
+struct Cli {
+    /// What to do.
+    #[command(subcommand)]
+    command: Command,
+}
 
-SCENARIO is a preset name or a query string such as 'v=1&preset=step&step.size=0.3'.";
+/// The scenario argument every subcommand but `list` takes.
+#[derive(Args)]
+struct ScenarioArg {
+    /// Preset name or query string such as 'v=1&preset=step&step.size=0.3'
+    /// (`imlab list` names the presets)
+    scenario: String,
+}
 
+// Option values stay strings for clap: its own "invalid value" message would echo them in full,
+// while `number` and `frequencies` quote them through `excerpt`. `allow_hyphen_values` keeps the
+// old rule that the word after an option is its value, so `--offset -5` works.
+/// The subcommands.
+#[derive(Subcommand)]
+enum Command {
+    /// List the presets, one line each
+    List,
+    /// Print every field of the effective scenario
+    Describe {
+        #[command(flatten)]
+        target: ScenarioArg,
+    },
+    /// Run the scenario and write its trace as CSV to stdout or FILE
+    Run {
+        #[command(flatten)]
+        target: ScenarioArg,
+        /// Keep every N-th sample (a whole number ≥ 1)
+        #[arg(
+            long,
+            value_name = "N",
+            default_value = "1",
+            allow_hyphen_values = true
+        )]
+        every: String,
+        /// Write the CSV to FILE instead of stdout
+        #[arg(long, value_name = "FILE", allow_hyphen_values = true)]
+        out: Option<String>,
+    },
+    /// Run the scenario and print its figures as CSV: name,value,unit
+    Metrics {
+        #[command(flatten)]
+        target: ScenarioArg,
+    },
+    /// Measure the closed-loop speed frequency response and print it as CSV
+    Sweep {
+        #[command(flatten)]
+        target: ScenarioArg,
+        /// Frequencies (Hz): LO:HI:N for N log-spaced from LO to HI (0 < LO ≤ HI, 1 ≤ N ≤ 200),
+        /// or a list, each > 0
+        #[arg(
+            long,
+            value_name = "LO:HI:N|F1,F2,...",
+            default_value = "10:1000:20",
+            allow_hyphen_values = true
+        )]
+        freqs: String,
+        /// Sine amplitude (rad/s), 0 < A ≤ 1000
+        #[arg(
+            long,
+            value_name = "A",
+            default_value_t = SweepSettings::default().amp.to_string(),
+            allow_hyphen_values = true
+        )]
+        amp: String,
+        /// Operating speed the sine rides on (rad/s), |W| ≤ 1000
+        #[arg(
+            long,
+            value_name = "W",
+            default_value_t = SweepSettings::default().offset.to_string(),
+            allow_hyphen_values = true
+        )]
+        offset: String,
+        /// Length of each run (s), 0 < D ≤ 20
+        #[arg(
+            long,
+            value_name = "D",
+            default_value_t = SweepSettings::default().duration.to_string(),
+            allow_hyphen_values = true
+        )]
+        duration: String,
+    },
+    /// Run the scenario once per seed and print each seed's figures as CSV
+    Seeds {
+        #[command(flatten)]
+        target: ScenarioArg,
+        /// Number of seeds, 1 to 10000
+        #[arg(
+            long,
+            value_name = "N",
+            default_value = "10",
+            allow_hyphen_values = true
+        )]
+        n: String,
+        /// First seed, a whole number ≥ 0 [default: the scenario's seed]
+        #[arg(long, value_name = "SEED", allow_hyphen_values = true)]
+        first: Option<String>,
+    },
+}
+
+/// Why a subcommand stopped before the end.
+enum Stop {
+    /// The reader of stdout went away (`imlab … | head`): it has what it wanted.
+    Closed,
+    /// A failure, reported as `imlab: <message>`.
+    Failed(String),
+}
+
+impl From<String> for Stop {
+    /// A failure with this message.
+    fn from(message: String) -> Self {
+        Stop::Failed(message)
+    }
+}
+
+/// Parses the command line, runs the subcommand and turns its end into the exit status.
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    match run(&args) {
-        Ok(()) => ExitCode::SUCCESS,
-        Err(message) => {
-            eprintln!("imlab: {message}");
+    let cli = Cli::try_parse().unwrap_or_else(|e| quoted(e).exit());
+    let mut out = BufWriter::new(io::stdout().lock());
+    let result = execute(cli.command, &mut out);
+    // A failed run has written its trace before the failure: stdout is flushed either way.
+    let flushed = out.flush().map_err(stdout_stop);
+    match flushed.and(result) {
+        Ok(()) | Err(Stop::Closed) => ExitCode::SUCCESS,
+        Err(Stop::Failed(message)) => {
+            to_stderr(format_args!("imlab: {message}\n"));
             ExitCode::from(2)
         }
     }
 }
 
-fn run(args: &[String]) -> Result<(), String> {
-    match args.first().map(String::as_str) {
-        Some("list") if args.len() == 1 => {
-            let width = PRESETS.iter().map(|p| p.name.len()).max().unwrap_or(0);
-            for p in PRESETS {
-                println!("{:width$}  {}", p.name, p.description);
+/// `error` with the user's words in its context (an unknown argument, say) quoted by `excerpt`.
+fn quoted(mut error: clap::Error) -> clap::Error {
+    let context: Vec<_> = error.context().map(|(k, v)| (k, v.clone())).collect();
+    // The words `excerpt` rewrote: a tip that repeats one is dropped rather than cut.
+    let mut rewritten = Vec::new();
+    for (kind, value) in context {
+        let quoted = match value {
+            ContextValue::String(s) if excerpt(&s) != s => {
+                let q = ContextValue::String(excerpt(&s));
+                rewritten.push(s);
+                q
             }
-            Ok(())
-        }
-        Some("describe") if args.len() == 2 => {
-            let s = Scenario::parse(&args[1]).map_err(|e| e.to_string())?;
-            println!("# {}", s.encode());
-            println!("# {} samples of {} s", s.steps(), s.ts);
-            for f in s.describe() {
-                let value = f.value.unwrap_or_else(|| "-".to_string());
-                let unit = if f.unit.is_empty() {
-                    String::new()
-                } else {
-                    format!(" {}", f.unit)
-                };
-                println!(
-                    "{:12} = {:>22}{:8}  [{}] {}",
-                    f.key, value, unit, f.group, f.doc
-                );
+            ContextValue::Strings(list) if list.iter().any(|s| excerpt(s) != *s) => {
+                let q = ContextValue::Strings(list.iter().map(|s| excerpt(s)).collect());
+                rewritten.extend(list);
+                q
             }
-            Ok(())
-        }
-        Some("run") if args.len() >= 2 => {
-            let s = Scenario::parse(&args[1]).map_err(|e| e.to_string())?;
-            let (mut every, mut out) = (1usize, None);
-            let mut rest = args[2..].iter();
-            while let Some(flag) = rest.next() {
-                let value = rest
-                    .next()
-                    .ok_or(format!("{flag} needs a value\n{USAGE}"))?;
-                match flag.as_str() {
-                    "--every" => {
-                        every = value
-                            .parse()
-                            .ok()
-                            .filter(|&n| n >= 1)
-                            .ok_or(format!("--every '{value}': expected a whole number ≥ 1"))?
-                    }
-                    "--out" => out = Some(value.clone()),
-                    _ => return Err(format!("unknown option '{flag}'\n{USAGE}")),
-                }
-            }
-            let mut sim = Simulation::new(&s, every).map_err(|e| e.to_string())?;
-            let result = sim.run();
-            let write = |w: &mut dyn Write| -> std::io::Result<()> {
-                let mut w = BufWriter::new(w);
-                sim.recorder().write_csv(&mut w)?;
-                w.flush()
-            };
-            match &out {
-                Some(path) => {
-                    let mut file =
-                        std::fs::File::create(path).map_err(|e| format!("--out {path}: {e}"))?;
-                    write(&mut file).map_err(|e| format!("--out {path}: {e}"))?;
-                }
-                None => write(&mut std::io::stdout().lock()).map_err(|e| format!("stdout: {e}"))?,
-            }
-            // The trace up to the failure is written; the failure itself is an error.
-            result.map_err(|e| format!("{e} (trace written up to the failure)"))
-        }
-        Some("metrics") if args.len() == 2 => metrics(&args[1]),
-        Some("sweep") if args.len() >= 2 => sweep(
-            &args[1],
-            &options(&args[2..], &["--freqs", "--amp", "--offset", "--duration"])?,
-        ),
-        Some("seeds") if args.len() >= 2 => {
-            seeds(&args[1], &options(&args[2..], &["--n", "--first"])?)
-        }
-        _ => Err(USAGE.to_string()),
+            _ => continue,
+        };
+        error.insert(kind, quoted);
     }
+    if let Some(ContextValue::StyledStrs(tips)) = error.remove(ContextKind::Suggested) {
+        let tips: Vec<_> = tips
+            .into_iter()
+            .filter(|tip| {
+                // With its styling codes: the plain text strips whatever looks like an escape
+                // sequence, the user's own included, and would no longer contain the word.
+                let tip = tip.ansi().to_string();
+                !rewritten.iter().any(|s| tip.contains(s.as_str()))
+            })
+            .collect();
+        if !tips.is_empty() {
+            error.insert(ContextKind::Suggested, ContextValue::StyledStrs(tips));
+        }
+    }
+    error
 }
 
-/// Runs the scenario, recording every sample, and prints its figures as `name,value,unit` lines;
-/// after a failure, the figures of the samples before it, then the failure as the error.
-fn metrics(text: &str) -> Result<(), String> {
-    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
-    let mut sim = Simulation::new(&s, 1).map_err(|e| e.to_string())?;
-    let result = sim.run();
-    let list = figures(&sim);
-    let write = |w: &mut dyn Write| -> std::io::Result<()> {
-        let mut w = BufWriter::new(w);
-        writeln!(w, "name,value,unit")?;
-        for f in list.iter().flatten() {
-            writeln!(w, "{},{},{}", f.name, f.value, f.unit)?;
-        }
-        w.flush()
-    };
-    write(&mut std::io::stdout().lock()).map_err(|e| format!("stdout: {e}"))?;
-    let printed = if list.is_some() {
-        "figures printed of the samples before the failure"
+/// Writes `text` to stderr; a closed stderr is no reason to stop or to panic.
+fn to_stderr(text: fmt::Arguments) {
+    let _ = io::stderr().write_fmt(text);
+}
+
+/// An error writing to stdout as a [`Stop`]: a closed pipe is the reader's choice, not a failure.
+fn stdout_stop(error: io::Error) -> Stop {
+    if error.kind() == ErrorKind::BrokenPipe {
+        Stop::Closed
     } else {
-        "nothing recorded before the failure"
-    };
-    result.map_err(|e| format!("{e} ({printed})"))
-}
-
-/// `--flag value` pairs, each flag one of `allowed`.
-fn options<'a>(args: &'a [String], allowed: &[&str]) -> Result<Vec<(&'a str, &'a str)>, String> {
-    let mut out = Vec::new();
-    let mut rest = args.iter();
-    while let Some(flag) = rest.next() {
-        if !allowed.contains(&flag.as_str()) {
-            return Err(format!("unknown option '{flag}'\n{USAGE}"));
-        }
-        let value = rest
-            .next()
-            .ok_or(format!("{flag} needs a value\n{USAGE}"))?;
-        out.push((flag.as_str(), value.as_str()));
+        Stop::Failed(format!("stdout: {error}"))
     }
-    Ok(out)
 }
 
+/// Runs one subcommand, writing its results to `out`.
+fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
+    match command {
+        Command::List => list(out).map_err(stdout_stop),
+        Command::Describe { target } => describe(&target.parse()?, out).map_err(stdout_stop),
+        Command::Run {
+            target,
+            every,
+            out: file,
+        } => {
+            let s = target.parse()?;
+            let every = number("--every", &every, |&n: &usize| n >= 1, "a whole number ≥ 1")?;
+            run(&s, every, file.as_deref(), out)
+        }
+        Command::Metrics { target } => metrics(&target.parse()?, out),
+        Command::Sweep {
+            target,
+            freqs,
+            amp,
+            offset,
+            duration,
+        } => {
+            let s = target.parse()?;
+            let freqs = frequencies(&freqs)?;
+            let settings = SweepSettings {
+                amp: number(
+                    "--amp",
+                    &amp,
+                    |a: &f64| *a > 0.0 && *a <= 1000.0,
+                    "0 < A ≤ 1000 rad/s",
+                )?,
+                offset: number(
+                    "--offset",
+                    &offset,
+                    |w: &f64| w.abs() <= 1000.0,
+                    "|W| ≤ 1000 rad/s",
+                )?,
+                duration: number(
+                    "--duration",
+                    &duration,
+                    |d: &f64| *d > 0.0 && *d <= 20.0,
+                    "0 < D ≤ 20 s",
+                )?,
+            };
+            sweep(&s, &freqs, &settings, out)
+        }
+        Command::Seeds { target, n, first } => {
+            let s = target.parse()?;
+            let n = number(
+                "--n",
+                &n,
+                |n: &u64| (1..=10_000).contains(n),
+                "a whole number from 1 to 10000",
+            )?;
+            let first = match first {
+                Some(value) => number("--first", &value, |_: &u64| true, "a whole number ≥ 0")?,
+                None => s.seed,
+            };
+            seeds(&s, n, first, out)
+        }
+    }
+}
+
+impl ScenarioArg {
+    /// The scenario the argument names.
+    fn parse(&self) -> Result<Scenario, String> {
+        Scenario::parse(&self.scenario).map_err(|e| e.to_string())
+    }
+}
+
+/// The value of option `flag` if it parses and passes `ok`; else a message naming the option, the
+/// value and the `expected` range.
 fn number<T: std::str::FromStr>(
     flag: &str,
     value: &str,
@@ -159,12 +288,17 @@ fn number<T: std::str::FromStr>(
         .parse()
         .ok()
         .filter(ok)
-        .ok_or(format!("{flag} '{value}': expected {expected}"))
+        .ok_or_else(|| format!("{flag} '{}': expected {expected}", excerpt(value)))
 }
 
+/// The frequencies (Hz) of `--freqs`, increasing and distinct.
 fn frequencies(value: &str) -> Result<Vec<f64>, String> {
-    let bad =
-        || format!("--freqs '{value}': expected LO:HI:N (log spaced) or F1,F2,... in Hz, each > 0");
+    let bad = || {
+        format!(
+            "--freqs '{}': expected LO:HI:N (log spaced) or F1,F2,... in Hz, each > 0",
+            excerpt(value)
+        )
+    };
     if let [lo, hi, n] = value.split(':').collect::<Vec<_>>()[..] {
         let lo: f64 = lo.parse().map_err(|_| bad())?;
         let hi: f64 = hi.parse().map_err(|_| bad())?;
@@ -184,71 +318,117 @@ fn frequencies(value: &str) -> Result<Vec<f64>, String> {
     Ok(freqs)
 }
 
-fn sweep(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
-    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
-    let mut settings = SweepSettings::default();
-    let mut freqs = log_grid(10.0, 1000.0, 20);
-    for &(flag, value) in opts {
-        match flag {
-            "--freqs" => freqs = frequencies(value)?,
-            "--amp" => {
-                settings.amp = number(
-                    flag,
-                    value,
-                    |a: &f64| *a > 0.0 && *a <= 1000.0,
-                    "0 < A ≤ 1000 rad/s",
-                )?
-            }
-            "--offset" => {
-                settings.offset =
-                    number(flag, value, |w: &f64| w.abs() <= 1000.0, "|W| ≤ 1000 rad/s")?
-            }
-            _ => {
-                settings.duration = number(
-                    flag,
-                    value,
-                    |d: &f64| *d > 0.0 && *d <= 20.0,
-                    "0 < D ≤ 20 s",
-                )?
-            }
-        }
+/// Writes the presets, one `name  description` line each.
+fn list(out: &mut impl Write) -> io::Result<()> {
+    let width = PRESETS.iter().map(|p| p.name.len()).max().unwrap_or(0);
+    for p in PRESETS {
+        writeln!(out, "{:width$}  {}", p.name, p.description)?;
     }
-    let mut points = Vec::new();
-    for (i, &f) in freqs.iter().enumerate() {
-        eprint!("\rimlab sweep: {}/{} ({f:.4} Hz)   ", i + 1, freqs.len());
-        points.push(sweep_point(&s, f, &settings).map_err(|e| e.to_string())?);
-    }
-    eprintln!();
-    print!("{}", sweep_csv(&points));
     Ok(())
 }
 
-fn seeds(text: &str, opts: &[(&str, &str)]) -> Result<(), String> {
-    let s = Scenario::parse(text).map_err(|e| e.to_string())?;
-    let (mut n, mut first) = (10u64, s.seed);
-    for &(flag, value) in opts {
-        match flag {
-            "--n" => {
-                n = number(
-                    flag,
-                    value,
-                    |n: &u64| (1..=10_000).contains(n),
-                    "a whole number from 1 to 10000",
-                )?
-            }
-            _ => first = number(flag, value, |_: &u64| true, "a whole number ≥ 0")?,
-        }
+/// Writes the scenario's canonical string, its length and every field with unit and doc.
+fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
+    writeln!(out, "# {}", s.encode())?;
+    writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;
+    for f in s.describe() {
+        let value = f.value.unwrap_or_else(|| "-".to_string());
+        let unit = if f.unit.is_empty() {
+            String::new()
+        } else {
+            format!(" {}", f.unit)
+        };
+        writeln!(
+            out,
+            "{:12} = {:>22}{:8}  [{}] {}",
+            f.key, value, unit, f.group, f.doc
+        )?;
     }
-    let mut results = Vec::new();
-    for (i, seed) in (first..first.saturating_add(n)).enumerate() {
-        eprint!("\rimlab seeds: {}/{n}   ", i + 1);
-        results.push(
-            seed_run(&s, seed, usize::MAX)
-                .map_err(|e| e.to_string())?
-                .result,
-        );
-    }
-    eprintln!();
-    print!("{}", seeds_csv(&results));
     Ok(())
+}
+
+/// Runs the scenario keeping every `every`-th sample and writes the trace as CSV to `file` or
+/// `out`; after a failure, the trace up to it, then the failure as the error.
+fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> Result<(), Stop> {
+    let mut sim = Simulation::new(s, every).map_err(|e| e.to_string())?;
+    let result = sim.run();
+    match file {
+        Some(path) => {
+            let failed = |e: io::Error| format!("--out '{}': {e}", excerpt(path));
+            let mut file = BufWriter::new(File::create(path).map_err(failed)?);
+            sim.recorder()
+                .write_csv(&mut file)
+                .and_then(|()| file.flush())
+                .map_err(failed)?;
+        }
+        None => sim.recorder().write_csv(out).map_err(stdout_stop)?,
+    }
+    result.map_err(|e| format!("{e} (trace written up to the failure)").into())
+}
+
+/// Runs the scenario, recording every sample, and writes its figures as `name,value,unit` lines;
+/// after a failure, the figures of the samples before it, then the failure as the error.
+fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
+    let mut sim = Simulation::new(s, 1).map_err(|e| e.to_string())?;
+    let result = sim.run();
+    let list = figures(&sim);
+    write_figures(list.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
+    let printed = if list.is_some() {
+        "figures printed of the samples before the failure"
+    } else {
+        "nothing recorded before the failure"
+    };
+    result.map_err(|e| format!("{e} ({printed})").into())
+}
+
+/// Writes the header `name,value,unit` and one line per figure.
+fn write_figures(list: &[Figure], out: &mut impl Write) -> io::Result<()> {
+    writeln!(out, "name,value,unit")?;
+    for f in list {
+        writeln!(out, "{},{},{}", f.name, f.value, f.unit)?;
+    }
+    Ok(())
+}
+
+/// Measures the response at each frequency, with progress on stderr, and writes it as CSV.
+fn sweep(
+    s: &Scenario,
+    freqs: &[f64],
+    settings: &SweepSettings,
+    out: &mut impl Write,
+) -> Result<(), Stop> {
+    let points: Result<Vec<_>, _> = freqs
+        .iter()
+        .enumerate()
+        .map(|(i, &f)| {
+            to_stderr(format_args!(
+                "\rimlab sweep: {}/{} ({f:.4} Hz)   ",
+                i + 1,
+                freqs.len()
+            ));
+            sweep_point(s, f, settings)
+        })
+        .collect();
+    // Ends the progress line, so that an error message starts a line of its own.
+    to_stderr(format_args!("\n"));
+    let points = points.map_err(|e| e.to_string())?;
+    out.write_all(sweep_csv(&points).as_bytes())
+        .map_err(stdout_stop)
+}
+
+/// Runs the scenario with seeds `first`, `first + 1`, … (`n` of them), with progress on stderr,
+/// and writes each run's figures as CSV.
+fn seeds(s: &Scenario, n: u64, first: u64, out: &mut impl Write) -> Result<(), Stop> {
+    let results: Result<Vec<_>, _> = (first..first.saturating_add(n))
+        .enumerate()
+        .map(|(i, seed)| {
+            to_stderr(format_args!("\rimlab seeds: {}/{n}   ", i + 1));
+            seed_run(s, seed, usize::MAX).map(|run| run.result)
+        })
+        .collect();
+    // Ends the progress line, so that an error message starts a line of its own.
+    to_stderr(format_args!("\n"));
+    let results = results.map_err(|e| e.to_string())?;
+    out.write_all(seeds_csv(&results).as_bytes())
+        .map_err(stdout_stop)
 }

@@ -114,7 +114,7 @@ pub fn excerpt(text: &str) -> String {
 
 /// `v` for a message: the codec's shortest form, or scientific notation where that is long
 /// (5e-324 rather than 324 digits).
-fn short(v: f64) -> String {
+pub fn short(v: f64) -> String {
     let plain = format!("{v}");
     if plain.len() > 12 {
         format!("{v:e}")
