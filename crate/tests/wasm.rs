@@ -34,6 +34,12 @@ fn bindings_return_the_core_columns_byte_for_byte() {
             );
         }
         assert_eq!(js.csv(), core.recorder().csv());
+        // The export's chunks (the header with the first) concatenate to the same bytes.
+        let mut chunks = Vec::new();
+        for start in (0..js.rows()).step_by(333) {
+            chunks.extend(js.csv_chunk(start, 333));
+        }
+        assert_eq!(chunks, core.recorder().csv().into_bytes(), "{text}");
     }
 }
 
