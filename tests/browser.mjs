@@ -48,9 +48,9 @@ export async function newPage(browser, errors) {
   return page;
 }
 
-/** Waits until the current run has finished (done, failed or cancelled). */
+/** Waits until the current run has finished (done, failed, cancelled, or crashed with its worker). */
 export async function settled(page, timeout = 30_000) {
-  await page.waitForFunction(() => ['done', 'failed', 'cancelled'].includes(document.body.dataset.state), null, { timeout });
+  await page.waitForFunction(() => ['done', 'failed', 'cancelled', 'crashed'].includes(document.body.dataset.state), null, { timeout });
   return page.evaluate(() => document.body.dataset.state);
 }
 

@@ -1,6 +1,7 @@
 // Analysis tab: frequency-response sweeps and seed sweeps run as independent jobs on a pool of
 // workers (one per core); every figure is computed by the core in those workers.
 import uPlot from '../vendor/uPlot.esm.js';
+import { excerpt } from './url.js';
 
 const el = (tag, props = {}, children = []) => {
   const e = Object.assign(document.createElement(tag), props);
@@ -8,22 +9,67 @@ const el = (tag, props = {}, children = []) => {
   return e;
 };
 
+/**
+ * One worker of a pool. A crash (the worker's 'crashed' message, or an error event) terminates
+ * it and rejects the reply it was waiting for; the pool then starts a fresh one.
+ */
+class Member {
+  constructor() {
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.failed = null; // why the worker failed
+    this.waiting = null; // {type, job, resolve, reject}: the reply awaited
+    this.worker.onmessage = ({ data }) => {
+      if (data.type === 'crashed') this.fail(data.message);
+      else if (this.waiting && data.type === this.waiting.type && data.job === this.waiting.job) {
+        const { resolve } = this.waiting;
+        this.waiting = null;
+        resolve(data);
+      }
+    };
+    this.worker.onerror = (e) => {
+      e.preventDefault();
+      this.fail(e.message || 'unknown error');
+    };
+    this.worker.onmessageerror = () => this.fail('a message from it could not be read');
+    this.ready = this.reply('ready');
+  }
+
+  /**
+   * Resolves with the worker's next message of `type` (for `job`), or rejects if it fails first.
+   * A newer wait (another run took the pool) cancels the older one.
+   */
+  reply(type, job) {
+    this.waiting?.reject(new Error('cancelled'));
+    return new Promise((resolve, reject) => {
+      if (this.failed) reject(new Error(`a worker failed (${this.failed})`));
+      else this.waiting = { type, job, resolve, reject };
+    });
+  }
+
+  fail(reason) {
+    if (this.failed) return;
+    this.failed = reason;
+    this.worker.terminate();
+    this.waiting?.reject(new Error(`a worker failed (${reason}); the next run starts a fresh one`));
+    this.waiting = null;
+  }
+}
+
 /** Workers running stateless jobs; results come back in job order. */
 export class Pool {
   constructor(size) {
     this.size = size;
-    this.workers = [];
+    this.members = [];
     this.generation = 0;
+    this.jobs = 0; // job ids, unique over the pool's life so a late reply never matches a new job
   }
 
+  /** Brings the pool to `size` live workers and waits until each has loaded the core. */
   async start() {
-    while (this.workers.length < this.size) {
-      const w = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
-      await new Promise((resolve) => {
-        w.onmessage = ({ data }) => data.type === 'ready' && resolve();
-      });
-      this.workers.push(w);
-    }
+    for (const m of this.members.splice(this.size)) m.worker.terminate();
+    this.members = this.members.filter((m) => !m.failed);
+    while (this.members.length < this.size) this.members.push(new Member());
+    await Promise.all(this.members.map((m) => m.ready));
   }
 
   /** Runs `jobs` (messages without `type`/`job`); `onDone(count)` reports progress. */
@@ -33,23 +79,26 @@ export class Pool {
     const results = new Array(jobs.length);
     let next = 0;
     let done = 0;
-    const work = (w) => new Promise((resolve, reject) => {
-      const take = () => {
-        if (this.generation !== generation) return reject(new Error('cancelled'));
-        if (next >= jobs.length) return resolve();
-        const job = next++;
-        w.onmessage = ({ data }) => {
-          if (data.type !== 'job' || data.job !== job) return;
-          if (data.error) return reject(new Error(data.error));
-          results[job] = data.result;
-          onDone(++done);
-          take();
-        };
-        w.postMessage({ type: 'job', job, ...jobs[job] });
-      };
-      take();
-    });
-    await Promise.all(this.workers.map(work));
+    let failed = false; // a job failed: the other workers stop after their current one
+    const work = async (member) => {
+      while (next < jobs.length) {
+        if (this.generation !== generation || failed) throw new Error('cancelled');
+        const index = next++;
+        const job = ++this.jobs;
+        const reply = member.reply('job', job);
+        member.worker.postMessage({ type: 'job', job, ...jobs[index] });
+        const data = await reply;
+        if (data.error) throw new Error(data.error);
+        results[index] = data.result;
+        onDone(++done);
+      }
+    };
+    try {
+      await Promise.all(this.members.map(work));
+    } catch (e) {
+      failed = true;
+      throw e;
+    }
     return results;
   }
 
@@ -67,14 +116,34 @@ export const VARIANTS = {
 };
 const COLORS = { euler: '#d62728', rk4: '#1f77b4', perfect: '#2ca02c', ifoc: '#9467bd' };
 
-/** Sweep settings as written in the URL fragment: `sweep=lo,hi,n,amp,offset,duration,v1.v2`. */
+/**
+ * Whether `n` can be a number of points: the core takes it as a 32-bit integer, and the
+ * conversion would silently truncate 2.5 to 2 or wrap 2^32 + 5 to 5. The core checks the range.
+ */
+export function isCount(n) {
+  return Number.isInteger(n) && n >= 0 && n < 2 ** 32;
+}
+
+const SWEEP_KEYS = ['lo', 'hi', 'n', 'amp', 'offset', 'duration'];
+
+/**
+ * Sweep settings as written in the URL fragment: `sweep=lo,hi,n,amp,offset,duration,v1.v2`.
+ * Throws a short message naming the first part that is not acceptable.
+ */
 export function parseSweep(text) {
   const parts = text.split(',');
-  if (parts.length !== 7) return null;
-  const [lo, hi, n, amp, offset, duration] = parts.slice(0, 6).map(Number);
-  const variants = parts[6].split('.').filter((v) => v in VARIANTS);
-  if (![lo, hi, n, amp, offset, duration].every(Number.isFinite) || !variants.length) return null;
-  return { lo, hi, n, amp, offset, duration, variants };
+  if (parts.length !== 7) throw new Error(`expected 7 parts lo,hi,n,amp,offset,duration,variants, not ${parts.length}`);
+  const settings = {};
+  for (const [i, key] of SWEEP_KEYS.entries()) {
+    const value = Number(parts[i]);
+    if (parts[i].trim() === '' || !Number.isFinite(value)) throw new Error(`${key} = '${excerpt(parts[i])}' is not a number`);
+    settings[key] = value;
+  }
+  if (!isCount(settings.n)) throw new Error(`n = ${excerpt(parts[2])}: expected a whole number of points`);
+  settings.variants = parts[6].split('.');
+  const unknown = settings.variants.find((v) => !Object.hasOwn(VARIANTS, v));
+  if (unknown !== undefined) throw new Error(`variant '${excerpt(unknown)}' is unknown (expected ${Object.keys(VARIANTS).join(', ')})`);
+  return settings;
 }
 
 export function formatSweep(s) {

@@ -1,8 +1,8 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 import { Plots, PLOTS, png } from './plots.js';
 import { composeScenario, fieldControl, fieldValue, forwardKnob, markInvalid, renderFields } from './controls.js';
-import { DEFAULT_SCENARIO, fragment, markRun, presetNamed, scenarioFromUrl, setFragment, showScenario } from './url.js';
-import { Analysis, formatSweep, parseSweep } from './analysis.js';
+import { DEFAULT_SCENARIO, decodePins, excerpt, fragment, markRun, presetNamed, scenarioFromUrl, setFragment, showScenario } from './url.js';
+import { Analysis, formatSweep, isCount, parseSweep } from './analysis.js';
 import uPlot from '../vendor/uPlot.esm.js';
 import { Walkthrough } from './walkthrough.js';
 import { LessonPanel } from './lessons.js';
@@ -25,11 +25,15 @@ const state = {
   shared: { pins: fragment('pins'), sweep: fragment('sweep') }, // from the link that opened the page
   runId: 0,
   running: false,
+  ranScenario: null, // the scenario of the last run started
+  workerReady: false, // whether the current worker has loaded the core
   started: 0,
   req: 0,
   pending: new Map(), // describe requests: req → {resolve, reject}
   transient: null, // {t, reason}: the end of the start-up transient, from the core
   figures: [], // the run's figures, from the core
+  export: null, // the CSV export under way: {serial, parts: [Blob]}
+  exportSerial: 0,
 };
 
 /** Whether the y-axes leave out the start-up transient, and from which time. */
@@ -88,23 +92,50 @@ function say(text, kind = 'error') {
 function setBusy(busy) {
   state.running = busy;
   ui.run.disabled = busy || state.info === null;
-  ui.cancel.disabled = !busy;
+  ui.cancel.disabled = !busy && state.export === null;
+  // The worker holds one run: the one being computed, whose CSV is not whole yet.
+  if (busy) ui.csv.disabled = true;
   document.body.dataset.state = busy ? 'running' : 'idle';
 }
 
 function startWorker() {
+  state.workerReady = false;
   worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
   worker.onmessage = ({ data }) => handlers[data.type](data);
   worker.onerror = (e) => {
     e.preventDefault();
-    worker.terminate();
-    for (const { reject } of state.pending.values()) reject(new Error('worker restarted'));
-    state.pending.clear();
-    setBusy(false);
-    say(`The simulation worker stopped (${e.message || 'unknown error'}). It has been restarted; press Run to try again.`);
-    startWorker();
+    workerFailed(e.message || 'unknown error');
   };
+  worker.onmessageerror = () => workerFailed('a message from it could not be read');
 }
+
+/**
+ * The worker crashed (a trap in the core, or an uncaught error): it and everything it held (the
+ * run, the pins) are gone. Ends what waited on it and starts a fresh one, unless it never
+ * started, which a restart would only repeat.
+ */
+function workerFailed(reason) {
+  worker.terminate();
+  for (const { reject } of state.pending.values()) reject(new WorkerFailed(reason));
+  state.pending.clear();
+  if (state.export) endExport('failed', 'CSV export stopped');
+  const wasRunning = state.running;
+  setBusy(false);
+  ui.csv.disabled = true;
+  document.body.dataset.state = 'crashed';
+  if (wasRunning) ui.status.textContent = 'Stopped: the simulation worker failed';
+  if (!state.workerReady) {
+    say(`The simulation worker could not start (${reason}). Reload the page to try again.`);
+    return;
+  }
+  const dropped = state.pins.length ? ` The pinned runs were dropped: ${state.pins.map((p) => excerpt(p)).join('; ')}.` : '';
+  say(`The simulation worker failed (${reason}). It was restarted; press Run to try again.${dropped}`);
+  showPins([], []);
+  startWorker();
+}
+
+/** A request the worker could not answer because it failed; the page has said so already. */
+class WorkerFailed extends Error {}
 
 /** Asks the core to validate and describe a scenario string ('recover' keeps its good fields). */
 function describe(scenario, type = 'describe') {
@@ -140,21 +171,35 @@ function syncControl(control, value) {
 async function load(text, { run = true } = {}) {
   let info;
   try {
-    info = await describe(text);
-    say('');
+    info = await describeLoaded(text);
   } catch (e) {
-    try {
-      // Keep what is valid; name every field that was left out.
-      info = await describe(text, 'recover');
-      say(`Some settings in the address were rejected and left at the preset's values: ${info.rejected.join('; ')}.`);
-    } catch {
-      say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
-      info = await describe(DEFAULT_SCENARIO);
-    }
+    if (e instanceof WorkerFailed) return;
+    throw e;
   }
   applyDescription(info);
   showScenario(info.encoded);
   if (run) startRun();
+}
+
+/** The core's description of `text`, else of its valid fields, else of the default; says which. */
+async function describeLoaded(text) {
+  try {
+    const info = await describe(text);
+    say('');
+    return info;
+  } catch (e) {
+    if (e instanceof WorkerFailed) throw e;
+    try {
+      // Keep what is valid; name every field that was left out.
+      const info = await describe(text, 'recover');
+      say(`Some settings in the address were rejected and left at the preset's values: ${info.rejected.join('; ')}.`);
+      return info;
+    } catch (again) {
+      if (again instanceof WorkerFailed) throw again;
+      say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
+      return describe(DEFAULT_SCENARIO);
+    }
+  }
 }
 
 /** Checks the form's scenario with the core; returns whether it is valid. An invalid value is
@@ -170,6 +215,7 @@ async function formChanged() {
     say('');
     return true;
   } catch (e) {
+    if (e instanceof WorkerFailed) return false;
     markInvalid(ui.form, e.message);
     const field = /field '([^']+)'/.exec(e.message)?.[1] ?? null;
     walkthrough.markKnob(field, e.message);
@@ -189,7 +235,14 @@ async function knobChanged(knob) {
 function startRun() {
   if (!state.info) return;
   if (state.running) worker.postMessage({ type: 'cancel', id: state.runId });
+  if (document.body.dataset.state === 'crashed') say(''); // the crash was told; this is the retry
+  // The new run replaces the one being exported in the worker.
+  if (state.export) {
+    cancelExport('CSV export cancelled');
+    say('The CSV export was cancelled: a new run started.', 'info');
+  }
   const id = ++state.runId;
+  state.ranScenario = state.info.encoded;
   markRun(state.info.encoded);
   document.body.dataset.scenario = state.info.encoded;
   state.started = performance.now();
@@ -205,6 +258,9 @@ const buckets = () => Math.max(200, Math.round(plots.width()));
 
 function requestWindow(t0, t1) {
   if (state.running || !plots.full) return;
+  // uPlot reports each new chart's initial scale, the whole run, as a zoom; the charts already
+  // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
+  if (t0 <= plots.full[0] && t1 >= plots.full[1]) return;
   for (const set of plotSets) set.window = [t0, t1];
   worker.postMessage({ type: 'view', id: state.runId, t0, t1, buckets: buckets() });
 }
@@ -251,10 +307,40 @@ function requestInspect(t) {
   if (!state.running && plots.full) worker.postMessage({ type: 'inspect', id: state.runId, t });
 }
 
+// The browser reads a blob: URL while it saves the download, which for a CSV of a gigabyte
+// takes seconds; revoking the URL earlier would fail the download.
+const REVOKE_AFTER_MS = 120_000;
+
 function download(blob, name) {
   const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: name });
   a.click();
-  setTimeout(() => URL.revokeObjectURL(a.href), 1000);
+  setTimeout(() => URL.revokeObjectURL(a.href), REVOKE_AFTER_MS);
+}
+
+/** Asks the worker for the run's CSV, which arrives in chunks of rows (handlers.csv). */
+function startExport() {
+  const serial = ++state.exportSerial;
+  state.export = { serial, parts: [] };
+  ui.csv.disabled = true;
+  ui.cancel.disabled = false;
+  ui.progress.value = 0;
+  ui.status.textContent = 'Exporting CSV…';
+  document.body.dataset.export = 'running';
+  worker.postMessage({ type: 'csv', id: state.runId, serial });
+}
+
+function cancelExport(status) {
+  worker.postMessage({ type: 'csv-cancel', serial: state.export.serial });
+  endExport('cancelled', status);
+}
+
+/** Ends the export under way: `outcome` is done, cancelled or failed, `status` the status line. */
+function endExport(outcome, status) {
+  state.export = null;
+  ui.csv.disabled = false;
+  ui.cancel.disabled = !state.running;
+  ui.status.textContent = status;
+  document.body.dataset.export = outcome;
 }
 
 function fileStem() {
@@ -314,10 +400,15 @@ function pngHeader() {
 
 const handlers = {
   ready({ presets, nisBand }) {
-    state.presets = presets;
-    state.nisBand = nisBand;
-    for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
-    load(scenarioFromUrl());
+    state.workerReady = true;
+    // A worker started after a crash is ready too: the presets are listed already, and the
+    // scenario stays as it is unless none was loaded yet.
+    if (!state.presets.length) {
+      state.presets = presets;
+      state.nisBand = nisBand;
+      for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
+    }
+    if (state.info === null) load(scenarioFromUrl());
   },
   described({ req, info }) {
     state.pending.get(req)?.resolve(info);
@@ -370,7 +461,9 @@ const handlers = {
     }
     // Pins from a shared link are re-run once; afterwards each run refreshes the comparison.
     if (state.shared.pins) {
-      worker.postMessage({ type: 'pin', scenarios: state.shared.pins.split('|').map(decodeURIComponent) });
+      const { scenarios, malformed } = decodePins(state.shared.pins);
+      if (malformed.length) say(`Ignored a malformed pin in the address: ${malformed.map((m) => `'${excerpt(m)}'`).join(', ')}.`);
+      worker.postMessage({ type: 'pin', scenarios });
     } else if (state.pins.length) {
       worker.postMessage({ type: 'pin', scenarios: [] });
     }
@@ -378,12 +471,13 @@ const handlers = {
     const shared = state.shared.sweep;
     state.shared = {};
     if (shared) {
-      const settings = parseSweep(shared);
-      if (settings) {
-        fillSweepForm(settings);
+      try {
+        fillSweepForm(parseSweep(shared));
         showTab('analysis');
         runSweep();
-      } else say(`The sweep in the address (#sweep=${shared}) is malformed: expected lo,hi,n,amp,offset,duration,variants (e.g. euler.rk4).`);
+      } catch (e) {
+        say(`The sweep in the address (#sweep=${excerpt(shared)}) was not run: ${e.message}.`);
+      }
     }
   },
   cancelled({ id }) {
@@ -404,26 +498,63 @@ const handlers = {
   compared({ id, results }) {
     if (id === state.runId) walkthrough.showComparison(results);
   },
-  pins({ scenarios, legends, error }) {
-    state.pins = scenarios;
-    if (error) say(error);
-    setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
-    $('pins').replaceChildren(...scenarios.map((s, i) => {
-      const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
-      unpin.addEventListener('click', () => worker.postMessage({ type: 'unpin', index: i }));
-      const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
-      li.append(unpin);
-      return li;
-    }));
-    requestOverlay();
+  pins({ scenarios, legends, rejected }) {
+    if (rejected.length) say(rejected.map((r) => `Could not pin ${excerpt(r.scenario)}: ${r.message}.`).join(' '));
+    showPins(scenarios, legends);
   },
   overlay({ id, column, data }) {
     if (id === state.runId) drawOverlay(column, data);
   },
-  csv({ id, text }) {
-    if (id === state.runId) download(new Blob([text], { type: 'text/csv' }), `${fileStem()}.csv`);
+  crashed({ message }) {
+    workerFailed(message);
+  },
+  async csv({ serial, bytes, rows, total }) {
+    const job = state.export;
+    if (job?.serial !== serial) return; // cancelled
+    // Each chunk becomes a Blob at once: the browser keeps blob data out of the page's heap.
+    const part = new Blob([bytes]);
+    // Reading its last byte waits until the browser has stored the chunk, and fails if it refused
+    // it (Chromium keeps at most 2 GiB of blobs where it cannot spill them to disk).
+    try {
+      await part.slice(-1).arrayBuffer();
+    } catch (e) {
+      if (state.export !== job) return;
+      const stored = job.parts.reduce((sum, p) => sum + p.size, 0);
+      endExport('failed', 'CSV export failed');
+      say(`The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${e.name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`);
+      return;
+    }
+    if (state.export !== job) return; // cancelled meanwhile
+    job.parts.push(part);
+    ui.progress.value = total ? rows / total : 1;
+    if (rows < total) {
+      ui.status.textContent = `Exporting CSV: ${rows.toLocaleString()} of ${total.toLocaleString()} rows`;
+      worker.postMessage({ type: 'csv-next', serial });
+      return;
+    }
+    download(new Blob(job.parts, { type: 'text/csv' }), `${fileStem()}.csv`);
+    endExport('done', `CSV exported: ${total.toLocaleString()} rows`);
+  },
+  'csv-failed'({ serial, message }) {
+    if (state.export?.serial !== serial) return;
+    endExport('failed', 'CSV export failed');
+    say(`The CSV export failed: ${message}.`);
   },
 };
+
+/** Shows the pinned runs (with what differs from the current run) and keeps them in the link. */
+function showPins(scenarios, legends) {
+  state.pins = scenarios;
+  setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
+  $('pins').replaceChildren(...scenarios.map((s, i) => {
+    const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
+    unpin.addEventListener('click', () => worker.postMessage({ type: 'unpin', index: i }));
+    const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
+    li.append(unpin);
+    return li;
+  }));
+  requestOverlay();
+}
 
 ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`));
 ui.form.addEventListener('change', formChanged);
@@ -458,11 +589,15 @@ document.addEventListener('keydown', (e) => {
 });
 // An edit still being checked by the core must land before the run starts.
 ui.run.addEventListener('click', async () => {
-  if (composeScenario(ui.form, ui.preset.value) !== state.composed) await formChanged();
+  if (composeScenario(ui.form, ui.preset.value) !== state.composed && !(await formChanged())) return;
   if (!ui.run.disabled) startRun();
 });
-ui.cancel.addEventListener('click', () => worker.postMessage({ type: 'cancel', id: state.runId }));
-ui.csv.addEventListener('click', () => worker.postMessage({ type: 'csv', id: state.runId }));
+// Cancel stops the run or the CSV export, whichever is under way.
+ui.cancel.addEventListener('click', () => {
+  if (state.export) cancelExport('CSV export cancelled');
+  else worker.postMessage({ type: 'cancel', id: state.runId });
+});
+ui.csv.addEventListener('click', startExport);
 ui.png.addEventListener('click', async () => {
   const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
   const set = tab === 'walkthrough' ? walkthrough.plots : plots;
@@ -512,6 +647,10 @@ async function runSweep() {
   const status = $('sweep-status');
   if (!settings.variants.length) {
     status.textContent = 'Choose at least one variant.';
+    return;
+  }
+  if (!isCount(settings.n)) {
+    status.textContent = `points = ${sweepForm.elements.namedItem('n').value}: expected a whole number.`;
     return;
   }
   if (!(Number.isInteger(settings.workers) && settings.workers >= 1 && settings.workers <= 8)) {

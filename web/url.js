@@ -30,6 +30,29 @@ export function fragment(key) {
   return fragmentEntries().find(([k]) => k === key)?.[1] ?? null;
 }
 
+/** `text` cut to `max` characters for quoting in a message (address parts can be any length). */
+export function excerpt(text, max = 60) {
+  const chars = [...text];
+  return chars.length > max ? `${chars.slice(0, max).join('')}…` : text;
+}
+
+/**
+ * The pinned scenarios of a `pins` fragment value (`a|b|...`, each URI-encoded), and the parts
+ * that do not decode, which are left out.
+ */
+export function decodePins(value) {
+  const scenarios = [];
+  const malformed = [];
+  for (const part of value.split('|')) {
+    try {
+      scenarios.push(decodeURIComponent(part));
+    } catch {
+      malformed.push(part);
+    }
+  }
+  return { scenarios, malformed };
+}
+
 /** Sets (or, with null, removes) `key` in the URL fragment without a new history entry. */
 export function setFragment(key, value) {
   const entries = fragmentEntries().filter(([k]) => k !== key);

@@ -11,31 +11,84 @@
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
 //   {type: 'cancel', id}
 //   {type: 'view', id, t0, t1, buckets}        → {type: 'view', id, view}
-//   {type: 'csv', id}                          → {type: 'csv', id, text}
+//   {type: 'csv', id, serial}                  → {type: 'csv', serial, bytes, rows, total}, one a chunk
+//     of rows (bytes a transferred Uint8Array; the chunks concatenate to the CSV; the last has
+//     rows === total) | {type: 'csv-failed', serial, message}
+//   {type: 'csv-next', serial}                 asks for the next chunk once the page has stored one
+//   {type: 'csv-cancel', serial}               ends the export (a new run ends it too)
 //   {type: 'inspect', id, t}                   → {type: 'inspected', id, t, snapshot} | {type: 'invalid', id, message}
 //   {type: 'compare', id, columns, buckets}    → {type: 'compared', id, results: [{predictor, metrics}]}
-//   {type: 'pin', scenarios}                   → {type: 'pins', scenarios, legends} (runs and pins each)
-//   {type: 'unpin', index}                     → {type: 'pins', scenarios, legends}
+//   {type: 'pin', scenarios}                   → {type: 'pins', scenarios, legends, rejected: [{scenario, message}]}
+//     (runs and pins each; `rejected` lists those the core refused)
+//   {type: 'unpin', index}                     → {type: 'pins', scenarios, legends, rejected: []}
 //   {type: 'overlay', id, column, t0, t1, buckets} → {type: 'overlay', id, column, data: [t, current, pins..., diffs...]}
 //   {type: 'job', job, kind, ...}              → {type: 'job', job, result} | {type: 'job', job, error}
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
 //     'grid' {lo, hi, n}, 'bands' {runs}, 'summary' {points}, 'sweep-csv' {points}, 'seeds-csv' {results}
 //     (stateless, so any worker of a pool can take any job)
+// Unprompted: {type: 'ready', presets, nisBand} once the core is loaded, and {type: 'crashed', message}
+// when the core trapped (a panic or running out of memory) or the worker hit an uncaught error:
+// the WASM instance may be unusable then, so the worker never calls it again and the page
+// replaces the worker.
 // `groups` is {plotId: [column, ...]}: each plot gets its own M4 envelope (every point a recorded
 // sample at its own time). A view is {t0, t1, plots: {plotId: {t, columns: {name: Float64Array}}}};
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  Comparison, describe, inspect, log_grid, recover, nis_band, presets, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  Comparison, describe, inspect, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
 // compiled in the background is picked up at the next chunk
 
+// Rows per CSV chunk, about 22 MB: neither the worker nor the page holds more than a chunk or two
+// of a CSV that can reach 1.3 GB, past what one JS string can hold.
+const CSV_ROWS = 20_000;
+
 let current = null; // {id, sim, groups, cancelled}
 let comparison = null; // pinned runs, created with the module
+let exporting = null; // {serial, answer}: the CSV export waiting for the page's next request
+let crashed = false;
 
 const BOUND = 'lyapunov_bound';
+
+/**
+ * Reports a crash to the page once: `error` is a trap or an error nothing caught. A trap can
+ * leave the instance half-way through a call (a borrow held, memory exhausted), so from here on
+ * nothing calls the core: messages are ignored and no awaited yield resumes.
+ */
+function crash(error) {
+  if (crashed) return;
+  crashed = true;
+  current = null;
+  let panic;
+  try {
+    panic = panic_message();
+  } catch {
+    // The instance is too broken to read the message; the trap's own text still tells.
+  }
+  let message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+  // A Rust allocation failure aborts without a panic, as an 'unreachable' trap.
+  if (panic) message += `; Rust panic: ${panic}`;
+  else if (error instanceof WebAssembly.RuntimeError && /unreachable/.test(error.message)) message += '; most likely the core ran out of memory';
+  self.postMessage({ type: 'crashed', message });
+}
+
+/** Reports `e` as a crash when it is a trap (not a clean error thrown by the core); returns whether it was. */
+function trapped(e) {
+  if (!(e instanceof WebAssembly.RuntimeError)) return false;
+  crash(e);
+  return true;
+}
+
+self.addEventListener('unhandledrejection', (e) => {
+  e.preventDefault();
+  crash(e.reason);
+});
+self.addEventListener('error', (e) => {
+  e.preventDefault();
+  crash(e.error ?? e.message);
+});
 
 function envelope(sim, names, t0, t1, buckets) {
   const recorded = names.filter((c) => c !== BOUND);
@@ -60,10 +113,14 @@ function post(message, view) {
 }
 
 // Lets queued messages (a cancel) run between chunks. A MessageChannel round trip is not
-// clamped to 4 ms the way nested setTimeout(0) is.
+// clamped to 4 ms the way nested setTimeout(0) is. After a crash no yield resumes, so no loop
+// goes on calling the core.
 const channel = new MessageChannel();
 const waiting = [];
-channel.port1.onmessage = () => waiting.shift()();
+channel.port1.onmessage = () => {
+  const resume = waiting.shift();
+  if (!crashed) resume();
+};
 function yieldToMessages() {
   return new Promise((resolve) => {
     waiting.push(resolve);
@@ -78,7 +135,7 @@ async function run({ id, scenario, groups, buckets }) {
   try {
     sim = new Simulation(scenario);
   } catch (e) {
-    post({ type: 'invalid', id, message: String(e) });
+    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
     return;
   }
   const me = { id, sim, groups, cancelled: false };
@@ -91,6 +148,7 @@ async function run({ id, scenario, groups, buckets }) {
       sim.step(CHUNK_STEPS);
       computeMs += performance.now() - start;
     } catch (e) {
+      if (trapped(e)) return;
       failure = String(e);
       break;
     }
@@ -110,6 +168,37 @@ async function run({ id, scenario, groups, buckets }) {
   post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, transient }, v);
 }
 
+/**
+ * Sends run `id` as CSV in chunks of rows. The page asks for each next chunk once it has stored
+ * the last, so at most one is in transit; between chunks a cancel or a new run (which frees
+ * this one) ends the export.
+ */
+async function exportCsv({ id, serial }) {
+  exporting?.answer(false); // one export at a time
+  exporting = null;
+  const me = current;
+  if (me?.id !== id) {
+    post({ type: 'csv-failed', serial, message: 'this run is no longer held by the worker; run it again' });
+    return;
+  }
+  const total = me.sim.rows;
+  for (let rows = 0; ;) {
+    let bytes;
+    try {
+      bytes = me.sim.csv_chunk(rows, CSV_ROWS);
+    } catch (e) {
+      if (!trapped(e)) post({ type: 'csv-failed', serial, message: String(e) });
+      return;
+    }
+    rows = Math.min(total, rows + CSV_ROWS);
+    const wanted = rows < total && new Promise((answer) => {
+      exporting = { serial, answer };
+    });
+    self.postMessage({ type: 'csv', serial, bytes, rows, total }, [bytes.buffer]);
+    if (!wanted || !(await wanted) || current !== me) return;
+  }
+}
+
 /** Runs `scenario` to the end in chunks, yielding between them; returns its metrics. */
 async function runToEnd(scenario) {
   const sim = new Simulation(scenario);
@@ -119,21 +208,26 @@ async function runToEnd(scenario) {
       await yieldToMessages();
     }
     return sim.metrics();
+  } catch (e) {
+    trapped(e);
+    throw e;
   } finally {
-    sim.free();
+    if (!crashed) sim.free();
   }
 }
 
 async function compare({ id }) {
+  // A run started while these two run frees current.sim, so its scenario is read first.
+  const scenario = current.sim.scenario;
   try {
     const results = [];
     for (const predictor of ['euler', 'rk4']) {
-      const scenario = variant(current.sim.scenario, 'ekf', predictor);
-      results.push({ predictor, scenario, metrics: await runToEnd(scenario) });
+      const changed = variant(scenario, 'ekf', predictor);
+      results.push({ predictor, scenario: changed, metrics: await runToEnd(changed) });
     }
     post({ type: 'compared', id, results });
   } catch (e) {
-    post({ type: 'invalid', id, message: `Comparison failed: ${e}` });
+    if (!trapped(e)) post({ type: 'invalid', id, message: `Comparison failed: ${e}` });
   }
 }
 
@@ -161,8 +255,8 @@ const JOBS = {
   'seeds-csv': (d) => seeds_csv(d.results),
 };
 
-function pinsMessage() {
-  return { type: 'pins', scenarios: comparison.scenarios(), legends: current ? comparison.legends(current.sim) : [] };
+function pinsMessage(rejected = []) {
+  return { type: 'pins', scenarios: comparison.scenarios(), legends: current ? comparison.legends(current.sim) : [], rejected };
 }
 
 const ready = init().then(() => {
@@ -173,12 +267,13 @@ const ready = init().then(() => {
 
 self.onmessage = async ({ data }) => {
   await ready;
+  if (crashed) return;
   switch (data.type) {
     case 'describe':
       try {
         post({ type: 'described', req: data.req, info: describe(data.scenario) });
       } catch (e) {
-        post({ type: 'invalid', req: data.req, message: String(e) });
+        if (!trapped(e)) post({ type: 'invalid', req: data.req, message: String(e) });
       }
       break;
     case 'recover':
@@ -186,7 +281,7 @@ self.onmessage = async ({ data }) => {
         const { encoded, rejected } = recover(data.scenario);
         post({ type: 'described', req: data.req, info: { ...describe(encoded), rejected } });
       } catch (e) {
-        post({ type: 'invalid', req: data.req, message: String(e) });
+        if (!trapped(e)) post({ type: 'invalid', req: data.req, message: String(e) });
       }
       break;
     case 'run':
@@ -206,21 +301,26 @@ self.onmessage = async ({ data }) => {
         try {
           post({ type: 'inspected', id: data.id, t: data.t, snapshot: inspect(current.sim.scenario, data.t) });
         } catch (e) {
-          post({ type: 'invalid', id: data.id, message: String(e) });
+          if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
         }
       }
       break;
     case 'compare':
       if (current && current.id === data.id) compare(data);
       break;
-    case 'pin':
-      try {
-        for (const s of data.scenarios) comparison.pin(s);
-        post(pinsMessage());
-      } catch (e) {
-        post({ ...pinsMessage(), error: String(e) });
+    case 'pin': {
+      const rejected = [];
+      for (const scenario of data.scenarios) {
+        try {
+          comparison.pin(scenario);
+        } catch (e) {
+          if (trapped(e)) return;
+          rejected.push({ scenario, message: String(e) });
+        }
       }
+      post(pinsMessage(rejected));
       break;
+    }
     case 'unpin':
       comparison.unpin(data.index);
       post(pinsMessage());
@@ -231,7 +331,7 @@ self.onmessage = async ({ data }) => {
           const data2 = [...comparison.overlay(current.sim, data.column, data.t0, data.t1, data.buckets)];
           self.postMessage({ type: 'overlay', id: data.id, column: data.column, data: data2 }, data2.map((a) => a.buffer));
         } catch (e) {
-          post({ type: 'invalid', id: data.id, message: String(e) });
+          if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
         }
       }
       break;
@@ -239,11 +339,18 @@ self.onmessage = async ({ data }) => {
       try {
         post({ type: 'job', job: data.job, result: JOBS[data.kind](data) });
       } catch (e) {
-        post({ type: 'job', job: data.job, error: String(e) });
+        if (!trapped(e)) post({ type: 'job', job: data.job, error: String(e) });
       }
       break;
     case 'csv':
-      if (current && current.id === data.id) post({ type: 'csv', id: data.id, text: current.sim.csv() });
+      exportCsv(data);
+      break;
+    case 'csv-next':
+    case 'csv-cancel':
+      if (exporting?.serial === data.serial) {
+        exporting.answer(data.type === 'csv-next');
+        exporting = null;
+      }
       break;
     default:
       throw new Error(`unknown message type ${data.type}`);

@@ -407,11 +407,24 @@ pub struct SeedBands {
 }
 
 /// Statistics of completed seed runs; grouping the runs differently gives the same bits as long
-/// as they come in seed order.
-pub fn seed_bands(runs: &[SeedRun]) -> SeedBands {
+/// as they come in seed order. Refuses a run whose times and traces differ in length (only runs
+/// from outside, through the bindings, can).
+pub fn seed_bands(runs: &[SeedRun]) -> Result<SeedBands, String> {
+    if let Some(r) = runs
+        .iter()
+        .find(|r| r.t.len() != r.error.len() || r.t.len() != r.estimate.len())
+    {
+        return Err(format!(
+            "seed run {}: {} times for {} speed errors and {} estimation errors; expected as many of each",
+            r.result.seed,
+            r.t.len(),
+            r.error.len(),
+            r.estimate.len()
+        ));
+    }
     let ok: Vec<&SeedRun> = runs.iter().filter(|r| r.result.failure.is_none()).collect();
     let error = Band::of(ok.iter().map(|r| r.error.as_slice()));
-    SeedBands {
+    Ok(SeedBands {
         t: ok
             .first()
             .map(|r| r.t[..error.mean.len()].to_vec())
@@ -419,7 +432,7 @@ pub fn seed_bands(runs: &[SeedRun]) -> SeedBands {
         estimate: Band::of(ok.iter().map(|r| r.estimate.as_slice())),
         error,
         runs: ok.len(),
-    }
+    })
 }
 
 #[cfg(test)]
@@ -541,7 +554,7 @@ mod tests {
             .rev()
             .collect();
         assert_eq!(seed_bands(&runs), seed_bands(&again));
-        let b = seed_bands(&runs);
+        let b = seed_bands(&runs).unwrap();
         assert_eq!(b.runs, 4);
         assert!((0..b.t.len())
             .all(|i| b.error.min[i] <= b.error.mean[i] && b.error.mean[i] <= b.error.max[i]));

@@ -321,7 +321,7 @@ pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsVa
 #[wasm_bindgen]
 pub fn seed_bands(runs: JsValue) -> Result<JsValue, JsValue> {
     let runs: Vec<analysis::SeedRun> = from_js(runs)?;
-    to_js(&analysis::seed_bands(&runs))
+    to_js(&analysis::seed_bands(&runs).map_err(js_error)?)
 }
 
 /// Per-seed figures as the CSV `imlab seeds` prints.

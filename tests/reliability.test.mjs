@@ -1,0 +1,234 @@
+// Browser tests of reliability at the limits: a worker that traps or fails is replaced and the
+// next run works; the CSV of the largest allowed run exports whole; hostile links are refused
+// with a message. Every test fails on a console or page error.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFile } from 'node:child_process';
+import { createHash } from 'node:crypto';
+import { createReadStream, statSync, unlinkSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { promisify } from 'node:util';
+import { browserSuite, runAgain, settled } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+const suite = browserSuite();
+const withPage = (path, body) => suite.withPage(path, body);
+
+// The longest run the core accepts at the shortest sample time it accepts: 1,197,605 rows, and
+// a trace of about 512 MiB, the core's limit.
+const LARGEST = 'v=1&preset=step&duration=20&ts=0.0000167';
+
+const CRASH_MESSAGE = /^The simulation worker failed \(.+\)\. It was restarted; press Run to try again\./;
+
+/** The simulation worker: the page's first, as long as it has not been restarted. */
+const simulationWorker = (page) => page.workers()[0];
+
+/** Fills the core's memory in the worker until even small allocations trap; returns the traps. */
+function exhaustMemory(worker) {
+  return worker.evaluate(async (largest) => {
+    // The same module URL gives the page's worker module, so the same WASM instance.
+    const m = await import(new URL('../pkg/imlab.js', self.location.href));
+    self.hoard = [];
+    const traps = [];
+    // Each largest run preallocates about 512 MiB; WASM32 memory ends at 4 GiB. Smaller runs
+    // then fill what is left, so the next call of the page's own needs memory that is not there.
+    for (const scenario of [largest, 'v=1&preset=step&duration=0.2&ts=0.0000167', 'v=1&preset=step&duration=0.02', 'v=1&preset=step&duration=0.001']) {
+      try {
+        for (;;) self.hoard.push(new m.Simulation(scenario));
+      } catch (e) {
+        traps.push(`${e.name}: ${e.message}`);
+      }
+    }
+    return traps;
+  }, LARGEST);
+}
+
+/** Checks that the page has the run's plots and figures. */
+async function assertDrawn(page) {
+  assert.equal(await page.locator('#plots .plot canvas').count(), 8);
+  assert.ok(await page.locator('#figures .figure').count() > 0);
+}
+
+test('a trap in the worker is reported, the worker is replaced, and the next run works', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    const traps = await exhaustMemory(simulationWorker(page));
+    assert.deepEqual(new Set(traps), new Set(['RuntimeError: unreachable']));
+    await page.click('#run');
+    assert.equal(await settled(page), 'crashed');
+    const message = await page.textContent('#message');
+    assert.match(message, CRASH_MESSAGE);
+    assert.match(message, /RuntimeError: unreachable; most likely the core ran out of memory/);
+    assert.ok(await page.isEnabled('#run'));
+    assert.ok(await page.isDisabled('#export-csv'));
+    const run = await runAgain(page);
+    assert.equal(run.state, 'done');
+    await assertDrawn(page);
+    assert.equal(await page.textContent('#message'), '');
+  }));
+
+test('an unhandled rejection or an uncaught error in the worker reaches the page, which recovers', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await simulationWorker(page).evaluate(() => {
+      Promise.reject(new Error('forced rejection'));
+    });
+    await page.waitForFunction(() => document.body.dataset.state === 'crashed');
+    assert.match(await page.textContent('#message'), CRASH_MESSAGE);
+    assert.match(await page.textContent('#message'), /Error: forced rejection/);
+    assert.equal((await runAgain(page)).state, 'done');
+    await assertDrawn(page);
+
+    await simulationWorker(page).evaluate(() => {
+      setTimeout(() => {
+        throw new Error('forced throw');
+      });
+    });
+    await page.waitForFunction(() => document.body.dataset.state === 'crashed');
+    assert.match(await page.textContent('#message'), /Error: forced throw/);
+    assert.equal((await runAgain(page)).state, 'done');
+  }));
+
+test('pinned runs that lived in a crashed worker are named and dropped', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.click('#pin');
+    await page.waitForFunction(() => location.hash.includes('pins='));
+    await simulationWorker(page).evaluate(() => {
+      Promise.reject(new Error('forced'));
+    });
+    await page.waitForFunction(() => document.body.dataset.state === 'crashed');
+    assert.match(await page.textContent('#message'), /The pinned runs were dropped: v=1&preset=step\./);
+    assert.equal(await page.locator('#pins li').count(), 0);
+    assert.ok(!page.url().includes('pins='));
+    assert.equal((await runAgain(page)).state, 'done');
+    // The fresh worker pins again.
+    await page.click('#pin');
+    await page.waitForSelector('#pins li');
+  }));
+
+test('a crashed sweep worker fails the sweep with a message and a fresh one runs the next sweep', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.click('[data-tab=analysis]');
+    await page.fill('#sweep-form [name=n]', '40');
+    await page.fill('#sweep-form [name=duration]', '0.5');
+    await page.click('#sweep-run');
+    await page.waitForFunction(() => document.getElementById('sweep-progress').value > 0);
+    const [, poolWorker] = page.workers();
+    await poolWorker.evaluate(() => {
+      Promise.reject(new Error('forced'));
+    });
+    await page.waitForFunction(() => document.body.dataset.sweep === 'failed', null, { timeout: 60_000 });
+    assert.match(await page.textContent('#sweep-status'), /^Sweep failed: a worker failed \(Error: forced\)/);
+    await page.fill('#sweep-form [name=n]', '4');
+    await page.fill('#sweep-form [name=duration]', '0.2');
+    await page.click('#sweep-run');
+    await page.waitForFunction(() => document.body.dataset.sweep === 'done', null, { timeout: 60_000 });
+    assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 3);
+  }));
+
+async function sha256(path) {
+  const hash = createHash('sha256');
+  for await (const chunk of createReadStream(path)) hash.update(chunk);
+  return hash.digest('hex');
+}
+
+test('the CSV of the largest allowed run exports whole, byte for byte the CLI’s', async () => {
+  const cliFile = join(tmpdir(), `imlab-largest-${process.pid}.csv`);
+  // The CLI writes its copy while the browser runs.
+  const cliDone = promisify(execFile)(cli, ['run', LARGEST, '--out', cliFile]);
+  try {
+    await withPage(`?${LARGEST}`, async (page) => {
+      assert.equal(await settled(page, 120_000), 'done');
+      assert.equal(await page.evaluate(() => document.body.dataset.rows), '1197605');
+      const [download] = await Promise.all([page.waitForEvent('download', { timeout: 300_000 }), page.click('#export-csv')]);
+      assert.equal(await page.evaluate(() => document.body.dataset.export), 'done');
+      assert.equal(await page.textContent('#status'), 'CSV exported: 1,197,605 rows');
+      const file = await download.path(); // Playwright's copy, removed with the context
+      await cliDone;
+      assert.equal(statSync(file).size, statSync(cliFile).size);
+      assert.equal(await sha256(file), await sha256(cliFile));
+    });
+  } finally {
+    await cliDone.catch(() => {});
+    unlinkSync(cliFile);
+  }
+});
+
+test('a CSV export shows its progress, Cancel stops it, and a run started during one cancels it', () =>
+  withPage('?v=1&preset=step&duration=4&ts=0.0000167', async (page) => {
+    assert.equal(await settled(page, 60_000), 'done');
+    await page.click('#export-csv');
+    await page.waitForFunction(() => /^Exporting CSV: [\d,]+ of 239,521 rows$/.test(document.getElementById('status').textContent));
+    assert.ok(await page.isDisabled('#export-csv'));
+    await page.click('#cancel');
+    assert.equal(await page.evaluate(() => document.body.dataset.export), 'cancelled');
+    assert.equal(await page.textContent('#status'), 'CSV export cancelled');
+    assert.ok(await page.isEnabled('#export-csv'));
+
+    await page.click('#export-csv');
+    await page.waitForFunction(() => document.getElementById('status').textContent.startsWith('Exporting CSV:'));
+    await page.click('#run');
+    await page.waitForFunction(() => document.body.dataset.export === 'cancelled');
+    assert.equal(await page.textContent('#message'), 'The CSV export was cancelled: a new run started.');
+    assert.ok(await page.isDisabled('#export-csv'));
+    assert.equal(await settled(page, 60_000), 'done');
+    assert.ok(await page.isEnabled('#export-csv'));
+  }));
+
+test('hostile fragments are named in a message and the rest of the link still works', async () => {
+  const sweepDone = (page) => page.waitForFunction(() => ['done', 'failed'].includes(document.body.dataset.sweep), null, { timeout: 60_000 })
+    .then(() => page.evaluate(() => document.body.dataset.sweep));
+  // A pins part that does not decode.
+  await withPage('?v=1&preset=step#pins=%', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(await page.textContent('#message'), "Ignored a malformed pin in the address: '%'.");
+    await page.waitForFunction(() => !location.hash.includes('pins'));
+    assert.equal(await page.locator('#pins li').count(), 0);
+  });
+  // ... beside a valid sweep, which still runs.
+  await withPage('?v=1&preset=step#pins=%E0%A4%A&sweep=100,1000,3,0.02,0,0.05,euler', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(await sweepDone(page), 'done');
+    assert.match(await page.textContent('#message'), /^Ignored a malformed pin in the address: '%E0%A4%A'\.$/);
+    assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 1);
+  });
+  // Pins that decode to scenarios the core refuses, markup included: shown as text.
+  await withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=<img src=x>')}|${encodeURIComponent('v=1&preset=step&k1=-5')}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('Could not pin'));
+    const message = await page.textContent('#message');
+    assert.match(message, /^Could not pin v=1&preset=<img src=x>: .*preset.*\. Could not pin v=1&preset=step&k1=-5: .*'k1'.*\.$/);
+    assert.equal(await page.locator('#message img').count(), 0);
+    assert.equal(await page.locator('#pins li').count(), 0);
+  });
+  // Sweep sizes must be whole numbers; other malformed sweeps name their bad part.
+  for (const [sweep, expected] of [
+    ['10,1000,2.5,0.02,0,0.2,euler', /n = 2\.5: expected a whole number of points/],
+    ['10,1000,4294967301,0.02,0,0.2,euler', /n = 4294967301: expected a whole number of points/],
+    ['10,1000,20,0.02,0,0.2,constructor', /variant 'constructor' is unknown/],
+    ['10,,20,0.02,0,0.2,euler', /hi = '' is not a number/],
+    ['10,1000,20', /expected 7 parts/],
+  ]) {
+    await withPage(`?v=1&preset=step#sweep=${sweep}`, async (page) => {
+      assert.equal(await settled(page), 'done');
+      const message = await page.textContent('#message');
+      assert.match(message, /^The sweep in the address \(#sweep=.*\) was not run: /);
+      assert.match(message, expected);
+      assert.ok(await page.isVisible('#message'));
+      assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
+    });
+  }
+});
+
+test('the sweep form refuses a fractional number of points', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.click('[data-tab=analysis]');
+    await page.fill('#sweep-form [name=n]', '2.5');
+    await page.click('#sweep-run');
+    assert.equal(await page.textContent('#sweep-status'), 'points = 2.5: expected a whole number.');
+    assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
+  }));
