@@ -13,7 +13,7 @@ const ui = {
   preset: $('preset'), presetDoc: $('preset-doc'), form: $('settings'), run: $('run'),
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
-  present: $('present'), inspect: $('inspect'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
+  present: $('present'), inspect: $('inspect'), settingsToggle: $('settings-toggle'), embed: $('copy-embed'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
   figures: $('figures'),
 };
 
@@ -32,6 +32,8 @@ const state = {
   pending: new Map(), // describe requests: req → {resolve, reject}
   transient: null, // {t, reason}: the end of the start-up transient, from the core
   figures: [], // the run's figures, from the core
+  knobIds: new Map(), // walkthrough knobs given out per field, for unique ids
+  presetPending: false, // the picker moved by keyboard, not yet committed
   export: null, // the CSV export under way: {serial, parts: [Blob]}
   exportSerial: 0,
 };
@@ -41,19 +43,28 @@ const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: 
 const ifocRun = () => fieldValue(state.info, 'controller') === 'ifoc';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
+// Presentation mode draws plot text and lines this much larger: 14 px ticks become 21 px.
+const PRESENT_SCALE = 1.5;
+const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
 const plots = new Plots(ui.plots, PLOTS, {
   onWindow: (t0, t1) => requestWindow(t0, t1),
   onFull: () => fullRun(),
   onPick: (t) => requestInspect(t),
+  sampleTime,
   framing,
   constants: (plot) => (plot.constants ? [1, -1].map((s) => s * Number(fieldValue(state.info, 'vmax'))) : []),
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
   inspectBox: ui.inspect,
+  // A field can be a knob in several sections: the first is `knob-KEY`, later ones
+  // `knob-KEY-2`, ... (ids stay unique; the ids given out are counted per description).
   knob: (key) => {
     const f = state.info?.fields.find((x) => x.key === key && x.value !== null && x.acts);
-    return f ? fieldControl(f, 'knob') : null;
+    if (!f) return null;
+    const n = (state.knobIds.get(key) ?? 0) + 1;
+    state.knobIds.set(key, n);
+    return fieldControl(f, n === 1 ? 'knob' : `knob${n}`);
   },
   onCompare: () => {
     $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
@@ -64,6 +75,7 @@ const walkthrough = new Walkthrough({
   onPick: (t) => requestInspect(t),
   framing,
 });
+walkthrough.plots.sampleTime = sampleTime;
 walkthrough.onInspect = (t) => {
   plots.mark(t);
   walkthrough.plots.mark(t);
@@ -90,12 +102,16 @@ function say(text, kind = 'error') {
 }
 
 function setBusy(busy) {
+  // Run is disabled while a run goes on, which drops its focus: give it back at the end, unless
+  // the user has moved on to another control.
+  const refocus = !busy && state.running && state.fromRun && [document.body, ui.run, null].includes(document.activeElement);
   state.running = busy;
   ui.run.disabled = busy || state.info === null;
   ui.cancel.disabled = !busy && state.export === null;
   // The worker holds one run: the one being computed, whose CSV is not whole yet.
   if (busy) ui.csv.disabled = true;
   document.body.dataset.state = busy ? 'running' : 'idle';
+  if (refocus && !ui.run.disabled) ui.run.focus({ preventScroll: true });
 }
 
 function startWorker() {
@@ -152,6 +168,7 @@ function applyDescription(info) {
   const keysAfter = shown(info);
   const presetChanged = ui.preset.value !== presetNamed(info.encoded);
   state.info = info;
+  state.knobIds.clear();
   if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
   else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
   walkthrough.describe(info);
@@ -244,6 +261,7 @@ function startRun() {
   const id = ++state.runId;
   state.ranScenario = state.info.encoded;
   markRun(state.info.encoded);
+  state.fromRun = document.activeElement === ui.run; // started from Run: focus returns there
   document.body.dataset.scenario = state.info.encoded;
   state.started = performance.now();
   ui.progress.value = 0;
@@ -347,10 +365,13 @@ function fileStem() {
   return `imlab-${presetNamed(state.info.encoded)}-${state.runId}`;
 }
 
+const TABS = [...document.querySelectorAll('[role=tab]')];
+
 function showTab(name) {
-  for (const tab of document.querySelectorAll('[role=tab]')) {
+  for (const tab of TABS) {
     const selected = tab.dataset.tab === name;
     tab.setAttribute('aria-selected', selected);
+    tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
     $(`panel-${tab.dataset.tab}`).hidden = !selected;
   }
   // Plots drawn while hidden have no width; size them now that they are visible.
@@ -387,6 +408,9 @@ function showFigures(figures) {
   });
   ui.figures.replaceChildren(...items);
   ui.figures.hidden = items.length === 0;
+  // The plots' text alternatives carry the same figures.
+  const sentence = items.map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`).join('; ');
+  for (const set of plotSets) set.describe(sentence ? `Figures of this run: ${sentence}.` : '');
 }
 
 /** The lines the PNG export carries above the plots: the scenario and the run's figures. */
@@ -556,7 +580,23 @@ function showPins(scenarios, legends) {
   requestOverlay();
 }
 
-ui.preset.addEventListener('change', () => load(`v=1&preset=${ui.preset.value}`));
+// A preset chosen with the mouse runs at once; one reached with the arrow keys runs when it is
+// committed (Enter, or leaving the picker), so stepping through the list starts no runs.
+let presetByKeyboard = false;
+ui.preset.addEventListener('keydown', (e) => {
+  presetByKeyboard = true;
+  if (e.key === 'Enter' && state.presetPending) commitPreset();
+});
+ui.preset.addEventListener('pointerdown', () => { presetByKeyboard = false; });
+ui.preset.addEventListener('change', () => {
+  state.presetPending = true;
+  if (!presetByKeyboard) commitPreset();
+});
+ui.preset.addEventListener('blur', () => state.presetPending && commitPreset());
+function commitPreset() {
+  state.presetPending = false;
+  load(`v=1&preset=${ui.preset.value}`);
+}
 ui.form.addEventListener('change', formChanged);
 // Enter in a settings field runs the scenario.
 ui.form.addEventListener('submit', async (e) => {
@@ -611,13 +651,63 @@ ui.copy.addEventListener('click', async () => {
     say(`Copy this link: ${location.href}`, 'info');
   }
 });
-for (const tab of document.querySelectorAll('[role=tab]')) tab.addEventListener('click', () => showTab(tab.dataset.tab));
-ui.present.addEventListener('click', () => {
-  const on = document.body.classList.toggle('present');
+for (const tab of TABS) tab.addEventListener('click', () => showTab(tab.dataset.tab));
+// Arrow keys, Home and End move between tabs and select them.
+document.querySelector('[role=tablist]').addEventListener('keydown', (e) => {
+  const i = TABS.indexOf(document.activeElement);
+  const to = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: TABS.length - 1 }[e.key];
+  if (i < 0 || to === undefined) return;
+  e.preventDefault();
+  const tab = TABS[(to + TABS.length) % TABS.length];
+  showTab(tab.dataset.tab);
+  tab.focus();
+});
+
+/** Presentation mode: larger text and plots, settings in the drawer; kept in the URL fragment. */
+function present(on) {
+  document.body.classList.toggle('present', on);
   ui.present.setAttribute('aria-pressed', on);
+  setFragment('present', on ? '1' : null);
   const [main, small] = PLOT_HEIGHT[on ? 'present' : 'normal'];
-  plots.resize(main);
-  walkthrough.plots.resize(small);
+  const scale = on ? PRESENT_SCALE : 1;
+  plots.rescale(scale, main);
+  walkthrough.plots.rescale(scale, small);
+  openSettings(false);
+}
+ui.present.addEventListener('click', () => present(!document.body.classList.contains('present')));
+
+/** Opens or closes the settings drawer (presentation mode and small screens). */
+function openSettings(open) {
+  document.body.classList.toggle('settings-open', open);
+  ui.settingsToggle.setAttribute('aria-expanded', open);
+}
+ui.settingsToggle.addEventListener('click', () => openSettings(!document.body.classList.contains('settings-open')));
+
+// An embed (`#embed=PLOT`) shows one plot of the Trajectories tab with Run and the figures.
+const embedded = fragment('embed');
+if (embedded !== null) {
+  const known = PLOTS.some((p) => p.id === embedded);
+  document.body.classList.add('embed');
+  document.body.dataset.embed = known ? embedded : 'speed';
+  if (!known) say(`The embedded plot '${excerpt(embedded)}' does not exist; showing the speed plot. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`);
+}
+if (fragment('present') === '1') {
+  document.body.classList.add('present');
+  ui.present.setAttribute('aria-pressed', true);
+  plots.scale = walkthrough.plots.scale = PRESENT_SCALE;
+  [plots.height, walkthrough.plots.height] = PLOT_HEIGHT.present;
+}
+
+ui.embed.addEventListener('click', async () => {
+  const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=speed`;
+  const title = `IM Lab: ${presetNamed(state.info.encoded)}`;
+  const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="720" height="520" style="border:0" loading="lazy"></iframe>`;
+  try {
+    await navigator.clipboard.writeText(code);
+    say('Embed code copied: paste it into a slide or a course page.', 'info');
+  } catch {
+    say(`Copy this embed code: ${code}`, 'info');
+  }
 });
 window.addEventListener('popstate', () => load(scenarioFromUrl()));
 window.addEventListener('resize', () => {

@@ -136,8 +136,14 @@ function shareZero(a, b) {
  * says whether the y-axes leave out the start-up transient, and where it ends.
  */
 export class Plots {
-  constructor(container, defs, { onWindow, onFull, onPick, constants = () => [], framing, height = 260 }) {
-    Object.assign(this, { container, defs, onWindow, onFull, onPick, constants, framing, height });
+  /**
+   * `onPick(t)` inspects time t (a click, or the arrow keys on a focused plot); `sampleTime()` is
+   * the run's Ts, the step of one arrow press.
+   */
+  constructor(container, defs, { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null }) {
+    Object.assign(this, { container, defs, onWindow, onFull, onPick, constants, framing, height, sampleTime });
+    this.scale = 1; // text and line scale: 1, or larger in presentation mode
+    this.captions = ''; // the run's figures, as the captions give them
     this.charts = [];
     this.syncing = false;
     this.full = null; // [t0, t1] of the whole run
@@ -163,17 +169,18 @@ export class Plots {
     const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
     for (const [column, label, axis] of plot.series) {
       const style = STYLE[column] ?? { stroke: '#444' };
-      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: 2, value: (u, v) => six(v) });
+      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: 2 * this.scale, value: (u, v) => six(v) });
     }
     for (const [label, axis] of plot.constants ?? []) {
-      series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: 1.5, value: (u, v) => six(v) });
+      series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: 1.5 * this.scale, value: (u, v) => six(v) });
     }
-    const font = { font: '14px system-ui', labelFont: '14px system-ui' };
+    const k = this.scale;
+    const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
     const axes = [
-      { label: 't (s)', ...font },
-      { label: plot.unit, scale: 'y', ...font, size: 80, values: tickLabels },
+      { label: 't (s)', ...font, size: 50 * k },
+      { label: plot.unit, scale: 'y', ...font, size: 80 * k, values: tickLabels },
     ];
-    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80, values: tickLabels });
+    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80 * k, values: tickLabels });
     const range = (u, min, max, key) => this.range(u, key, !!plot.unit2);
     const scales = {
       // While zoomed, new data keeps the window; otherwise the axis spans the data.
@@ -209,6 +216,59 @@ export class Plots {
     if (!twoAxes) return y;
     const [a, b] = shareZero(y, padded(extent(u, 'y2', start)));
     return key === 'y2' ? b : a;
+  }
+
+  /**
+   * Arrow keys on a focused plot move the inspect cursor one sample (Ts), or 1 % of the visible
+   * window with Shift; Home and End go to the window's ends.
+   */
+  keyboard(div, i) {
+    div.addEventListener('keydown', (e) => {
+      const u = this.charts[i];
+      if (!u || !this.full) return;
+      const { min, max } = u.scales.x;
+      const step = e.shiftKey || !this.sampleTime() ? (max - min) / 100 : this.sampleTime();
+      const from = this.marker ?? (min + max) / 2;
+      const to = { ArrowRight: from + step, ArrowLeft: from - step, Home: min, End: max }[e.key];
+      if (to === undefined) return;
+      e.preventDefault();
+      const t = Math.min(Math.max(to, this.full[0]), this.full[1]);
+      this.mark(t);
+      // The legend reads out the samples at the cursor, as it does for the mouse.
+      u.setCursor({ left: u.valToPos(t, 'x'), top: u.bbox.height / devicePixelRatio / 2 });
+      this.onPick(t);
+    });
+  }
+
+  /** The text alternative of plot `plot`: its axes, its signals and the run's figures. */
+  caption(plot) {
+    const units = plot.unit2 ? `${plot.unit} (left) and ${plot.unit2} (right)` : plot.unit;
+    const signals = plot.series.map(([, label]) => label).join('; ');
+    const keys = 'Focus the plot and use the arrow keys to inspect the run sample by sample (Shift: 1 % of the window).';
+    return `${this.title(plot)}, in ${units} against time t in s. Signals: ${signals}.${this.captions ? ` ${this.captions}` : ''} ${keys}`;
+  }
+
+  /** Sets the run's figures (one sentence) that every plot's caption carries. */
+  describe(figures) {
+    this.captions = figures;
+    this.defs.forEach((plot, i) => {
+      const caption = this.charts[i]?.root.parentElement.querySelector('.caption');
+      if (caption) caption.textContent = this.caption(plot);
+    });
+  }
+
+  /** Redraws every chart with text and lines `scale` times their normal size (presentation mode). */
+  rescale(scale, height) {
+    this.scale = scale;
+    this.height = height;
+    const width = this.width();
+    this.charts = this.charts.map((c, i) => {
+      const div = c.root.parentElement;
+      const data = c.data;
+      c.destroy();
+      return new uPlot(this.options(this.defs[i], width), data, div);
+    });
+    if (this.window) for (const c of this.charts) c.setScale('x', { min: this.window[0], max: this.window[1] });
   }
 
   // A click (not a drag-to-zoom) on the plot area picks the time under the cursor.
@@ -270,21 +330,30 @@ export class Plots {
     this.ifoc = ifoc;
     if (this.charts.length === 0) {
       const width = this.width();
-      const divs = this.defs.map((plot) => {
-        const div = document.createElement('div');
-        div.className = 'plot';
+      const divs = this.defs.map((plot, i) => {
+        // A focusable figure: its caption is the text alternative of the canvas.
+        const div = Object.assign(document.createElement('div'), { className: 'plot', tabIndex: 0 });
         div.dataset.plot = plot.id;
+        div.setAttribute('role', 'figure');
+        const caption = Object.assign(document.createElement('p'), { className: 'caption sr-only', id: `caption-${this.container.id || 'plots'}-${plot.id}` });
+        div.setAttribute('aria-describedby', caption.id);
+        div.append(caption);
+        this.keyboard(div, i);
         (plot.container ?? this.container).append(div);
         return div;
       });
       for (const [i, plot] of this.defs.entries()) {
         this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), divs[i]));
+        divs[i].querySelector('.caption').textContent = this.caption(plot);
+        divs[i].setAttribute('aria-label', this.title(plot));
         if (chunked) await nextTask();
       }
     } else {
       for (const [i, plot] of this.defs.entries()) {
         const title = this.charts[i].root.querySelector('.u-title');
         if (title) title.textContent = this.title(plot);
+        this.charts[i].root.parentElement.querySelector('.caption').textContent = this.caption(plot);
+        this.charts[i].root.parentElement.setAttribute('aria-label', this.title(plot));
         this.syncing = true;
         this.charts[i].setData(this.data(plot, view), true);
         this.syncing = false;
