@@ -232,3 +232,22 @@ test('the sweep form refuses a fractional number of points', () =>
     assert.equal(await page.textContent('#sweep-status'), 'points = 2.5: expected a whole number.');
     assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
   }));
+
+test('a run that recorded nothing keeps the worker: Escape and Full run ask for no view of it', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    // The same page, so the plots of the first run stay on screen.
+    const before = Number(await page.evaluate(() => document.body.dataset.run));
+    await page.evaluate(() => {
+      history.pushState(null, '', '?v=1&preset=ifoc-step&robust=1&h2=1e9&eps2=5e-324');
+      dispatchEvent(new PopStateEvent('popstate'));
+    });
+    await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
+    assert.equal(await settled(page), 'failed');
+    assert.match(await page.textContent('#message'), /column 'v2' would record inf/);
+    await page.keyboard.press('Escape');
+    await page.click('#full-run');
+    await page.waitForTimeout(300);
+    assert.equal(await page.evaluate(() => document.body.dataset.state), 'failed');
+    assert.doesNotMatch(await page.textContent('#message'), /worker failed/);
+  }));

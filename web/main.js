@@ -209,7 +209,9 @@ async function describeLoaded(text) {
     try {
       // Keep what is valid; name every field that was left out.
       const info = await describe(text, 'recover');
-      say(`Some settings in the address were rejected and left at the preset's values: ${info.rejected.join('; ')}.`);
+      const shown = info.rejected.slice(0, 5).join('; ');
+      const more = info.rejected.length > 5 ? `; and ${info.rejected.length - 5} more` : '';
+      say(`Some settings in the address were rejected and left at the preset's values: ${shown}${more}.`);
       return info;
     } catch (again) {
       if (again instanceof WorkerFailed) throw again;
@@ -468,7 +470,8 @@ const handlers = {
     if (view) {
       walkthrough.show(view, stability, state.nisBand);
       await plots.show(view, { ifoc: ifocRun(), chunked: true });
-      if (id !== state.runId) return;
+      // A newer run, or a worker crash while the plots were drawn, owns the page now.
+      if (id !== state.runId || document.body.dataset.state === 'crashed') return;
     }
     const ms = performance.now() - state.started;
     Object.assign(document.body.dataset, {

@@ -31,9 +31,11 @@ export function fragment(key) {
 }
 
 /** `text` cut to `max` characters for quoting in a message (address parts can be any length). */
-export function excerpt(text, max = 60) {
+export function excerpt(text, max = 40) {
+  // As the core quotes input (scenario::excerpt): control characters escaped, cut with the length.
   const chars = [...text];
-  return chars.length > max ? `${chars.slice(0, max).join('')}…` : text;
+  const shown = chars.slice(0, max).map((c) => (/[\p{Cc}\u200b\ufeff]/u.test(c) ? `\\u{${c.codePointAt(0).toString(16)}}` : c)).join('');
+  return chars.length > max ? `${shown}… (${chars.length} characters)` : shown;
 }
 
 /**

@@ -291,9 +291,14 @@ self.onmessage = async ({ data }) => {
       if (current && current.id === data.id) current.cancelled = true;
       break;
     case 'view':
-      if (current && current.id === data.id) {
-        const v = view(current, data.t0, data.t1, data.buckets);
-        post({ type: 'view', id: data.id, view: v }, v);
+      // A run that recorded nothing has no view to give (the page keeps the previous plots).
+      if (current && current.id === data.id && current.sim.rows > 0) {
+        try {
+          const v = view(current, data.t0, data.t1, data.buckets);
+          post({ type: 'view', id: data.id, view: v }, v);
+        } catch (e) {
+          if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
+        }
       }
       break;
     case 'inspect':

@@ -101,7 +101,6 @@ fn every_field_at_the_edges_of_its_range_gives_a_named_error_or_finite_numbers()
                     "&duration=0.01"
                 };
                 let text = format!("{base}{length}&{}={value:e}", f.key);
-                let text = text.replace("e0&", "&");
                 match run(&text) {
                     Err(message) => {
                         refused += 1;
@@ -114,14 +113,13 @@ fn every_field_at_the_edges_of_its_range_gives_a_named_error_or_finite_numbers()
                     }
                     Ok(Err(e)) => {
                         stopped += 1;
+                        // The stop names what stopped it: a column, a signal or the decoupling.
+                        let message = e.to_string();
                         assert!(
-                            matches!(
-                                e,
-                                SimError::NotFinite { .. }
-                                    | SimError::Diverged { .. }
-                                    | SimError::Control { .. }
-                            ),
-                            "{text}: {e}"
+                            message.contains("column '")
+                                || message.contains("left its bounds")
+                                || message.contains("decoupling matrix (55)"),
+                            "{text}: {message}"
                         )
                     }
                     Ok(Ok(())) => runs += 1,
