@@ -195,12 +195,15 @@ impl<const N: usize> Filter<N> {
     /// in R_r, so its column is exact).
     fn jacobian(&self, x: &SVector<f64, N>) -> SMatrix<f64, N, N> {
         let a = model::jacobian(&self.lumped_at(x), &five(x));
-        let mut m = SMatrix::<f64, N, N>::from_fn(|i, j| if i < 5 && j < 5 { a[i][j] } else { 0.0 });
+        let mut m =
+            SMatrix::<f64, N, N>::from_fn(|i, j| if i < 5 && j < 5 { a[i][j] } else { 0.0 });
         if let Some(k) = self.load_at {
             m[(0, k)] = -1.0;
         }
         if let Some(k) = self.rr_at {
-            let RrTerms { lr, m: mm, beta, .. } = self.rr_terms;
+            let RrTerms {
+                lr, m: mm, beta, ..
+            } = self.rr_terms;
             let [_, x2, x3, x4, x5] = five(x);
             // d/dR_r of a5 = β/L_r, of a7 = β·M/L_r, of a8 = 1/L_r, of a10 = M/L_r.
             m[(1, k)] = beta / lr * x4 - beta * mm / lr * x2;
@@ -326,8 +329,13 @@ impl<const N: usize> Filter<N> {
 
     /// â2, its posterior variance and its gain row, when the load is estimated.
     pub fn load(&self) -> Option<(f64, f64, [f64; 2])> {
-        self.load_at
-            .map(|i| (self.x[i], self.p[(i, i)], [self.gain[(i, 0)], self.gain[(i, 1)]]))
+        self.load_at.map(|i| {
+            (
+                self.x[i],
+                self.p[(i, i)],
+                [self.gain[(i, 0)], self.gain[(i, 1)]],
+            )
+        })
     }
 
     /// R̂_r and its posterior variance, when the rotor resistance is estimated.
@@ -388,7 +396,14 @@ mod tests {
 
     fn filter<const N: usize>(load: bool, rr: bool) -> Filter<N> {
         let params = MotorParams::PAPER;
-        Filter::new(&params, params.lumped().unwrap(), 5e-5, &config(load, rr), [0.0; 5], [0.0; 5])
+        Filter::new(
+            &params,
+            params.lumped().unwrap(),
+            5e-5,
+            &config(load, rr),
+            [0.0; 5],
+            [0.0; 5],
+        )
     }
 
     #[test]
@@ -400,7 +415,10 @@ mod tests {
         );
     }
 
-    fn rk4_jacobian_matches_finite_differences<const N: usize>(ekf: &Filter<N>, x: SVector<f64, N>) {
+    fn rk4_jacobian_matches_finite_differences<const N: usize>(
+        ekf: &Filter<N>,
+        x: SVector<f64, N>,
+    ) {
         let u = [120.0, -80.0];
         let (_, phi) = ekf.rk4_with_jacobian(&x, &u);
         for j in 0..N {
