@@ -55,6 +55,19 @@ pub struct ControlInput {
     pub speed_ref: RefSample,
     /// Flux target ψ_d for x̂4² + x̂5² (Wb²); constant, so its derivatives are zero.
     pub psi_d: f64,
+    /// The parameters the observer estimates, when it estimates any (Section 3.1's remedies).
+    pub adapted: Option<Adapted>,
+}
+
+/// Parameters the observer adapts: the controller uses them in place of its model's.
+#[derive(Clone, Copy, Debug)]
+pub struct Adapted {
+    /// The lumped parameters at the estimate: â2 and R̂_r (through a5, a7, a8, a10) in place of
+    /// the model's values where they are estimated.
+    pub model: Lumped,
+    /// dâ2/dt: in the observer form (4), â2 is a state whose rate is its injection
+    /// l_a·(x̃2, x̃3) (rad/s³); 0 when a2 is not estimated.
+    pub d_a2: f64,
 }
 
 /// Every term of the four steps at one sample, for teaching and checking.
@@ -143,7 +156,9 @@ impl Backstepping {
 
     /// Computes every term and the voltage (54) for one sample.
     pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
-        let p = &self.model;
+        // With adapted parameters, the lumped parameters follow the estimates each sample; their
+        // own rates (dR̂_r/dt through a5, a7, a8, a10) are neglected in the derivatives below.
+        let p = &input.adapted.map_or(self.model, |a| a.model);
         let g = &self.gains;
         let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
         let [x2, x3] = input.y;
@@ -157,7 +172,8 @@ impl Backstepping {
         let de3 = -l[2][0] * e2 - (p.a7 + l[2][1]) * e3;
         let flux_sq = x4h * x4h + x5h * x5h;
 
-        // Step 1, speed loop: eqs (23)–(30). â2 = a2 (constant load model), so dâ2/dt = 0.
+        // Step 1, speed loop: eqs (23)–(30). â2 = a2 (the model's constant load) unless the
+        // observer estimates it; then dâ2/dt is the observer's injection into â2.
         let k1s1 = g.k1 - p.a3;
         let z1 = x1h - r.value;
         let v1a = -si[0] + r.d1 + p.a3 * r.value + p.a2;
@@ -166,7 +182,11 @@ impl Backstepping {
         let torque = p.a1 * (x3 * x4h - x2 * x5h);
         let z2 = torque - v1;
         // dv1/dt of eq (31) with its typos corrected (a3·ω̇_d, dâ2/dt = 0).
-        let dv1 = -k1s1 * (-g.k1 * z1 + z2) - (l[0][0] * de2 + l[0][1] * de3) + r.d2 + p.a3 * r.d1;
+        let mut dv1 =
+            -k1s1 * (-g.k1 * z1 + z2) - (l[0][0] * de2 + l[0][1] * de3) + r.d2 + p.a3 * r.d1;
+        if let Some(a) = input.adapted {
+            dv1 += a.d_a2;
+        }
 
         // Step 2, torque loop: eq (32) is ż2 = v2 + ψ2 − (a7 + a8) z2 + d̃2; the printed (32)
         // drops −(a7+a8) z2, which is what makes k2 = a7 + a8 + k2s1 in (36) true.

@@ -6,7 +6,7 @@ mod ifoc;
 mod reference;
 mod stability;
 
-pub use backstepping::{Backstepping, ControlError, ControlInput, Gains, Terms};
+pub use backstepping::{Adapted, Backstepping, ControlError, ControlInput, Gains, Terms};
 pub use ifoc::{Ifoc, IfocTuning};
 pub use reference::{RefSample, Reference};
 pub use stability::LyapunovBound;

@@ -1,8 +1,10 @@
-//! Extended Kalman filter, eqs (10)–(20).
+//! Extended Kalman filter, eqs (10)–(20), over the five states of model (2) and, optionally,
+//! the two parameters Section 3.1 names for adaptation: the load a2 = T_L0/J and the rotor
+//! resistance R_r, each a random-walk state (the paper's remedy, which it does not build).
 
 use crate::model::{self, Input, State};
-use crate::params::Lumped;
-use nalgebra::{Matrix2, Matrix5, SMatrix, Vector2, Vector5};
+use crate::params::{Lumped, MotorParams};
+use nalgebra::{Matrix2, SMatrix, SVector, Vector2};
 use serde::{Deserialize, Serialize};
 
 /// How the EKF predicts x̂_{k|k−1} from x̂_{k−1|k−1} over one sample.
@@ -24,34 +26,84 @@ pub struct EkfConfig {
     pub q: f64,
     /// Measurement noise standard deviation assumed in R = r_std²·I (A).
     pub r_std: f64,
+    /// Estimate the load a2 = T_L0/J as a random-walk state, started at the model's T0/J.
+    pub load: bool,
+    /// Random-walk intensity of the load torque: Q_a2 = q_load·Ts/J² ((N m)²/s).
+    pub q_load: f64,
+    /// Initial standard deviation of the load-torque estimate (N m).
+    pub load_std: f64,
+    /// Estimate the rotor resistance R_r as a random-walk state, started at the model's R_r.
+    pub rr: bool,
+    /// Random-walk intensity of the rotor resistance: Q_Rr = q_rr·Ts (Ω²/s).
+    pub q_rr: f64,
+    /// Initial standard deviation of the rotor-resistance estimate (Ω).
+    pub rr_std: f64,
 }
 
-/// Extended Kalman filter over model (2) with measured y = [i_sa, i_sb].
+/// Where the lumped parameters depend on R_r: a5 = α·β, a7 = R_s/σ + α·β·M, a8 = α, a10 = α·M
+/// with α = R_r/L_r and β = M/(σ·L_r) (the same expressions as [`MotorParams::lumped`]).
+#[derive(Clone, Copy, Debug)]
+struct RrTerms {
+    lr: f64,
+    m: f64,
+    beta: f64,
+    rs_over_sigma: f64,
+}
+
+impl RrTerms {
+    fn of(p: &MotorParams) -> RrTerms {
+        let sigma = p.sigma();
+        RrTerms {
+            lr: p.lr,
+            m: p.m,
+            beta: p.m / (sigma * p.lr),
+            rs_over_sigma: p.rs / sigma,
+        }
+    }
+
+    /// `model` with a5, a7, a8 and a10 at rotor resistance `rr`.
+    fn apply(&self, model: &mut Lumped, rr: f64) {
+        let alpha = rr / self.lr;
+        model.a5 = alpha * self.beta;
+        model.a7 = self.rs_over_sigma + alpha * self.beta * self.m;
+        model.a8 = alpha;
+        model.a10 = alpha * self.m;
+    }
+}
+
+/// The EKF with `N` states: the five of model (2), then â2 (if estimated), then R̂_r (if
+/// estimated). With N = 5 it is the paper's filter, operation for operation.
 #[derive(Clone, Debug)]
-pub struct Ekf {
+pub struct Filter<const N: usize> {
+    /// The model's lumped parameters (a2 and the R_r-dependent ones are replaced by the
+    /// estimates where those are states).
     model: Lumped,
+    rr_terms: RrTerms,
+    /// Index of â2 in the state, if estimated.
+    load_at: Option<usize>,
+    /// Index of R̂_r in the state, if estimated.
+    rr_at: Option<usize>,
     ts: f64,
     predictor: Predictor,
-    q: Matrix5<f64>,
+    q: SMatrix<f64, N, N>,
     /// Measurement noise variance: R = r2·I (A²).
     r2: f64,
-    x: Vector5<f64>,
-    p: Matrix5<f64>,
-    gain: SMatrix<f64, 5, 2>,
+    x: SVector<f64, N>,
+    p: SMatrix<f64, N, N>,
+    gain: SMatrix<f64, N, 2>,
     innovation: Vector2<f64>,
     s: Matrix2<f64>,
 }
 
-fn to_matrix(a: &[[f64; 5]; 5]) -> Matrix5<f64> {
-    Matrix5::from_fn(|i, j| a[i][j])
-}
+/// The paper's five-state EKF.
+pub type Ekf = Filter<5>;
 
 /// A symmetric matrix from a function evaluated on the upper triangle only.
 #[inline]
-fn symmetric_from_upper(f: impl Fn(usize, usize) -> f64) -> Matrix5<f64> {
-    let mut m = Matrix5::zeros();
-    for i in 0..5 {
-        for j in i..5 {
+fn symmetric_from_upper<const N: usize>(f: impl Fn(usize, usize) -> f64) -> SMatrix<f64, N, N> {
+    let mut m = SMatrix::<f64, N, N>::zeros();
+    for i in 0..N {
+        for j in i..N {
             let v = f(i, j);
             m[(i, j)] = v;
             m[(j, i)] = v;
@@ -60,22 +112,59 @@ fn symmetric_from_upper(f: impl Fn(usize, usize) -> f64) -> Matrix5<f64> {
     m
 }
 
-fn to_state(v: &Vector5<f64>) -> State {
+fn five<const N: usize>(v: &SVector<f64, N>) -> State {
     [v[0], v[1], v[2], v[3], v[4]]
 }
 
-impl Ekf {
-    /// A filter started at `x0_hat` with covariance P0 = diag(p0_std²) + Q.
-    pub fn new(model: Lumped, ts: f64, config: &EkfConfig, x0_hat: State, p0_std: State) -> Ekf {
-        let q = Matrix5::identity() * (config.q * ts);
-        let p0 = Matrix5::from_diagonal(&Vector5::from_fn(|i, _| p0_std[i] * p0_std[i])) + q;
-        Ekf {
+impl<const N: usize> Filter<N> {
+    /// A filter started at `x0_hat` with covariance P0 = diag(p0_std²) + Q for the five states;
+    /// the added states start at the model's values with the configured standard deviations.
+    /// N must be 5 plus one for each parameter `config` estimates.
+    pub fn new(
+        params: &MotorParams,
+        model: Lumped,
+        ts: f64,
+        config: &EkfConfig,
+        x0_hat: State,
+        p0_std: State,
+    ) -> Filter<N> {
+        let load_at = config.load.then_some(5);
+        let rr_at = config.rr.then_some(5 + usize::from(config.load));
+        assert_eq!(
+            N,
+            5 + usize::from(config.load) + usize::from(config.rr),
+            "state size"
+        );
+        let mut q = SMatrix::<f64, N, N>::identity() * (config.q * ts);
+        let mut x = SVector::<f64, N>::zeros();
+        let mut std = [0.0; N];
+        for i in 0..5 {
+            x[i] = x0_hat[i];
+            std[i] = p0_std[i];
+        }
+        if let Some(i) = load_at {
+            q[(i, i)] = config.q_load * ts / (params.j * params.j);
+            x[i] = model.a2;
+            std[i] = config.load_std / params.j;
+        }
+        if let Some(i) = rr_at {
+            q[(i, i)] = config.q_rr * ts;
+            x[i] = params.rr;
+            std[i] = config.rr_std;
+        }
+        let p0 = SMatrix::<f64, N, N>::from_diagonal(&SVector::<f64, N>::from_fn(|i, _| {
+            std[i] * std[i]
+        })) + q;
+        Filter {
             model,
+            rr_terms: RrTerms::of(params),
+            load_at,
+            rr_at,
             ts,
             predictor: config.predictor,
             q,
             r2: config.r_std * config.r_std,
-            x: Vector5::from_column_slice(&x0_hat),
+            x,
             p: p0,
             gain: SMatrix::zeros(),
             innovation: Vector2::zeros(),
@@ -83,51 +172,99 @@ impl Ekf {
         }
     }
 
+    /// The lumped parameters at the estimate `x`: the model's, with â2 and R̂_r where estimated.
+    #[inline]
+    fn lumped_at(&self, x: &SVector<f64, N>) -> Lumped {
+        let mut p = self.model;
+        if let Some(i) = self.load_at {
+            p.a2 = x[i];
+        }
+        if let Some(i) = self.rr_at {
+            self.rr_terms.apply(&mut p, x[i]);
+        }
+        p
+    }
+
+    /// f of the augmented model: (2) for the five states, zero for the random-walk parameters.
+    #[inline]
+    fn f(&self, x: &SVector<f64, N>, u: &Input) -> State {
+        model::f(&self.lumped_at(x), &five(x), u, 0.0)
+    }
+
+    /// Jacobian of the augmented model: (11), plus ∂f/∂a2 = −e1 and ∂f/∂R_r (model (2) is affine
+    /// in R_r, so its column is exact).
+    fn jacobian(&self, x: &SVector<f64, N>) -> SMatrix<f64, N, N> {
+        let a = model::jacobian(&self.lumped_at(x), &five(x));
+        let mut m =
+            SMatrix::<f64, N, N>::from_fn(|i, j| if i < 5 && j < 5 { a[i][j] } else { 0.0 });
+        if let Some(k) = self.load_at {
+            m[(0, k)] = -1.0;
+        }
+        if let Some(k) = self.rr_at {
+            let RrTerms {
+                lr, m: mm, beta, ..
+            } = self.rr_terms;
+            let [_, x2, x3, x4, x5] = five(x);
+            // d/dR_r of a5 = β/L_r, of a7 = β·M/L_r, of a8 = 1/L_r, of a10 = M/L_r.
+            m[(1, k)] = beta / lr * x4 - beta * mm / lr * x2;
+            m[(2, k)] = beta / lr * x5 - beta * mm / lr * x3;
+            m[(3, k)] = -x4 / lr + mm / lr * x2;
+            m[(4, k)] = -x5 / lr + mm / lr * x3;
+        }
+        m
+    }
+
     /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample.
     pub fn predict(&mut self, u: &Input) {
-        let x = to_state(&self.x);
         let (x_next, phi) = match self.predictor {
             Predictor::Euler => {
-                let dx = model::f(&self.model, &x, u, 0.0);
-                let a = to_matrix(&model::jacobian(&self.model, &x));
-                let mut xn = x;
+                let dx = self.f(&self.x, u);
+                let a = self.jacobian(&self.x);
+                let mut xn = self.x;
                 for i in 0..5 {
                     xn[i] += self.ts * dx[i];
                 }
-                (xn, Matrix5::identity() + a * self.ts)
+                (xn, SMatrix::<f64, N, N>::identity() + a * self.ts)
             }
-            Predictor::Rk4 => self.rk4_with_jacobian(&x, u),
+            Predictor::Rk4 => self.rk4_with_jacobian(&self.x, u),
         };
-        self.x = Vector5::from_column_slice(&x_next);
+        self.x = x_next;
         let p = &self.p;
-        let n = Matrix5::from_fn(|i, j| (0..5).map(|k| phi[(i, k)] * p[(k, j)]).sum::<f64>());
+        let n = SMatrix::<f64, N, N>::from_fn(|i, j| {
+            (0..N).map(|k| phi[(i, k)] * p[(k, j)]).sum::<f64>()
+        });
         self.p = symmetric_from_upper(|i, j| {
-            (0..5).map(|k| n[(i, k)] * phi[(j, k)]).sum::<f64>() + self.q[(i, j)]
+            (0..N).map(|k| n[(i, k)] * phi[(j, k)]).sum::<f64>() + self.q[(i, j)]
         });
     }
 
     /// RK4 state transition and its exact Jacobian Φ = ∂x_{k|k−1}/∂x_{k−1|k−1} (chain rule).
-    fn rk4_with_jacobian(&self, x: &State, u: &Input) -> (State, Matrix5<f64>) {
-        let (m, h) = (&self.model, self.ts);
-        let id = Matrix5::<f64>::identity();
-        let stage = |base: &State, c: f64, k: &State| -> State {
+    fn rk4_with_jacobian(
+        &self,
+        x: &SVector<f64, N>,
+        u: &Input,
+    ) -> (SVector<f64, N>, SMatrix<f64, N, N>) {
+        let h = self.ts;
+        let id = SMatrix::<f64, N, N>::identity();
+        // The parameters are constant over the step: only the five states move.
+        let stage = |base: &SVector<f64, N>, c: f64, k: &State| -> SVector<f64, N> {
             let mut s = *base;
             for i in 0..5 {
                 s[i] += c * k[i];
             }
             s
         };
-        let k1 = model::f(m, x, u, 0.0);
-        let j1 = to_matrix(&model::jacobian(m, x));
+        let k1 = self.f(x, u);
+        let j1 = self.jacobian(x);
         let x2 = stage(x, 0.5 * h, &k1);
-        let k2 = model::f(m, &x2, u, 0.0);
-        let j2 = to_matrix(&model::jacobian(m, &x2)) * (id + j1 * (0.5 * h));
+        let k2 = self.f(&x2, u);
+        let j2 = self.jacobian(&x2) * (id + j1 * (0.5 * h));
         let x3 = stage(x, 0.5 * h, &k2);
-        let k3 = model::f(m, &x3, u, 0.0);
-        let j3 = to_matrix(&model::jacobian(m, &x3)) * (id + j2 * (0.5 * h));
+        let k3 = self.f(&x3, u);
+        let j3 = self.jacobian(&x3) * (id + j2 * (0.5 * h));
         let x4 = stage(x, h, &k3);
-        let k4 = model::f(m, &x4, u, 0.0);
-        let j4 = to_matrix(&model::jacobian(m, &x4)) * (id + j3 * h);
+        let k4 = self.f(&x4, u);
+        let j4 = self.jacobian(&x4) * (id + j3 * h);
         let mut xn = *x;
         for i in 0..5 {
             xn[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
@@ -152,7 +289,7 @@ impl Ekf {
             -self.s[(0, 1)] * inv_det,
             self.s[(0, 0)] * inv_det,
         );
-        let k = SMatrix::<f64, 5, 2>::from_fn(|i, c| {
+        let k = SMatrix::<f64, N, 2>::from_fn(|i, c| {
             let (g0, g1) = (p[(i, 1)], p[(i, 2)]);
             if c == 0 {
                 g0 * i11 + g1 * i12
@@ -165,26 +302,49 @@ impl Ekf {
         // Joseph form with C's structure: A = (I − KC)·P = P − K·(C·P), then
         // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ. Only the upper triangle is
         // computed, so P stays exactly symmetric.
-        let a = Matrix5::from_fn(|i, j| p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]);
+        let a = SMatrix::<f64, N, N>::from_fn(|i, j| {
+            p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
+        });
         self.p = symmetric_from_upper(|i, j| {
             a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
                 + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
         });
     }
 
-    /// Posterior estimate x̂_{k|k}.
+    /// Posterior estimate x̂_{k|k} of the five states.
     pub fn state(&self) -> State {
-        to_state(&self.x)
+        five(&self.x)
     }
 
-    /// Kalman gain K_k (5×2, row-major).
+    /// Kalman gain K_k of the five states (5×2, row-major).
     pub fn gain(&self) -> [[f64; 2]; 5] {
         let k = &self.gain;
         std::array::from_fn(|i| [k[(i, 0)], k[(i, 1)]])
     }
 
+    /// The lumped parameters at the posterior estimate (the model's when nothing is estimated).
+    pub fn lumped(&self) -> Lumped {
+        self.lumped_at(&self.x)
+    }
+
+    /// â2, its posterior variance and its gain row, when the load is estimated.
+    pub fn load(&self) -> Option<(f64, f64, [f64; 2])> {
+        self.load_at.map(|i| {
+            (
+                self.x[i],
+                self.p[(i, i)],
+                [self.gain[(i, 0)], self.gain[(i, 1)]],
+            )
+        })
+    }
+
+    /// R̂_r and its posterior variance, when the rotor resistance is estimated.
+    pub fn rotor_resistance(&self) -> Option<(f64, f64)> {
+        self.rr_at.map(|i| (self.x[i], self.p[(i, i)]))
+    }
+
     /// Posterior covariance P_{k|k}.
-    pub fn covariance(&self) -> &Matrix5<f64> {
+    pub fn covariance(&self) -> &SMatrix<f64, N, N> {
         &self.p
     }
 
@@ -216,10 +376,35 @@ pub fn nis_band(confidence: f64) -> (f64, f64) {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::params::MotorParams;
 
     /// Finite differences of the RK4 map with step 1e-6 on O(1) states: ~1e-8 relative error.
     const PHI_TOL: f64 = 1e-6;
+
+    fn config(load: bool, rr: bool) -> EkfConfig {
+        EkfConfig {
+            predictor: Predictor::Rk4,
+            q: 0.001,
+            r_std: 0.002,
+            load,
+            q_load: 1.0,
+            load_std: 1.0,
+            rr,
+            q_rr: 0.01,
+            rr_std: 0.5,
+        }
+    }
+
+    fn filter<const N: usize>(load: bool, rr: bool) -> Filter<N> {
+        let params = MotorParams::PAPER;
+        Filter::new(
+            &params,
+            params.lumped().unwrap(),
+            5e-5,
+            &config(load, rr),
+            [0.0; 5],
+            [0.0; 5],
+        )
+    }
 
     #[test]
     fn nis_band_is_the_chi_square_2_quantiles() {
@@ -230,28 +415,67 @@ mod tests {
         );
     }
 
-    #[test]
-    fn rk4_transition_jacobian_matches_finite_differences() {
-        let p = MotorParams::PAPER.lumped().unwrap();
-        let cfg = EkfConfig {
-            predictor: Predictor::Rk4,
-            q: 0.001,
-            r_std: 0.002,
-        };
-        let ekf = Ekf::new(p, 5e-5, &cfg, [0.0; 5], [0.0; 5]);
-        let x = [30.0, 3.0, -2.0, 0.6, -0.4];
+    fn rk4_jacobian_matches_finite_differences<const N: usize>(
+        ekf: &Filter<N>,
+        x: SVector<f64, N>,
+    ) {
         let u = [120.0, -80.0];
         let (_, phi) = ekf.rk4_with_jacobian(&x, &u);
-        for j in 0..5 {
+        for j in 0..N {
             let h = 1e-6 * (1.0 + f64::abs(x[j]));
             let (mut xp, mut xm) = (x, x);
             xp[j] += h;
             xm[j] -= h;
             let (fp, _) = ekf.rk4_with_jacobian(&xp, &u);
             let (fm, _) = ekf.rk4_with_jacobian(&xm, &u);
-            for i in 0..5 {
+            for i in 0..N {
                 let fd = (fp[i] - fm[i]) / (2.0 * h);
-                assert!((fd - phi[(i, j)]).abs() < PHI_TOL * (1.0 + phi[(i, j)].abs()));
+                assert!(
+                    (fd - phi[(i, j)]).abs() < PHI_TOL * (1.0 + phi[(i, j)].abs()),
+                    "N = {N}: Φ[{i},{j}] = {} against {fd}",
+                    phi[(i, j)]
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn rk4_transition_jacobian_matches_finite_differences() {
+        let x = [30.0, 3.0, -2.0, 0.6, -0.4];
+        rk4_jacobian_matches_finite_differences(&filter::<5>(false, false), SVector::from(x));
+        let augmented = [30.0, 3.0, -2.0, 0.6, -0.4, 100.0, 5.5];
+        rk4_jacobian_matches_finite_differences(&filter::<7>(true, true), SVector::from(augmented));
+    }
+
+    #[cfg(not(target_arch = "wasm32"))]
+    use proptest::prelude::*;
+
+    #[cfg(not(target_arch = "wasm32"))]
+    proptest! {
+        /// The analytic Jacobian of the augmented model (load and R_r states) against central
+        /// differences of f at random states; f is affine in a2 and R_r and quadratic in the
+        /// states, so central differences are exact up to rounding.
+        #[test]
+        fn augmented_jacobian_matches_central_differences(
+            x in prop::array::uniform5(-50.0f64..50.0),
+            a2 in -500.0f64..500.0,
+            rr in 0.5f64..20.0,
+        ) {
+            let ekf = filter::<7>(true, true);
+            let state = SVector::<f64, 7>::from([x[0], x[1], x[2], x[3], x[4], a2, rr]);
+            let a = ekf.jacobian(&state);
+            let u = [50.0, -30.0];
+            for j in 0..7 {
+                let h = 1e-4 * (1.0 + state[j].abs());
+                let (mut xp, mut xm) = (state, state);
+                xp[j] += h;
+                xm[j] -= h;
+                let (fp, fm) = (ekf.f(&xp, &u), ekf.f(&xm, &u));
+                for i in 0..7 {
+                    let fd = if i < 5 { (fp[i] - fm[i]) / (2.0 * h) } else { 0.0 };
+                    let scale = 1.0 + a[(i, j)].abs() + fp.iter().map(|v| v.abs()).fold(0.0, f64::max) * 1e-9 / h;
+                    prop_assert!((fd - a[(i, j)]).abs() < 1e-6 * scale, "A[{},{}] = {} against {}", i, j, a[(i, j)], fd);
+                }
             }
         }
     }

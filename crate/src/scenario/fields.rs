@@ -111,6 +111,10 @@ fn acts(key: &str, s: &Scenario) -> bool {
         s.controller == ControllerKind::Ifoc
     } else if matches!(key, "eps2" | "h2" | "eps4" | "h4") {
         s.gains.robust
+    } else if matches!(key, "ekf.q_load" | "ekf.load_std") {
+        s.ekf.load
+    } else if matches!(key, "ekf.q_rr" | "ekf.rr_std") {
+        s.ekf.rr
     } else {
         true
     }
@@ -330,6 +334,12 @@ fn table() -> Vec<Field> {
         // R = r_std²·I must stay a positive number: below 1 µA it is numerically zero for the
         // innovation covariance S = HPHᵀ + R once P has converged.
         number("ekf.r_std", "observer", "A", closed(1e-6, 10.0), "assumed current noise, R = r_std²·I", at!(ekf.r_std)),
+        number("ekf.load", "observer", "", whole(0.0, 1.0), "estimate the load a2 = T_L0/J as an EKF state (0/1)", flag!(ekf.load)),
+        number("ekf.q_load", "observer", "N² m²/s", above(0.0, 1e8), "random-walk intensity of the load torque", at!(ekf.q_load)),
+        number("ekf.load_std", "observer", "N m", above(0.0, 1e4), "initial standard deviation of the load estimate", at!(ekf.load_std)),
+        number("ekf.rr", "observer", "", whole(0.0, 1.0), "estimate the rotor resistance R_r as an EKF state (0/1)", flag!(ekf.rr)),
+        number("ekf.q_rr", "observer", "Ω²/s", above(0.0, 1e6), "random-walk intensity of the rotor resistance", at!(ekf.q_rr)),
+        number("ekf.rr_std", "observer", "Ω", above(0.0, 1000.0), "initial standard deviation of the R_r estimate", at!(ekf.rr_std)),
         number("init_err", "observer", "", closed(0.0, 1.0), "initial relative estimation error", at!(init_error)),
         number("perfect", "observer", "", whole(0.0, 1.0), "perfect observer: controller gets the true state (0/1)", flag!(perfect)),
         number("noise", "noise", "A", closed(0.0, 10.0), "current-measurement noise std", at!(noise)),

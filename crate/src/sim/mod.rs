@@ -9,9 +9,9 @@ mod recorder;
 pub use figures::{figures, transient_end, Figure, Transient};
 pub use recorder::{Recorder, Row, COLUMNS, COLUMN_DOCS, NUM_COLUMNS};
 
-use crate::control::{Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
+use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
 use crate::model::{self, Input, State};
-use crate::observer::Ekf;
+use crate::observer::Filter;
 use crate::params::Lumped;
 use crate::rng::Rng;
 use crate::scenario::{ControllerKind, Scenario, ScenarioError};
@@ -94,6 +94,28 @@ impl fmt::Display for SimError {
 
 impl std::error::Error for SimError {}
 
+/// The EKF, sized by the parameters it estimates besides the five states.
+#[derive(Clone, Debug)]
+enum Observer {
+    /// The paper's five states.
+    Plain(Filter<5>),
+    /// Plus the load or the rotor resistance.
+    One(Filter<6>),
+    /// Plus both.
+    Two(Filter<7>),
+}
+
+/// Calls the same method on whichever filter the observer holds.
+macro_rules! with_filter {
+    ($observer:expr, $f:ident => $body:expr) => {
+        match $observer {
+            Observer::Plain($f) => $body,
+            Observer::One($f) => $body,
+            Observer::Two($f) => $body,
+        }
+    };
+}
+
 /// A closed-loop run that can be advanced in chunks.
 #[derive(Clone, Debug)]
 pub struct Simulation {
@@ -102,7 +124,7 @@ pub struct Simulation {
     controller: Backstepping,
     /// The IFOC baseline, when the scenario selects it.
     ifoc: Option<Ifoc>,
-    ekf: Ekf,
+    ekf: Observer,
     rng: Rng,
     x: State,
     u: Input,
@@ -189,13 +211,13 @@ impl Simulation {
         // Section 5: x(0) = [ω_d(0), 2, 2, 0.5, 0.5]; x̂(0) = (1 − e)·x(0); P0 = diag((e·x(0))²) + Q.
         let x0 = [scenario.reference.sample(0.0).value, 2.0, 2.0, 0.5, 0.5];
         let e = scenario.init_error;
-        let ekf = Ekf::new(
-            model,
-            scenario.ts,
-            &scenario.ekf,
-            x0.map(|v| (1.0 - e) * v),
-            x0.map(|v| e * v),
-        );
+        let (x0_hat, p0_std) = (x0.map(|v| (1.0 - e) * v), x0.map(|v| e * v));
+        let (m, ts, cfg) = (&scenario.model, scenario.ts, &scenario.ekf);
+        let ekf = match (cfg.load, cfg.rr) {
+            (false, false) => Observer::Plain(Filter::new(m, model, ts, cfg, x0_hat, p0_std)),
+            (true, true) => Observer::Two(Filter::new(m, model, ts, cfg, x0_hat, p0_std)),
+            _ => Observer::One(Filter::new(m, model, ts, cfg, x0_hat, p0_std)),
+        };
         // The baseline starts from the same 10 % initial error as the EKF.
         let ifoc = (scenario.controller == ControllerKind::Ifoc).then(|| {
             let start = x0.map(|v| (1.0 - e) * v);
@@ -260,13 +282,28 @@ impl Simulation {
             self.x[2] + s.noise * self.rng.normal(),
         ];
         // 2–3. EKF predict with u_{k−1} (none before the first sample), then update with y_k.
-        if self.k > 0 {
-            self.ekf.predict(&self.u);
-        }
-        self.ekf.update(&y);
-        let x_hat = self.ekf.state();
+        let u = self.u;
+        let first = self.k == 0;
+        with_filter!(&mut self.ekf, f => {
+            if !first {
+                f.predict(&u);
+            }
+            f.update(&y);
+        });
+        let x_hat = with_filter!(&self.ekf, f => f.state());
         check_state(t, &x_hat, ESTIMATE_NAMES)?;
-        let gain = self.ekf.gain();
+        let gain = with_filter!(&self.ekf, f => f.gain());
+        let load = with_filter!(&self.ekf, f => f.load());
+        let rotor_resistance = with_filter!(&self.ekf, f => f.rotor_resistance());
+        let residual = [y[0] - x_hat[1], y[1] - x_hat[2]];
+        // The estimated parameters, when the observer has any: â2 with its rate l_a·(x̃2, x̃3)
+        // (L = K/Ts), and the lumped parameters at R̂_r.
+        let adapted = (load.is_some() || rotor_resistance.is_some()).then(|| Adapted {
+            model: with_filter!(&self.ekf, f => f.lumped()),
+            d_a2: load.map_or(0.0, |(_, _, k)| {
+                (k[0] * residual[0] + k[1] * residual[1]) * self.rate
+            }),
+        });
         // 4. Controller from the posterior, the measured currents, L = K/Ts and the posterior residual.
         let speed_ref = s.reference.sample(t);
         let input = if s.perfect {
@@ -277,6 +314,7 @@ impl Simulation {
                 residual: [0.0; 2],
                 speed_ref,
                 psi_d: s.psi_d,
+                adapted: None,
             }
         } else {
             ControlInput {
@@ -284,9 +322,10 @@ impl Simulation {
                 y,
                 // L = K/Ts, eq (20), as a product with 1/Ts (ten divisions per sample are slow).
                 l: gain.map(|row| row.map(|k| k * self.rate)),
-                residual: [y[0] - x_hat[1], y[1] - x_hat[2]],
+                residual,
                 speed_ref,
                 psi_d: s.psi_d,
+                adapted,
             }
         };
         let vmax = s.voltage_limit;
@@ -326,9 +365,16 @@ impl Simulation {
         let x = &self.x;
         let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
         let flux_sq_hat = x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4];
-        let p = self.ekf.covariance();
-        let [innov_a, innov_b] = self.ekf.innovation();
-        let [s_aa, s_ab, s_bb] = self.ekf.innovation_cov();
+        let p_omega = with_filter!(&self.ekf, f => f.covariance()[(0, 0)]);
+        let [innov_a, innov_b] = with_filter!(&self.ekf, f => f.innovation());
+        let [s_aa, s_ab, s_bb] = with_filter!(&self.ekf, f => f.innovation_cov());
+        let nis = with_filter!(&self.ekf, f => f.nis());
+        let extra_load = if t >= s.load_step.time {
+            s.load_step.torque
+        } else {
+            0.0
+        };
+        let j_model = s.model.j;
         let recorded = self.recorder.record(|| Row {
             t,
             omega_ref: speed_ref.value,
@@ -384,19 +430,21 @@ impl Simulation {
             s_aa,
             s_ab,
             s_bb,
-            nis: self.ekf.nis(),
-            p_omega: p[(0, 0)],
+            nis,
+            p_omega,
+            load_hat: load.map_or(s.model.t0, |(a2, _, _)| a2 * j_model),
+            rr_hat: rotor_resistance.map_or(s.model.rr, |(rr, _)| rr),
+            load: s.plant.t0 + extra_load,
+            load_band: load.map_or(0.0, |(_, var, _)| 2.0 * var.sqrt() * j_model),
+            rr: s.plant.rr,
+            rr_band: rotor_resistance.map_or(0.0, |(_, var)| 2.0 * var.sqrt()),
         });
         if let Err((column, value)) = recorded {
             return Err(SimError::NotFinite { t, column, value });
         }
 
         // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
-        let extra_load = if t >= s.load_step.time {
-            s.load_step.torque / self.plant.j
-        } else {
-            0.0
-        };
+        let extra_load = extra_load / self.plant.j;
         self.x = model::advance(&self.plant, &self.x, &self.u, extra_load, ts, s.substeps);
         check_state(t + ts, &self.x, PLANT_NAMES)
     }
@@ -431,9 +479,9 @@ impl Simulation {
         &self.scenario
     }
 
-    /// Current EKF (for checks of its covariance).
-    pub fn ekf(&self) -> &Ekf {
-        &self.ekf
+    /// The EKF's posterior covariance P_{k|k} (5×5, or larger with estimated parameters).
+    pub fn covariance(&self) -> nalgebra::DMatrix<f64> {
+        with_filter!(&self.ekf, f => nalgebra::DMatrix::from_column_slice(f.covariance().nrows(), f.covariance().ncols(), f.covariance().as_slice()))
     }
 
     /// The Lyapunov bound (59) of this run, from the recorded V(0).
@@ -572,7 +620,7 @@ impl Simulation {
         let mut sim = Simulation::new(scenario, k.max(1)).map_err(|e| e.to_string())?;
         sim.advance(k + 1).map_err(|e| e.to_string())?;
         let row = sim.recorder.rows().last().ok_or("nothing recorded")?;
-        let gain = sim.ekf.gain();
+        let gain = with_filter!(&sim.ekf, f => f.gain());
         Ok(Snapshot {
             k,
             columns: COLUMNS,

@@ -152,6 +152,18 @@ define_row! {
     nis,
     /// Posterior speed variance P_11 ((rad/s)²).
     p_omega,
+    /// Estimated constant load torque â2·J (N m); the model's T0 when the load is not estimated.
+    load_hat,
+    /// Estimated rotor resistance R̂_r (Ω); the model's R_r when it is not estimated.
+    rr_hat,
+    /// True constant load torque T0 plus the unknown step (N m).
+    load,
+    /// 2σ band of the load-torque estimate from P (N m); 0 when the load is not estimated.
+    load_band,
+    /// True rotor resistance R_r of the plant (Ω).
+    rr,
+    /// 2σ band of the rotor-resistance estimate from P (Ω); 0 when it is not estimated.
+    rr_band,
 }
 
 /// The recorded trace: one `Row` per kept sample, so that recording is a single copy; sample k
