@@ -95,6 +95,8 @@ impl fmt::Display for SimError {
 impl std::error::Error for SimError {}
 
 /// The EKF, sized by the parameters it estimates besides the five states.
+// One per simulation, so its size does not matter; inline, the loop reaches it without a pointer.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 enum Observer {
     /// The paper's five states.
