@@ -101,7 +101,9 @@ export function cliRows(scenario) {
 
 /** Clicks the first trajectory plot at `fraction` of its width and waits for the inspect panel. */
 export async function inspectAt(page, fraction) {
-  const box = await page.locator('#plots .plot .u-over').first().boundingBox();
+  const over = page.locator('#plots .plot .u-over').first();
+  await over.scrollIntoViewIfNeeded();
+  const box = await over.boundingBox();
   await page.mouse.click(box.x + box.width * fraction, box.y + box.height / 2);
   await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
 }

@@ -134,7 +134,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
     const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
-    assert.equal(lessons.length, 7);
+    assert.equal(lessons.length, 9);
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
     for (const [i, preset] of lessons.entries()) {
       await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `v=1&preset=${preset}`);
@@ -154,7 +154,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
 test('the inspect panel rounds t to its sample, shows units, marks the instant and closes with Escape', () =>
   withPage('v=1&preset=step', async (page) => {
     await inspectAt(page, 0.5);
-    const heading = await page.textContent('#inspect h3');
+    const heading = await page.textContent('#inspect h2');
     const [, k, t] = /k = (\d+), t = ([\d.]+) s/.exec(heading);
     assert.equal(Number(t), Number((Number(k) * 5e-5).toFixed(6)));
     assert.ok(t.length <= 7, heading);

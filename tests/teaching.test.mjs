@@ -22,7 +22,7 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
     }
     assert.equal(await page.locator('.katex-error').count(), 0);
     // Each section shows live signals from the run and its design knobs.
-    assert.equal(await page.locator('#walkthrough .plot canvas').count(), 10);
+    assert.equal(await page.locator('#walkthrough .plot canvas').count(), 12);
     for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std']) assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
     assert.match(await page.textContent('#section-stability .stability-report'), /of 2000 samples|all 2000 samples/);
   }));
@@ -41,7 +41,7 @@ test('the inspect panel holds the CLI CSV values of the clicked sample', () =>
     await inspectAt(page, 0.53);
     const shown = await page.$$eval('#inspect tr[data-column]', (rows) =>
       rows.map((r) => [r.dataset.column, r.querySelector('td').dataset.exact]));
-    const heading = await page.textContent('#inspect h3');
+    const heading = await page.textContent('#inspect h2');
     const k = Number(/k = (\d+)/.exec(heading)[1]);
     assert.ok(k > 900 && k < 1300, `k = ${k}`);
     const row = cliRows('v=1&preset=step&seed=3')[k];
@@ -69,4 +69,28 @@ test('presentation mode enlarges text and plots', () =>
     await page.click('#present');
     const [font1, plot1] = await size();
     assert.ok(font1 > font0 && plot1 > plot0, `${font0}→${font1}, ${plot0}→${plot1}`);
+  }));
+
+test('the load-estimation lesson runs and its walkthrough plot shows the load estimate against the true load', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await page.click('[role=tab][data-tab=lessons]');
+    const n = await page.evaluate(() => [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /preset load-step-est|load as an EKF state/.test(l.textContent)));
+    assert.ok(n >= 0, 'lesson listed');
+    await page.click(`text=Start lesson ${n + 1}`);
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=load-step-est' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    assert.equal(await page.isVisible('#panel-walkthrough'), true);
+    // The plot's series are the core's columns at recorded samples: the estimate ends at the
+    // true 2.5 N m within its band, and the truth steps from 0.5 to 2.5 N m at 0.15 s.
+    const series = await page.evaluate(() => {
+      const set = window.imlab.walkthrough;
+      const i = set.defs.findIndex((d) => d.title.startsWith('Load torque'));
+      const chart = set.charts[i];
+      const label = (l) => chart.series.findIndex((s) => s.label === l);
+      const last = (k) => chart.data[k][chart.data[k].length - 1];
+      return { estimate: last(label('T̂_L estimated')), truth: last(label('T_L true (T0 + step)')), first: chart.data[label('T_L true (T0 + step)')][0], upper: last(label('T̂_L + 2σ')) };
+    });
+    assert.equal(series.first, 0.5);
+    assert.equal(series.truth, 2.5);
+    assert.ok(Math.abs(series.estimate - 2.5) < 0.1, `load estimate ${series.estimate} N m`);
+    assert.ok(series.upper > series.estimate, 'band above the estimate');
   }));

@@ -236,6 +236,8 @@ async function formChanged() {
   } catch (e) {
     if (e instanceof WorkerFailed) return false;
     markInvalid(ui.form, e.message);
+    // The field must be visible to be fixed: open the drawer where the settings live in one.
+    if (ui.form.offsetParent === null && ui.form.querySelector('.invalid')) openSettings(true);
     const field = /field '([^']+)'/.exec(e.message)?.[1] ?? null;
     walkthrough.markKnob(field, e.message);
     ui.run.disabled = true;
@@ -628,7 +630,10 @@ ui.fit.addEventListener('change', () => {
 document.addEventListener('keydown', (e) => {
   if (e.key !== 'Escape') return;
   if (!ui.inspect.hidden) walkthrough.closeInspect();
-  else fullRun();
+  else if (document.body.classList.contains('settings-open')) {
+    openSettings(false);
+    ui.settingsToggle.focus();
+  } else fullRun();
 });
 // An edit still being checked by the core must land before the run starts.
 ui.run.addEventListener('click', async () => {

@@ -21,12 +21,15 @@ const STYLE = {
   torque_hat: { stroke: '#ff7f0e' },
   innov_a: { stroke: '#9467bd' }, innov_band_a: BAND, nis: { stroke: '#9467bd' }, p_omega: { stroke: '#8c564b' },
   lyapunov: { stroke: '#d62728' }, lyapunov_bound: BAND,
+  load_hat: { stroke: '#ff7f0e' }, load: { stroke: '#1f77b4' }, load_band: BAND,
+  rr_hat: { stroke: '#ff7f0e' }, rr: { stroke: '#1f77b4' }, rr_band: BAND,
 };
 const CONSTANT = BAND;
 
-// Each plot: [column, label, axis, sign]; axis 'y2' puts a series on the right-hand scale, sign −1
-// draws the column negated (the lower half of a ±band). Later series are drawn on top, so the true
-// signals come after their estimates and stay visible.
+// Each plot: [column, label, axis, sign, about]; axis 'y2' puts a series on the right-hand scale,
+// sign −1 draws the column negated (the lower half of a ±band), and `about` adds the column to
+// another (an estimate ± its band). Later series are drawn on top, so the true signals come after
+// their estimates and stay visible.
 export const PLOTS = [
   {
     id: 'speed', title: 'Rotor speed', unit: 'rad/s',
@@ -158,7 +161,7 @@ export class Plots {
 
   /** The columns each plot needs, by plot id (the worker sends one envelope per plot). */
   groups() {
-    return Object.fromEntries(this.defs.map((p) => [p.id, [...new Set(p.series.map((s) => s[0]))]]));
+    return Object.fromEntries(this.defs.map((p) => [p.id, [...new Set(p.series.flatMap((s) => (s[4] ? [s[0], s[4]] : [s[0]])))]]));
   }
 
   title(plot) {
@@ -177,7 +180,7 @@ export class Plots {
     const k = this.scale;
     const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
     const axes = [
-      { label: 't (s)', ...font, size: 50 * k },
+      { label: 't (s)', ...font, size: 50 * k, space: 50 * k },
       { label: plot.unit, scale: 'y', ...font, size: 80 * k, values: tickLabels },
     ];
     if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80 * k, values: tickLabels });
@@ -316,7 +319,11 @@ export class Plots {
   data(plot, view) {
     const group = view.plots[plot.id];
     const t = group.t;
-    const rows = [t, ...plot.series.map(([col, , , sign]) => (sign === -1 ? group.columns[col].map((v) => -v) : group.columns[col]))];
+    const rows = [t, ...plot.series.map(([col, , , sign = 1, about]) => {
+      const values = group.columns[col];
+      if (about) return values.map((v, i) => group.columns[about][i] + sign * v);
+      return sign === -1 ? values.map((v) => -v) : values;
+    })];
     for (const value of this.constants(plot)) rows.push(new Float64Array(t.length).fill(value));
     return rows;
   }

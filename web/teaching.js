@@ -29,6 +29,7 @@ export const SECTIONS = [
       'The EKF estimates all five states from the measured currents and the applied voltages. It predicts with the model discretised by forward Euler (10), linearised by the Jacobian (11), and corrects with the innovation: the measured minus the predicted currents.',
       'Q (process noise, q·Ts·I) says how much the model is trusted; R (measurement noise, r_std²·I) how much the sensors are. The gain K_k enters the controller as the observer gain L = K_k/Ts of the general form (4): the estimation errors x̃ are what the controller must tolerate.',
       'A consistent filter has innovations inside their ±2σ band about 95 % of the time and a normalised innovation squared (NIS) averaging 2. The Euler predictor cannot follow 200 Hz currents: compare it with RK4 below.',
+      'Section 3.1 names a remedy it does not build: treat slowly varying quantities as extra states. The knob ekf.load adds a2 = T_L0/J as a random walk (the controller then uses â2 and its rate, the injection l_a·(x̃2, x̃3)); ekf.rr adds the rotor resistance (the controller’s a5, a7, a8, a10 follow R̂_r). The last two plots show both estimates with their ±2σ bands from P against the truth.',
     ],
     equations: [
       t`\hat x_{k|k-1} = \hat x_{k-1|k-1} + T_s f(\hat x_{k-1|k-1}, u_{k-1}),\qquad A_{k-1} = I + T_s \tfrac{\partial f}{\partial x}\Big|_{\hat x_{k-1|k-1}}`,
@@ -53,7 +54,17 @@ export const SECTIONS = [
       title: 'Flux modulus: true and estimated', unit: 'Wb',
       series: [['flux_hat', '|φ̂| estimated'], ['flux', '|φ| true']],
     },
-    knobs: ['ekf', 'ekf.q', 'ekf.r_std'],
+    // The remedies of Section 3.1: with ekf.load=1 or ekf.rr=1 the estimate moves, with its ±2σ
+    // band from P; otherwise it is the model's fixed value against the truth.
+    plot5: {
+      title: 'Load torque: estimate â2·J with its ±2σ band, and the truth', unit: 'N m',
+      series: [['load_band', 'T̂_L + 2σ', null, 1, 'load_hat'], ['load_band', 'T̂_L − 2σ', null, -1, 'load_hat'], ['load_hat', 'T̂_L estimated'], ['load', 'T_L true (T0 + step)']],
+    },
+    plot6: {
+      title: 'Rotor resistance: estimate with its ±2σ band, and the motor’s', unit: 'Ω',
+      series: [['rr_band', 'R̂_r + 2σ', null, 1, 'rr_hat'], ['rr_band', 'R̂_r − 2σ', null, -1, 'rr_hat'], ['rr_hat', 'R̂_r estimated'], ['rr', 'R_r of the motor']],
+    },
+    knobs: ['ekf', 'ekf.q', 'ekf.r_std', 'ekf.load', 'ekf.q_load', 'ekf.rr', 'ekf.q_rr'],
     compare: true,
   },
   {
@@ -197,6 +208,24 @@ export const LESSONS = [
     question: 'After the load step, where does the true speed end, where does the estimate end, and what is missing from this design to reject the load?',
     hint: 'Read “final speed error ω − ω_d” and “final speed-estimate error ω − ω̂”. The model (2) has the load only in a2 = T0/J, which the EKF holds fixed.',
     answer: 'The true speed ends about 11 rad/s below 50 rad/s while the estimate stays near the reference (ω − ω̂ ≈ −11 rad/s). The 5-state EKF explains the load’s effect on the currents with a wrong speed and flux, and the backstepping design has no integral action. The paper’s remedy (Section 3.1) is to add a2 to the observer’s state as a slowly varying parameter, with Q saying how fast it may change.',
+  },
+  {
+    preset: 'load-step-est',
+    title: 'The remedy: the load as an EKF state',
+    tab: 'walkthrough',
+    look: 'The same 2 N m step at 0.15 s, now with a2 = T_L0/J as a sixth EKF state (a random walk) and the controller using â2 and its rate. In section 2 of the walkthrough, the load-torque plot shows the estimate with its ±2σ band against the true load; compare the speed with the lesson “An unknown load step”.',
+    question: 'How far does the speed dip after the step, and what does the load estimate settle to? Why must the load be a state of the observer rather than a constant the controller is told?',
+    hint: 'Read the final speed error in the figures strip and the load-torque plot after 0.2 s. Think about what the currents can tell the filter about the torque balance a1(x3x4 − x2x5) − a2 − a3x1 = ω̇.',
+    answer: 'The speed dips by about 0.16 rad/s and is back within 0.05 rad/s after 6 ms; the load estimate settles at 2.50 N m (T0 = 0.5 plus the 2 N m step), its ±2σ band about ±0.35 N m. A constant a2 cannot follow an unknown change; as a state with process noise, the innovation drives â2 to whatever torque balance makes the predicted currents match the measured ones, and the controller feeds â2 (and dâ2/dt, its injection) forward. It works with the RK4 predictor: with the paper’s Euler predictor the extra state absorbs the predictor’s own error and the loop ends 3.4 rad/s low (try ekf=euler).',
+  },
+  {
+    preset: 'rr-mismatch-est',
+    title: 'The remedy: the rotor resistance as an EKF state, and when it can be seen',
+    tab: 'walkthrough',
+    look: 'The 10 % rotor-resistance mismatch again, now with R_r as an EKF state. Section 2 of the walkthrough plots R̂_r with its ±2σ band against the motor’s 5.445 Ω. Then set the loads to zero: plant.t0 = model.t0 = 0 and plant.cf = model.cf = 0 in the settings, and run again.',
+    question: 'With the load, where does R̂_r settle and what is left of the speed bias? Without any load or friction, what happens to R̂_r’s band, and why?',
+    hint: 'At zero slip the rotor flux turns with the stator field and no current flows in the rotor: what does R_r multiply in the model then?',
+    answer: 'With the preset’s load R̂_r settles within 1 % of 5.445 Ω and the speed bias falls from 5 rad/s to a few mrad/s. With no load and no friction the slip is zero, the rotor current is zero, and R_r (which multiplies rotor current terms) leaves no trace in the stator currents: R̂_r stays where the start-up left it and its band only grows. R_r is observable only with slip: load, acceleration or a flux transient.',
   },
   {
     preset: 'ifoc-step',

@@ -11,11 +11,45 @@ function el(tag, props = {}, children = []) {
   return e;
 }
 
-/** A KaTeX-rendered equation (our own TeX, never text from the URL). */
-export function tex(source, displayMode = true) {
-  const span = el('span', { className: 'equation' });
+function setAttributes(e, attributes) {
+  for (const [name, value] of Object.entries(attributes)) e.setAttribute(name, value);
+}
+
+/** A KaTeX-rendered equation (our own TeX, never text from the URL). `label`, if given, is its
+ * plain-text name for screen readers (a table header needs one: axe does not read MathML). */
+export function tex(source, displayMode = true, label = null) {
+  const span = el('span', { className: displayMode ? 'equation' : 'math' });
   katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
+  if (label) setAttributes(span.querySelector('.katex'), { role: 'math', 'aria-label': label });
   return span;
+}
+
+/** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */
+function plain(source) {
+  return source.replace(/\\hat ([a-z])/g, '$1\u0302').replace(/\\psi/g, 'ψ').replace(/\\omega/g, 'ω').replace(/\\cdot/g, '·')
+    .replace(/\\text\{([^}]*)\}/g, '$1').replace(/\\ /g, ' ').replace(/ - /g, ' − ').replace(/[_{}^]/g, '');
+}
+
+// A box that scrolls sideways (a long equation, a wide table) must be reachable from the keyboard
+// and named; one that fits stays out of the tab order, so the walkthrough does not gain a tab stop
+// per equation on a wide screen. Checked whenever a box changes size and when the tab is shown.
+function markScrollable(box) {
+  const scrolls = box.scrollWidth > box.clientWidth + 1;
+  if (scrolls === (box.getAttribute('role') === 'region')) return;
+  if (scrolls) {
+    setAttributes(box, { tabindex: '0', role: 'region', 'aria-label': box.dataset.label });
+  } else {
+    for (const name of ['tabindex', 'role', 'aria-label']) box.removeAttribute(name);
+  }
+}
+const scrollBoxes = new ResizeObserver((entries) => entries.forEach((e) => markScrollable(e.target)));
+
+/** Registers `box` as a sideways scroll box named `label`. */
+function scrollBox(box, label) {
+  box.dataset.label = label;
+  box.classList.add('scroll-box');
+  scrollBoxes.observe(box);
+  return box;
 }
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
@@ -25,7 +59,7 @@ const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
 function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
-    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3].filter(Boolean)) {
+    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6].filter(Boolean)) {
       const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
       defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id], backstepping: BACKSTEPPING.has(s.id) });
     }
@@ -63,6 +97,16 @@ export class Walkthrough {
    */
   constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing }) {
     Object.assign(this, { container, inspectBox, knob });
+    inspectBox.setAttribute('aria-labelledby', 'inspect-title');
+    // The plot last pressed or focused is the one an inspection comes from (a click, or the arrow
+    // keys on a focused plot): the sheet must not cover it.
+    this.lastPlot = null;
+    const remember = (e) => {
+      const plot = e.target instanceof Element ? e.target.closest('.plot') : null;
+      if (plot) this.lastPlot = plot;
+    };
+    document.addEventListener('pointerdown', remember, true);
+    document.addEventListener('focusin', remember, true);
     this.sectionDivs = {};
     this.nisBand = [0, 0];
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
@@ -76,14 +120,14 @@ export class Walkthrough {
     const div = el('section', { className: 'step', id: `section-${s.id}` });
     div.append(el('h2', { textContent: s.title }));
     for (const p of s.prose) div.append(el('p', { textContent: p }));
-    for (const e of s.equations) div.append(tex(e));
+    s.equations.forEach((e, i) => div.append(scrollBox(tex(e), `Equation ${i + 1} of section ${s.title}`)));
     if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
-    if (s.lumped) div.append(el('div', { className: 'lumped' }));
+    if (s.lumped) div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
     if (s.stability) div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
     if (s.compare) {
       const button = el('button', { type: 'button', className: 'compare', textContent: 'Compare Euler and RK4 predictors on this scenario' });
       button.addEventListener('click', onCompare);
-      div.append(button, el('div', { className: 'compare-result' }));
+      div.append(button, scrollBox(el('div', { className: 'compare-result' }), 'Euler and RK4 predictors compared'));
     }
     const knobs = el('div', { className: 'knobs' });
     knobs.dataset.keys = s.knobs.join(' ');
@@ -122,9 +166,9 @@ export class Walkthrough {
         else now.value = value.value;
       });
     }
-    const table = el('table', {}, [el('tr', {}, [el('th', { textContent: '' }), ...LUMPED.map((k) => el('th', { textContent: k }))])]);
+    const table = el('table', {}, [el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))])]);
     for (const which of ['plant', 'model']) {
-      table.append(el('tr', {}, [el('th', { textContent: which }), ...LUMPED.map((k) => {
+      table.append(el('tr', {}, [el('th', { scope: 'row', textContent: which }), ...LUMPED.map((k) => {
         const cell = el('td', { textContent: info[which][k].toPrecision(5) });
         if (info.plant[k] !== info.model[k]) cell.className = 'differs';
         return cell;
@@ -143,8 +187,9 @@ export class Walkthrough {
     report.textContent = stabilityText(stability);
   }
 
-  /** Draws the last run's plots if they are not drawn yet. */
+  /** Draws the last run's plots if they are not drawn yet (the walkthrough has just been shown). */
   draw() {
+    this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
     if (!this.pending) return;
     const view = this.pending;
     this.pending = null;
@@ -177,7 +222,11 @@ export class Walkthrough {
     const digits = Math.max(0, -Math.floor(Math.log10(ts)) + 1);
     const time = value.t.toFixed(digits).replace(/0+$/, '').replace(/\.$/, '');
     const close = el('button', { type: 'button', className: 'close', textContent: 'Close (Esc)' });
-    close.addEventListener('click', () => this.closeInspect());
+    close.setAttribute('aria-keyshortcuts', 'Escape');
+    close.addEventListener('click', () => {
+      this.closeInspect();
+      if (this.lastPlot?.offsetParent) this.lastPlot.focus({ preventScroll: true });
+    });
     const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
     const lines = snap.columns.map((c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
     copy.addEventListener('click', async () => {
@@ -189,7 +238,8 @@ export class Walkthrough {
         copy.textContent = 'Copy failed: select the table instead';
       }
     });
-    box.replaceChildren(close, copy, el('h3', { textContent: `Inspect sample k = ${snap.k}, t = ${time} s` }));
+    const title = el('h2', { id: 'inspect-title', textContent: `Inspect sample k = ${snap.k}, t = ${time} s` });
+    box.replaceChildren(el('div', { className: 'inspect-head' }, [title, copy, close]));
     box.dataset.t = String(value.t);
     const grid = el('div', { className: 'inspect-grid' });
     const head = () => el('tr', {}, ['term', 'value', 'unit', 'meaning'].map((h) => el('th', { scope: 'col', textContent: h })));
@@ -200,7 +250,7 @@ export class Walkthrough {
         const cell = el('td', { textContent: six(value[col]), title: `exact: ${exact(value[col])}` });
         cell.dataset.exact = exact(value[col]);
         const row = el('tr', {}, [
-          el('th', { scope: 'row' }, [tex(label, false)]),
+          el('th', { scope: 'row' }, [tex(label, false, plain(label))]),
           cell,
           el('td', { className: 'unit', textContent: unit }),
           el('td', { className: 'doc', textContent: meaning }),
@@ -214,19 +264,53 @@ export class Walkthrough {
       el('tr', {}, ['row', 'K·1', 'K·2', 'L·1', 'L·2'].map((h) => el('th', { scope: 'col', textContent: h })))]);
     snap.gain.forEach((row, i) => {
       gain.append(el('tr', {}, [
-        el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false)]),
+        el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false, `K${i + 1}·`)]),
         ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
         ...snap.l[i].map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
       ]));
     });
     grid.append(gain);
     box.append(grid);
+    const opening = box.hidden;
     box.hidden = false;
+    if (opening) box.scrollTop = 0;
+    this.reveal(this.lastPlot);
     this.onInspect?.(value.t);
+  }
+
+  /**
+   * Keeps `plot`, the plot the sample was picked on, in view above the sheet: caps the sheet at the
+   * room the plot leaves (but not under about ten lines), gives the page that much room at its end,
+   * and scrolls the plot into the space above the sheet. If the whole figure cannot fit, its title
+   * and canvas do.
+   */
+  reveal(plot) {
+    const box = this.inspectBox;
+    box.style.maxHeight = '';
+    const shown = plot?.isConnected && plot.offsetParent !== null;
+    const rem = parseFloat(getComputedStyle(document.documentElement).fontSize);
+    const gap = 0.5 * rem;
+    if (shown) {
+      const room = innerHeight - plot.getBoundingClientRect().height - 2 * gap;
+      const full = box.offsetHeight;
+      if (room < full) box.style.maxHeight = `${Math.max(room, Math.min(full, 10 * rem))}px`;
+    }
+    const height = box.offsetHeight;
+    document.documentElement.style.setProperty('--inspect-height', `${height}px`);
+    if (!shown) return;
+    const whole = plot.getBoundingClientRect();
+    const limit = innerHeight - height - gap;
+    const canvas = plot.querySelector('.u-wrap') ?? plot;
+    const bottom = whole.height <= limit - gap ? whole.bottom : canvas.getBoundingClientRect().bottom;
+    let dy = bottom > limit ? bottom - limit : 0;
+    if (whole.top - dy < gap) dy = whole.top - gap;
+    if (Math.abs(dy) >= 1) window.scrollBy(0, dy);
   }
 
   closeInspect() {
     this.inspectBox.hidden = true;
+    this.inspectBox.style.maxHeight = '';
+    document.documentElement.style.removeProperty('--inspect-height');
     this.onInspect?.(null);
   }
 
@@ -238,7 +322,9 @@ export class Walkthrough {
       rows.push([r.predictor, m.tracking_rms.toPrecision(3), m.speed_estimate_rms.toPrecision(3),
         m.flux_estimate_rms.toPrecision(3), m.mean_nis.toPrecision(3), `${m.saturated.toPrecision(3)} of samples`]);
     }
-    const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c) => el(i ? 'td' : 'th', { textContent: c })))));
+    // The first row names the columns, the first column the predictor.
+    const cell = (text, i, j) => (i === 0 || j === 0 ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text }) : el('td', { textContent: text }));
+    const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c, j) => cell(c, i, j)))));
     box.replaceChildren(
       el('p', { textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on.` }),
       table,

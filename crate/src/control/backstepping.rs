@@ -55,8 +55,6 @@ pub struct ControlInput {
     pub speed_ref: RefSample,
     /// Flux target ψ_d for x̂4² + x̂5² (Wb²); constant, so its derivatives are zero.
     pub psi_d: f64,
-    /// The parameters the observer estimates, when it estimates any (Section 3.1's remedies).
-    pub adapted: Option<Adapted>,
 }
 
 /// Parameters the observer adapts: the controller uses them in place of its model's.
@@ -154,11 +152,30 @@ impl Backstepping {
         Backstepping { model, gains }
     }
 
-    /// Computes every term and the voltage (54) for one sample.
+    /// Computes every term and the voltage (54) for one sample, with the model's parameters.
     pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
-        // With adapted parameters, the lumped parameters follow the estimates each sample; their
-        // own rates (dR̂_r/dt through a5, a7, a8, a10) are neglected in the derivatives below.
-        let p = &input.adapted.map_or(self.model, |a| a.model);
+        self.law(&self.model, None, input)
+    }
+
+    /// As [`Backstepping::control`], with the parameters the observer estimates (Section 3.1's
+    /// remedies). The lumped parameters follow the estimates each sample; their own rates
+    /// (dR̂_r/dt through a5, a7, a8, a10) are neglected in the derivatives.
+    pub fn control_adapted(
+        &self,
+        input: &ControlInput,
+        adapted: &Adapted,
+    ) -> Result<Terms, ControlError> {
+        self.law(&adapted.model, Some(adapted.d_a2), input)
+    }
+
+    /// The four steps with lumped parameters `p` and, when a2 is estimated, dâ2/dt.
+    #[inline(always)]
+    fn law(
+        &self,
+        p: &Lumped,
+        d_a2: Option<f64>,
+        input: &ControlInput,
+    ) -> Result<Terms, ControlError> {
         let g = &self.gains;
         let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
         let [x2, x3] = input.y;
@@ -184,8 +201,8 @@ impl Backstepping {
         // dv1/dt of eq (31) with its typos corrected (a3·ω̇_d, dâ2/dt = 0).
         let mut dv1 =
             -k1s1 * (-g.k1 * z1 + z2) - (l[0][0] * de2 + l[0][1] * de3) + r.d2 + p.a3 * r.d1;
-        if let Some(a) = input.adapted {
-            dv1 += a.d_a2;
+        if let Some(d) = d_a2 {
+            dv1 += d;
         }
 
         // Step 2, torque loop: eq (32) is ż2 = v2 + ψ2 − (a7 + a8) z2 + d̃2; the printed (32)

@@ -185,16 +185,28 @@ impl<const N: usize> Filter<N> {
         p
     }
 
+    /// `then` of the lumped parameters at `x`; the paper's filter passes its model unchanged
+    /// (no copy in the 20 kHz loop).
+    #[inline]
+    fn at<R>(&self, x: &SVector<f64, N>, then: impl FnOnce(&Lumped) -> R) -> R {
+        if N == 5 {
+            then(&self.model)
+        } else {
+            then(&self.lumped_at(x))
+        }
+    }
+
     /// f of the augmented model: (2) for the five states, zero for the random-walk parameters.
     #[inline]
     fn f(&self, x: &SVector<f64, N>, u: &Input) -> State {
-        model::f(&self.lumped_at(x), &five(x), u, 0.0)
+        self.at(x, |p| model::f(p, &five(x), u, 0.0))
     }
 
     /// Jacobian of the augmented model: (11), plus ∂f/∂a2 = −e1 and ∂f/∂R_r (model (2) is affine
     /// in R_r, so its column is exact).
+    #[inline]
     fn jacobian(&self, x: &SVector<f64, N>) -> SMatrix<f64, N, N> {
-        let a = model::jacobian(&self.lumped_at(x), &five(x));
+        let a = self.at(x, |p| model::jacobian(p, &five(x)));
         let mut m =
             SMatrix::<f64, N, N>::from_fn(|i, j| if i < 5 && j < 5 { a[i][j] } else { 0.0 });
         if let Some(k) = self.load_at {

@@ -316,7 +316,6 @@ impl Simulation {
                 residual: [0.0; 2],
                 speed_ref,
                 psi_d: s.psi_d,
-                adapted: None,
             }
         } else {
             ControlInput {
@@ -327,11 +326,13 @@ impl Simulation {
                 residual,
                 speed_ref,
                 psi_d: s.psi_d,
-                adapted,
             }
         };
         let vmax = s.voltage_limit;
-        let backstepping = self.controller.control(&input);
+        let backstepping = match &adapted {
+            Some(a) if !s.perfect => self.controller.control_adapted(&input, a),
+            _ => self.controller.control(&input),
+        };
         let (terms, u_cmd, omega_used) = match &mut self.ifoc {
             None => {
                 let terms = backstepping.map_err(|error| SimError::Control { t, error })?;
