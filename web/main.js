@@ -588,8 +588,10 @@ function showPins(scenarios, legends) {
 // A preset chosen with the mouse runs at once; one reached with the arrow keys runs when it is
 // committed (Enter, or leaving the picker), so stepping through the list starts no runs.
 let presetByKeyboard = false;
+// Keys that move through the list without choosing; Enter (also from the open list) chooses.
+const BROWSE = new Set(['ArrowUp', 'ArrowDown', 'ArrowLeft', 'ArrowRight', 'Home', 'End', 'PageUp', 'PageDown']);
 ui.preset.addEventListener('keydown', (e) => {
-  presetByKeyboard = true;
+  presetByKeyboard = BROWSE.has(e.key) || e.key.length === 1;
   if (e.key === 'Enter' && state.presetPending) commitPreset();
 });
 ui.preset.addEventListener('pointerdown', () => { presetByKeyboard = false; });
@@ -708,7 +710,7 @@ if (fragment('present') === '1') {
 
 ui.embed.addEventListener('click', async () => {
   const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=speed`;
-  const title = `IM Lab: ${presetNamed(state.info.encoded)}`;
+  const title = `IM Lab: ${presetNamed(state.info.encoded)}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
   const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="720" height="520" style="border:0" loading="lazy"></iframe>`;
   try {
     await navigator.clipboard.writeText(code);

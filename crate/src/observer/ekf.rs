@@ -98,6 +98,29 @@ pub struct Filter<const N: usize> {
 /// The paper's five-state EKF.
 pub type Ekf = Filter<5>;
 
+/// What the loop takes from the filter after one sample.
+#[derive(Clone, Copy, Debug)]
+pub struct Estimate {
+    /// Posterior estimate x̂_{k|k} of the five states.
+    pub x_hat: State,
+    /// Kalman gain K_k of the five states.
+    pub gain: [[f64; 2]; 5],
+    /// â2, its variance and its gain row, when the load is estimated.
+    pub load: Option<(f64, f64, [f64; 2])>,
+    /// R̂_r and its variance, when the rotor resistance is estimated.
+    pub rotor_resistance: Option<(f64, f64)>,
+    /// The lumped parameters at the estimate, when any parameter is estimated.
+    pub adapted_model: Option<Lumped>,
+    /// Posterior speed variance P_11.
+    pub p_omega: f64,
+    /// Innovation ỹ_k (A).
+    pub innovation: [f64; 2],
+    /// Innovation covariance [s11, s12, s22] (A²).
+    pub innovation_cov: [f64; 3],
+    /// Normalised innovation squared.
+    pub nis: f64,
+}
+
 /// A symmetric matrix from a function evaluated on the upper triangle only.
 #[inline]
 fn symmetric_from_upper<const N: usize>(f: impl Fn(usize, usize) -> f64) -> SMatrix<f64, N, N> {
@@ -321,6 +344,27 @@ impl<const N: usize> Filter<N> {
             a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
                 + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
         });
+    }
+
+    /// One sample: predict with u_{k−1} (none before the first sample), update with y_k, and
+    /// return what the loop uses of the posterior.
+    #[inline]
+    pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2]) -> Estimate {
+        if let Some(u) = u {
+            self.predict(u);
+        }
+        self.update(y);
+        Estimate {
+            x_hat: self.state(),
+            gain: self.gain(),
+            load: self.load(),
+            rotor_resistance: self.rotor_resistance(),
+            adapted_model: (N > 5).then(|| self.lumped()),
+            p_omega: self.p[(0, 0)],
+            innovation: self.innovation(),
+            innovation_cov: self.innovation_cov(),
+            nis: self.nis(),
+        }
     }
 
     /// Posterior estimate x̂_{k|k} of the five states.

@@ -285,23 +285,17 @@ impl Simulation {
         ];
         // 2–3. EKF predict with u_{k−1} (none before the first sample), then update with y_k.
         let u = self.u;
-        let first = self.k == 0;
-        with_filter!(&mut self.ekf, f => {
-            if !first {
-                f.predict(&u);
-            }
-            f.update(&y);
-        });
-        let x_hat = with_filter!(&self.ekf, f => f.state());
+        let previous = (self.k > 0).then_some(&u);
+        let estimate = with_filter!(&mut self.ekf, f => f.sample(previous, &y));
+        let x_hat = estimate.x_hat;
         check_state(t, &x_hat, ESTIMATE_NAMES)?;
-        let gain = with_filter!(&self.ekf, f => f.gain());
-        let load = with_filter!(&self.ekf, f => f.load());
-        let rotor_resistance = with_filter!(&self.ekf, f => f.rotor_resistance());
+        let gain = estimate.gain;
+        let (load, rotor_resistance) = (estimate.load, estimate.rotor_resistance);
         let residual = [y[0] - x_hat[1], y[1] - x_hat[2]];
         // The estimated parameters, when the observer has any: â2 with its rate l_a·(x̃2, x̃3)
         // (L = K/Ts), and the lumped parameters at R̂_r.
-        let adapted = (load.is_some() || rotor_resistance.is_some()).then(|| Adapted {
-            model: with_filter!(&self.ekf, f => f.lumped()),
+        let adapted = estimate.adapted_model.map(|model| Adapted {
+            model,
             d_a2: load.map_or(0.0, |(_, _, k)| {
                 (k[0] * residual[0] + k[1] * residual[1]) * self.rate
             }),
@@ -368,10 +362,10 @@ impl Simulation {
         let x = &self.x;
         let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
         let flux_sq_hat = x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4];
-        let p_omega = with_filter!(&self.ekf, f => f.covariance()[(0, 0)]);
-        let [innov_a, innov_b] = with_filter!(&self.ekf, f => f.innovation());
-        let [s_aa, s_ab, s_bb] = with_filter!(&self.ekf, f => f.innovation_cov());
-        let nis = with_filter!(&self.ekf, f => f.nis());
+        let p_omega = estimate.p_omega;
+        let [innov_a, innov_b] = estimate.innovation;
+        let [s_aa, s_ab, s_bb] = estimate.innovation_cov;
+        let nis = estimate.nis;
         let extra_load = if t >= s.load_step.time {
             s.load_step.torque
         } else {
