@@ -11,9 +11,11 @@ const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 function wasmCsv(scenario) {
   const sim = new Simulation(scenario);
   while (!sim.finished) sim.step(50_000);
-  const csv = sim.csv();
+  // In chunks of rows, as the page exports it.
+  const parts = [];
+  for (let start = 0; start < sim.rows; start += 20_000) parts.push(sim.csv_chunk(start, 20_000));
   sim.free();
-  return csv;
+  return Buffer.concat(parts).toString();
 }
 
 const scenarios = [

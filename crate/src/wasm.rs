@@ -152,13 +152,8 @@ impl Simulation {
         to_js(&sim::transient_end(&self.inner))
     }
 
-    /// The recorded trace as CSV, byte-identical to `imlab run`.
-    pub fn csv(&self) -> String {
-        self.inner.recorder().csv()
-    }
-
     /// Recorded rows `start..start + count` as CSV bytes (with the header when `start` is 0):
-    /// the chunks of a run, in order, concatenate to [`Simulation::csv`].
+    /// the chunks of a run, in order, concatenate to the CSV `imlab run` writes, byte for byte.
     pub fn csv_chunk(&self, start: u32, count: u32) -> Vec<u8> {
         let mut out = Vec::new();
         self.inner
