@@ -2,12 +2,13 @@
 //! "Integrated design of speed sensorless control algorithms for induction motors".
 //!
 //! Data flows one way: [`params`] → [`model`] (plant) → [`observer`] (EKF) → [`control`]
-//! (four backstepping steps) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
+//! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
 //! runs many simulations (frequency responses, seed sweeps).
 
 pub mod analysis;
 pub mod control;
+pub mod inverter;
 pub mod model;
 pub mod observer;
 pub mod params;

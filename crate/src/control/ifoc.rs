@@ -13,6 +13,10 @@
 //! - MRAS: both poles of its linearised loop at −α_m (see `observer::Mras`), with α_ω ≤ α_m/5 so
 //!   the speed loop sees the estimate as fast.
 //!
+//! - torque feedforward (`ifoc.ff`, off by default): i_q* gains (J·ω̇_d + T0 + C_f·ω_d)/K_t, the
+//!   torque the reference needs with the model's friction, as the backstepping's v1 feeds ω̇_d
+//!   forward. The speed PI then only corrects what the model does not predict.
+//!
 //! Defaults: α_c/2π = 1 kHz (1/20 of the sampling rate), α_m/2π = 50 Hz, α_ω/2π = 10 Hz. Faster
 //! MRAS and speed loops oscillate here: the high-pass that keeps the voltage model from drifting
 //! (corner 10 rad/s) slows the estimator's low-frequency response.
@@ -33,6 +37,8 @@ pub struct IfocTuning {
     pub mras_bw: f64,
     /// Limit on the q-axis current command (A).
     pub current_limit: f64,
+    /// Torque feedforward: the q-current for J·ω̇_d + T0 + Cf·ω_d added to the speed PI's.
+    pub ff: bool,
 }
 
 /// IFOC controller state.
@@ -50,6 +56,8 @@ pub struct Ifoc {
     kp_w: f64,
     ki_w: f64,
     i_max: f64,
+    /// J, T0 and Cf over the torque constant, when the torque is fed forward.
+    ff: Option<[f64; 3]>,
     mras: Mras,
     theta: f64,
     speed_integral: f64,
@@ -93,6 +101,9 @@ impl Ifoc {
             kp_w,
             ki_w: kp_w * alpha_w / 4.0,
             i_max: tuning.current_limit,
+            ff: tuning
+                .ff
+                .then(|| [model.j, model.t0, model.cf].map(|v| v / torque_constant)),
             mras: Mras::new(
                 lumped,
                 model.rs,
@@ -125,7 +136,11 @@ impl Ifoc {
         self.speed_hat = self.mras.update(i, u_prev);
         // Speed PI with the integrator frozen while the current command is limited.
         let e_w = speed_ref.value - self.speed_hat;
-        let iq_free = self.kp_w * e_w + self.ki_w * self.speed_integral;
+        let mut iq_free = self.kp_w * e_w + self.ki_w * self.speed_integral;
+        // The q-current for the torque J·ω̇_d + T0 + Cf·ω_d that the reference itself needs.
+        if let Some([j, t0, cf]) = self.ff {
+            iq_free += j * speed_ref.d1 + t0 + cf * speed_ref.value;
+        }
         let iq_ref = iq_free.clamp(-self.i_max, self.i_max);
         if iq_free == iq_ref {
             self.speed_integral += self.ts * e_w;

@@ -4,6 +4,7 @@
 use super::presets::default_reference;
 use super::{ControllerKind, Scenario, ScenarioError};
 use crate::control::Reference;
+use crate::inverter::Shape;
 use crate::observer::Predictor;
 use serde::Serialize;
 
@@ -101,7 +102,9 @@ pub struct FieldInfo {
     /// Current value as written in the codec, or None when it does not apply.
     pub value: Option<String>,
     /// Whether the field acts on this scenario (the page shows only those): the IFOC tuning only
-    /// with the IFOC controller, ε and h only with the robust terms on.
+    /// with the IFOC controller, ε and h only with the robust terms on, `vmax` only with the box
+    /// limit, `vdc` only with the circle or hex limit or PWM, `delay.comp` only with the delay and
+    /// the backstepping controller.
     pub acts: bool,
 }
 
@@ -115,6 +118,12 @@ fn acts(key: &str, s: &Scenario) -> bool {
         s.ekf.load
     } else if matches!(key, "ekf.q_rr" | "ekf.rr_std") {
         s.ekf.rr
+    } else if key == "vmax" {
+        s.drive.vlimit == Shape::Box
+    } else if key == "vdc" {
+        s.drive.vlimit != Shape::Box || s.drive.pwm
+    } else if key == "delay.comp" {
+        s.drive.delay && s.controller == ControllerKind::Backstepping
     } else {
         true
     }
@@ -325,6 +334,7 @@ fn table() -> Vec<Field> {
         number("ifoc.bw_w", "controller", "Hz", above(0.0, 1000.0), "IFOC speed-loop bandwidth", at!(ifoc.speed_bw)),
         number("ifoc.bw_mras", "controller", "Hz", above(0.0, 5000.0), "IFOC MRAS speed-estimator bandwidth", at!(ifoc.mras_bw)),
         number("ifoc.i_max", "controller", "A", above(0.0, 1000.0), "IFOC q-current limit", at!(ifoc.current_limit)),
+        number("ifoc.ff", "controller", "", whole(0.0, 1.0), "IFOC torque feedforward J·ω̇_d + T0 + Cf·ω_d (0/1)", flag!(ifoc.ff)),
         choice("ekf", "observer", "EKF predictor: euler (paper) or rk4", Access::Choice {
             options: &["euler", "rk4"],
             get: |s| match s.ekf.predictor { Predictor::Euler => "euler", Predictor::Rk4 => "rk4" },
@@ -354,6 +364,16 @@ fn table() -> Vec<Field> {
         number("duration", "limits", "s", above(0.0, MAX_DURATION), "simulated time", at!(duration)),
         number("ts", "limits", "s", closed(1e-7, 1e-2), "sampling period Ts", at!(ts)),
         number("substeps", "limits", "", whole(1.0, 1000.0), "plant RK4 substeps per sample", at!(substeps)),
+        number("i_rated", "limits", "A", above(0.0, 1e4), "rated current: amplitude |i_s| of the rated phase current", at!(i_rated)),
+        number("delay", "drive", "", whole(0.0, 1.0), "computation delay: u_k applied one sample later (0/1)", flag!(drive.delay)),
+        number("delay.comp", "drive", "", whole(0.0, 1.0), "delay compensation: control from the prediction x̂_{k+1|k} (0/1)", flag!(drive.delay_comp)),
+        choice("vlimit", "drive", "voltage limit: box (±vmax per component, the paper), circle (|u| ≤ vdc/√3) or hex (two-level inverter)", Access::Choice {
+            options: &["box", "circle", "hex"],
+            get: |s| match s.drive.vlimit { Shape::Box => "box", Shape::Circle => "circle", Shape::Hex => "hex" },
+            set: |s, name| s.drive.vlimit = match name { "circle" => Shape::Circle, "hex" => Shape::Hex, _ => Shape::Box },
+        }),
+        number("vdc", "drive", "V", above(0.0, 1e5), "DC-link voltage of the circle and hex limits and of PWM", at!(drive.vdc)),
+        number("pwm", "drive", "", whole(0.0, 1.0), "two-level inverter, symmetric PWM at the sampling rate (0/1; vlimit circle or hex)", flag!(drive.pwm)),
     ]);
     v
 }

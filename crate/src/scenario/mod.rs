@@ -12,6 +12,7 @@ pub use fields::{FieldInfo, MAX_DURATION};
 pub use presets::{preset, Preset, PRESETS};
 
 use crate::control::{Gains, IfocTuning, Reference};
+use crate::inverter::{Limit, Shape};
 use crate::observer::EkfConfig;
 use crate::params::{MotorParams, ParamError};
 use fields::{field, fields, Access};
@@ -35,6 +36,26 @@ pub struct LoadStep {
     pub time: f64,
     /// Extra load torque (N m); 0 means no step.
     pub torque: f64,
+}
+
+/// What a real drive adds between the controller and the motor, all off by default (the paper's
+/// idealised loop: u_k applied at t_k, ±vmax per component, ideal averaged voltages).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Drive {
+    /// Computation delay: u_k, computed from the sample at t_k, is applied over
+    /// [t_{k+1}, t_{k+2}), as on a DSP drive that updates its PWM once per period.
+    pub delay: bool,
+    /// Delay compensation (with `delay` and the backstepping controller): the controller acts on
+    /// the one-step prediction x̂_{k+1|k} made with the voltage already committed, and on the
+    /// reference at t_{k+1}.
+    pub delay_comp: bool,
+    /// Shape of the voltage limit.
+    pub vlimit: Shape,
+    /// DC-link voltage of the `circle` and `hex` limits and of PWM (V).
+    pub vdc: f64,
+    /// Two-level inverter with symmetric carrier-based PWM at the sampling rate, in place of the
+    /// ideal averaged voltage (needs the `circle` or `hex` limit).
+    pub pwm: bool,
 }
 
 /// Which controller drives the motor.
@@ -86,6 +107,11 @@ pub struct Scenario {
     pub load_step: LoadStep,
     /// Teaching switch: the controller gets the true state and L = 0.
     pub perfect: bool,
+    /// Delay, voltage limit and PWM of the drive.
+    pub drive: Drive,
+    /// Rated stator current of the motor: the amplitude of its rated phase current, which is
+    /// |i_s| at rated load in the amplitude-invariant a–b frame (A).
+    pub i_rated: f64,
 }
 
 /// Longest excerpt of user input quoted in a message (characters).
@@ -409,6 +435,14 @@ impl Scenario {
                 }
             }
         }
+        if self.drive.pwm && self.drive.vlimit == Shape::Box {
+            return Err(ScenarioError::OutOfRange {
+                key: "pwm".to_string(),
+                value: 1.0,
+                allowed: "pwm=1 with vlimit=circle or hex: a two-level inverter cannot make the box's corners"
+                    .to_string(),
+            });
+        }
         for (which, p) in [("plant", &self.plant), ("model", &self.model)] {
             p.lumped()
                 .map_err(|error| ScenarioError::Physics { which, error })?;
@@ -433,6 +467,15 @@ impl Scenario {
             });
         }
         Ok(())
+    }
+
+    /// The inverter's voltage limit.
+    pub fn limit(&self) -> Limit {
+        Limit {
+            shape: self.drive.vlimit,
+            vmax: self.voltage_limit,
+            vdc: self.drive.vdc,
+        }
     }
 
     /// Number of samples simulated: round(duration / ts).

@@ -1,7 +1,8 @@
 //! The presets: the paper's figures and the scenarios the lessons use, each a [`Scenario`].
 
-use super::{ControllerKind, LoadStep, Scenario};
+use super::{ControllerKind, Drive, LoadStep, Scenario};
 use crate::control::{Gains, IfocTuning, Reference};
+use crate::inverter::Shape;
 use crate::observer::{EkfConfig, Predictor};
 use crate::params::MotorParams;
 use std::f64::consts::PI;
@@ -42,6 +43,14 @@ const RR_Q: f64 = 0.1;
 /// Initial standard deviation of the rotor resistance (Ω): 10 % of the paper's 4.95 Ω.
 const RR_STD: f64 = 0.5;
 
+/// Rated current of the paper's motor, as the amplitude |i_s| of its rated phase current (A);
+/// the paper gives no rating. At ψ_d = 0.5 Wb² the magnetising current is |φ_r|/M = 1.35 A, and
+/// the torque per q-current is (3/2)·n_p·(M/L_r)·|φ_r| = 2.06 N m/A. A 4-pole motor of these
+/// parameters is of the 1.1–1.5 kW class (the estimate of issue 12), whose rated torque at about
+/// 1430 rpm is 7.3–10 N m: i_q = 3.6–4.9 A and |i_s| = 3.8–5.1 A. 4 A (2.8 A rms per phase)
+/// gives 7.7 N m, 1.16 kW at 1430 rpm, at the low end of that class.
+pub(super) const I_RATED: f64 = 4.0;
+
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
     Scenario {
         preset: name.to_string(),
@@ -55,6 +64,7 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
             speed_bw: 10.0,
             mras_bw: 50.0,
             current_limit: 20.0,
+            ff: false,
         },
         gains: Gains {
             k1: 1200.0,
@@ -90,6 +100,14 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
             torque: 0.0,
         },
         perfect: false,
+        drive: Drive {
+            delay: false,
+            delay_comp: false,
+            vlimit: Shape::Box,
+            vdc: 540.0,
+            pwm: false,
+        },
+        i_rated: I_RATED,
     }
 }
 

@@ -223,11 +223,11 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
             &format!("from the step at {}", time_text(time)),
         );
     }
-    let vmax = s.voltage_limit;
+    let limit = s.limit();
     push(
         "saturated_share",
         "share of samples at the voltage limit",
-        w.iter().filter(|r| is_saturated(r, vmax)).count() as f64 / n,
+        w.iter().filter(|r| is_saturated(r, &limit)).count() as f64 / n,
         "",
         &in_w,
     );

@@ -10,6 +10,7 @@ pub use figures::{figures, transient_end, Figure, Transient};
 pub use recorder::{Recorder, Row, COLUMNS, COLUMN_DOCS, NUM_COLUMNS};
 
 use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
+use crate::inverter::{self, Limit};
 use crate::model::{self, Input, State};
 use crate::observer::Filter;
 use crate::params::Lumped;
@@ -124,12 +125,19 @@ pub struct Simulation {
     scenario: Scenario,
     plant: Lumped,
     controller: Backstepping,
+    /// The lumped parameters the controller assumes, for the delay compensation's prediction.
+    model: Lumped,
+    /// The inverter's voltage limit.
+    limit: Limit,
     /// The IFOC baseline, when the scenario selects it.
     ifoc: Option<Ifoc>,
     ekf: Observer,
     rng: Rng,
     x: State,
+    /// The voltage applied over the last sample, [t_{k−1}, t_k).
     u: Input,
+    /// With the computation delay: the voltage committed for the next sample, [t_k, t_{k+1}).
+    pending: Input,
     k: usize,
     steps: usize,
     recorder: Recorder,
@@ -138,9 +146,9 @@ pub struct Simulation {
     rate: f64,
 }
 
-/// Whether a commanded voltage component of `row` is beyond the limit `vmax` (V).
-fn is_saturated(row: &Row, vmax: f64) -> bool {
-    row.u_a_cmd.abs() > vmax || row.u_b_cmd.abs() > vmax
+/// Whether the commanded voltage of `row` is beyond the inverter's limit.
+fn is_saturated(row: &Row, limit: &Limit) -> bool {
+    limit.exceeds(&[row.u_a_cmd, row.u_b_cmd])
 }
 
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
@@ -237,11 +245,14 @@ impl Simulation {
             scenario: scenario.clone(),
             plant,
             controller: Backstepping::new(model, scenario.gains),
+            model,
+            limit: scenario.limit(),
             ifoc,
             ekf,
             rng: Rng::new(scenario.seed),
             x: x0,
             u: [0.0; 2],
+            pending: [0.0; 2],
             k: 0,
             steps,
             recorder: Recorder::with_capacity(rows, every),
@@ -273,7 +284,8 @@ impl Simulation {
         self.advance(usize::MAX).map(|_| ())
     }
 
-    /// One sample k, in the loop order of the design: measure, predict, update, control, clip, hold.
+    /// One sample k, in the loop order of the design: measure, predict, update, control, limit,
+    /// hold (one sample later with the computation delay).
     fn step(&mut self) -> Result<(), SimError> {
         let s = &self.scenario;
         let ts = s.ts;
@@ -302,11 +314,32 @@ impl Simulation {
         });
         // 4. Controller from the posterior, the measured currents, L = K/Ts and the posterior residual.
         let speed_ref = s.reference.sample(t);
-        let input = if s.perfect {
+        let l = if s.perfect {
+            [[0.0; 2]; 5]
+        } else {
+            // L = K/Ts, eq (20), as a product with 1/Ts (ten divisions per sample are slow).
+            gain.map(|row| row.map(|k| k * self.rate))
+        };
+        let input = if s.drive.delay && s.drive.delay_comp && self.ifoc.is_none() {
+            // Delay compensation: u_k acts from t_{k+1}, so control the one-step prediction
+            // x̂_{k+1|k} under the voltage committed for [t_k, t_{k+1}), towards ω_d(t_{k+1}).
+            // The prediction's currents stand in for the measurement, with a zero residual.
+            let known = if s.perfect { self.x } else { x_hat };
+            let model = adapted.as_ref().map_or(&self.model, |a| &a.model);
+            let x_next = model::advance(model, &known, &self.pending, 0.0, ts, s.substeps);
+            ControlInput {
+                x_hat: x_next,
+                y: [x_next[1], x_next[2]],
+                l,
+                residual: [0.0; 2],
+                speed_ref: s.reference.sample((self.k + 1) as f64 * ts),
+                psi_d: s.psi_d,
+            }
+        } else if s.perfect {
             ControlInput {
                 x_hat: self.x,
                 y: [self.x[1], self.x[2]],
-                l: [[0.0; 2]; 5],
+                l,
                 residual: [0.0; 2],
                 speed_ref,
                 psi_d: s.psi_d,
@@ -315,14 +348,12 @@ impl Simulation {
             ControlInput {
                 x_hat,
                 y,
-                // L = K/Ts, eq (20), as a product with 1/Ts (ten divisions per sample are slow).
-                l: gain.map(|row| row.map(|k| k * self.rate)),
+                l,
                 residual,
                 speed_ref,
                 psi_d: s.psi_d,
             }
         };
-        let vmax = s.voltage_limit;
         let backstepping = match &adapted {
             Some(a) if !s.perfect => self.controller.control_adapted(&input, a),
             _ => self.controller.control(&input),
@@ -335,7 +366,7 @@ impl Simulation {
             // The baseline drives the motor; the backstepping terms are evaluated from the EKF
             // for comparison only (zero where its decoupling matrix is singular).
             Some(ifoc) => {
-                let u = ifoc.control(&y, &self.u, &speed_ref, vmax);
+                let u = ifoc.control(&y, &self.u, &speed_ref, self.limit.radius());
                 let w = ifoc.speed_estimate();
                 if w.is_nan() || w.abs() > MAX_SPEED {
                     return Err(SimError::Diverged {
@@ -356,8 +387,36 @@ impl Simulation {
                 });
             }
         }
-        // 5. Clip each component to the voltage limit.
-        self.u = u_cmd.map(|v| v.clamp(-vmax, vmax));
+        // 5. The inverter's limit; with the computation delay, the result waits one sample.
+        let u_out = self.limit.apply(&u_cmd);
+        self.u = if s.drive.delay {
+            std::mem::replace(&mut self.pending, u_out)
+        } else {
+            u_out
+        };
+        // 6. Hold u over [t_k, t_k + Ts), averaged or switched; the unknown load step acts from
+        // its time on.
+        let extra_load = if t >= s.load_step.time {
+            s.load_step.torque
+        } else {
+            0.0
+        };
+        let deceleration = extra_load / self.plant.j;
+        let (x_next, ripple) = if s.drive.pwm {
+            let vdc = s.drive.vdc;
+            inverter::advance(
+                &self.plant,
+                &self.x,
+                &self.u,
+                vdc,
+                deceleration,
+                ts,
+                s.substeps,
+            )
+        } else {
+            let x = model::advance(&self.plant, &self.x, &self.u, deceleration, ts, s.substeps);
+            (x, 0.0)
+        };
 
         let x = &self.x;
         let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
@@ -366,11 +425,6 @@ impl Simulation {
         let [innov_a, innov_b] = estimate.innovation;
         let [s_aa, s_ab, s_bb] = estimate.innovation_cov;
         let nis = estimate.nis;
-        let extra_load = if t >= s.load_step.time {
-            s.load_step.torque
-        } else {
-            0.0
-        };
         let j_model = s.model.j;
         let recorded = self.recorder.record(|| Row {
             t,
@@ -435,14 +489,12 @@ impl Simulation {
             load_band: load.map_or(0.0, |(_, var, _)| 2.0 * var.sqrt() * j_model),
             rr: s.plant.rr,
             rr_band: rotor_resistance.map_or(0.0, |(_, var)| 2.0 * var.sqrt()),
+            i_ripple: ripple,
         });
         if let Err((column, value)) = recorded {
             return Err(SimError::NotFinite { t, column, value });
         }
-
-        // 6. Hold u_k over [t_k, t_k + Ts); the unknown load step acts from its time on.
-        let extra_load = extra_load / self.plant.j;
-        self.x = model::advance(&self.plant, &self.x, &self.u, extra_load, ts, s.substeps);
+        self.x = x_next;
         check_state(t + ts, &self.x, PLANT_NAMES)
     }
 
@@ -491,12 +543,12 @@ impl Simulation {
     pub fn stability(&self) -> Option<Stability> {
         let bound = self.lyapunov_bound()?;
         let rows = self.recorder.rows();
-        let vmax = self.scenario.voltage_limit;
+        let limit = self.limit;
         let outside: Vec<&Row> = rows
             .iter()
             .filter(|r| r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE)
             .collect();
-        let saturated = |r: &Row| is_saturated(r, vmax);
+        let saturated = |r: &Row| is_saturated(r, &limit);
         let outside_saturated = outside.iter().filter(|r| saturated(r)).count();
         // Most likely reason: saturation when most samples above the bound had the limit active;
         // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
@@ -554,7 +606,7 @@ impl Simulation {
         }
         let rms =
             |f: &dyn Fn(&Row) -> f64| (tail.iter().map(|r| f(r) * f(r)).sum::<f64>() / n).sqrt();
-        let vmax = self.scenario.voltage_limit;
+        let limit = self.limit;
         Some(Metrics {
             from: tail[0].t,
             tracking_rms: rms(&|r| r.omega_err),
@@ -562,7 +614,7 @@ impl Simulation {
             speed_estimate_rms: rms(&|r| r.omega_est_err),
             flux_estimate_rms: rms(&|r| r.flux_est_err),
             mean_nis: tail.iter().map(|r| r.nis).sum::<f64>() / n,
-            saturated: tail.iter().filter(|r| is_saturated(r, vmax)).count() as f64 / n,
+            saturated: tail.iter().filter(|r| is_saturated(r, &limit)).count() as f64 / n,
         })
     }
 }

@@ -164,6 +164,9 @@ define_row! {
     rr,
     /// 2σ band of the rotor-resistance estimate from P (Ω); 0 when it is not estimated.
     rr_band,
+    /// PWM current ripple over [t_k, t_k + Ts): the largest distance of i_s at a switching
+    /// instant from the straight line between its values at t_k and t_k + Ts (A); 0 without PWM.
+    i_ripple,
 }
 
 /// The recorded trace: one `Row` per kept sample, so that recording is a single copy; sample k
