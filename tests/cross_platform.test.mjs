@@ -22,6 +22,8 @@ const scenarios = [
   ...presets().map((p) => p.name),
   'v=1&preset=step&ekf=rk4&seed=123456789&noise=0.01&substeps=3',
   'v=1&preset=ramp&plant.rr=5.5&load.torque=1&load.time=0.2&robust=1&h2=5&h4=5',
+  'v=1&preset=sine200-1rad&duration=0.05&vlimit=circle&vdc=600&delay=1&delay.comp=1&ekf.load=1',
+  'v=1&preset=ifoc-step&ifoc.ff=1&delay=1&vlimit=hex&pwm=1&substeps=2',
 ];
 
 for (const s of scenarios) {

@@ -393,8 +393,12 @@ function showFigures(figures) {
     return `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`;
   };
   const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
-  const items = figures.filter((f) => !['mean_nis_low', 'mean_nis_high'].includes(f.name)).map((f) => {
+  const rated = figures.find((f) => f.name === 'current_rated');
+  const items = figures.filter((f) => !['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)).map((f) => {
     let text = fmt(f);
+    if (rated && ['current_peak', 'current_rms'].includes(f.name)) {
+      text += ` (${Number((f.value / rated.value).toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
+    }
     if (f.name === 'mean_nis' && 'mean_nis_low' in nis) {
       const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
       text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;

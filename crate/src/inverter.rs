@@ -4,7 +4,8 @@
 //!
 //! Voltages are in the stationary a–b frame of model (2), amplitude-invariant: a phase voltage of
 //! peak V gives |u| = V. A two-level inverter on a DC link v_dc reaches the hexagon with vertices
-//! at 2v_dc/3; the circle inscribed in it, |u| ≤ v_dc/√3, is its linear range.
+//! at 2v_dc/3; the circle inscribed in it, |u| ≤ v_dc/√3, is its linear range. Only correctly
+//! rounded operations are used (no `hypot`), so native and WASM runs stay bit-identical.
 
 use crate::model::{self, Input, State};
 use crate::params::Lumped;
@@ -49,7 +50,7 @@ impl Limit {
     fn reach(&self, u: &Input) -> f64 {
         match self.shape {
             Shape::Box => u[0].abs().max(u[1].abs()) / self.vmax,
-            Shape::Circle => u[0].hypot(u[1]) * SQRT3 / self.vdc,
+            Shape::Circle => (u[0] * u[0] + u[1] * u[1]).sqrt() * SQRT3 / self.vdc,
             Shape::Hex => {
                 let v = phases(u);
                 (v[0].max(v[1]).max(v[2]) - v[0].min(v[1]).min(v[2])) / self.vdc
@@ -165,7 +166,8 @@ pub fn advance(
     let ripple = at.iter().fold(0.0_f64, |worst, (t, i)| {
         let s = t / ts;
         let line = [i0[0] + s * (i1[0] - i0[0]), i0[1] + s * (i1[1] - i0[1])];
-        worst.max((i[0] - line[0]).hypot(i[1] - line[1]))
+        let d = [i[0] - line[0], i[1] - line[1]];
+        worst.max((d[0] * d[0] + d[1] * d[1]).sqrt())
     });
     (x, ripple)
 }

@@ -77,6 +77,8 @@ fn step_figures_show_the_filter_settling_and_a_consistent_ekf() {
             ("mean_nis_low", ""),
             ("mean_nis_high", ""),
             ("current_peak", "A"),
+            ("current_rms", "A"),
+            ("current_rated", "A"),
             ("flux_error_final", "Wb"),
             ("speed_error_final", "rad/s"),
             ("speed_estimate_error_final", "rad/s"),

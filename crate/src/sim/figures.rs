@@ -77,7 +77,8 @@ pub fn transient_end(sim: &Simulation) -> Transient {
 /// The figures of `sim` over the samples recorded so far (see [`Figure`]), in this order:
 /// `transient_end`, `tracking_rms`, `tracking_peak`, `settling_time` (step references only),
 /// `saturated_share`, `mean_nis`, `mean_nis_low`, `mean_nis_high`, `current_peak`,
-/// `flux_error_final`, `speed_error_final`, `speed_estimate_error_final`. The window figures
+/// `current_rms`, `current_rated` (peak and RMS of |i_s| against the rating), `ripple_peak` and
+/// `ripple_rms` (with PWM only), `flux_error_final`, `speed_error_final`, `speed_estimate_error_final`. The window figures
 /// cover W = [transient end, last recorded sample]. A figure whose value is not finite is left
 /// out. None when nothing is recorded.
 pub fn figures(sim: &Simulation) -> Option<Vec<Figure>> {
@@ -254,6 +255,37 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
         "A",
         &in_w,
     );
+    let current_rms = mean(&|r| r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt();
+    push(
+        "current_rms",
+        "RMS stator current |i_s|",
+        current_rms,
+        "A",
+        &in_w,
+    );
+    push(
+        "current_rated",
+        "rated current |i_s| (i_rated)",
+        s.i_rated,
+        "A",
+        &"the motor's rating".to_string(),
+    );
+    if s.drive.pwm {
+        push(
+            "ripple_peak",
+            "peak PWM current ripple",
+            peak(&|r| r.i_ripple),
+            "A",
+            &in_w,
+        );
+        push(
+            "ripple_rms",
+            "RMS of the PWM current ripple",
+            mean(&|r| r.i_ripple * r.i_ripple).sqrt(),
+            "A",
+            &in_w,
+        );
+    }
     push(
         "flux_error_final",
         "final flux error |φ_r| − √ψ_d",
