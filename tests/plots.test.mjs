@@ -134,7 +134,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
     const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
-    assert.equal(lessons.length, 9);
+    assert.equal(lessons.length, 10);
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
     for (const [i, preset] of lessons.entries()) {
       await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `v=1&preset=${preset}`);

@@ -94,3 +94,28 @@ test('the load-estimation lesson runs and its walkthrough plot shows the load es
     assert.ok(Math.abs(series.estimate - 2.5) < 0.1, `load estimate ${series.estimate} N m`);
     assert.ok(series.upper > series.estimate, 'band above the estimate');
   }));
+
+test('the real-drive lesson runs with PWM, shows the ripple and the current against the rating, and its delay compensation re-runs', () =>
+  withPage('v=1&preset=step', async (page) => {
+    await page.click('[role=tab][data-tab=lessons]');
+    const n = await page.evaluate(() => [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /real drive/.test(l.textContent)));
+    assert.ok(n >= 0, 'lesson listed');
+    await page.click(`text=Start lesson ${n + 1}`);
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=sine200-drive' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    const figure = (name) => page.evaluate((k) => {
+      const item = document.querySelector(`#figures [data-name=${k}]`);
+      return item && { value: Number(item.dataset.value), text: item.textContent };
+    }, name);
+    const ripple = await figure('ripple_peak');
+    assert.ok(ripple.value > 0 && ripple.value < 0.5, `ripple ${ripple.value} A`);
+    const current = await figure('current_peak');
+    assert.match(current.text, /× the rated 4 A/);
+    const rmsDelayed = (await figure('tracking_rms')).value;
+    // The Drive group offers the compensation; ticking it and running gives the compensated run.
+    if (await page.isVisible('#settings-toggle')) await page.click('#settings-toggle');
+    await page.click('details[data-group=drive] > summary');
+    await page.check('#field-delay\\.comp');
+    await page.click('#run');
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=sine200-drive&delay.comp=1' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    assert.notEqual((await figure('tracking_rms')).value, rmsDelayed);
+  }));

@@ -10,7 +10,8 @@ const GROUPS = {
   plant: 'Plant: the simulated motor',
   model: 'Model: what the EKF and controller assume',
   load: 'Unknown load step',
-  limits: 'Voltage limit, duration and timing',
+  limits: 'Voltage limit (box), rating, duration and timing',
+  drive: 'Drive: computation delay, inverter limit and PWM',
 };
 const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 
