@@ -52,7 +52,7 @@ const plots = new Plots(ui.plots, PLOTS, {
   onPick: (t) => requestInspect(t),
   sampleTime,
   framing,
-  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * Number(fieldValue(state.info, 'vmax'))) : []),
+  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * componentLimit()) : []),
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
@@ -383,6 +383,18 @@ function showTab(name) {
   if (name === 'walkthrough') walkthrough.draw();
   walkthrough.plots.resize();
   walkthrough.closeInspect();
+}
+
+/**
+ * The largest value one voltage component can take under the scenario's limit, for the voltage
+ * plot's limit lines: vmax for the box, v_dc/√3 for the circle, and the hexagon's vertex 2v_dc/3
+ * for the hexagon (reached along the a axis only; elsewhere the hexagon is tighter).
+ */
+function componentLimit() {
+  const shape = fieldValue(state.info, 'vlimit');
+  if (shape === 'box' || shape === null) return Number(fieldValue(state.info, 'vmax'));
+  const vdc = Number(fieldValue(state.info, 'vdc'));
+  return shape === 'circle' ? vdc / Math.sqrt(3) : (2 * vdc) / 3;
 }
 
 /** The figures strip: each figure of the run with its unit and window (all from the core). */

@@ -366,7 +366,7 @@ fn table() -> Vec<Field> {
         number("substeps", "limits", "", whole(1.0, 1000.0), "plant RK4 substeps per sample", at!(substeps)),
         number("i_rated", "limits", "A", above(0.0, 1e4), "rated current: amplitude |i_s| of the rated phase current", at!(i_rated)),
         number("delay", "drive", "", whole(0.0, 1.0), "computation delay: u_k applied one sample later (0/1)", flag!(drive.delay)),
-        number("delay.comp", "drive", "", whole(0.0, 1.0), "delay compensation: control from the prediction x̂_{k+1|k} (0/1)", flag!(drive.delay_comp)),
+        number("delay.comp", "drive", "", whole(0.0, 1.0), "delay compensation: control from the one-step prediction x̂(k+1|k) (0/1)", flag!(drive.delay_comp)),
         choice("vlimit", "drive", "voltage limit: box (±vmax per component, the paper), circle (|u| ≤ vdc/√3) or hex (two-level inverter)", Access::Choice {
             options: &["box", "circle", "hex"],
             get: |s| match s.drive.vlimit { Shape::Box => "box", Shape::Circle => "circle", Shape::Hex => "hex" },
