@@ -50,12 +50,28 @@ test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
     const expected = execFileSync(cli, ['sweep', 'v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
     assert.equal(parallel, expected);
     assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 2);
-    // The IFOC variant's bandwidth is read off by the core and shown.
-    assert.match(await page.textContent('#sweep-table tr[data-variant=ifoc]'), /Hz|not reached/);
+    // The IFOC at standstill never settles in 0.2 s runs (its MRAS is blind near zero speed), so
+    // the core gives no bandwidth for it.
+    assert.match(await page.textContent('#sweep-table tr[data-variant=ifoc] td:nth-child(2)'), /^not given: it would rest on a point that had not settled$/);
     await page.fill('#sweep-form [name=workers]', '1');
     await page.click('#sweep-run');
     await page.waitForFunction(() => document.getElementById('sweep-status').textContent.includes('on 1 worker.'));
     assert.equal(await download(page, '#sweep-csv'), parallel);
+  }));
+
+test('points that had not settled are drawn hollow, listed with the reason, and give no bandwidth', () =>
+  // 0.2 s runs end while the IFOC still rings from its start (crate/tests/sweep.rs).
+  withPage('?v=1&preset=ifoc-step#sweep=300,480,2,0.02,40,0.2,ifoc', async (page) => {
+    assert.equal(await sweepDone(page), 'done');
+    const cells = await page.locator('#sweep-table tr[data-variant=ifoc] td').allTextContents();
+    assert.equal(cells[1], 'not given: it would rest on a point that had not settled');
+    assert.equal(cells[5], '2: 300.0 Hz, 480.0 Hz');
+    const reasons = await page.locator('#bode .sweep-unsettled li').allTextContents();
+    assert.equal(reasons.length, 2);
+    for (const r of reasons) assert.match(r, /^Classical IFOC \+ MRAS, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/);
+    // Each Bode plot has a series of hollow markers for them.
+    assert.equal(await page.locator('#bode .u-legend', { hasText: 'Classical IFOC + MRAS, not settled' }).count(), 2);
+    assert.match(await download(page, '#sweep-csv'), /\n# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=2\n$/);
   }));
 
 test('Cancel stops a sweep midway', () =>

@@ -150,11 +150,17 @@ export function formatSweep(s) {
   return [s.lo, s.hi, s.n, s.amp, s.offset, s.duration, s.variants.join('.')].join(',');
 }
 
+/**
+ * Bode plot of `series` ([label, color, values, dash, unsettled]); a series of unsettled points
+ * is drawn as hollow markers without a line.
+ */
 function bodePlot(title, unit, freqs, series, width, marker) {
   const opts = {
     title, width, height: 280,
     scales: { x: { time: false, distr: 3, log: 10 } },
-    series: [{ label: 'f (Hz)' }, ...series.map(([label, color, , dash]) => ({ label, stroke: color, dash, width: 2, points: { show: true } }))],
+    series: [{ label: 'f (Hz)' }, ...series.map(([label, color, , dash, unsettled]) => (unsettled
+      ? { label, stroke: color, width: 2, paths: () => null, points: { show: true, size: 10, fill: '#fff' } }
+      : { label, stroke: color, dash, width: 2, points: { show: true } }))],
     axes: [{ label: 'f (Hz)' }, { label: unit, size: 70 }],
   };
   const data = [freqs, ...series.map((s) => s[2])];
@@ -199,27 +205,43 @@ export class Analysis {
   showSweep(out, bodeBox, table) {
     const variants = Object.keys(out);
     const freqs = out[variants[0]].points.map((p) => p.freq);
-    // Failed points are gaps (null), never drawn.
-    const column = (v, key) => out[v].points.map((p) => (p.failure ? null : p[key]));
+    // Failed points are gaps (null), never drawn; unsettled points are drawn apart, as hollow
+    // markers, and left out of the line.
+    const column = (v, key, unsettled) => out[v].points.map((p) => (p.failure || Boolean(p.unsettled) !== unsettled ? null : p[key]));
+    const flagged = variants.flatMap((v) => out[v].points.filter((p) => p.unsettled).map((p) => [v, p]));
     bodeBox.replaceChildren();
+    if (flagged.length) {
+      bodeBox.append(el('details', { className: 'sweep-unsettled' }, [
+        el('summary', { textContent: `${flagged.length} point${flagged.length > 1 ? 's' : ''} had not settled (hollow markers): the bandwidth and the phase at 200 Hz are never read off them. Longer runs may settle them.` }),
+        el('ul', {}, flagged.map(([v, p]) => el('li', { textContent: `${VARIANTS[v].label}, ${p.freq.toPrecision(4)} Hz: ${p.unsettled}` }))),
+      ]));
+    }
     const width = Math.max(400, bodeBox.clientWidth - 10);
     // Dashed lines for variants drawn on top of others, so overlapping curves stay visible.
     const dash = { rk4: [6, 4], perfect: [2, 3] };
     for (const [title, unit, key, marker] of [['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]], ['Phase of ω against ω_d', 'degrees', 'phase', null]]) {
-      const series = variants.map((v) => [VARIANTS[v].label, COLORS[v], column(v, key), dash[v]]);
+      const series = variants.flatMap((v) => [
+        [VARIANTS[v].label, COLORS[v], column(v, key, false), dash[v]],
+        ...(out[v].summary.unsettled ? [[`${VARIANTS[v].label}, not settled`, COLORS[v], column(v, key, true), null, true]] : []),
+      ]);
       const [opts, data] = bodePlot(title, unit, freqs, series, width, marker);
       const div = el('div', { className: 'plot' });
       bodeBox.append(div);
       new uPlot(opts, data, div);
     }
-    const fmt = (x, unit) => (x == null ? 'not reached in the grid' : `${x.toPrecision(4)} ${unit}`);
-    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points'].map((h) => el('th', { textContent: h }))));
+    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points', 'unsettled points'].map((h) => el('th', { textContent: h }))));
     for (const v of variants) {
       const { points, summary } = out[v];
+      const fmt = (x, unit, missing) => (x == null ? missing : `${x.toPrecision(4)} ${unit}`);
       const worst = Math.max(...points.map((p) => (p.failure ? 0 : p.saturated)));
-      const bandwidth = summary.below_grid ? 'below the lowest frequency' : fmt(summary.bandwidth, 'Hz');
-      const row = el('tr', {}, [VARIANTS[v].label, bandwidth, fmt(summary.phase_at_200, '°'),
-        `${worst.toPrecision(3)} of samples`, String(points.filter((p) => p.failure).length)].map((c) => el('td', { textContent: c })));
+      const bandwidth = summary.bandwidth_unsettled ? 'not given: it would rest on a point that had not settled'
+        : summary.below_grid ? 'below the lowest frequency' : fmt(summary.bandwidth, 'Hz', 'not reached in the grid');
+      // The phase is interpolated between settled points only.
+      const phase = fmt(summary.phase_at_200, '°', summary.unsettled ? 'not reached by the settled points' : 'not reached in the grid');
+      const unsettled = points.filter((p) => p.unsettled).map((p) => `${p.freq.toPrecision(4)} Hz`);
+      const row = el('tr', {}, [VARIANTS[v].label, bandwidth, phase,
+        `${worst.toPrecision(3)} of samples`, String(points.filter((p) => p.failure).length),
+        unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0'].map((c) => el('td', { textContent: c })));
       row.dataset.variant = v;
       table.append(row);
     }

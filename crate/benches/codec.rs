@@ -1,8 +1,13 @@
-//! Scenario parsing time against input length: linear up to the 16 KiB cap, and a 1 MB input
-//! refused at once. Prints microseconds per parse (best of many), strict and lenient.
+//! Scenario parsing time against input length, with criterion: linear up to the 16 KiB cap, and a
+//! 1 MB input refused at once. Strict (`Scenario::parse`) and lenient (`parse_lenient`) parsers;
+//! criterion's throughput is input bytes per second.
+//!
+//! Run with `cargo bench --bench codec`; one parser with `cargo bench --bench codec -- lenient`.
 
+use criterion::{BenchmarkId, Criterion, Throughput};
 use imlab::scenario::{Scenario, MAX_SCENARIO_BYTES};
-use std::time::{Duration, Instant};
+use std::hint::black_box;
+use std::time::Duration;
 
 /// `v=1&preset=step` followed by distinct unknown keys up to `bytes` long: every piece is looked
 /// up, and the lenient parser keeps going past each one.
@@ -17,33 +22,28 @@ fn input(bytes: usize) -> String {
     text
 }
 
-/// Best wall time of `f` over at least 0.3 s of repeats (µs).
-fn best(mut f: impl FnMut()) -> f64 {
-    let (begin, mut best) = (Instant::now(), f64::INFINITY);
-    while begin.elapsed() < Duration::from_millis(300) {
-        let t = Instant::now();
-        f();
-        best = best.min(t.elapsed().as_secs_f64() * 1e6);
-    }
-    best
-}
-
-fn main() {
-    println!(
-        "{:>10} {:>12} {:>12} {:>14}",
-        "bytes", "strict µs", "lenient µs", "lenient ns/B"
-    );
+fn parse(c: &mut Criterion) {
+    let mut group = c.benchmark_group("codec");
+    group
+        .sample_size(20)
+        .warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_secs(1));
     for bytes in [1 << 10, 4 << 10, MAX_SCENARIO_BYTES, 1 << 20] {
         let text = input(bytes);
-        let strict = best(|| {
-            std::hint::black_box(Scenario::parse(&text).is_ok());
+        group.throughput(Throughput::Bytes(bytes as u64));
+        group.bench_with_input(BenchmarkId::new("strict", bytes), &text, |b, text| {
+            b.iter(|| Scenario::parse(black_box(text)).is_ok());
         });
-        let lenient = best(|| {
-            std::hint::black_box(Scenario::parse_lenient(&text).is_ok());
+        group.bench_with_input(BenchmarkId::new("lenient", bytes), &text, |b, text| {
+            b.iter(|| Scenario::parse_lenient(black_box(text)).is_ok());
         });
-        println!(
-            "{bytes:>10} {strict:>12.1} {lenient:>12.1} {:>14.1}",
-            lenient * 1e3 / bytes as f64
-        );
     }
+    group.finish();
+}
+
+// A plain main rather than `criterion_group!`, whose generated function has no doc comment.
+fn main() {
+    let mut c = Criterion::default().without_plots().configure_from_args();
+    parse(&mut c);
+    c.final_summary();
 }

@@ -13,7 +13,8 @@ use std::f64::consts::PI;
 pub struct SweepSettings {
     /// Amplitude of the sinusoidal speed reference (rad/s).
     pub amp: f64,
-    /// Length of each run (s); the fit uses the whole periods in its second half.
+    /// Length of each run (s); the fit uses the whole periods in its second half, and the
+    /// settling check the last whole periods of the run.
     pub duration: f64,
     /// Operating speed the sine rides on (rad/s).
     pub offset: f64,
@@ -49,7 +50,21 @@ pub struct SweepPoint {
     pub saturated: f64,
     /// Why the run stopped early, if it did (the other figures are then NaN).
     pub failure: Option<String>,
+    /// Change of |ω|/|ω_d| from the first to the second half of the settling check (dB).
+    pub gain_change_db: f64,
+    /// Change of the phase of ω over the same halves (degrees, in [−180, 180]).
+    pub phase_change: f64,
+    /// Why the run is not taken to have reached a periodic steady state, if it is not; such a
+    /// point is never used for the bandwidth or the phase at 200 Hz.
+    pub unsettled: Option<String>,
 }
+
+/// Largest half-to-half change of the gain of ω (dB) and of its phase (degrees) of a settled
+/// point: a 5 % change of the response, twice the largest that noise and slow drift give in runs
+/// that settle (0.19 dB, 1.2°), and half the least of IFOC runs too short to settle (0.84 dB).
+pub const SETTLED_GAIN_DB: f64 = 0.4;
+/// See [`SETTLED_GAIN_DB`] (degrees).
+pub const SETTLED_PHASE_DEG: f64 = 3.0;
 
 /// `count` log-spaced frequencies from `lo` to `hi` (Hz), after checking the request.
 pub fn checked_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, String> {
@@ -123,7 +138,18 @@ fn lag_degrees(phase: f64) -> f64 {
     d
 }
 
-/// Runs `base` with the reference amp·sin(2π·freq·t) and fits the fundamentals of ω and ω̂.
+/// Gain and phase (radians) of the fundamental of `signal` relative to that of ω_d.
+fn response(rows: &[Row], w: f64, signal: impl Fn(&Row) -> f64) -> (f64, f64) {
+    // The offset is constant and orthogonal to the fundamental over whole periods.
+    let (ref_amp, ref_phase) = fundamental(rows, w, |r| r.omega_ref);
+    let (amp, phase) = fundamental(rows, w, signal);
+    (amp / ref_amp, phase - ref_phase)
+}
+
+/// Runs `base` with the reference amp·sin(2π·freq·t), fits the fundamentals of ω and ω̂ over the
+/// whole periods in the second half of the run, and checks that ω has settled: its fundamental
+/// over the last k whole periods must match the one over the k before them, with k half the
+/// periods of the fit window but at least one (the check then reaches into the first half).
 pub fn sweep_point(
     base: &Scenario,
     freq: f64,
@@ -168,12 +194,15 @@ pub fn sweep_point(
     let mut sim = Simulation::new(&s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
     let rows = sim.recorder().rows();
-    let start = settings.duration - periods / freq;
-    let window: Vec<Row> = rows
-        .iter()
-        .filter(|r| r.t >= start - 0.5 * s.ts)
-        .copied()
-        .collect();
+    // The index of the first row at or after time t.
+    let at = |t: f64| rows.partition_point(|r| r.t < t - 0.5 * s.ts);
+    let period = 1.0 / freq;
+    let window = &rows[at(settings.duration - periods * period)..];
+    let k = (periods / 2.0).floor().max(1.0);
+    let halves = [
+        &rows[at(settings.duration - 2.0 * k * period)..at(settings.duration - k * period)],
+        &rows[at(settings.duration - k * period)..],
+    ];
     if failure.is_some() || window.is_empty() {
         return Ok(SweepPoint {
             freq,
@@ -184,13 +213,21 @@ pub fn sweep_point(
             phase_hat: f64::NAN,
             saturated: f64::NAN,
             failure: failure.or(Some("nothing recorded in the fit window".to_string())),
+            gain_change_db: f64::NAN,
+            phase_change: f64::NAN,
+            unsettled: None,
         });
     }
     let w = 2.0 * PI * freq;
-    // The offset is constant and orthogonal to the fundamental over whole periods.
-    let (ref_amp, ref_phase) = fundamental(&window, w, |r| r.omega_ref);
-    let (amp, phase) = fundamental(&window, w, |r| r.omega);
-    let (amp_hat, phase_hat) = fundamental(&window, w, |r| r.omega_used);
+    let (gain, phase) = response(window, w, |r| r.omega);
+    let (gain_hat, phase_hat) = response(window, w, |r| r.omega_used);
+    // ω only: at high frequencies the fundamental of the IFOC's MRAS estimate is buried in its
+    // noise, so its halves differ by up to 5 dB and 30° even in runs where ω has long settled.
+    let [(g1, p1), (g2, p2)] = halves.map(|h| response(h, w, |r| r.omega));
+    let gain_change_db = 20.0 * libm::log10(g2 / g1);
+    let phase_change = libm::remainder((p2 - p1) * 180.0 / PI, 360.0);
+    let settled =
+        gain_change_db.abs() <= SETTLED_GAIN_DB && phase_change.abs() <= SETTLED_PHASE_DEG;
     let vmax = s.voltage_limit;
     let saturated = rows
         .iter()
@@ -199,38 +236,63 @@ pub fn sweep_point(
         / rows.len() as f64;
     Ok(SweepPoint {
         freq,
-        gain: amp / ref_amp,
-        gain_db: 20.0 * libm::log10(amp / ref_amp),
-        phase: lag_degrees(phase - ref_phase),
-        gain_hat: amp_hat / ref_amp,
-        phase_hat: lag_degrees(phase_hat - ref_phase),
+        gain,
+        gain_db: 20.0 * libm::log10(gain),
+        phase: lag_degrees(phase),
+        gain_hat,
+        phase_hat: lag_degrees(phase_hat),
         saturated,
         failure: None,
+        gain_change_db,
+        phase_change,
+        unsettled: (!settled).then(|| {
+            format!(
+                "not settled: over the last {} periods, from the first half to the second, the \
+                 gain of ω changed {gain_change_db:+.2} dB and its phase {phase_change:+.1}° \
+                 (settled: within ±{SETTLED_GAIN_DB} dB and ±{SETTLED_PHASE_DEG}°)",
+                2.0 * k
+            )
+        }),
     })
 }
 
-/// The sweep as CSV: one line per frequency, then a `#` line with the summary.
+/// The sweep as CSV: one line per frequency, then a `#` line with the summary. `settled` is
+/// false for a failed run too.
 pub fn sweep_csv(points: &[SweepPoint]) -> String {
-    let mut out =
-        String::from("freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure\n");
+    let mut out = String::from(
+        "freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure,\
+         settled,gain_change_db,phase_change_deg\n",
+    );
     for p in points {
         let failure = p.failure.as_deref().unwrap_or("").replace(',', ";");
         out += &format!(
-            "{},{},{},{},{},{},{},{failure}\n",
-            p.freq, p.gain, p.gain_db, p.phase, p.gain_hat, p.phase_hat, p.saturated
+            "{},{},{},{},{},{},{},{failure},{},{},{}\n",
+            p.freq,
+            p.gain,
+            p.gain_db,
+            p.phase,
+            p.gain_hat,
+            p.phase_hat,
+            p.saturated,
+            p.failure.is_none() && p.unsettled.is_none(),
+            p.gain_change_db,
+            p.phase_change
         );
     }
     let s = summarise(points);
     let show = |v: Option<f64>| v.map_or("none".to_string(), |v| v.to_string());
-    let bandwidth = if s.below_grid {
+    let bandwidth = if s.bandwidth_unsettled {
+        "unsettled".to_string()
+    } else if s.below_grid {
         "below_lowest_frequency".to_string()
     } else {
         show(s.bandwidth)
     };
     out += &format!(
-        "# bandwidth_hz={} phase_at_200hz_deg={}\n",
+        "# bandwidth_hz={} phase_at_200hz_deg={} unsettled={}\n",
         bandwidth,
-        show(s.phase_at_200)
+        show(s.phase_at_200),
+        s.unsettled
     );
     out
 }
@@ -248,15 +310,19 @@ pub fn seeds_csv(results: &[SeedResult]) -> String {
     out
 }
 
-/// Figures read off a measured frequency response.
+/// Figures read off a measured frequency response; none rests on a point that had not settled.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SweepSummary {
     /// First frequency where the gain falls below 1/√2, interpolated in log frequency (Hz).
     pub bandwidth: Option<f64>,
     /// The gain is already below 1/√2 at the lowest frequency measured.
     pub below_grid: bool,
-    /// Phase of ω at 200 Hz, interpolated in log frequency (degrees).
+    /// The bandwidth reading rests on an unsettled point, so none is given.
+    pub bandwidth_unsettled: bool,
+    /// Phase of ω at 200 Hz, interpolated in log frequency between settled points (degrees).
     pub phase_at_200: Option<f64>,
+    /// Completed points that had not settled.
+    pub unsettled: usize,
 }
 
 fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
@@ -264,7 +330,10 @@ fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
     libm::exp(libm::log(f0) + u * (libm::log(f1) - libm::log(f0)))
 }
 
-/// The −3 dB bandwidth and the phase at 200 Hz of sweep points sorted by frequency.
+/// The −3 dB bandwidth and the phase at 200 Hz of sweep points. The first fall below 1/√2 is
+/// sought over every completed point; the reading rests on the two points it lies between (the
+/// lowest point if the gain starts below, the highest if it never falls) and is withheld if one of
+/// them has not settled. The phase is interpolated between settled points only.
 pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
     let cutoff = std::f64::consts::FRAC_1_SQRT_2;
     // Only completed points, in increasing frequency, one per frequency.
@@ -274,15 +343,27 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
         .collect();
     points.sort_by(|a, b| a.freq.total_cmp(&b.freq));
     points.dedup_by(|a, b| a.freq == b.freq);
-    let below_grid = points.first().is_some_and(|p| p.gain < cutoff);
-    let mut bandwidth = None;
-    for pair in points.windows(2) {
-        let (p, q) = (pair[0], pair[1]);
-        if p.gain >= cutoff && q.gain < cutoff {
-            bandwidth = Some(interpolate_log(p.freq, q.freq, p.gain, q.gain, cutoff));
-            break;
+    let settled = |p: &SweepPoint| p.unsettled.is_none();
+    let fall = points.iter().position(|p| p.gain < cutoff);
+    let rests_on = match fall {
+        Some(i) => &points[i.saturating_sub(1)..=i],
+        None => &points[points.len().saturating_sub(1)..],
+    };
+    let bandwidth_unsettled = !rests_on.iter().all(|p| settled(p));
+    let (bandwidth, below_grid) = match fall {
+        _ if bandwidth_unsettled => (None, false),
+        Some(0) => (None, true),
+        Some(i) => {
+            let (p, q) = (points[i - 1], points[i]);
+            (
+                Some(interpolate_log(p.freq, q.freq, p.gain, q.gain, cutoff)),
+                false,
+            )
         }
-    }
+        None => (None, false),
+    };
+    let unsettled = points.iter().filter(|p| !settled(p)).count();
+    points.retain(|p| settled(p));
     let phase_at_200 = points
         .windows(2)
         .find(|w| w[0].freq <= 200.0 && w[1].freq >= 200.0)
@@ -294,7 +375,9 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
     SweepSummary {
         bandwidth,
         below_grid,
+        bandwidth_unsettled,
         phase_at_200,
+        unsettled,
     }
 }
 
@@ -521,7 +604,55 @@ mod tests {
             phase_hat: phase,
             saturated: 0.0,
             failure: None,
+            gain_change_db: 0.0,
+            phase_change: 0.0,
+            unsettled: None,
         }
+    }
+
+    fn unsettled(freq: f64, gain: f64, phase: f64) -> SweepPoint {
+        SweepPoint {
+            unsettled: Some("not settled".to_string()),
+            ..point(freq, gain, phase)
+        }
+    }
+
+    #[test]
+    fn summary_gives_no_reading_that_rests_on_an_unsettled_point() {
+        let c = std::f64::consts::FRAC_1_SQRT_2;
+        let (above, below) = (c + 0.1, c - 0.3);
+        // The gain falls between a settled and an unsettled point, either way round.
+        for pts in [
+            [point(100.0, above, -30.0), unsettled(400.0, below, -90.0)],
+            [unsettled(100.0, above, -30.0), point(400.0, below, -90.0)],
+        ] {
+            let s = summarise(&pts);
+            assert!(s.bandwidth_unsettled && s.bandwidth.is_none() && !s.below_grid);
+            assert_eq!((s.unsettled, s.phase_at_200), (1, None));
+            assert!(sweep_csv(&pts)
+                .ends_with("# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=1\n"));
+        }
+        // Below at the lowest point, or never below up to the highest: that point decides.
+        assert!(
+            summarise(&[unsettled(10.0, 0.5, -60.0), point(20.0, 0.3, -80.0)]).bandwidth_unsettled
+        );
+        assert!(summarise(&[point(10.0, 1.0, 0.0), unsettled(20.0, 0.9, 0.0)]).bandwidth_unsettled);
+        // Unsettled points away from the fall do not stop the reading.
+        let s = summarise(&[
+            unsettled(50.0, 1.0, 0.0),
+            point(100.0, above, -30.0),
+            point(400.0, below, -90.0),
+            unsettled(800.0, 0.1, -180.0),
+        ]);
+        assert!(s.bandwidth.is_some() && !s.bandwidth_unsettled && s.unsettled == 2);
+        // The phase at 200 Hz is interpolated between the settled points around an unsettled one.
+        let s = summarise(&[
+            point(100.0, 1.0, -30.0),
+            unsettled(200.0, 1.0, 0.0),
+            point(400.0, 1.0, -90.0),
+        ]);
+        assert!(s.bandwidth.is_none() && !s.bandwidth_unsettled);
+        assert!((s.phase_at_200.unwrap() + 60.0).abs() < 1e-9);
     }
 
     #[test]

@@ -320,6 +320,60 @@ fn a_diverged_run_writes_its_trace_then_exits_2() {
 }
 
 #[test]
+fn sweep_marks_points_that_had_not_settled_in_the_csv_its_summary_and_on_stderr() {
+    // IFOC runs of the default 0.2 s still ring from the start (see tests/sweep.rs); 3 s settle.
+    let short = output(["sweep", "ifoc-step", "--offset", "40", "--freqs", "300,480"]);
+    let long = output([
+        "sweep",
+        "ifoc-step",
+        "--offset",
+        "40",
+        "--freqs",
+        "300,480",
+        "--amp",
+        "0.05",
+        "--duration",
+        "3",
+    ]);
+    for (out, settled, summary, warned) in [
+        (
+            short,
+            "false",
+            "# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=2",
+            true,
+        ),
+        (
+            long,
+            "true",
+            "# bandwidth_hz=below_lowest_frequency phase_at_200hz_deg=none unsettled=0",
+            false,
+        ),
+    ] {
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{stderr}");
+        let csv = String::from_utf8(out.stdout).unwrap();
+        let lines: Vec<&str> = csv.lines().collect();
+        assert_eq!(
+            lines[0],
+            "freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure,\
+             settled,gain_change_db,phase_change_deg",
+        );
+        for line in &lines[1..3] {
+            let fields: Vec<&str> = line.split(',').collect();
+            assert_eq!(fields.len(), 11, "{line}");
+            assert_eq!(fields[8], settled, "{line}");
+            assert!(fields[9].parse::<f64>().unwrap().is_finite(), "{line}");
+        }
+        assert_eq!(lines[3..], [summary]);
+        assert_eq!(
+            stderr.contains("imlab sweep: 2 of 2 points had not settled"),
+            warned,
+            "{stderr}"
+        );
+    }
+}
+
+#[test]
 fn sweep_and_seeds_write_the_library_csv_byte_for_byte() {
     let step = Scenario::parse("step").unwrap();
     let settings = SweepSettings {

@@ -1,40 +1,75 @@
-// Browser benchmark: prints the time of a full sine200 run (worker compute, transfer and first
-// plot), the in-browser closed-loop speed and the WASM size. Run with `make bench`.
+// Browser benchmark: the time of a full sine200 run (worker compute, transfer and first plot),
+// the in-browser closed-loop speed (first run after load, 5 s runs, 1 s runs), a parameter
+// sweep and the WASM size. Run with `make bench` (or `node tests/bench/browser.mjs` after
+// `make dist`).
+//
+// The run figures are the median (min–max) of BENCH_REPS (default 5) repetitions, each in a
+// fresh browser context, so that each has its own first run after load; within a repetition a
+// warm figure is the best of a few runs.
 import { statSync } from 'node:fs';
 import { serve, launch, newPage, settled, runAgain } from '../browser.mjs';
+
+const REPS = Number(process.env.BENCH_REPS ?? 5);
+if (!Number.isInteger(REPS) || REPS < 1) throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
 
 const server = await serve();
 const browser = await launch();
 const errors = [];
-const page = await newPage(browser, errors);
-
-async function run(query) {
-  await page.goto(`${server.url}?${query}`);
-  await settled(page);
-  return page.evaluate(() => ({ ...document.body.dataset }));
-}
-
-
-const first = await run('v=1&preset=sine200');
-const warm = [];
-for (let i = 0; i < 5; i++) warm.push(Number((await runAgain(page)).runMs));
-console.log(`sine200 (5,000 steps) run → plotted: first ${Number(first.runMs).toFixed(1)} ms (compute ${first.computeMs} ms, plotting ${first.plotMs} ms), warm median ${warm.sort((a, b) => a - b)[2].toFixed(1)} ms`);
 
 const rate = (r) => Number(r.rows) / (Number(r.computeMs) / 1000);
-const describeRate = (label, r) =>
-  console.log(`${label}: ${(rate(r) / 1e6).toFixed(2)} M steps/s (${(rate(r) * 50e-6).toFixed(0)}× real time), ${r.rows} steps in ${Number(r.computeMs).toFixed(1)} ms; run → plot ${Number(r.runMs).toFixed(0)} ms`);
-describeRate('closed loop in the browser, first run after load', await run('v=1&preset=ramp&duration=5'));
-const runs = [];
-for (let i = 0; i < 3; i++) runs.push(await runAgain(page));
-runs.sort((a, b) => rate(b) - rate(a));
-describeRate('closed loop in the browser, best of 3 further runs', runs[0]);
-// Same length as the Node benchmark (tests/bench/node.mjs): 1 s runs of `ramp`.
-await run('v=1&preset=ramp&duration=1');
-const short = [];
-for (let i = 0; i < 10; i++) short.push(await runAgain(page));
-short.sort((a, b) => rate(b) - rate(a));
-describeRate('closed loop in the browser, best of 10 runs of 1 s', short[0]);
+const best = (runs) => runs.reduce((a, b) => (rate(b) > rate(a) ? b : a));
 
+/** One repetition in a fresh context: every figure of one page load. */
+async function repetition() {
+  const page = await newPage(browser, errors);
+  async function run(query) {
+    await page.goto(`${server.url}?${query}`);
+    await settled(page);
+    return page.evaluate(() => ({ ...document.body.dataset }));
+  }
+  const out = {};
+  const first = await run('v=1&preset=sine200');
+  out.sineFirst = Number(first.runMs);
+  out.sineCompute = Number(first.computeMs);
+  out.sinePlot = Number(first.plotMs);
+  const warm = [];
+  for (let i = 0; i < 5; i++) warm.push(Number((await runAgain(page)).runMs));
+  out.sineWarm = warm.sort((a, b) => a - b)[2];
+  const long = await run('v=1&preset=ramp&duration=5');
+  out.longFirst = rate(long);
+  out.longFirstRunMs = Number(long.runMs);
+  const runs = [];
+  for (let i = 0; i < 3; i++) runs.push(await runAgain(page));
+  out.long = rate(best(runs));
+  out.longRunMs = Number(best(runs).runMs);
+  // Same length as the Node benchmark (tests/bench/node.mjs): 1 s runs of `ramp`.
+  await run('v=1&preset=ramp&duration=1');
+  const short = [];
+  for (let i = 0; i < 10; i++) short.push(await runAgain(page));
+  out.short = rate(best(short));
+  await page.context().close();
+  return out;
+}
+
+const reps = [];
+for (let r = 0; r < REPS; r++) reps.push(await repetition());
+
+/** `key` of every repetition as "median (min–max)" with `digits` decimals, scaled by `scale`. */
+function spread(key, digits = 1, scale = 1) {
+  const s = reps.map((x) => x[key] * scale).sort((a, b) => a - b);
+  const mid = s.length >> 1;
+  const med = s.length % 2 ? s[mid] : (s[mid - 1] + s[mid]) / 2;
+  return `${med.toFixed(digits)} (${s[0].toFixed(digits)}–${s.at(-1).toFixed(digits)})`;
+}
+const steps = (key) => `${spread(key, 2, 1e-6)} M steps/s`;
+
+console.log(`Chromium, median (min–max) of ${REPS} page loads:`);
+console.log(`  sine200 (5,000 steps) run → plotted: first run after load ${spread('sineFirst')} ms (compute ${spread('sineCompute')} ms, plotting ${spread('sinePlot')} ms); warm (median of 5) ${spread('sineWarm')} ms`);
+console.log(`  closed loop, ramp 5 s, first run after load: ${steps('longFirst')}; run → plot ${spread('longFirstRunMs', 0)} ms`);
+console.log(`  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`);
+console.log(`  closed loop, ramp 1 s, best of 10 runs: ${steps('short')}`);
+
+const page = await newPage(browser, errors);
 await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
 await settled(page);
 await page.waitForFunction(() => document.body.dataset.sweep === 'done', null, { timeout: 60_000 });
@@ -42,7 +77,7 @@ const sweepFirst = await page.evaluate(() => Number(document.body.dataset.sweepM
 await page.click('#sweep-run');
 await page.waitForFunction((ms) => document.body.dataset.sweep === 'done' && Number(document.body.dataset.sweepMs) !== ms, sweepFirst, { timeout: 60_000 });
 const sweepAgain = await page.evaluate(() => Number(document.body.dataset.sweepMs));
-console.log(`20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`);
+console.log(`  20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`);
 
 const wasm = statSync(new URL('../../dist/pkg/imlab_bg.wasm', import.meta.url)).size;
 console.log(`WASM binary: ${(wasm / 1024).toFixed(1)} KiB (${wasm} bytes, uncompressed)`);

@@ -2,7 +2,9 @@
 
 use clap::error::{ContextKind, ContextValue};
 use clap::{Args, Parser, Subcommand};
-use imlab::analysis::{checked_grid, seed_run, seeds_csv, sweep_csv, sweep_point, SweepSettings};
+use imlab::analysis::{
+    checked_grid, seed_run, seeds_csv, summarise, sweep_csv, sweep_point, SweepSettings,
+};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::{figures, Figure, Simulation};
 use std::fmt;
@@ -390,7 +392,8 @@ fn write_figures(list: &[Figure], out: &mut impl Write) -> io::Result<()> {
     Ok(())
 }
 
-/// Measures the response at each frequency, with progress on stderr, and writes it as CSV.
+/// Measures the response at each frequency, with progress and a count of the unsettled points on
+/// stderr, and writes it as CSV.
 fn sweep(
     s: &Scenario,
     freqs: &[f64],
@@ -412,6 +415,14 @@ fn sweep(
     // Ends the progress line, so that an error message starts a line of its own.
     to_stderr(format_args!("\n"));
     let points = points.map_err(|e| e.to_string())?;
+    let unsettled = summarise(&points).unsettled;
+    if unsettled > 0 {
+        to_stderr(format_args!(
+            "imlab sweep: {unsettled} of {} points had not settled (settled = false); no \
+             bandwidth or phase is interpolated from them. Longer runs (--duration) may settle.\n",
+            points.len()
+        ));
+    }
     out.write_all(sweep_csv(&points).as_bytes())
         .map_err(stdout_stop)
 }

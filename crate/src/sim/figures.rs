@@ -565,6 +565,8 @@ mod tests {
                 "mean_nis_low",
                 "mean_nis_high",
                 "current_peak",
+                "current_rms",
+                "current_rated",
                 "flux_error_final",
                 "speed_error_final",
                 "speed_estimate_error_final"
@@ -579,6 +581,9 @@ mod tests {
         assert!((value(&f, "mean_nis").unwrap() - 31.0 / 15.0).abs() < 1e-15);
         assert_eq!(value(&f, "mean_nis_low"), Some(mean_nis_band(15).0));
         assert_eq!(value(&f, "current_peak"), Some(5.0));
+        // |i_s|² is 9 on 14 samples and 25 on one.
+        assert!((value(&f, "current_rms").unwrap() - (151.0f64 / 15.0).sqrt()).abs() < 1e-15);
+        assert_eq!(value(&f, "current_rated"), Some(s.i_rated));
         assert!((value(&f, "flux_error_final").unwrap() - 0.2).abs() < 1e-15);
         assert_eq!(value(&f, "speed_error_final"), Some(-0.3));
         assert_eq!(value(&f, "speed_estimate_error_final"), Some(0.25));
