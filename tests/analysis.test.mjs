@@ -44,15 +44,15 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
 });
 
 test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
-  withPage('?v=1&preset=step#sweep=10,1000,12,0.02,0,0.2,euler.ifoc', async (page) => {
+  withPage('?v=1&preset=step#sweep=10,1000,12,0.02,0,0.2,euler.ifocpi', async (page) => {
     assert.equal(await sweepDone(page), 'done');
     const parallel = await download(page, '#sweep-csv');
     const expected = execFileSync(cli, ['sweep', 'v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
     assert.equal(parallel, expected);
     assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 2);
-    // The IFOC at standstill never settles in 0.2 s runs (its MRAS is blind near zero speed), so
-    // the core gives no bandwidth for it.
-    assert.match(await page.textContent('#sweep-table tr[data-variant=ifoc] td:nth-child(2)'), /^not given: it would rest on a point that had not settled$/);
+    // The IFOC's PI alone at standstill never settles in 0.2 s runs (its MRAS is blind near zero
+    // speed), so the core gives no bandwidth for it.
+    assert.match(await page.textContent('#sweep-table tr[data-variant=ifocpi] td:nth-child(2)'), /^not given: it would rest on a point that had not settled$/);
     await page.fill('#sweep-form [name=workers]', '1');
     await page.click('#sweep-run');
     await page.waitForFunction(() => document.getElementById('sweep-status').textContent.includes('on 1 worker.'));
@@ -68,9 +68,9 @@ test('points that had not settled are drawn hollow, listed with the reason, and 
     assert.equal(cells[5], '2: 300.0 Hz, 480.0 Hz');
     const reasons = await page.locator('#bode .sweep-unsettled li').allTextContents();
     assert.equal(reasons.length, 2);
-    for (const r of reasons) assert.match(r, /^Classical IFOC \+ MRAS, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/);
+    for (const r of reasons) assert.match(r, /^Classical IFOC \+ MRAS, torque feedforward, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/);
     // Each Bode plot has a series of hollow markers for them.
-    assert.equal(await page.locator('#bode .u-legend', { hasText: 'Classical IFOC + MRAS, not settled' }).count(), 2);
+    assert.equal(await page.locator('#bode .u-legend', { hasText: 'Classical IFOC + MRAS, torque feedforward, not settled' }).count(), 2);
     assert.match(await download(page, '#sweep-csv'), /\n# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=2\n$/);
   }));
 

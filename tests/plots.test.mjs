@@ -94,6 +94,7 @@ test('the figures strip equals imlab metrics, and the y-axes leave out the start
     const shown = await page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
       [f.dataset.name, Number(f.dataset.value)],
       ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
+      ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
     ])));
     const cli = cliMetrics('v=1&preset=step');
     assert.deepEqual(shown, cli);

@@ -15,9 +15,9 @@ const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
 const withPage = (path, body) => suite.withPage(path, body);
 
-// The longest run at the shortest sample time the core accepts for it: 1,082,251 rows of 62
-// columns, a trace just under the core's 512 MiB limit (ts = 0.00001847 is refused).
-const LARGEST = 'v=1&preset=step&duration=20&ts=0.00001848';
+// The longest run at the shortest sample time the core accepts for it: 1,064,963 rows of 63
+// columns, a trace just under the core's 512 MiB limit (ts = 0.00001877 is refused).
+const LARGEST = 'v=1&preset=step&duration=20&ts=0.00001878';
 
 const CRASH_MESSAGE = /^The simulation worker failed \(.+\)\. It was restarted; press Run to try again\./;
 
@@ -142,10 +142,10 @@ test('the CSV of the largest allowed run exports whole, byte for byte the CLI’
   try {
     await withPage(`?${LARGEST}`, async (page) => {
       assert.equal(await settled(page, 120_000), 'done');
-      assert.equal(await page.evaluate(() => document.body.dataset.rows), '1082251');
+      assert.equal(await page.evaluate(() => document.body.dataset.rows), '1064963');
       const [download] = await Promise.all([page.waitForEvent('download', { timeout: 300_000 }), page.click('#export-csv')]);
       assert.equal(await page.evaluate(() => document.body.dataset.export), 'done');
-      assert.equal(await page.textContent('#status'), 'CSV exported: 1,082,251 rows');
+      assert.equal(await page.textContent('#status'), 'CSV exported: 1,064,963 rows');
       const file = await download.path(); // Playwright's copy, removed with the context
       await cliDone;
       assert.equal(statSync(file).size, statSync(cliFile).size);

@@ -112,9 +112,13 @@ export const VARIANTS = {
   euler: { label: 'Backstepping + Euler EKF (paper)', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'euler']] },
   rk4: { label: 'Backstepping + RK4 EKF', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'rk4']] },
   perfect: { label: 'Backstepping + perfect observer', changes: [['controller', 'backstepping'], ['perfect', '1']] },
-  ifoc: { label: 'Classical IFOC + MRAS', changes: [['controller', 'ifoc'], ['perfect', '0']] },
+  delay: { label: 'Backstepping + Euler EKF, one-sample delay', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'euler'], ['delay', '1'], ['delay.comp', '0']] },
+  // The like-for-like baseline feeds the reference's torque forward, as the backstepping feeds
+  // ω̇_d forward; `ifocpi` is the plain PI speed loop.
+  ifoc: { label: 'Classical IFOC + MRAS, torque feedforward', changes: [['controller', 'ifoc'], ['perfect', '0'], ['ifoc.ff', '1']] },
+  ifocpi: { label: 'Classical IFOC + MRAS, no feedforward', changes: [['controller', 'ifoc'], ['perfect', '0'], ['ifoc.ff', '0']] },
 };
-const COLORS = { euler: '#d62728', rk4: '#1f77b4', perfect: '#2ca02c', ifoc: '#9467bd' };
+const COLORS = { euler: '#d62728', rk4: '#1f77b4', perfect: '#2ca02c', delay: '#ff7f0e', ifoc: '#9467bd', ifocpi: '#8c564b' };
 
 /**
  * Whether `n` can be a number of points: the core takes it as a 32-bit integer, and the
@@ -218,7 +222,7 @@ export class Analysis {
     }
     const width = Math.max(400, bodeBox.clientWidth - 10);
     // Dashed lines for variants drawn on top of others, so overlapping curves stay visible.
-    const dash = { rk4: [6, 4], perfect: [2, 3] };
+    const dash = { rk4: [6, 4], perfect: [2, 3], ifocpi: [6, 4] };
     for (const [title, unit, key, marker] of [['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]], ['Phase of ω against ω_d', 'degrees', 'phase', null]]) {
       const series = variants.flatMap((v) => [
         [VARIANTS[v].label, COLORS[v], column(v, key, false), dash[v]],

@@ -419,6 +419,7 @@ function showFigures(figures) {
     item.dataset.name = f.name;
     item.dataset.value = String(f.value);
     if (f.name === 'mean_nis') Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
+    if (f.name === 'current_peak' && rated) item.dataset.rated = String(rated.value);
     item.append(
       Object.assign(document.createElement('dt'), { textContent: f.label }),
       Object.assign(document.createElement('dd'), { textContent: text, title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}` }),
@@ -786,7 +787,7 @@ async function runSweep() {
     analysis.showSweep(out, $('bode'), $('sweep-table'));
     const ms = performance.now() - started;
     status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} worker${settings.workers > 1 ? 's' : ''}.`;
-    if (settings.variants.includes('ifoc') && Math.abs(settings.offset) < 20) {
+    if (settings.variants.some((v) => v.startsWith('ifoc')) && Math.abs(settings.offset) < 20) {
       status.textContent += ' The IFOC figures are not meaningful here: its MRAS cannot estimate the speed near standstill. Sweep it about an operating speed (offset ≥ 20 rad/s) with longer runs (3 s).';
     }
     Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });

@@ -228,10 +228,11 @@ pub fn sweep_point(
     let phase_change = libm::remainder((p2 - p1) * 180.0 / PI, 360.0);
     let settled =
         gain_change_db.abs() <= SETTLED_GAIN_DB && phase_change.abs() <= SETTLED_PHASE_DEG;
-    let vmax = s.voltage_limit;
+    // The scenario's own limit: the box, the circle or the hexagon.
+    let limit = s.limit();
     let saturated = rows
         .iter()
-        .filter(|r| r.u_a_cmd.abs() > vmax || r.u_b_cmd.abs() > vmax)
+        .filter(|r| limit.exceeds(&[r.u_a_cmd, r.u_b_cmd]))
         .count() as f64
         / rows.len() as f64;
     Ok(SweepPoint {

@@ -62,3 +62,22 @@ fn a_backstepping_point_of_the_default_sweep_settles_within_the_noise() {
         );
     }
 }
+
+#[test]
+fn the_saturated_share_of_a_point_is_against_the_scenarios_own_limit() {
+    // 0.5 rad/s at 250 Hz needs about 350 V: inside the paper's ±400 V box, beyond the 312 V
+    // that the hexagon of a 540 V link allows in every direction.
+    let settings = SweepSettings {
+        amp: 0.5,
+        ..SweepSettings::default()
+    };
+    let share = |text: &str| {
+        let s = imlab::scenario::Scenario::parse(text).unwrap();
+        sweep_point(&s, 250.0, &settings).unwrap().saturated
+    };
+    let (boxed, hex) = (
+        share("sine200"),
+        share("v=1&preset=sine200&vlimit=hex&vdc=540"),
+    );
+    assert!(boxed < 0.01 && hex > 0.3, "box {boxed}, hex {hex}");
+}
