@@ -2,7 +2,7 @@
 """Figures of an `imlab run` CSV (read from stdin) that `imlab metrics` does not give.
 
   imlab run SCENARIO | scripts/trace_stats.py rms-after T
-      RMS and peak of ω − ω_d over t ≥ T (s).
+      RMS and peak of ω − ω_d over t ≥ T (s), and the peak stator current |i_s| there (A).
   imlab run SCENARIO | scripts/trace_stats.py load-step T [BAND]
       After a load step at T (s) on a constant reference: the largest dip of ω below the
       reference, the error at the last sample, and the recovery time: from T to the first sample
@@ -19,7 +19,10 @@ def main():
         sys.exit(__doc__)
     kind, start = sys.argv[1], float(sys.argv[2])
     band = float(sys.argv[3]) if len(sys.argv) > 3 else 0.5
-    rows = [(float(r["t"]), float(r["omega_err"])) for r in csv.DictReader(sys.stdin)]
+    rows, currents = [], []
+    for r in csv.DictReader(sys.stdin):
+        rows.append((float(r["t"]), float(r["omega_err"])))
+        currents.append(math.hypot(float(r["i_sa"]), float(r["i_sb"])))
     # Half a sample of slack, so that T given in round figures includes the sample at T.
     ts = rows[1][0] - rows[0][0]
     after = [(t, e) for t, e in rows if t >= start - 0.5 * ts]
@@ -28,7 +31,8 @@ def main():
     if kind == "rms-after":
         rms = math.sqrt(sum(e * e for _, e in after) / len(after))
         peak = max(abs(e) for _, e in after)
-        print(f"rms={rms:.4g} peak={peak:.4g} samples={len(after)}")
+        current = max(currents[len(rows) - len(after):])
+        print(f"rms={rms:.4g} peak={peak:.4g} current_peak={current:.4g} samples={len(after)}")
         return
     dip = min(e for _, e in after)
     inside_from = None

@@ -14,7 +14,7 @@ use serde::{Deserialize, Serialize};
 /// Shape of the set of voltages the inverter can apply.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Shape {
-    /// |u_a|, |u_b| ≤ vmax each: the paper's limit (its corners need a DC link of 2.45·vmax).
+    /// |u_a|, |u_b| ≤ vmax each: the paper's limit (its corners need a DC link of 2.37·vmax, 946 V for 400 V).
     Box,
     /// |u| ≤ v_dc/√3: the linear range of sine-triangle PWM with third-harmonic injection.
     Circle,

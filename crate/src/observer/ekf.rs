@@ -273,6 +273,23 @@ impl<const N: usize> Filter<N> {
         });
     }
 
+    /// The five states one sample ahead, x̂_{k+1|k}, under the input `u` held over the sample, by
+    /// this filter's own predictor (the state part of [`Filter::predict`]; P is left alone).
+    pub fn predicted_state(&self, u: &Input) -> State {
+        let x = match self.predictor {
+            Predictor::Euler => {
+                let dx = self.f(&self.x, u);
+                let mut xn = self.x;
+                for i in 0..5 {
+                    xn[i] += self.ts * dx[i];
+                }
+                xn
+            }
+            Predictor::Rk4 => self.rk4_with_jacobian(&self.x, u).0,
+        };
+        [x[0], x[1], x[2], x[3], x[4]]
+    }
+
     /// RK4 state transition and its exact Jacobian Φ = ∂x_{k|k−1}/∂x_{k−1|k−1} (chain rule).
     fn rk4_with_jacobian(
         &self,

@@ -49,7 +49,8 @@ const RR_STD: f64 = 0.5;
 /// the torque per q-current is (3/2)·n_p·(M/L_r)·|φ_r| = 2.06 N m/A. A 4-pole motor of these
 /// parameters is of the 1.1–1.5 kW class (the estimate of issue 12), whose rated torque at about
 /// 1430 rpm is 7.3–10 N m: i_q = 3.6–4.9 A and |i_s| = 3.8–5.1 A. 4 A (2.8 A rms per phase)
-/// gives 7.7 N m, 1.16 kW at 1430 rpm, at the low end of that class.
+/// gives 7.7 N m; at the model's slip for that current (25.5 rad/s electrical, 8.1 % at 50 Hz,
+/// 1378 rpm) that is 1.12 kW, at the low end of that class.
 pub(super) const I_RATED: f64 = 4.0;
 
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {

@@ -280,7 +280,7 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
         );
         push(
             "ripple_rms",
-            "RMS of the PWM current ripple",
+            "RMS over the periods of the peak PWM current ripple",
             mean(&|r| r.i_ripple * r.i_ripple).sqrt(),
             "A",
             &in_w,

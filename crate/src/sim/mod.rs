@@ -322,11 +322,15 @@ impl Simulation {
         };
         let input = if s.drive.delay && s.drive.delay_comp && self.ifoc.is_none() {
             // Delay compensation: u_k acts from t_{k+1}, so control the one-step prediction
-            // x̂_{k+1|k} under the voltage committed for [t_k, t_{k+1}), towards ω_d(t_{k+1}).
+            // x̂_{k+1|k} under the voltage committed for [t_k, t_{k+1}), towards ω_d(t_{k+1}):
+            // the EKF's own prior for the next sample (its predictor, its estimated parameters),
+            // or the true state advanced by the plant's integrator for the perfect observer.
             // The prediction's currents stand in for the measurement, with a zero residual.
-            let known = if s.perfect { self.x } else { x_hat };
-            let model = adapted.as_ref().map_or(&self.model, |a| &a.model);
-            let x_next = model::advance(model, &known, &self.pending, 0.0, ts, s.substeps);
+            let x_next = if s.perfect {
+                model::advance(&self.model, &self.x, &self.pending, 0.0, ts, s.substeps)
+            } else {
+                with_filter!(&self.ekf, f => f.predicted_state(&self.pending))
+            };
             ControlInput {
                 x_hat: x_next,
                 y: [x_next[1], x_next[2]],
