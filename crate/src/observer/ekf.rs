@@ -252,15 +252,10 @@ impl<const N: usize> Filter<N> {
     /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample.
     pub fn predict(&mut self, u: &Input) {
         let (x_next, phi) = match self.predictor {
-            Predictor::Euler => {
-                let dx = self.f(&self.x, u);
-                let a = self.jacobian(&self.x);
-                let mut xn = self.x;
-                for i in 0..5 {
-                    xn[i] += self.ts * dx[i];
-                }
-                (xn, SMatrix::<f64, N, N>::identity() + a * self.ts)
-            }
+            Predictor::Euler => (
+                self.euler_state(u),
+                SMatrix::<f64, N, N>::identity() + self.jacobian(&self.x) * self.ts,
+            ),
             Predictor::Rk4 => self.rk4_with_jacobian(&self.x, u),
         };
         self.x = x_next;
@@ -277,17 +272,20 @@ impl<const N: usize> Filter<N> {
     /// this filter's own predictor (the state part of [`Filter::predict`]; P is left alone).
     pub fn predicted_state(&self, u: &Input) -> State {
         let x = match self.predictor {
-            Predictor::Euler => {
-                let dx = self.f(&self.x, u);
-                let mut xn = self.x;
-                for i in 0..5 {
-                    xn[i] += self.ts * dx[i];
-                }
-                xn
-            }
+            Predictor::Euler => self.euler_state(u),
             Predictor::Rk4 => self.rk4_with_jacobian(&self.x, u).0,
         };
-        [x[0], x[1], x[2], x[3], x[4]]
+        five(&x)
+    }
+
+    /// Euler step of the state, eq (13): x + Ts·f(x, u); the added parameters stay.
+    fn euler_state(&self, u: &Input) -> SVector<f64, N> {
+        let dx = self.f(&self.x, u);
+        let mut xn = self.x;
+        for i in 0..5 {
+            xn[i] += self.ts * dx[i];
+        }
+        xn
     }
 
     /// RK4 state transition and its exact Jacobian Φ = ∂x_{k|k−1}/∂x_{k−1|k−1} (chain rule).
@@ -509,6 +507,31 @@ mod tests {
                     phi[(i, j)]
                 );
             }
+        }
+    }
+
+    /// The delay compensation controls `predicted_state`: it must be the prior the next
+    /// `predict` makes, bit for bit, whatever the predictor and the added states.
+    #[test]
+    fn predicted_state_is_the_next_prior() {
+        let params = MotorParams::PAPER;
+        let x0 = [30.0, 3.0, -2.0, 0.6, -0.4];
+        let u = [120.0, -80.0];
+        for predictor in [Predictor::Euler, Predictor::Rk4] {
+            let cfg = |states| EkfConfig {
+                predictor,
+                ..config(states, states)
+            };
+            let lumped = params.lumped().unwrap();
+            let mut plain: Filter<5> =
+                Filter::new(&params, lumped, 5e-5, &cfg(false), x0, [0.1; 5]);
+            let mut both: Filter<7> = Filter::new(&params, lumped, 5e-5, &cfg(true), x0, [0.1; 5]);
+            let ahead = (plain.predicted_state(&u), both.predicted_state(&u));
+            plain.predict(&u);
+            both.predict(&u);
+            assert_eq!(ahead, (plain.state(), both.state()), "{predictor:?}");
+            // The prediction moves the state: a stale copy of x̂ would not pass.
+            assert_ne!(ahead.0, x0);
         }
     }
 
