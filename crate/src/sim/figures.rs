@@ -71,7 +71,7 @@ pub struct Transient {
 /// clamped to at most half the recorded run, so that a window of samples always remains after
 /// it. With nothing recorded yet, t = 0.
 pub fn transient_end(sim: &Simulation) -> Transient {
-    transient(sim.scenario(), sim.recorder().rows()).0
+    transient(sim.scenario(), sim).0
 }
 
 /// The figures of `sim` over the samples recorded so far (see [`Figure`]), in this order:
@@ -82,12 +82,93 @@ pub fn transient_end(sim: &Simulation) -> Transient {
 /// cover W = [transient end, last recorded sample]. A figure whose value is not finite is left
 /// out. None when nothing is recorded.
 pub fn figures(sim: &Simulation) -> Option<Vec<Figure>> {
-    figures_of(sim.scenario(), sim.recorder().rows())
+    report(sim).figures
+}
+
+/// The transient and the figures of a run, computed together (the figures start at the end of
+/// the transient).
+#[derive(Clone, Debug, Serialize)]
+pub struct Report {
+    /// See [`transient_end`].
+    pub transient: Transient,
+    /// See [`figures`].
+    pub figures: Option<Vec<Figure>>,
+}
+
+/// [`transient_end`] and [`figures`] of `sim` at once: a traced run is replayed about twice
+/// (once for the transient, once for the window after it), not once per figure.
+pub fn report(sim: &Simulation) -> Report {
+    figures_of(sim.scenario(), sim)
+}
+
+/// Recorded rows, read in order: a run's (from memory or by replay) or a hand-made trace's.
+pub(super) trait Samples {
+    /// Number of rows.
+    fn count(&self) -> usize;
+    /// Time of row `i` (s).
+    fn time(&self, i: usize) -> f64;
+    /// Calls `f(i, row)` for rows `start..end` in order until it returns false.
+    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool);
+
+    /// Row `i`.
+    fn row(&self, i: usize) -> Row {
+        let mut out = Row::default();
+        self.visit(i, i + 1, &mut |_, r| {
+            out = *r;
+            false
+        });
+        out
+    }
+
+    /// The first row at or after time `t` (the number of rows if none is).
+    fn first_at(&self, t: f64) -> usize {
+        let (mut lo, mut hi) = (0, self.count());
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if self.time(mid) < t {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        lo
+    }
+}
+
+impl Samples for Simulation {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn time(&self, i: usize) -> f64 {
+        Simulation::time(self, i)
+    }
+    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
+        Simulation::visit(self, start, end, f);
+    }
+}
+
+/// Hand-made traces of the tests.
+#[cfg(test)]
+impl Samples for Vec<Row> {
+    fn count(&self) -> usize {
+        self.len()
+    }
+    fn time(&self, i: usize) -> f64 {
+        self[i].t
+    }
+    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
+        for (i, row) in self.iter().enumerate().take(end).skip(start) {
+            if !f(i, row) {
+                return;
+            }
+        }
+    }
 }
 
 /// The transient (see [`transient_end`]) and the index of its first row in `rows`.
-fn transient(s: &Scenario, rows: &[Row]) -> (Transient, usize) {
-    let (Some(first), Some(last)) = (rows.first(), rows.last()) else {
+fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
+    let len = rows.count();
+    if len == 0 {
         return (
             Transient {
                 t: 0.0,
@@ -95,15 +176,26 @@ fn transient(s: &Scenario, rows: &[Row]) -> (Transient, usize) {
             },
             0,
         );
-    };
+    }
+    let (first_t, last) = (rows.time(0), rows.row(len - 1));
+    let half = first_t + 0.5 * (last.t - first_t);
+    let half_index = rows.first_at(half).min(len - 1);
     // (a) The last row outside the band settles nothing; the one after it starts the settled run.
-    // A NaN band counts as not settled.
+    // A NaN band counts as not settled. (c) needs the mean NIS of the rows from half on; one pass
+    // gives both.
     let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
-    let observer = rows
-        .iter()
-        .rposition(|r| !settled(r.innov_band_a))
-        .map_or(0, |i| (i + 1).min(rows.len() - 1));
-    let t_observer = rows[observer].t;
+    let (mut unsettled, mut late_sum) = (None, -0.0);
+    rows.visit(0, len, &mut |i, r| {
+        if !settled(r.innov_band_a) {
+            unsettled = Some(i);
+        }
+        if i >= half_index {
+            late_sum += r.nis;
+        }
+        true
+    });
+    let observer = unsettled.map_or(0, |i| (i + 1).min(len - 1));
+    let t_observer = rows.time(observer);
     // (b)
     let (t_controller, controller) = match s.controller {
         ControllerKind::Backstepping => {
@@ -130,28 +222,32 @@ fn transient(s: &Scenario, rows: &[Row]) -> (Transient, usize) {
             )
         }
     };
-    let half = first.t + 0.5 * (last.t - first.t);
-    // (c)
-    let half_index = rows.partition_point(|r| r.t < half).min(rows.len() - 1);
-    let late = &rows[half_index..];
-    let late_mean = late.iter().map(|r| r.nis).sum::<f64>() / late.len() as f64;
+    // (c) The moving window holds the (t, NIS) of rows start..=i.
+    let late_mean = late_sum / (len - half_index) as f64;
+    let mut window = std::collections::VecDeque::new();
     let (mut sum, mut start, mut estimates) = (0.0, 0, None);
-    for (i, r) in rows[..half_index].iter().enumerate() {
+    rows.visit(0, half_index, &mut |i, r| {
         sum += r.nis;
-        while r.t - rows[start].t >= NIS_WINDOW {
-            sum -= rows[start].nis;
+        window.push_back((r.t, r.nis));
+        while let Some(&(t, nis)) = window.front() {
+            if r.t - t < NIS_WINDOW {
+                break;
+            }
+            sum -= nis;
+            window.pop_front();
             start += 1;
         }
         if start > 0 && sum / (i + 1 - start) as f64 <= NIS_SETTLED * late_mean {
             estimates = Some(r.t);
-            break;
+            return false;
         }
-    }
-    let t_estimates = estimates.unwrap_or(first.t);
+        true
+    });
+    let t_estimates = estimates.unwrap_or(first_t);
     let later = t_controller.max(t_observer).max(t_estimates);
     let target = later.min(half);
     // The rows are in time order and the last one is at or after `half`.
-    let index = rows.partition_point(|r| r.t < target).min(rows.len() - 1);
+    let index = rows.first_at(target).min(len - 1);
     let mut reason = format!(
         "{controller}; EKF innovation covariance settled at {} (2σ band within 10 % of its final value); EKF estimates converged at {} (2 ms mean NIS within twice its level in the second half)",
         time_text(t_observer),
@@ -165,19 +261,65 @@ fn transient(s: &Scenario, rows: &[Row]) -> (Transient, usize) {
     }
     (
         Transient {
-            t: rows[index].t,
+            t: rows.time(index),
             reason,
         },
         index,
     )
 }
 
+/// Sums and peaks of the window figures, accumulated in row order (sums start at −0, as
+/// `Iterator::sum` does, so that they equal it bit for bit).
+struct Window {
+    n: usize,
+    tracking_sq: f64,
+    tracking_peak: f64,
+    saturated: usize,
+    nis: f64,
+    current_peak: f64,
+    current_sq: f64,
+    ripple_peak: f64,
+    ripple_sq: f64,
+}
+
 /// The figures of a trace `rows` recorded from scenario `s`.
-fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
-    let last = rows.last()?;
+fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
     let (end, start) = transient(s, rows);
-    let w = &rows[start..];
-    let n = w.len() as f64;
+    let len = rows.count();
+    if len == 0 {
+        return Report {
+            transient: end,
+            figures: None,
+        };
+    }
+    let last = rows.row(len - 1);
+    let limit = s.limit();
+    let mut w = Window {
+        n: 0,
+        tracking_sq: -0.0,
+        tracking_peak: f64::NEG_INFINITY,
+        saturated: 0,
+        nis: -0.0,
+        current_peak: f64::NEG_INFINITY,
+        current_sq: -0.0,
+        ripple_peak: f64::NEG_INFINITY,
+        ripple_sq: -0.0,
+    };
+    rows.visit(start, len, &mut |_, r| {
+        w.n += 1;
+        w.tracking_sq += r.omega_err * r.omega_err;
+        w.tracking_peak = w.tracking_peak.max(r.omega_err.abs());
+        w.saturated += usize::from(is_saturated(r, &limit));
+        w.nis += r.nis;
+        w.current_peak = w
+            .current_peak
+            .max((r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt());
+        w.current_sq += r.i_sa * r.i_sa + r.i_sb * r.i_sb;
+        w.ripple_peak = w.ripple_peak.max(r.i_ripple);
+        w.ripple_sq += r.i_ripple * r.i_ripple;
+        true
+    });
+    let n = w.n as f64;
     let in_w = format!("t ≥ {}", time_text(end.t));
     let at_last = format!("last sample, t = {}", time_text(last.t));
     let mut out = Vec::new();
@@ -199,19 +341,17 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
         "s",
         &format!("start-up, t < {}", time_text(end.t)),
     );
-    let mean = |f: &dyn Fn(&Row) -> f64| w.iter().map(f).sum::<f64>() / n;
-    let peak = |f: &dyn Fn(&Row) -> f64| w.iter().map(f).fold(f64::NEG_INFINITY, f64::max);
     push(
         "tracking_rms",
         "RMS of ω − ω_d",
-        mean(&|r| r.omega_err * r.omega_err).sqrt(),
+        (w.tracking_sq / n).sqrt(),
         "rad/s",
         &in_w,
     );
     push(
         "tracking_peak",
         "peak |ω − ω_d|",
-        peak(&|r| r.omega_err.abs()),
+        w.tracking_peak,
         "rad/s",
         &in_w,
     );
@@ -224,16 +364,15 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
             &format!("from the step at {}", time_text(time)),
         );
     }
-    let limit = s.limit();
     push(
         "saturated_share",
         "share of samples at the voltage limit",
-        w.iter().filter(|r| is_saturated(r, &limit)).count() as f64 / n,
+        w.saturated as f64 / n,
         "",
         &in_w,
     );
-    let (low, high) = mean_nis_band(w.len());
-    push("mean_nis", "mean NIS", mean(&|r| r.nis), "", &in_w);
+    let (low, high) = mean_nis_band(w.n);
+    push("mean_nis", "mean NIS", w.nis / n, "", &in_w);
     push(
         "mean_nis_low",
         "mean NIS, low end of a consistent filter's 95 % band",
@@ -251,11 +390,11 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
     push(
         "current_peak",
         "peak stator current |i_s|",
-        peak(&|r| (r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt()),
+        w.current_peak,
         "A",
         &in_w,
     );
-    let current_rms = mean(&|r| r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt();
+    let current_rms = (w.current_sq / n).sqrt();
     push(
         "current_rms",
         "RMS stator current |i_s|",
@@ -274,14 +413,14 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
         push(
             "ripple_peak",
             "peak PWM current ripple",
-            peak(&|r| r.i_ripple),
+            w.ripple_peak,
             "A",
             &in_w,
         );
         push(
             "ripple_rms",
             "RMS over the periods of the peak PWM current ripple",
-            mean(&|r| r.i_ripple * r.i_ripple).sqrt(),
+            (w.ripple_sq / n).sqrt(),
             "A",
             &in_w,
         );
@@ -307,7 +446,10 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
         "rad/s",
         &at_last,
     );
-    Some(out)
+    Report {
+        transient: end,
+        figures: Some(out),
+    }
 }
 
 /// The 2 % settling time of the true speed after a step reference, and the step time (s):
@@ -315,24 +457,28 @@ fn figures_of(s: &Scenario, rows: &[Row]) -> Option<Vec<Figure>> {
 /// |size|, minus the step time; 0 when ω never leaves the band. None for other references, when
 /// the recording stops before the step, or when ω is still outside the band at the last sample
 /// (not settled: the settling time is unknown).
-fn settling_time(reference: &Reference, ts: f64, rows: &[Row]) -> Option<(f64, f64)> {
+fn settling_time(reference: &Reference, ts: f64, rows: &dyn Samples) -> Option<(f64, f64)> {
     let Reference::Step { size, time, .. } = *reference else {
         return None;
     };
-    if rows.last()?.t < time {
+    let len = rows.count();
+    let last = rows.row(len.checked_sub(1)?);
+    if last.t < time {
         return None;
     }
     let target = reference.sample(time - ts).value + size;
     let band = SETTLING_BAND * size.abs();
     let outside = |r: &Row| (r.omega - target).abs() > band;
-    if rows.last().is_some_and(outside) {
+    if outside(&last) {
         return None;
     }
-    let last_out = rows
-        .iter()
-        .filter(|r| r.t >= time && outside(r))
-        .map(|r| r.t)
-        .next_back();
+    let mut last_out = None;
+    rows.visit(rows.first_at(time), len, &mut |_, r| {
+        if outside(r) {
+            last_out = Some(r.t);
+        }
+        true
+    });
     Some((last_out.map_or(0.0, |t| t - time), time))
 }
 
@@ -504,7 +650,7 @@ mod tests {
         assert_eq!(i, 5);
         assert!(t.reason.contains("clamped to half"), "{}", t.reason);
         // One sample: the window is that sample.
-        assert_eq!(transient(&s, &rows[..1]).1, 0);
+        assert_eq!(transient(&s, &rows[..1].to_vec()).1, 0);
         // The estimates: NIS 50 until 30 ms, then 2. The first full 2 ms window with a mean
         // within 2 × 2 is [30, 31] ms (mean 2), later than the controller's 8 ms; whether
         // 31 − 29 ms counts as a whole window is up to rounding, so 31 or 32 ms.
@@ -552,7 +698,7 @@ mod tests {
             r.flux = 0.7;
             r.flux_ref = 0.5;
         });
-        let f = figures_of(&s, &rows).unwrap();
+        let f = figures_of(&s, &rows).figures.unwrap();
         let names: Vec<&str> = f.iter().map(|f| f.name).collect();
         assert_eq!(
             names,
@@ -593,12 +739,12 @@ mod tests {
         // A value that is not finite is left out rather than shown as NaN.
         let mut bad = rows.clone();
         bad[10].nis = f64::INFINITY;
-        let f = figures_of(&s, &bad).unwrap();
+        let f = figures_of(&s, &bad).figures.unwrap();
         assert_eq!(value(&f, "mean_nis"), None);
         assert!(value(&f, "mean_nis_high").is_some());
         assert!(f.iter().all(|f| f.value.is_finite()));
         // Nothing recorded: no figures.
-        assert!(figures_of(&s, &[]).is_none());
+        assert!(figures_of(&s, &Vec::new()).figures.is_none());
     }
 
     #[test]

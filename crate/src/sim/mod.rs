@@ -5,9 +5,12 @@
 
 mod figures;
 mod recorder;
+mod trace;
 
-pub use figures::{figures, transient_end, Figure, Transient};
-pub use recorder::{Recorder, Row, COLUMNS, COLUMN_DOCS, NUM_COLUMNS};
+pub use figures::{figures, report, transient_end, Figure, Report, Transient};
+pub use recorder::{m4, Recorder, Row, COLUMNS, COLUMN_DOCS, M4, NUM_COLUMNS};
+use trace::Trace;
+pub use trace::CHECKPOINT_EVERY;
 
 use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
 use crate::inverter::{self, Limit};
@@ -119,16 +122,10 @@ macro_rules! with_filter {
     };
 }
 
-/// A closed-loop run that can be advanced in chunks.
+/// What the loop keeps from sample to sample: everything a replay needs to go on from sample k
+/// (a checkpoint is a copy of it). Holds no heap memory, so copying it never allocates.
 #[derive(Clone, Debug)]
-pub struct Simulation {
-    scenario: Scenario,
-    plant: Lumped,
-    controller: Backstepping,
-    /// The lumped parameters the controller assumes, for the delay compensation's prediction.
-    model: Lumped,
-    /// The inverter's voltage limit.
-    limit: Limit,
+struct LoopState {
     /// The IFOC baseline, when the scenario selects it.
     ifoc: Option<Ifoc>,
     ekf: Observer,
@@ -138,12 +135,50 @@ pub struct Simulation {
     u: Input,
     /// With the computation delay: the voltage committed for the next sample, [t_k, t_{k+1}).
     pending: Input,
+    /// The next sample to run.
     k: usize,
+}
+
+/// What stays fixed during a run: the scenario and what is derived from it.
+#[derive(Clone, Debug)]
+struct Loop {
+    scenario: Scenario,
+    plant: Lumped,
+    controller: Backstepping,
+    /// The lumped parameters the controller assumes, for the delay compensation's prediction.
+    model: Lumped,
+    /// The inverter's voltage limit.
+    limit: Limit,
     steps: usize,
-    recorder: Recorder,
-    failure: Option<SimError>,
     /// Sampling rate 1/Ts (Hz).
     rate: f64,
+}
+
+/// Where the rows of the loop go: asked once per sample, in order, whether it wants that
+/// sample's row; the row is only computed when it does.
+trait Sink {
+    /// Whether the row of the next sample is wanted.
+    fn wants(&mut self) -> bool;
+    /// Takes the wanted row; a value that is not finite is refused, naming its column.
+    fn take(&mut self, row: &Row) -> Result<(), (&'static str, f64)>;
+}
+
+/// How a run keeps its samples.
+#[derive(Clone, Debug)]
+enum Recording {
+    /// Every kept row in memory (analysis runs, tests, `--every`).
+    Rows(Recorder),
+    /// Checkpoints, replayed for any window (the page and the CLI).
+    Trace(Trace),
+}
+
+/// A closed-loop run that can be advanced in chunks.
+#[derive(Clone, Debug)]
+pub struct Simulation {
+    lp: Loop,
+    state: LoopState,
+    recording: Recording,
+    failure: Option<SimError>,
 }
 
 /// Whether the commanded voltage of `row` is beyond the inverter's limit.
@@ -181,8 +216,23 @@ const ESTIMATE_NAMES: [&str; 5] = [
 ];
 
 impl Simulation {
-    /// Prepares a run of `scenario`, keeping every `every`-th sample.
+    /// Prepares a run of `scenario` that keeps every `every`-th row in memory.
     pub fn new(scenario: &Scenario, every: usize) -> Result<Simulation, ScenarioError> {
+        Simulation::prepare(scenario, every, false)
+    }
+
+    /// Prepares a run of `scenario` that keeps checkpoints of its state instead of rows (see
+    /// [`Simulation::visit`]): every sample can be read back, bit for bit, for a fraction of the
+    /// memory.
+    pub fn traced(scenario: &Scenario) -> Result<Simulation, ScenarioError> {
+        Simulation::prepare(scenario, 1, true)
+    }
+
+    fn prepare(
+        scenario: &Scenario,
+        every: usize,
+        traced: bool,
+    ) -> Result<Simulation, ScenarioError> {
         scenario.validate()?;
         if every == 0 {
             return Err(ScenarioError::OutOfRange {
@@ -242,22 +292,30 @@ impl Simulation {
             )
         });
         Ok(Simulation {
-            scenario: scenario.clone(),
-            plant,
-            controller: Backstepping::new(model, scenario.gains),
-            model,
-            limit: scenario.limit(),
-            ifoc,
-            ekf,
-            rng: Rng::new(scenario.seed),
-            x: x0,
-            u: [0.0; 2],
-            pending: [0.0; 2],
-            k: 0,
-            steps,
-            recorder: Recorder::with_capacity(rows, every),
+            lp: Loop {
+                scenario: scenario.clone(),
+                plant,
+                controller: Backstepping::new(model, scenario.gains),
+                model,
+                limit: scenario.limit(),
+                steps,
+                rate: 1.0 / scenario.ts,
+            },
+            state: LoopState {
+                ifoc,
+                ekf,
+                rng: Rng::new(scenario.seed),
+                x: x0,
+                u: [0.0; 2],
+                pending: [0.0; 2],
+                k: 0,
+            },
+            recording: if traced {
+                Recording::Trace(Trace::new(steps))
+            } else {
+                Recording::Rows(Recorder::with_capacity(rows, every))
+            },
             failure: None,
-            rate: 1.0 / scenario.ts,
         })
     }
 
@@ -267,38 +325,60 @@ impl Simulation {
         if let Some(e) = &self.failure {
             return Err(e.clone());
         }
-        let end = self.steps.min(self.k.saturating_add(max_steps));
-        let start = self.k;
-        while self.k < end {
-            if let Err(e) = self.step() {
-                self.failure = Some(e.clone());
-                return Err(e);
+        let start = self.state.k;
+        let end = self.lp.steps.min(start.saturating_add(max_steps));
+        let result = match &mut self.recording {
+            Recording::Rows(recorder) => self.lp.run(&mut self.state, end, recorder),
+            Recording::Trace(trace) => {
+                let mut result = Ok(());
+                while result.is_ok() && self.state.k < end {
+                    // Up to the next checkpoint, or the end, at a time.
+                    let next = trace.checkpoint(&self.state).min(end);
+                    result = self.lp.run(&mut self.state, next, trace);
+                }
+                result
             }
-            self.k += 1;
+        };
+        match result {
+            Ok(()) => Ok(end - start),
+            Err(e) => {
+                self.failure = Some(e.clone());
+                Err(e)
+            }
         }
-        Ok(end - start)
     }
 
     /// Runs to the end.
     pub fn run(&mut self) -> Result<(), SimError> {
         self.advance(usize::MAX).map(|_| ())
     }
+}
+
+impl Loop {
+    /// Runs samples `st.k..end`, giving `sink` the rows it wants; stops at the first failure.
+    fn run(&self, st: &mut LoopState, end: usize, sink: &mut dyn Sink) -> Result<(), SimError> {
+        while st.k < end {
+            self.step(st, sink)?;
+            st.k += 1;
+        }
+        Ok(())
+    }
 
     /// One sample k, in the loop order of the design: measure, predict, update, control, limit,
     /// hold (one sample later with the computation delay).
-    fn step(&mut self) -> Result<(), SimError> {
+    fn step(&self, st: &mut LoopState, sink: &mut dyn Sink) -> Result<(), SimError> {
         let s = &self.scenario;
         let ts = s.ts;
-        let t = self.k as f64 * ts;
+        let t = st.k as f64 * ts;
         // 1. Measure.
         let y = [
-            self.x[1] + s.noise * self.rng.normal(),
-            self.x[2] + s.noise * self.rng.normal(),
+            st.x[1] + s.noise * st.rng.normal(),
+            st.x[2] + s.noise * st.rng.normal(),
         ];
         // 2–3. EKF predict with u_{k−1} (none before the first sample), then update with y_k.
-        let u = self.u;
-        let previous = (self.k > 0).then_some(&u);
-        let estimate = with_filter!(&mut self.ekf, f => f.sample(previous, &y));
+        let u = st.u;
+        let previous = (st.k > 0).then_some(&u);
+        let estimate = with_filter!(&mut st.ekf, f => f.sample(previous, &y));
         let x_hat = estimate.x_hat;
         check_state(t, &x_hat, ESTIMATE_NAMES)?;
         let gain = estimate.gain;
@@ -320,29 +400,29 @@ impl Simulation {
             // L = K/Ts, eq (20), as a product with 1/Ts (ten divisions per sample are slow).
             gain.map(|row| row.map(|k| k * self.rate))
         };
-        let input = if s.drive.delay && s.drive.delay_comp && self.ifoc.is_none() {
+        let input = if s.drive.delay && s.drive.delay_comp && st.ifoc.is_none() {
             // Delay compensation: u_k acts from t_{k+1}, so control the one-step prediction
             // x̂_{k+1|k} under the voltage committed for [t_k, t_{k+1}), towards ω_d(t_{k+1}):
             // the EKF's own prior for the next sample (its predictor, its estimated parameters),
             // or the true state advanced by the plant's integrator for the perfect observer.
             // The prediction's currents stand in for the measurement, with a zero residual.
             let x_next = if s.perfect {
-                model::advance(&self.model, &self.x, &self.pending, 0.0, ts, s.substeps)
+                model::advance(&self.model, &st.x, &st.pending, 0.0, ts, s.substeps)
             } else {
-                with_filter!(&self.ekf, f => f.predicted_state(&self.pending))
+                with_filter!(&st.ekf, f => f.predicted_state(&st.pending))
             };
             ControlInput {
                 x_hat: x_next,
                 y: [x_next[1], x_next[2]],
                 l,
                 residual: [0.0; 2],
-                speed_ref: s.reference.sample((self.k + 1) as f64 * ts),
+                speed_ref: s.reference.sample((st.k + 1) as f64 * ts),
                 psi_d: s.psi_d,
             }
         } else if s.perfect {
             ControlInput {
-                x_hat: self.x,
-                y: [self.x[1], self.x[2]],
+                x_hat: st.x,
+                y: [st.x[1], st.x[2]],
                 l,
                 residual: [0.0; 2],
                 speed_ref,
@@ -362,7 +442,7 @@ impl Simulation {
             Some(a) if !s.perfect => self.controller.control_adapted(&input, a),
             _ => self.controller.control(&input),
         };
-        let (terms, u_cmd, omega_used) = match &mut self.ifoc {
+        let (terms, u_cmd, omega_used) = match &mut st.ifoc {
             None => {
                 let terms = backstepping.map_err(|error| SimError::Control { t, error })?;
                 (terms, terms.u, input.x_hat[0])
@@ -370,7 +450,7 @@ impl Simulation {
             // The baseline drives the motor; the backstepping terms are evaluated from the EKF
             // for comparison only (zero where its decoupling matrix is singular).
             Some(ifoc) => {
-                let u = ifoc.control(&y, &self.u, &speed_ref, self.limit.radius());
+                let u = ifoc.control(&y, &st.u, &speed_ref, self.limit.radius());
                 let w = ifoc.speed_estimate();
                 if w.is_nan() || w.abs() > MAX_SPEED {
                     return Err(SimError::Diverged {
@@ -393,8 +473,8 @@ impl Simulation {
         }
         // 5. The inverter's limit; with the computation delay, the result waits one sample.
         let u_out = self.limit.apply(&u_cmd);
-        self.u = if s.drive.delay {
-            std::mem::replace(&mut self.pending, u_out)
+        st.u = if s.drive.delay {
+            std::mem::replace(&mut st.pending, u_out)
         } else {
             u_out
         };
@@ -408,21 +488,13 @@ impl Simulation {
         let deceleration = extra_load / self.plant.j;
         let (x_next, ripple) = if s.drive.pwm {
             let vdc = s.drive.vdc;
-            inverter::advance(
-                &self.plant,
-                &self.x,
-                &self.u,
-                vdc,
-                deceleration,
-                ts,
-                s.substeps,
-            )
+            inverter::advance(&self.plant, &st.x, &st.u, vdc, deceleration, ts, s.substeps)
         } else {
-            let x = model::advance(&self.plant, &self.x, &self.u, deceleration, ts, s.substeps);
+            let x = model::advance(&self.plant, &st.x, &st.u, deceleration, ts, s.substeps);
             (x, 0.0)
         };
 
-        let x = &self.x;
+        let x = &st.x;
         let flux = (x[3] * x[3] + x[4] * x[4]).sqrt();
         let flux_sq_hat = x_hat[3] * x_hat[3] + x_hat[4] * x_hat[4];
         let p_omega = estimate.p_omega;
@@ -430,91 +502,95 @@ impl Simulation {
         let [s_aa, s_ab, s_bb] = estimate.innovation_cov;
         let nis = estimate.nis;
         let j_model = s.model.j;
-        let recorded = self.recorder.record(|| Row {
-            t,
-            omega_ref: speed_ref.value,
-            omega: x[0],
-            omega_hat: x_hat[0],
-            i_sa: x[1],
-            i_sb: x[2],
-            i_sa_hat: x_hat[1],
-            i_sb_hat: x_hat[2],
-            phi_ra: x[3],
-            phi_rb: x[4],
-            phi_ra_hat: x_hat[3],
-            phi_rb_hat: x_hat[4],
-            u_a: self.u[0],
-            u_b: self.u[1],
-            z1: terms.z[0],
-            z2: terms.z[1],
-            z3: terms.z[2],
-            z4: terms.z[3],
-            y_a: y[0],
-            y_b: y[1],
-            flux,
-            flux_hat: flux_sq_hat.sqrt(),
-            flux_ref: s.psi_d.sqrt(),
-            omega_err: x[0] - speed_ref.value,
-            omega_est_err: x[0] - x_hat[0],
-            flux_est_err: flux - flux_sq_hat.sqrt(),
-            flux_sq_hat,
-            torque_hat: terms.torque,
-            v1: terms.v1,
-            v1a: terms.v1a,
-            v1s: terms.v1s,
-            v2: terms.v2,
-            v2a: terms.v2a,
-            v2s: terms.v2s,
-            v3: terms.v3,
-            v3a: terms.v3a,
-            v3s: terms.v3s,
-            v4: terms.v4,
-            v4a: terms.v4a,
-            v4s: terms.v4s,
-            psi2: terms.psi2,
-            psi3: terms.psi3,
-            psi4: terms.psi4,
-            u_a_cmd: u_cmd[0],
-            u_b_cmd: u_cmd[1],
-            omega_used,
-            lyapunov: terms.lyapunov,
-            innov_a,
-            innov_b,
-            innov_band_a: 2.0 * s_aa.sqrt(),
-            innov_band_b: 2.0 * s_bb.sqrt(),
-            s_aa,
-            s_ab,
-            s_bb,
-            nis,
-            p_omega,
-            load_hat: load.map_or(s.model.t0, |(a2, _, _)| a2 * j_model),
-            rr_hat: rotor_resistance.map_or(s.model.rr, |(rr, _)| rr),
-            load: s.plant.t0 + extra_load,
-            load_band: load.map_or(0.0, |(_, var, _)| 2.0 * var.sqrt() * j_model),
-            rr: s.plant.rr,
-            rr_band: rotor_resistance.map_or(0.0, |(_, var)| 2.0 * var.sqrt()),
-            i_ripple: ripple,
-        });
-        if let Err((column, value)) = recorded {
-            return Err(SimError::NotFinite { t, column, value });
+        if sink.wants() {
+            let row = Row {
+                t,
+                omega_ref: speed_ref.value,
+                omega: x[0],
+                omega_hat: x_hat[0],
+                i_sa: x[1],
+                i_sb: x[2],
+                i_sa_hat: x_hat[1],
+                i_sb_hat: x_hat[2],
+                phi_ra: x[3],
+                phi_rb: x[4],
+                phi_ra_hat: x_hat[3],
+                phi_rb_hat: x_hat[4],
+                u_a: st.u[0],
+                u_b: st.u[1],
+                z1: terms.z[0],
+                z2: terms.z[1],
+                z3: terms.z[2],
+                z4: terms.z[3],
+                y_a: y[0],
+                y_b: y[1],
+                flux,
+                flux_hat: flux_sq_hat.sqrt(),
+                flux_ref: s.psi_d.sqrt(),
+                omega_err: x[0] - speed_ref.value,
+                omega_est_err: x[0] - x_hat[0],
+                flux_est_err: flux - flux_sq_hat.sqrt(),
+                flux_sq_hat,
+                torque_hat: terms.torque,
+                v1: terms.v1,
+                v1a: terms.v1a,
+                v1s: terms.v1s,
+                v2: terms.v2,
+                v2a: terms.v2a,
+                v2s: terms.v2s,
+                v3: terms.v3,
+                v3a: terms.v3a,
+                v3s: terms.v3s,
+                v4: terms.v4,
+                v4a: terms.v4a,
+                v4s: terms.v4s,
+                psi2: terms.psi2,
+                psi3: terms.psi3,
+                psi4: terms.psi4,
+                u_a_cmd: u_cmd[0],
+                u_b_cmd: u_cmd[1],
+                omega_used,
+                lyapunov: terms.lyapunov,
+                innov_a,
+                innov_b,
+                innov_band_a: 2.0 * s_aa.sqrt(),
+                innov_band_b: 2.0 * s_bb.sqrt(),
+                s_aa,
+                s_ab,
+                s_bb,
+                nis,
+                p_omega,
+                load_hat: load.map_or(s.model.t0, |(a2, _, _)| a2 * j_model),
+                rr_hat: rotor_resistance.map_or(s.model.rr, |(rr, _)| rr),
+                load: s.plant.t0 + extra_load,
+                load_band: load.map_or(0.0, |(_, var, _)| 2.0 * var.sqrt() * j_model),
+                rr: s.plant.rr,
+                rr_band: rotor_resistance.map_or(0.0, |(_, var)| 2.0 * var.sqrt()),
+                i_ripple: ripple,
+            };
+            if let Err((column, value)) = sink.take(&row) {
+                return Err(SimError::NotFinite { t, column, value });
+            }
         }
-        self.x = x_next;
-        check_state(t + ts, &self.x, PLANT_NAMES)
+        st.x = x_next;
+        check_state(t + ts, &st.x, PLANT_NAMES)
     }
+}
 
+impl Simulation {
     /// Samples run so far.
     pub fn steps_done(&self) -> usize {
-        self.k
+        self.state.k
     }
 
     /// Samples in the whole run.
     pub fn steps_total(&self) -> usize {
-        self.steps
+        self.lp.steps
     }
 
     /// Whether every sample has run.
     pub fn is_finished(&self) -> bool {
-        self.k >= self.steps
+        self.state.k >= self.lp.steps
     }
 
     /// The failure that stopped the run, if any.
@@ -522,46 +598,279 @@ impl Simulation {
         self.failure.as_ref()
     }
 
-    /// The recorded trace (only finite rows from before any failure).
+    /// The rows kept in memory, for a run made with [`Simulation::new`]. Panics for a traced run
+    /// (see [`Simulation::visit`]).
     pub fn recorder(&self) -> &Recorder {
-        &self.recorder
+        match &self.recording {
+            Recording::Rows(r) => r,
+            Recording::Trace(_) => panic!("a traced run keeps no rows: read them with visit"),
+        }
     }
 
     /// The scenario being run.
     pub fn scenario(&self) -> &Scenario {
-        &self.scenario
+        &self.lp.scenario
+    }
+
+    /// Bytes the recording holds: the rows, or the checkpoints of a traced run.
+    pub fn recording_bytes(&self) -> usize {
+        match &self.recording {
+            Recording::Rows(r) => r.len() * Recorder::ROW_BYTES,
+            Recording::Trace(t) => t.bytes(),
+        }
+    }
+
+    /// Rows recorded so far (only finite rows from before any failure).
+    pub fn len(&self) -> usize {
+        match &self.recording {
+            Recording::Rows(r) => r.len(),
+            Recording::Trace(t) => t.len,
+        }
+    }
+
+    /// Whether no row has been recorded.
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// Time of recorded row `i` (s).
+    pub fn time(&self, i: usize) -> f64 {
+        match &self.recording {
+            Recording::Rows(r) => r.rows()[i].t,
+            // The loop's own t_k = k·Ts.
+            Recording::Trace(_) => i as f64 * self.lp.scenario.ts,
+        }
+    }
+
+    /// Calls `f(i, row)` for the recorded rows `start..end` (clamped to those recorded) in order,
+    /// until it returns false. A traced run computes them again from the checkpoint before
+    /// `start`: the same rows, bit for bit, as the run computed.
+    pub fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
+        let end = end.min(self.len());
+        match &self.recording {
+            Recording::Rows(r) => {
+                for (i, row) in r.rows().iter().enumerate().take(end).skip(start) {
+                    if !f(i, row) {
+                        return;
+                    }
+                }
+            }
+            Recording::Trace(_) => {
+                if start >= end {
+                    return;
+                }
+                let mut cursor = self.cursor(start);
+                for i in start..end {
+                    if !f(i, &cursor.next_row()) {
+                        return;
+                    }
+                }
+            }
+        }
+    }
+
+    /// Recorded row `i`, if there is one.
+    pub fn row(&self, i: usize) -> Option<Row> {
+        let mut out = None;
+        self.visit(i, i + 1, &mut |_, r| {
+            out = Some(*r);
+            false
+        });
+        out
+    }
+
+    /// A replay of a traced run positioned at row `i` (< len).
+    fn cursor(&self, i: usize) -> Cursor<'_> {
+        let Recording::Trace(trace) = &self.recording else {
+            unreachable!("only traced runs replay")
+        };
+        let mut state = trace.checkpoints[i / CHECKPOINT_EVERY].clone();
+        let mut skip = Capture::default();
+        // The rows before `i` ran without failing, so their replay does too.
+        self.lp
+            .run(&mut state, i, &mut skip)
+            .expect("a replay of rows that ran");
+        Cursor {
+            lp: &self.lp,
+            state,
+        }
+    }
+
+    /// Row indices with t in [t0, t1].
+    fn window(&self, t0: f64, t1: f64) -> (usize, usize) {
+        let first = |pred: &dyn Fn(f64) -> bool| {
+            // The first row whose time does not satisfy `pred` (times increase with the row).
+            let (mut lo, mut hi) = (0, self.len());
+            while lo < hi {
+                let mid = lo + (hi - lo) / 2;
+                if pred(self.time(mid)) {
+                    lo = mid + 1;
+                } else {
+                    hi = mid;
+                }
+            }
+            lo
+        };
+        let start = first(&|t| t < t0);
+        let end = first(&|t| t <= t1).max(start);
+        (start, end)
+    }
+
+    /// Asks a traced run that has not started for the M4 envelope of its whole run, per group of
+    /// columns, in `buckets` buckets: [`Simulation::view`] of the whole run then answers without
+    /// a replay. Errs for an unknown column or a run already started.
+    pub fn keep_overview(&mut self, groups: &[Vec<String>], buckets: usize) -> Result<(), String> {
+        let groups = groups
+            .iter()
+            .map(|g| trace::Overview::indices(g))
+            .collect::<Result<Vec<_>, _>>()?;
+        match &mut self.recording {
+            Recording::Trace(t) if self.state.k == 0 => {
+                t.overview = Some(trace::Overview::new(groups, 0, self.lp.steps, buckets));
+                Ok(())
+            }
+            _ => Err("the overview is kept by a traced run from its start".to_string()),
+        }
+    }
+
+    /// M4 envelopes (see [`M4`]) of each group of columns over the rows with t in [t0, t1], in at
+    /// most `buckets` buckets: per group [t, columns...]. Every point is a recorded sample, so a
+    /// line plot of it draws no edge the samples do not have. Errs for an unknown column.
+    pub fn view(
+        &self,
+        groups: &[Vec<String>],
+        t0: f64,
+        t1: f64,
+        buckets: usize,
+    ) -> Result<Vec<Vec<Vec<f64>>>, String> {
+        let indices = groups
+            .iter()
+            .map(|g| trace::Overview::indices(g))
+            .collect::<Result<Vec<_>, _>>()?;
+        let (start, end) = self.window(t0, t1);
+        if let Recording::Trace(trace) = &self.recording {
+            if let Some(o) = &trace.overview {
+                let whole = start == 0 && end == self.lp.steps && trace.len == end;
+                if whole && o.groups == indices && o.buckets == buckets.max(1) {
+                    return Ok(o.result());
+                }
+            }
+        }
+        let mut overview = trace::Overview::new(indices, start, end - start, buckets);
+        self.visit(start, end, &mut |i, row| {
+            overview.push(i, row);
+            true
+        });
+        Ok(overview.finish())
+    }
+
+    /// Column `name` of this run and of `others` (recorded at the same sampling period), then the
+    /// differences this − other, over their common rows with t in [t0, t1], as one M4 envelope
+    /// [t, this, others..., differences...]. Errs for an unknown column.
+    pub fn overlay(
+        &self,
+        others: &[&Simulation],
+        name: &str,
+        t0: f64,
+        t1: f64,
+        buckets: usize,
+    ) -> Result<Vec<Vec<f64>>, String> {
+        let c = trace::Overview::indices(&[name])?[0];
+        let rows = others.iter().map(|o| o.len()).fold(self.len(), usize::min);
+        let (start, end) = self.window(t0, t1);
+        let end = end.min(rows);
+        let start = start.min(end);
+        let mut m4 = M4::new(2 * others.len() + 1, start, end - start, buckets);
+        if start == end {
+            return Ok(m4.finish());
+        }
+        let mut values = vec![0.0; 2 * others.len() + 2];
+        let mut readers: Vec<Reader> = std::iter::once(self)
+            .chain(others.iter().copied())
+            .map(|s| s.reader(start))
+            .collect();
+        for i in start..end {
+            values[0] = self.time(i);
+            for (j, r) in readers.iter_mut().enumerate() {
+                values[1 + j] = r.next_row().get(c);
+            }
+            for j in 0..others.len() {
+                values[2 + others.len() + j] = values[1] - values[2 + j];
+            }
+            m4.push(i, &values);
+        }
+        Ok(m4.finish())
+    }
+
+    /// Rows from `i` on, one at a time, for either kind of run.
+    fn reader(&self, i: usize) -> Reader<'_> {
+        match &self.recording {
+            Recording::Rows(r) => Reader::Rows(r.rows()[i..].iter()),
+            Recording::Trace(_) => Reader::Replay(self.cursor(i)),
+        }
+    }
+
+    /// Writes recorded rows `start..start + count` (clamped to those recorded) as CSV lines,
+    /// preceded by the header when `start` is 0, so that consecutive chunks concatenate to the
+    /// whole CSV (shortest round-trip number format).
+    pub fn write_csv_rows(
+        &self,
+        out: &mut impl std::io::Write,
+        start: usize,
+        count: usize,
+    ) -> std::io::Result<()> {
+        if start == 0 {
+            recorder::write_header(out)?;
+        }
+        let mut line = String::with_capacity(NUM_COLUMNS * 24);
+        let mut result = Ok(());
+        self.visit(start, start.saturating_add(count), &mut |_, row| {
+            result = recorder::write_row(out, &mut line, row);
+            result.is_ok()
+        });
+        result
+    }
+
+    /// Writes the header and every recorded row as CSV.
+    pub fn write_csv(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
+        self.write_csv_rows(out, 0, usize::MAX)
     }
 
     /// The EKF's posterior covariance P_{k|k} (5×5, or larger with estimated parameters).
     pub fn covariance(&self) -> nalgebra::DMatrix<f64> {
-        with_filter!(&self.ekf, f => nalgebra::DMatrix::from_column_slice(f.covariance().nrows(), f.covariance().ncols(), f.covariance().as_slice()))
+        with_filter!(&self.state.ekf, f => nalgebra::DMatrix::from_column_slice(f.covariance().nrows(), f.covariance().ncols(), f.covariance().as_slice()))
     }
 
     /// The Lyapunov bound (59) of this run, from the recorded V(0).
     pub fn lyapunov_bound(&self) -> Option<LyapunovBound> {
-        let v0 = self.recorder.column_value(0, "lyapunov")?;
-        Some(LyapunovBound::new(&self.scenario.gains, v0))
+        let v0 = self.row(0)?.lyapunov;
+        Some(LyapunovBound::new(&self.lp.scenario.gains, v0))
     }
 
     /// Where the recorded V(t) leaves the bound (59), and whether the voltage limit was active then.
     pub fn stability(&self) -> Option<Stability> {
         let bound = self.lyapunov_bound()?;
-        let rows = self.recorder.rows();
-        let limit = self.limit;
-        let outside: Vec<&Row> = rows
-            .iter()
-            .filter(|r| r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE)
-            .collect();
-        let saturated = |r: &Row| is_saturated(r, &limit);
-        let outside_saturated = outside.iter().filter(|r| saturated(r)).count();
+        let limit = self.lp.limit;
+        let (mut outside, mut outside_saturated, mut saturated) = (0, 0, 0);
+        let mut first_outside = None;
+        self.visit(0, self.len(), &mut |_, r| {
+            let at_limit = is_saturated(r, &limit);
+            saturated += usize::from(at_limit);
+            if r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE {
+                outside += 1;
+                outside_saturated += usize::from(at_limit);
+                first_outside.get_or_insert(r.t);
+            }
+            true
+        });
         // Most likely reason: saturation when most samples above the bound had the limit active;
         // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
         // estimation errors when ε = 0; otherwise ε or the sampling.
-        let cause = if outside.is_empty() {
+        let cause = if outside == 0 {
             "none"
-        } else if 2 * outside_saturated > outside.len() {
+        } else if 2 * outside_saturated > outside {
             "saturation"
-        } else if self.scenario.perfect {
+        } else if self.lp.scenario.perfect {
             "sampling"
         } else if bound.eps == 0.0 {
             "estimation_errors"
@@ -570,13 +879,66 @@ impl Simulation {
         };
         Some(Stability {
             bound,
-            samples: rows.len(),
-            outside: outside.len(),
+            samples: self.len(),
+            outside,
             outside_saturated,
-            saturated: rows.iter().filter(|r| saturated(r)).count(),
-            first_outside: outside.first().map(|r| r.t),
+            saturated,
+            first_outside,
             cause,
         })
+    }
+}
+
+/// A sink that keeps the one row it is given, when it wants one: replays with no trace.
+#[derive(Default)]
+struct Capture {
+    want: bool,
+    row: Option<Row>,
+}
+
+impl Sink for Capture {
+    fn wants(&mut self) -> bool {
+        self.want
+    }
+
+    fn take(&mut self, row: &Row) -> Result<(), (&'static str, f64)> {
+        self.row = Some(*row);
+        Ok(())
+    }
+}
+
+/// A replay of a traced run from a checkpoint.
+struct Cursor<'a> {
+    lp: &'a Loop,
+    state: LoopState,
+}
+
+impl Cursor<'_> {
+    /// The next row. The run recorded it, so it is computed again, bit for bit; a failure the
+    /// run met just after recording its last row is met again after it and ignored here.
+    fn next_row(&mut self) -> Row {
+        let mut capture = Capture {
+            want: true,
+            row: None,
+        };
+        let _ = self.lp.step(&mut self.state, &mut capture);
+        self.state.k += 1;
+        capture.row.expect("a replay of a recorded row")
+    }
+}
+
+/// Rows one at a time: from memory, or by replay.
+enum Reader<'a> {
+    Rows(std::slice::Iter<'a, Row>),
+    Replay(Cursor<'a>),
+}
+
+impl Reader<'_> {
+    fn next_row(&mut self) -> Row {
+        match self {
+            Reader::Rows(rows) => *rows.next().expect("a recorded row"),
+            Reader::Replay(c) => c.next_row(),
+        }
     }
 }
 
@@ -602,23 +964,33 @@ pub struct Metrics {
 impl Simulation {
     /// RMS errors, mean NIS and saturation over the last four fifths of the recorded run.
     pub fn metrics(&self) -> Option<Metrics> {
-        let rows = self.recorder.rows();
-        let tail = &rows[rows.len() / 5..];
-        let n = tail.len() as f64;
-        if tail.is_empty() {
+        let len = self.len();
+        let from = len / 5;
+        if from == len {
             return None;
         }
-        let rms =
-            |f: &dyn Fn(&Row) -> f64| (tail.iter().map(|r| f(r) * f(r)).sum::<f64>() / n).sqrt();
-        let limit = self.limit;
+        let n = (len - from) as f64;
+        let limit = self.lp.limit;
+        // Sums in row order, as `Iterator::sum` adds.
+        let mut sums = [-0.0; 4];
+        let (mut max, mut saturated) = (0.0f64, 0usize);
+        self.visit(from, len, &mut |_, r| {
+            sums[0] += r.omega_err * r.omega_err;
+            sums[1] += r.omega_est_err * r.omega_est_err;
+            sums[2] += r.flux_est_err * r.flux_est_err;
+            sums[3] += r.nis;
+            max = max.max(r.omega_err.abs());
+            saturated += usize::from(is_saturated(r, &limit));
+            true
+        });
         Some(Metrics {
-            from: tail[0].t,
-            tracking_rms: rms(&|r| r.omega_err),
-            tracking_max: tail.iter().fold(0.0, |m, r| m.max(r.omega_err.abs())),
-            speed_estimate_rms: rms(&|r| r.omega_est_err),
-            flux_estimate_rms: rms(&|r| r.flux_est_err),
-            mean_nis: tail.iter().map(|r| r.nis).sum::<f64>() / n,
-            saturated: tail.iter().filter(|r| is_saturated(r, &limit)).count() as f64 / n,
+            from: self.time(from),
+            tracking_rms: (sums[0] / n).sqrt(),
+            tracking_max: max,
+            speed_estimate_rms: (sums[1] / n).sqrt(),
+            flux_estimate_rms: (sums[2] / n).sqrt(),
+            mean_nis: sums[3] / n,
+            saturated: saturated as f64 / n,
         })
     }
 }
@@ -672,15 +1044,31 @@ impl Simulation {
         // Keeping every k-th sample records samples 0 and k only.
         let mut sim = Simulation::new(scenario, k.max(1)).map_err(|e| e.to_string())?;
         sim.advance(k + 1).map_err(|e| e.to_string())?;
-        let row = sim.recorder.rows().last().ok_or("nothing recorded")?;
-        let gain = with_filter!(&sim.ekf, f => f.gain());
-        Ok(Snapshot {
+        let row = sim.recorder().rows().last().ok_or("nothing recorded")?;
+        Ok(sim.snapshot(k, row, &sim.state))
+    }
+
+    /// [`Simulation::inspect`] of this traced run at the recorded sample nearest to `t`, replayed
+    /// from the checkpoint before it.
+    pub fn inspect_at(&self, t: f64) -> Result<Snapshot, String> {
+        if self.is_empty() || !matches!(self.recording, Recording::Trace(_)) {
+            return Err("nothing recorded".to_string());
+        }
+        let k = ((t / self.lp.scenario.ts).round().max(0.0) as usize).min(self.len() - 1);
+        let mut cursor = self.cursor(k);
+        let row = cursor.next_row();
+        Ok(self.snapshot(k, &row, &cursor.state))
+    }
+
+    fn snapshot(&self, k: usize, row: &Row, state: &LoopState) -> Snapshot {
+        let gain = with_filter!(&state.ekf, f => f.gain());
+        Snapshot {
             k,
             columns: COLUMNS,
             docs: COLUMN_DOCS,
             values: row.values().to_vec(),
             gain,
-            l: gain.map(|r| r.map(|g| g * sim.rate)),
-        })
+            l: gain.map(|r| r.map(|g| g * self.lp.rate)),
+        }
     }
 }

@@ -26,6 +26,13 @@ macro_rules! define_row {
                 [$(self.$name),*]
             }
 
+            /// The value of column `i` (in CSV order); panics past the last column.
+            #[inline]
+            pub fn get(&self, i: usize) -> f64 {
+                const FIELDS: &[fn(&Row) -> f64] = &[$(|r| r.$name),*];
+                FIELDS[i](self)
+            }
+
             /// Whether every value is finite. Straight-line bit operations with no early exit:
             /// an exponent of all ones (inf or NaN) plus one carries into the sign bit.
             #[inline]
@@ -193,25 +200,15 @@ impl Recorder {
     }
 
     /// Records the next sample if it is kept (samples 0, every, 2·every, ...); `row` is only
-    /// evaluated then. A row with a value that is not finite is refused, naming the first such
-    /// column, so the trace holds finite numbers only. Never allocates within the capacity given.
-    #[inline]
+    /// evaluated then. See [`super::Sink`].
+    #[cfg(test)]
     pub fn record(&mut self, row: impl FnOnce() -> Row) -> Result<(), (&'static str, f64)> {
-        if self.skip == 0 {
-            let row = row();
-            if !row.is_finite() {
-                let values = row.values();
-                let i = values
-                    .iter()
-                    .position(|v| !v.is_finite())
-                    .expect("one is not finite");
-                return Err((COLUMNS[i], values[i]));
-            }
-            self.rows.push(row);
-            self.skip = self.every;
+        use super::Sink;
+        if self.wants() {
+            self.take(&row())
+        } else {
+            Ok(())
         }
-        self.skip -= 1;
-        Ok(())
     }
 
     /// Number of kept rows.
@@ -258,20 +255,12 @@ impl Recorder {
         count: usize,
     ) -> std::io::Result<()> {
         if start == 0 {
-            writeln!(out, "{}", COLUMNS.join(","))?;
+            write_header(out)?;
         }
         let end = start.saturating_add(count).min(self.rows.len());
         let mut line = String::with_capacity(NUM_COLUMNS * 24);
         for row in self.rows.get(start..end).unwrap_or(&[]) {
-            line.clear();
-            for (i, v) in row.values().iter().enumerate() {
-                if i > 0 {
-                    line.push(',');
-                }
-                write!(line, "{v}").expect("writing to a String");
-            }
-            line.push('\n');
-            out.write_all(line.as_bytes())?;
+            write_row(out, &mut line, row)?;
         }
         Ok(())
     }
@@ -308,6 +297,65 @@ impl Recorder {
     }
 }
 
+/// Writes the CSV header line.
+pub(super) fn write_header(out: &mut impl std::io::Write) -> std::io::Result<()> {
+    writeln!(out, "{}", COLUMNS.join(","))
+}
+
+/// Writes `row` as one CSV line (shortest round-trip number format), using `line` as a buffer.
+pub(super) fn write_row(
+    out: &mut impl std::io::Write,
+    line: &mut String,
+    row: &Row,
+) -> std::io::Result<()> {
+    line.clear();
+    for (i, v) in row.values().iter().enumerate() {
+        if i > 0 {
+            line.push(',');
+        }
+        write!(line, "{v}").expect("writing to a String");
+    }
+    line.push('\n');
+    out.write_all(line.as_bytes())
+}
+
+/// `Ok` when every value of `row` is finite; otherwise the first column that is not, and its
+/// value, so that a trace holds finite numbers only.
+#[inline]
+pub(super) fn finite(row: &Row) -> Result<(), (&'static str, f64)> {
+    if row.is_finite() {
+        return Ok(());
+    }
+    let values = row.values();
+    let i = values
+        .iter()
+        .position(|v| !v.is_finite())
+        .expect("one is not finite");
+    Err((COLUMNS[i], values[i]))
+}
+
+impl super::Sink for Recorder {
+    /// Samples 0, every, 2·every, ... are kept.
+    #[inline]
+    fn wants(&mut self) -> bool {
+        let kept = self.skip == 0;
+        if kept {
+            self.skip = self.every;
+        }
+        self.skip -= 1;
+        kept
+    }
+
+    /// Keeps `row`, or refuses it naming a column that is not finite. Never allocates within the
+    /// capacity given.
+    #[inline]
+    fn take(&mut self, row: &Row) -> Result<(), (&'static str, f64)> {
+        finite(row)?;
+        self.rows.push(*row);
+        Ok(())
+    }
+}
+
 /// Row range of `rows` with t in [t0, t1].
 fn window(rows: &[Row], t0: f64, t1: f64) -> (usize, usize) {
     let start = rows.partition_point(|r| r.t < t0);
@@ -325,12 +373,7 @@ fn split(b: usize, n: usize, buckets: usize) -> usize {
 const M4_POINTS: usize = 4;
 
 /// M4 envelope of `series` (functions of the row index) over rows `start..start + n`, as
-/// [t, series...]. The rows are split into `buckets` equal buckets; each bucket keeps its first
-/// and last row and, for every series, the row of its minimum and of its maximum (the first such
-/// row on ties), in row order and without repeats. Every series is given at every kept row, so
-/// each emitted (t, value) pair is a recorded sample, t never decreases, and each bucket keeps
-/// the extremes of every series at their own times. Windows of at most four rows per bucket are
-/// returned whole.
+/// [t, series...]: see [`M4`], which it feeds row by row.
 pub fn m4(
     t: impl Fn(usize) -> f64,
     series: &[&dyn Fn(usize) -> f64],
@@ -338,56 +381,145 @@ pub fn m4(
     n: usize,
     buckets: usize,
 ) -> Vec<Vec<f64>> {
-    let buckets = buckets.max(1);
-    let whole = n <= M4_POINTS * buckets;
-    let per_bucket = 2 + 2 * series.len();
-    let capacity = if whole {
-        n
-    } else {
-        buckets * per_bucket.min(n / buckets + 1)
-    };
-    let mut out: Vec<Vec<f64>> = vec![Vec::with_capacity(capacity); series.len() + 1];
-    let emit = |i: usize, out: &mut Vec<Vec<f64>>| {
-        out[0].push(t(i));
-        for (o, f) in out[1..].iter_mut().zip(series) {
-            o.push(f(i));
+    let mut m = M4::new(series.len(), start, n, buckets);
+    let mut values = vec![0.0; series.len() + 1];
+    for i in start..start + n {
+        values[0] = t(i);
+        for (v, f) in values[1..].iter_mut().zip(series) {
+            *v = f(i);
         }
-    };
-    if whole {
-        for i in start..start + n {
-            emit(i, &mut out);
-        }
-        return out;
+        m.push(i, &values);
     }
-    let mut kept = Vec::with_capacity(per_bucket);
-    for b in 0..buckets {
-        let (lo, hi) = (
-            start + split(b, n, buckets),
-            start + split(b + 1, n, buckets),
-        );
-        kept.clear();
-        kept.extend([lo, hi - 1]);
-        for f in series {
-            let (mut min_at, mut max_at) = (lo, lo);
-            let (mut min, mut max) = (f(lo), f(lo));
-            for i in lo + 1..hi {
-                let v = f(i);
-                if v < min {
-                    (min, min_at) = (v, i);
-                }
-                if v > max {
-                    (max, max_at) = (v, i);
+    m.finish()
+}
+
+/// The M4 envelope (Jugel et al., VLDB 2014) of a window of rows `start..start + n`, fed in row
+/// order one row at a time, so that a window can be enveloped while it is computed (by the run
+/// itself, or by a replay) without holding its rows.
+///
+/// The rows are split into `buckets` equal buckets; each bucket keeps its first and last row and,
+/// for every series, the row of its minimum and of its maximum (the first such row on ties), in
+/// row order and without repeats. Every series is given at every kept row, so each emitted
+/// (t, value) pair is a recorded sample, t never decreases, and each bucket keeps the extremes of
+/// every series at their own times. Windows of at most four rows per bucket are returned whole.
+/// Allocates only in [`M4::new`].
+#[derive(Clone, Debug)]
+pub struct M4 {
+    start: usize,
+    n: usize,
+    buckets: usize,
+    whole: bool,
+    /// Values per row: t and the series.
+    width: usize,
+    /// Current bucket and its rows lo..hi.
+    bucket: usize,
+    lo: usize,
+    hi: usize,
+    /// Candidate rows of the current bucket: first, then per series its minimum and maximum,
+    /// each with its row index and `width` values.
+    at: Vec<usize>,
+    rows: Vec<f64>,
+    order: Vec<usize>,
+    out: Vec<Vec<f64>>,
+}
+
+impl M4 {
+    /// An envelope of `series` series (besides t) over rows `start..start + n` in at most
+    /// `buckets` buckets.
+    pub fn new(series: usize, start: usize, n: usize, buckets: usize) -> M4 {
+        let buckets = buckets.max(1);
+        let whole = n <= M4_POINTS * buckets;
+        let per_bucket = 2 + 2 * series;
+        let capacity = if whole {
+            n
+        } else {
+            buckets * per_bucket.min(n / buckets + 1)
+        };
+        let width = series + 1;
+        let candidates = 1 + 2 * series;
+        let mut m = M4 {
+            start,
+            n,
+            buckets,
+            whole,
+            width,
+            bucket: 0,
+            lo: start,
+            hi: start,
+            at: vec![0; candidates],
+            rows: vec![0.0; candidates * width],
+            order: Vec::with_capacity(candidates + 1),
+            out: vec![Vec::with_capacity(capacity); width],
+        };
+        m.hi = m.bucket_end(0);
+        m
+    }
+
+    /// First row after bucket `b`.
+    fn bucket_end(&self, b: usize) -> usize {
+        self.start + split(b + 1, self.n, self.buckets)
+    }
+
+    fn emit(out: &mut [Vec<f64>], values: &[f64]) {
+        for (o, &v) in out.iter_mut().zip(values) {
+            o.push(v);
+        }
+    }
+
+    /// Feeds row `i` (the rows of the window in order): `values` is [t, series...].
+    pub fn push(&mut self, i: usize, values: &[f64]) {
+        debug_assert_eq!(values.len(), self.width);
+        if self.whole {
+            Self::emit(&mut self.out, values);
+            return;
+        }
+        let w = self.width;
+        if i == self.lo {
+            for c in 0..self.at.len() {
+                self.at[c] = i;
+                self.rows[c * w..(c + 1) * w].copy_from_slice(values);
+            }
+        } else {
+            for s in 0..w - 1 {
+                let v = values[s + 1];
+                for (c, better) in [
+                    (1 + 2 * s, v < self.rows[(1 + 2 * s) * w + s + 1]),
+                    (2 + 2 * s, v > self.rows[(2 + 2 * s) * w + s + 1]),
+                ] {
+                    if better {
+                        self.at[c] = i;
+                        self.rows[c * w..(c + 1) * w].copy_from_slice(values);
+                    }
                 }
             }
-            kept.extend([min_at, max_at]);
         }
-        kept.sort_unstable();
-        kept.dedup();
-        for &i in &kept {
-            emit(i, &mut out);
+        if i + 1 == self.hi {
+            // The bucket is complete: its candidates and its last row (this one), in row order,
+            // each row once.
+            self.order.clear();
+            self.order.extend(0..self.at.len());
+            let at = &self.at;
+            self.order.sort_unstable_by_key(|&c| (at[c], c));
+            let mut previous = None;
+            for &c in &self.order {
+                if previous != Some(at[c]) && at[c] != i {
+                    Self::emit(&mut self.out, &self.rows[c * w..(c + 1) * w]);
+                }
+                previous = Some(at[c]);
+            }
+            Self::emit(&mut self.out, values);
+            self.bucket += 1;
+            self.lo = self.hi;
+            if self.bucket < self.buckets {
+                self.hi = self.bucket_end(self.bucket);
+            }
         }
     }
-    out
+
+    /// The envelope as [t, series...]: rows not fed are missing from it.
+    pub fn finish(self) -> Vec<Vec<f64>> {
+        self.out
+    }
 }
 
 impl Recorder {

@@ -1,0 +1,125 @@
+//! The trace of a run as checkpoints: a copy of the loop's state every [`CHECKPOINT_EVERY`]
+//! samples, from which any window of rows is computed again, bit for bit, by replay. The run
+//! checks every row it computes (finite values only) and can feed an M4 overview of the whole
+//! run as it goes, so that the first plot needs no replay.
+
+use super::recorder::{finite, M4};
+use super::{LoopState, Row, Sink, COLUMNS};
+
+/// Samples between checkpoints: a replay starts at most this many samples before the first row
+/// it is asked for (about 0.1 s at 20 kHz, under a millisecond of computing).
+pub const CHECKPOINT_EVERY: usize = 2048;
+
+/// An M4 envelope of whole runs, per group of columns, computed while the run goes.
+#[derive(Clone, Debug)]
+pub(super) struct Overview {
+    /// Column indices per group.
+    pub(super) groups: Vec<Vec<usize>>,
+    pub(super) buckets: usize,
+    envelopes: Vec<M4>,
+    /// [t, columns...] of the current row, for one group at a time.
+    values: Vec<f64>,
+}
+
+impl Overview {
+    /// Column indices of `names`, or the first unknown name.
+    pub(super) fn indices(names: &[impl AsRef<str>]) -> Result<Vec<usize>, String> {
+        names
+            .iter()
+            .map(|n| {
+                let n = n.as_ref();
+                COLUMNS
+                    .iter()
+                    .position(|c| *c == n)
+                    .ok_or_else(|| format!("no column '{n}'"))
+            })
+            .collect()
+    }
+
+    pub(super) fn new(groups: Vec<Vec<usize>>, start: usize, n: usize, buckets: usize) -> Overview {
+        let widest = groups.iter().map(Vec::len).max().unwrap_or(0);
+        Overview {
+            envelopes: groups
+                .iter()
+                .map(|g| M4::new(g.len(), start, n, buckets))
+                .collect(),
+            groups,
+            buckets,
+            values: Vec::with_capacity(widest + 1),
+        }
+    }
+
+    /// Feeds row `i`.
+    pub(super) fn push(&mut self, i: usize, row: &Row) {
+        for (group, m4) in self.groups.iter().zip(&mut self.envelopes) {
+            self.values.clear();
+            self.values.push(row.t);
+            self.values.extend(group.iter().map(|&c| row.get(c)));
+            m4.push(i, &self.values);
+        }
+    }
+
+    /// The envelopes, per group [t, columns...].
+    pub(super) fn finish(self) -> Vec<Vec<Vec<f64>>> {
+        self.envelopes.into_iter().map(M4::finish).collect()
+    }
+
+    /// A copy of the envelopes so far.
+    pub(super) fn result(&self) -> Vec<Vec<Vec<f64>>> {
+        self.clone().finish()
+    }
+}
+
+/// Checkpoints of a run, and the rows it has run.
+#[derive(Clone, Debug)]
+pub(super) struct Trace {
+    /// The state before sample j·CHECKPOINT_EVERY, for each j reached.
+    pub(super) checkpoints: Vec<LoopState>,
+    /// Rows computed and checked so far.
+    pub(super) len: usize,
+    /// The whole run's envelope, when asked for before the run started.
+    pub(super) overview: Option<Overview>,
+}
+
+impl Trace {
+    /// A trace with room for the checkpoints of `steps` samples.
+    pub(super) fn new(steps: usize) -> Trace {
+        Trace {
+            checkpoints: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
+            len: 0,
+            overview: None,
+        }
+    }
+
+    /// Keeps a copy of `st` when its next sample starts a checkpoint interval; returns the first
+    /// sample of the next interval.
+    pub(super) fn checkpoint(&mut self, st: &LoopState) -> usize {
+        let j = st.k / CHECKPOINT_EVERY;
+        if st.k % CHECKPOINT_EVERY == 0 && j == self.checkpoints.len() {
+            self.checkpoints.push(st.clone());
+        }
+        (j + 1) * CHECKPOINT_EVERY
+    }
+
+    /// Bytes the trace holds.
+    pub(super) fn bytes(&self) -> usize {
+        self.checkpoints.capacity() * std::mem::size_of::<LoopState>()
+    }
+}
+
+impl Sink for Trace {
+    #[inline]
+    fn wants(&mut self) -> bool {
+        true
+    }
+
+    #[inline]
+    fn take(&mut self, row: &Row) -> Result<(), (&'static str, f64)> {
+        finite(row)?;
+        if let Some(o) = &mut self.overview {
+            o.push(self.len, row);
+        }
+        self.len += 1;
+        Ok(())
+    }
+}
