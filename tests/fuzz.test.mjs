@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import {
-  initSync, columns, Comparison, describe, inspect, log_grid, presets, recover, seed_bands, seed_run, seeds_csv,
+  initSync, columns, Comparison, describe, log_grid, presets, recover, seed_bands, seed_run, seeds_csv,
   Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../dist/pkg/imlab.js';
 
@@ -173,7 +173,6 @@ function exercise(s) {
   // Runs of the whole scenario only when it is short (or rejected before it runs).
   const short = info === undefined || info.steps <= SHORT_STEPS;
   if (short) {
-    attempt('inspect', inspect, s, oddArg(rng.next() * 0.02));
     attempt('seed_run', seed_run, s, oddArg(rng.int(0, 1000)), rng.pick([0, 1, 7, 2 ** 32 - 1, -1, NaN]));
   }
   attempt('sweep_point', sweep_point, s, oddArg(50, 200), oddArg(0.02), rng.pick([0.01, 0.02, 0.05, -1, NaN, 0]), oddArg(0));
@@ -186,11 +185,13 @@ function exercise(s) {
       attempt('step', (n) => sim.step(n), rng.pick([0, 1, 10, 500, SHORT_STEPS, 2 ** 32 - 1, -1]));
       attempt('csv_chunk', (start, count) => sim.csv_chunk(start, count), rng.pick([0, 1, 5, 2 ** 31, 2 ** 32 - 1, -1]), rng.pick([0, 1, 3, 100, 2 ** 32 - 1, -1]));
       const names = Array.from({ length: rng.int(0, 4) }, () => (rng.chance(0.8) ? rng.pick(COLUMNS) : randomBytes().slice(0, 10)));
-      attempt('envelope', (...a) => sim.envelope(...a), names, oddArg(0), oddArg(0.01), rng.pick([0, 1, 2, 7, 1000, 2 ** 32 - 1, -1, NaN]));
-      attempt('figures', () => sim.figures());
+      const groups = rng.chance(0.9) ? [names, names.slice(1)] : rng.pick([null, 7, 'omega', [[1]], [names, 'x']]);
+      attempt('keep_overview', (g, b) => sim.keep_overview(g, b), groups, rng.pick([0, 1, 7, 1000, 2 ** 32 - 1]));
+      attempt('view', (...a) => sim.view(...a), groups, oddArg(0), oddArg(0.01), rng.pick([0, 1, 2, 7, 1000, 2 ** 32 - 1, -1, NaN]));
+      attempt('report', () => sim.report());
+      attempt('inspect', (t) => sim.inspect(t), oddArg(rng.next() * 0.02));
       attempt('metrics', () => sim.metrics());
       attempt('stability', () => sim.stability());
-      attempt('transient', () => sim.transient());
       attempt('lyapunov_bound', (t) => sim.lyapunov_bound(t), Float64Array.from({ length: rng.int(0, 5) }, () => oddArg(rng.next())));
       attempt('column', (name) => sim.column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
       attempt('getters', () => [sim.done, sim.total, sim.rows, sim.finished, sim.failure, sim.scenario]);

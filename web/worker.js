@@ -35,7 +35,7 @@
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  Comparison, describe, inspect, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
@@ -90,20 +90,22 @@ self.addEventListener('error', (e) => {
   crash(e.error ?? e.message);
 });
 
-function envelope(sim, names, t0, t1, buckets) {
-  const recorded = names.filter((c) => c !== BOUND);
-  const cols = sim.envelope(recorded, t0, t1, buckets);
-  const columns = {};
-  recorded.forEach((name, i) => {
-    columns[name] = cols[i + 1];
-  });
-  if (names.includes(BOUND)) columns[BOUND] = sim.lyapunov_bound(cols[0]);
-  return { t: cols[0], columns };
-}
+/** The recorded columns of each plot, in the order of `groups` ({plotId: [column, ...]}). */
+const recordedColumns = (groups) => Object.values(groups).map((names) => names.filter((c) => c !== BOUND));
 
+/** One view of every plot: a single pass of the core over the window (a replay, or the overview the run kept). */
 function view(run, t0, t1, buckets) {
+  const all = run.sim.view(recordedColumns(run.groups), t0, t1, buckets);
   const plots = {};
-  for (const [id, names] of Object.entries(run.groups)) plots[id] = envelope(run.sim, names, t0, t1, buckets);
+  Object.entries(run.groups).forEach(([id, names], g) => {
+    const cols = all[g];
+    const columns = {};
+    names.filter((c) => c !== BOUND).forEach((name, i) => {
+      columns[name] = cols[i + 1];
+    });
+    if (names.includes(BOUND)) columns[BOUND] = run.sim.lyapunov_bound(cols[0]);
+    plots[id] = { t: cols[0], columns };
+  });
   return { t0, t1, plots };
 }
 
@@ -140,6 +142,13 @@ async function run({ id, scenario, groups, buckets }) {
   }
   const me = { id, sim, groups, cancelled: false };
   current = me;
+  try {
+    // The whole run's view is computed as it runs: the first plot needs no replay.
+    sim.keep_overview(recordedColumns(groups), buckets);
+  } catch (e) {
+    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    return;
+  }
   let failure = null;
   let computeMs = 0;
   while (!sim.finished) {
@@ -163,8 +172,9 @@ async function run({ id, scenario, groups, buckets }) {
   const recorded = sim.rows > 0;
   const v = recorded ? view(me, 0, Number.MAX_VALUE, buckets) : null;
   const stability = recorded ? sim.stability() : null;
-  const figures = recorded ? sim.figures() : [];
-  const transient = recorded ? sim.transient() : null;
+  const report = recorded ? sim.report() : null;
+  const figures = report?.figures ?? [];
+  const transient = report?.transient ?? null;
   post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, transient }, v);
 }
 
@@ -304,7 +314,7 @@ self.onmessage = async ({ data }) => {
     case 'inspect':
       if (current && current.id === data.id) {
         try {
-          post({ type: 'inspected', id: data.id, t: data.t, snapshot: inspect(current.sim.scenario, data.t) });
+          post({ type: 'inspected', id: data.id, t: data.t, snapshot: current.sim.inspect(data.t) });
         } catch (e) {
           if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
         }

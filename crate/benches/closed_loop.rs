@@ -1,21 +1,19 @@
 //! Closed-loop speed and the cost of recording, native release build, with criterion.
 //!
 //! Three kinds of group:
-//! - `preset/<name>`: each preset run to its end with every sample recorded
-//!   (`Simulation::new(&s, 1)` then `run()`);
-//! - `long`: `ramp` lasting 5 s and 20 s, each with every sample recorded and with recording off
-//!   (only sample 0 kept), side by side so the cost of recording shows as a ratio;
-//! - `view`: the recording and view paths on a recorded 5 s `ramp`: M4 envelopes (one plot, and
-//!   the page's whole view request) over the whole run and zoomed, the overlay of two runs, a CSV
-//!   chunk of 20,000 rows, and inspect at the last sample (a replay of the whole run).
+//! - `preset/<name>`: each preset run to its end as the page runs it: traced (checkpoints), with
+//!   the overview of the page's plots at 1000 buckets computed as it goes;
+//! - `long`: `ramp` lasting 5 s and 20 s, traced as the page runs it (`recorded`), with every row
+//!   kept in memory (`rows`, the design before checkpoints) and with recording off (`off`: only
+//!   sample 0 kept, no row computed or checked otherwise), side by side;
+//! - `view`: the read paths on a traced 5 s `ramp`: the page's view request (every plot) over the
+//!   whole run from the overview and replayed, zoomed to 1 s and to 20 ms; one plot zoomed; the
+//!   overlay of two runs; a CSV chunk of 20,000 rows; inspect at the last sample.
 //!
-//! Criterion's "elem/s" is steps per second for `preset/*`, `long/*` and `view/inspect`, and rows
-//! per second for `view/csv`. Building the simulation (`Simulation::new`) and dropping it are
-//! outside the timing; faulting in the fresh trace memory while the run writes it is inside: the
-//! allocator maps a large trace afresh for each run and unmaps it on drop, and the kernel's
-//! zeroing of those pages is most of what recording costs (on the 2-core VM, first writes to a
-//! fresh 45 MB took 25 ms against 6.5 ms to rewrite it: the difference is a third of a recorded
-//! 5 s run).
+//! Criterion's "elem/s" is steps per second for `preset/*` and `long/*`, and rows per second for
+//! `view/csv`. Building the simulation and dropping it are outside the timing; faulting in fresh
+//! memory while the run writes it is inside: for `rows` the allocator maps its 50 MB afresh for
+//! each run and the kernel zeroes every page on first write.
 //! A table at the end gives the median of each benchmark just run, with ×real time and the
 //! recorded/off ratio.
 //!
@@ -25,7 +23,7 @@
 
 use criterion::{BatchSize, BenchmarkId, Criterion, SamplingMode, Throughput};
 use imlab::scenario::{preset, Scenario, PRESETS};
-use imlab::sim::{Recorder, Simulation};
+use imlab::sim::Simulation;
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::{Duration, SystemTime};
@@ -53,29 +51,57 @@ fn scenario(text: &str) -> Scenario {
     Scenario::parse(text).unwrap_or_else(|e| panic!("{text}: {e}"))
 }
 
-/// A finished run of `s`, keeping every `every`-th sample.
-fn finished(s: &Scenario, every: usize) -> Simulation {
-    let mut sim = Simulation::new(s, every).expect("accepted");
+/// The page's plots as owned groups of column names.
+fn page_groups() -> Vec<Vec<String>> {
+    PAGE_PLOTS
+        .iter()
+        .map(|g| g.iter().map(|n| n.to_string()).collect())
+        .collect()
+}
+
+/// How a benchmarked run keeps its samples.
+#[derive(Clone, Copy)]
+enum Keep {
+    /// As the page runs it: checkpoints, and the overview of the page's plots at BUCKETS.
+    Traced,
+    /// Every row in memory (the design before checkpoints; analysis runs still use it).
+    Rows,
+    /// Sample 0 only: the loop without recording.
+    Off,
+}
+
+/// A prepared run of `s`.
+fn prepare(s: &Scenario, keep: Keep) -> Simulation {
+    match keep {
+        Keep::Traced => {
+            let mut sim = Simulation::traced(s).expect("accepted");
+            sim.keep_overview(&page_groups(), BUCKETS).expect("columns");
+            sim
+        }
+        Keep::Rows => Simulation::new(s, 1).expect("accepted"),
+        Keep::Off => Simulation::new(s, s.steps()).expect("accepted"),
+    }
+}
+
+/// A finished traced run of `s`.
+fn finished(s: &Scenario) -> Simulation {
+    let mut sim = prepare(s, Keep::Traced);
     sim.run().expect("runs to the end");
     sim
 }
 
-/// Benchmarks a whole run of `s` keeping every `every`-th sample, in steps per second, as `id`
-/// within `group` (no `/` in `id`: it is also the name of criterion's folder).
+/// Benchmarks a whole run of `s` in steps per second, as `id` within `group` (no `/` in `id`:
+/// it is also the name of criterion's folder).
 fn bench_run(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
     id: &str,
     s: &Scenario,
-    every: usize,
+    keep: Keep,
 ) {
-    // Refused runs (the trace cap) fail here, before timing, with the reason.
-    if let Err(e) = Simulation::new(s, every) {
-        panic!("{id}, every = {every}: {e}");
-    }
     group.throughput(Throughput::Elements(s.steps() as u64));
     group.bench_function(id, |b| {
         b.iter_batched(
-            || Simulation::new(s, every).expect("accepted"),
+            || prepare(s, keep),
             |mut sim| {
                 sim.run().expect("runs to the end");
                 // Returned, so that freeing the trace is not timed.
@@ -86,7 +112,7 @@ fn bench_run(
     });
 }
 
-/// One group per preset: the closed loop with every sample recorded.
+/// One group per preset: the closed loop as the page runs it.
 fn presets(c: &mut Criterion) {
     for p in PRESETS {
         let s = preset(p.name).expect("preset");
@@ -95,12 +121,13 @@ fn presets(c: &mut Criterion) {
             .sample_size(20)
             .warm_up_time(Duration::from_millis(500))
             .measurement_time(Duration::from_secs(2));
-        bench_run(&mut group, "recorded", &s, 1);
+        bench_run(&mut group, "recorded", &s, Keep::Traced);
         group.finish();
     }
 }
 
-/// `ramp` over 5 s and 20 s, recorded and not, in one group.
+/// `ramp` over 5 s and 20 s: traced as the page runs it, every row kept, and recording off, in
+/// one group.
 fn long(c: &mut Criterion) {
     let mut group = c.benchmark_group("long");
     // Runs of 25 ms to a few hundred ms: few samples, each one run.
@@ -111,50 +138,44 @@ fn long(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(3));
     for seconds in LONG_DURATIONS {
         let s = scenario(&format!("v=1&preset=ramp&duration={seconds}"));
-        bench_run(&mut group, &format!("{seconds}s_recorded"), &s, 1);
-        // Keeping every steps-th sample keeps sample 0 only: the loop without the trace.
-        bench_run(&mut group, &format!("{seconds}s_off"), &s, s.steps());
+        bench_run(&mut group, &format!("{seconds}s_recorded"), &s, Keep::Traced);
+        bench_run(&mut group, &format!("{seconds}s_rows"), &s, Keep::Rows);
+        bench_run(&mut group, &format!("{seconds}s_off"), &s, Keep::Off);
     }
     group.finish();
 }
 
-/// The paths that read the trace: envelopes, overlay, CSV, inspect.
+/// The paths that read a traced run: views, overlay, CSV, inspect.
 fn view(c: &mut Criterion) {
     let s = scenario("v=1&preset=ramp&duration=5");
-    let current = finished(&s, 1);
-    let pinned = finished(&scenario("v=1&preset=ramp&duration=5&seed=2"), 1);
-    let rec = current.recorder();
+    let current = finished(&s);
+    let pinned = finished(&scenario("v=1&preset=ramp&duration=5&seed=2"));
     let end = s.duration;
-    // Whole run; 1 s around the ramp (bucketed); 20 ms (400 rows, sent whole).
-    let windows = [
-        ("whole", 0.0, end),
-        ("zoom_1s", 0.0, 1.0),
-        ("zoom_20ms", 0.2, 0.22),
-    ];
+    let groups = page_groups();
+    let speed = &groups[..1];
 
     let mut group = c.benchmark_group("view");
     group
         .sample_size(10)
         .warm_up_time(Duration::from_millis(500))
         .measurement_time(Duration::from_millis(1500));
-    for (name, t0, t1) in windows {
-        group.bench_function(BenchmarkId::new("envelope", name), |b| {
-            b.iter(|| rec.envelope(black_box(PAGE_PLOTS[0]), t0, t1, BUCKETS));
-        });
-    }
-    for (name, t0, t1) in [windows[0], windows[2]] {
+    // The whole run at the overview's width (kept while running), and one pixel narrower
+    // (replayed); 1 s around the ramp (bucketed); 20 ms (400 rows, sent whole).
+    for (name, t0, t1, buckets) in [
+        ("whole", 0.0, end, BUCKETS),
+        ("whole_replayed", 0.0, end, BUCKETS - 1),
+        ("zoom_1s", 0.0, 1.0, BUCKETS),
+        ("zoom_20ms", 0.2, 0.22, BUCKETS),
+    ] {
         group.bench_function(BenchmarkId::new("page_view", name), |b| {
-            b.iter(|| {
-                PAGE_PLOTS
-                    .iter()
-                    .map(|names| rec.envelope(black_box(names), t0, t1, BUCKETS))
-                    .collect::<Vec<_>>()
-            });
+            b.iter(|| current.view(black_box(&groups), t0, t1, buckets));
         });
     }
-    let others: [&Recorder; 1] = [pinned.recorder()];
+    group.bench_function(BenchmarkId::new("speed_plot", "zoom_1s"), |b| {
+        b.iter(|| current.view(black_box(speed), 0.0, 1.0, BUCKETS));
+    });
     group.bench_function(BenchmarkId::new("overlay", "whole"), |b| {
-        b.iter(|| rec.overlay(&others, black_box("omega"), 0.0, end, BUCKETS));
+        b.iter(|| current.overlay(&[&pinned], black_box("omega"), 0.0, end, BUCKETS));
     });
     group.throughput(Throughput::Elements(CSV_ROWS as u64));
     let mut out = Vec::new();
@@ -162,13 +183,14 @@ fn view(c: &mut Criterion) {
         b.iter(|| {
             out.clear();
             // From row 1: a chunk of the export without its header.
-            rec.write_csv_rows(&mut out, 1, CSV_ROWS).expect("to a Vec");
+            current
+                .write_csv_rows(&mut out, 1, CSV_ROWS)
+                .expect("to a Vec");
             out.len()
         });
     });
-    group.throughput(Throughput::Elements(s.steps() as u64));
     group.bench_function(BenchmarkId::new("inspect", "end_of_5s"), |b| {
-        b.iter(|| Simulation::inspect(&s, black_box(end)).expect("inspects"));
+        b.iter(|| current.inspect_at(black_box(end)).expect("inspects"));
     });
     group.finish();
 }
@@ -218,8 +240,9 @@ fn summary(since: SystemTime) {
     for seconds in LONG_DURATIONS {
         let steps = scenario(&format!("v=1&preset=ramp&duration={seconds}")).steps();
         let recorded = rate(&format!("long/{seconds}s_recorded"), steps);
+        let rows = rate(&format!("long/{seconds}s_rows"), steps);
         let off = rate(&format!("long/{seconds}s_off"), steps);
-        for (name, r) in [("recorded", recorded), ("off", off)] {
+        for (name, r) in [("recorded", recorded), ("rows", rows), ("off", off)] {
             if let Some(r) = r {
                 lines.push(format!(
                     "long/{seconds}s_{name:<17} {:>7.2} M steps/s {:>6.0}× real time",
@@ -229,6 +252,7 @@ fn summary(since: SystemTime) {
             }
         }
         if let (Some(recorded), Some(off)) = (recorded, off) {
+            // The bar: at least 85 %.
             lines.push(format!(
                 "long/{seconds}s recorded/off       {:>7.0} %",
                 100.0 * recorded / off
@@ -236,11 +260,11 @@ fn summary(since: SystemTime) {
         }
     }
     for id in [
-        "envelope/whole",
-        "envelope/zoom_1s",
-        "envelope/zoom_20ms",
         "page_view/whole",
+        "page_view/whole_replayed",
+        "page_view/zoom_1s",
         "page_view/zoom_20ms",
+        "speed_plot/zoom_1s",
         "overlay/whole",
         &format!("csv/{CSV_ROWS}"),
         "inspect/end_of_5s",

@@ -41,12 +41,22 @@ pub struct Simulation {
 
 #[wasm_bindgen]
 impl Simulation {
-    /// Parses `scenario` (the query-string codec) and prepares the run, recording every sample.
+    /// Parses `scenario` (the query-string codec) and prepares the run. It keeps checkpoints,
+    /// not rows: every read below replays the rows it needs, bit for bit.
     #[wasm_bindgen(constructor)]
     pub fn new(scenario: &str) -> Result<Simulation, JsValue> {
         let s = Scenario::parse(scenario).map_err(js_error)?;
-        let inner = sim::Simulation::new(&s, 1).map_err(js_error)?;
+        let inner = sim::Simulation::traced(&s).map_err(js_error)?;
         Ok(Simulation { inner })
+    }
+
+    /// Before the first step: computes the whole run's view of `groups` (an array of arrays of
+    /// column names) in `buckets` buckets while it runs, so that the first plot needs no replay.
+    pub fn keep_overview(&mut self, groups: JsValue, buckets: u32) -> Result<(), JsValue> {
+        let groups: Vec<Vec<String>> = from_js(groups)?;
+        self.inner
+            .keep_overview(&groups, buckets as usize)
+            .map_err(js_error)
     }
 
     /// Runs up to `max_steps` samples; returns how many ran, or throws the failure message.
@@ -88,37 +98,51 @@ impl Simulation {
     /// Rows recorded so far.
     #[wasm_bindgen(getter)]
     pub fn rows(&self) -> u32 {
-        self.inner.recorder().len() as u32
+        self.inner.len() as u32
+    }
+
+    /// Bytes the run's trace holds (its checkpoints).
+    #[wasm_bindgen(getter)]
+    pub fn trace_bytes(&self) -> u32 {
+        self.inner.recording_bytes() as u32
     }
 
     /// A whole column, copied into a new `Float64Array`.
     pub fn column(&self, name: &str) -> Result<Float64Array, JsValue> {
-        self.inner
-            .recorder()
-            .column(name)
-            .map(|c| Float64Array::from(c.as_slice()))
-            .ok_or_else(|| js_error(format!("no column '{name}'")))
+        let c = COLUMNS
+            .iter()
+            .position(|c| *c == name)
+            .ok_or_else(|| js_error(format!("no column '{name}'")))?;
+        let mut out = Vec::with_capacity(self.inner.len());
+        self.inner.visit(0, usize::MAX, &mut |_, row| {
+            out.push(row.get(c));
+            true
+        });
+        Ok(Float64Array::from(out.as_slice()))
     }
 
-    /// Min/max envelope of `names` over t in [t0, t1] in `buckets` buckets:
-    /// an array [t, col1, col2, ...] of `Float64Array`s.
-    pub fn envelope(
-        &self,
-        names: Vec<String>,
-        t0: f64,
-        t1: f64,
-        buckets: u32,
-    ) -> Result<Array, JsValue> {
-        let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-        let cols = self
+    /// M4 envelopes of each group of columns (an array of arrays of names) over t in [t0, t1] in
+    /// `buckets` buckets: an array, per group, of `Float64Array`s [t, col1, col2, ...].
+    pub fn view(&self, groups: JsValue, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
+        let groups: Vec<Vec<String>> = from_js(groups)?;
+        let views = self
             .inner
-            .recorder()
-            .envelope(&refs, t0, t1, buckets as usize)
-            .ok_or_else(|| js_error(format!("unknown column among {names:?}")))?;
-        Ok(cols
+            .view(&groups, t0, t1, buckets as usize)
+            .map_err(js_error)?;
+        Ok(views
             .iter()
-            .map(|c| Float64Array::from(c.as_slice()))
+            .map(|cols| {
+                cols.iter()
+                    .map(|c| Float64Array::from(c.as_slice()))
+                    .collect::<Array>()
+            })
             .collect())
+    }
+
+    /// Every recorded value and the Kalman gain at the recorded sample nearest to `t` (s),
+    /// replayed from the checkpoint before it.
+    pub fn inspect(&self, t: f64) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.inspect_at(t).map_err(js_error)?)
     }
 
     /// The Lyapunov bound (59) at each time in `t` (s), from this run's V(0) and gains.
@@ -141,15 +165,11 @@ impl Simulation {
         to_js(&self.inner.metrics())
     }
 
-    /// The figures of the run so far, `[{name, label, value, unit, window}]` as `imlab metrics`
-    /// prints them, or null when nothing is recorded.
-    pub fn figures(&self) -> Result<JsValue, JsValue> {
-        to_js(&sim::figures(&self.inner))
-    }
-
-    /// Where the start-up transient ends: `{t, reason}`.
-    pub fn transient(&self) -> Result<JsValue, JsValue> {
-        to_js(&sim::transient_end(&self.inner))
+    /// Where the start-up transient ends and the figures of the run so far:
+    /// `{transient: {t, reason}, figures: [{name, label, value, unit, window}] | null}`, the
+    /// figures as `imlab metrics` prints them (null when nothing is recorded).
+    pub fn report(&self) -> Result<JsValue, JsValue> {
+        to_js(&sim::report(&self.inner))
     }
 
     /// Recorded rows `start..start + count` as CSV bytes (with the header when `start` is 0):
@@ -157,7 +177,6 @@ impl Simulation {
     pub fn csv_chunk(&self, start: u32, count: u32) -> Vec<u8> {
         let mut out = Vec::new();
         self.inner
-            .recorder()
             .write_csv_rows(&mut out, start as usize, count as usize)
             .expect("writing to a Vec");
         out
@@ -235,13 +254,6 @@ pub fn variant(scenario: &str, key: &str, value: &str) -> Result<String, JsValue
     let mut s = Scenario::parse(scenario).map_err(js_error)?;
     s.set(key, value).map_err(js_error)?;
     Ok(s.encode())
-}
-
-/// Every recorded value and the Kalman gain at the sample nearest to `t` (s), by replaying the run.
-#[wasm_bindgen]
-pub fn inspect(scenario: &str, t: f64) -> Result<JsValue, JsValue> {
-    let s = Scenario::parse(scenario).map_err(js_error)?;
-    to_js(&sim::Simulation::inspect(&s, t).map_err(js_error)?)
 }
 
 /// The 95 % band of one sample's NIS for a consistent filter, `[low, high]`.
@@ -335,11 +347,6 @@ pub struct Comparison {
 
 /// Most pinned runs at once.
 const MAX_PINS: usize = 4;
-/// Most bytes of pinned traces at once: two of the largest runs. With the current run, a replay
-/// for the inspect panel and an export chunk, the worker's WASM memory stays well inside the
-/// 4 GiB a 32-bit module can address.
-const MAX_PINNED_BYTES: usize = 2 * sim::MAX_TRACE_BYTES;
-
 #[wasm_bindgen]
 impl Comparison {
     /// An empty set of pins.
@@ -356,22 +363,9 @@ impl Comparison {
             )));
         }
         let s = Scenario::parse(scenario).map_err(js_error)?;
-        let pinned: usize = self
-            .pins
-            .iter()
-            .map(|p| sim::trace_bytes(p.scenario(), 1))
-            .sum();
-        let bytes = sim::trace_bytes(&s, 1);
-        if pinned + bytes > MAX_PINNED_BYTES {
-            return Err(js_error(format!(
-                "pinning this run would hold {} MiB of traces, more than the {} MiB allowed for pins \
-                 ({} MiB pinned now); unpin a run or pin a shorter one",
-                sim::mib(pinned + bytes),
-                MAX_PINNED_BYTES >> 20,
-                sim::mib(pinned)
-            )));
-        }
-        let mut sim = sim::Simulation::new(&s, 1).map_err(js_error)?;
+        // A pin keeps checkpoints only (a few MiB for the longest run), so the number of pins
+        // is the only limit.
+        let mut sim = sim::Simulation::traced(&s).map_err(js_error)?;
         // A run that stops early stays pinned with the samples before its failure.
         let _ = sim.run();
         self.pins.push(sim);
@@ -420,12 +414,11 @@ impl Comparison {
         if let Some(p) = self.pins.iter().find(|p| p.scenario().ts != ts) {
             return Err(js_error(format!("pinned run {} samples at Ts = {} s, the current one at {ts} s: overlays need the same Ts", p.scenario().encode(), p.scenario().ts)));
         }
-        let others: Vec<&crate::sim::Recorder> = self.pins.iter().map(|p| p.recorder()).collect();
+        let others: Vec<&sim::Simulation> = self.pins.iter().collect();
         let cols = current
             .inner
-            .recorder()
             .overlay(&others, name, t0, t1, buckets as usize)
-            .ok_or_else(|| js_error(format!("no column '{name}'")))?;
+            .map_err(js_error)?;
         Ok(cols
             .iter()
             .map(|c| Float64Array::from(c.as_slice()))

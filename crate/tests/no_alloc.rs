@@ -58,3 +58,28 @@ fn closed_loop_steps_do_not_allocate() {
         );
     }
 }
+
+#[test]
+fn traced_steps_do_not_allocate() {
+    // Checkpoints go into room made when the run is prepared; the overview's envelopes too.
+    let groups: Vec<Vec<String>> = [&["omega", "omega_hat", "omega_ref"][..], &["i_sa", "nis"]]
+        .iter()
+        .map(|g| g.iter().map(|n| n.to_string()).collect())
+        .collect();
+    for p in PRESETS {
+        let s = imlab::scenario::preset(p.name).unwrap();
+        let mut sim = Simulation::traced(&s).unwrap();
+        sim.keep_overview(&groups, 1000).unwrap();
+        let before = allocations();
+        let result = sim.advance(5000);
+        let after = allocations();
+        assert!(result.is_ok(), "{}: {:?}", p.name, result);
+        assert_eq!(
+            after - before,
+            0,
+            "{}: {} allocations in 5000 steps",
+            p.name,
+            after - before
+        );
+    }
+}

@@ -24,6 +24,7 @@ fn bindings_return_the_core_columns_byte_for_byte() {
         }
         let mut core = sim::Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
         core.run().unwrap();
+        // The binding replays from checkpoints; the core here keeps every row.
         for name in COLUMNS {
             let a = js.column(name).unwrap().to_vec();
             let b = core.recorder().column(name).unwrap();
@@ -47,21 +48,34 @@ fn bindings_return_the_core_columns_byte_for_byte() {
 }
 
 #[wasm_bindgen_test]
-fn envelope_matches_the_core() {
-    let mut js = Simulation::new("sine200").unwrap();
-    js.step(u32::MAX).unwrap();
+fn views_match_the_core() {
+    let groups = vec![
+        vec!["omega".to_string(), "u_a".to_string()],
+        vec!["nis".to_string()],
+    ];
+    let js_groups = serde_wasm_bindgen::to_value(&groups).unwrap();
     let mut core = sim::Simulation::new(&Scenario::parse("sine200").unwrap(), 1).unwrap();
     core.run().unwrap();
-    let names = vec!["omega".to_string(), "u_a".to_string()];
-    let env = js.envelope(names, 0.0, 1.0, 300).unwrap();
-    let expected = core
-        .recorder()
-        .envelope(&["omega", "u_a"], 0.0, 1.0, 300)
-        .unwrap();
-    assert_eq!(env.length() as usize, expected.len());
-    for (i, col) in expected.iter().enumerate() {
-        let got = js_sys::Float64Array::from(env.get(i as u32)).to_vec();
-        assert_eq!(&got, col);
+    // The whole run from the overview kept while running, then zoomed windows by replay.
+    let mut js = Simulation::new("sine200").unwrap();
+    js.keep_overview(js_groups.clone(), 300).unwrap();
+    js.step(u32::MAX).unwrap();
+    for (t0, t1, buckets) in [
+        (0.0, 1.0, 300),
+        (0.0, 1.0, 299),
+        (0.1, 0.11, 300),
+        (0.05, 0.2, 50),
+    ] {
+        let view = js.view(js_groups.clone(), t0, t1, buckets).unwrap();
+        let expected = core.view(&groups, t0, t1, buckets as usize).unwrap();
+        assert_eq!(view.length() as usize, expected.len());
+        for (g, cols) in expected.iter().enumerate() {
+            let got = js_sys::Array::from(&view.get(g as u32));
+            for (i, col) in cols.iter().enumerate() {
+                let got = js_sys::Float64Array::from(got.get(i as u32)).to_vec();
+                assert_eq!(&got, col, "{t0}–{t1} s, {buckets} buckets, group {g}");
+            }
+        }
     }
 }
 
@@ -108,7 +122,13 @@ fn figures_and_transient_are_the_core_values() {
     js.step(u32::MAX).unwrap();
     let mut core = sim::Simulation::new(&Scenario::parse("step").unwrap(), 1).unwrap();
     core.run().unwrap();
-    let got: Vec<Figure> = serde_wasm_bindgen::from_value(js.figures().unwrap()).unwrap();
+    #[derive(serde::Deserialize)]
+    struct Report {
+        transient: Transient,
+        figures: Option<Vec<Figure>>,
+    }
+    let report: Report = serde_wasm_bindgen::from_value(js.report().unwrap()).unwrap();
+    let got = report.figures.unwrap();
     let expected = sim::figures(&core).unwrap();
     assert_eq!(got.len(), expected.len());
     for (g, e) in got.iter().zip(&expected) {
@@ -123,13 +143,11 @@ fn figures_and_transient_are_the_core_values() {
         );
         assert_eq!(g.value.to_bits(), e.value.to_bits(), "{}", e.name);
     }
-    let got: Transient = serde_wasm_bindgen::from_value(js.transient().unwrap()).unwrap();
+    let got = report.transient;
     let expected = sim::transient_end(&core);
     assert_eq!((got.t, got.reason), (expected.t, expected.reason));
     // Before any sample: no figures.
-    assert!(Simulation::new("step")
-        .unwrap()
-        .figures()
-        .unwrap()
-        .is_null());
+    let report: Report =
+        serde_wasm_bindgen::from_value(Simulation::new("step").unwrap().report().unwrap()).unwrap();
+    assert!(report.figures.is_none());
 }

@@ -806,7 +806,7 @@ impl Simulation {
     fn reader(&self, i: usize) -> Reader<'_> {
         match &self.recording {
             Recording::Rows(r) => Reader::Rows(r.rows()[i..].iter()),
-            Recording::Trace(_) => Reader::Replay(self.cursor(i)),
+            Recording::Trace(_) => Reader::Replay(Box::new(self.cursor(i))),
         }
     }
 
@@ -930,7 +930,7 @@ impl Cursor<'_> {
 /// Rows one at a time: from memory, or by replay.
 enum Reader<'a> {
     Rows(std::slice::Iter<'a, Row>),
-    Replay(Cursor<'a>),
+    Replay(Box<Cursor<'a>>),
 }
 
 impl Reader<'_> {

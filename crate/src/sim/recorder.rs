@@ -428,7 +428,7 @@ impl M4 {
     /// `buckets` buckets.
     pub fn new(series: usize, start: usize, n: usize, buckets: usize) -> M4 {
         let buckets = buckets.max(1);
-        let whole = n <= M4_POINTS * buckets;
+        let whole = n <= M4_POINTS.saturating_mul(buckets);
         let per_bucket = 2 + 2 * series;
         let capacity = if whole {
             n
@@ -449,7 +449,8 @@ impl M4 {
             at: vec![0; candidates],
             rows: vec![0.0; candidates * width],
             order: Vec::with_capacity(candidates + 1),
-            out: vec![Vec::with_capacity(capacity); width],
+            // Each its own capacity (`vec![v; n]` clones, and a clone drops the capacity).
+            out: (0..width).map(|_| Vec::with_capacity(capacity)).collect(),
         };
         m.hi = m.bucket_end(0);
         m
