@@ -138,7 +138,12 @@ fn long(c: &mut Criterion) {
         .measurement_time(Duration::from_secs(3));
     for seconds in LONG_DURATIONS {
         let s = scenario(&format!("v=1&preset=ramp&duration={seconds}"));
-        bench_run(&mut group, &format!("{seconds}s_recorded"), &s, Keep::Traced);
+        bench_run(
+            &mut group,
+            &format!("{seconds}s_recorded"),
+            &s,
+            Keep::Traced,
+        );
         bench_run(&mut group, &format!("{seconds}s_rows"), &s, Keep::Rows);
         bench_run(&mut group, &format!("{seconds}s_off"), &s, Keep::Off);
     }

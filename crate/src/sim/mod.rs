@@ -726,7 +726,12 @@ impl Simulation {
             .collect::<Result<Vec<_>, _>>()?;
         match &mut self.recording {
             Recording::Trace(t) if self.state.k == 0 => {
-                t.overview = Some(trace::Overview::new(groups, 0, self.lp.steps, buckets));
+                t.overview = Some(Box::new(trace::Overview::new(
+                    groups,
+                    0,
+                    self.lp.steps,
+                    buckets,
+                )));
                 Ok(())
             }
             _ => Err("the overview is kept by a traced run from its start".to_string()),
@@ -780,9 +785,16 @@ impl Simulation {
         let (start, end) = self.window(t0, t1);
         let end = end.min(rows);
         let start = start.min(end);
-        let mut m4 = M4::new(2 * others.len() + 1, start, end - start, buckets);
+        let series = 2 * others.len() + 1;
+        let mut m4 = M4::new(
+            vec![(0..series).collect()],
+            series,
+            start,
+            end - start,
+            buckets,
+        );
         if start == end {
-            return Ok(m4.finish());
+            return Ok(m4.finish().pop().expect("one group"));
         }
         let mut values = vec![0.0; 2 * others.len() + 2];
         let mut readers: Vec<Reader> = std::iter::once(self)
@@ -799,7 +811,7 @@ impl Simulation {
             }
             m4.push(i, &values);
         }
-        Ok(m4.finish())
+        Ok(m4.finish().pop().expect("one group"))
     }
 
     /// Rows from `i` on, one at a time, for either kind of run.

@@ -381,7 +381,13 @@ pub fn m4(
     n: usize,
     buckets: usize,
 ) -> Vec<Vec<f64>> {
-    let mut m = M4::new(series.len(), start, n, buckets);
+    let mut m = M4::new(
+        vec![(0..series.len()).collect()],
+        series.len(),
+        start,
+        n,
+        buckets,
+    );
     let mut values = vec![0.0; series.len() + 1];
     for i in start..start + n {
         values[0] = t(i);
@@ -390,19 +396,20 @@ pub fn m4(
         }
         m.push(i, &values);
     }
-    m.finish()
+    m.finish().pop().expect("one group")
 }
 
-/// The M4 envelope (Jugel et al., VLDB 2014) of a window of rows `start..start + n`, fed in row
-/// order one row at a time, so that a window can be enveloped while it is computed (by the run
-/// itself, or by a replay) without holding its rows.
+/// M4 envelopes (Jugel et al., VLDB 2014) of groups of series over a window of rows
+/// `start..start + n`, fed in row order one row at a time, so that a window can be enveloped
+/// while it is computed (by the run itself, or by a replay) without holding its rows.
 ///
-/// The rows are split into `buckets` equal buckets; each bucket keeps its first and last row and,
-/// for every series, the row of its minimum and of its maximum (the first such row on ties), in
-/// row order and without repeats. Every series is given at every kept row, so each emitted
-/// (t, value) pair is a recorded sample, t never decreases, and each bucket keeps the extremes of
-/// every series at their own times. Windows of at most four rows per bucket are returned whole.
-/// Allocates only in [`M4::new`].
+/// The rows are split into `buckets` equal buckets; for each group, each bucket keeps its first
+/// and last row and, for every series of the group, the row of its minimum and of its maximum
+/// (the first such row on ties), in row order and without repeats. Every series of a group is
+/// given at every row the group keeps, so each emitted (t, value) pair is a recorded sample, t
+/// never decreases, and each bucket keeps the extremes of every series at their own times.
+/// Windows of at most four rows per bucket are returned whole. Each series' extremes are found
+/// once, however many groups it is in. Allocates only in [`M4::new`].
 #[derive(Clone, Debug)]
 pub struct M4 {
     start: usize,
@@ -411,46 +418,74 @@ pub struct M4 {
     whole: bool,
     /// Values per row: t and the series.
     width: usize,
+    /// Series indices (0-based) of each group.
+    groups: Vec<Vec<usize>>,
     /// Current bucket and its rows lo..hi.
     bucket: usize,
     lo: usize,
     hi: usize,
-    /// Candidate rows of the current bucket: first, then per series its minimum and maximum,
-    /// each with its row index and `width` values.
-    at: Vec<usize>,
+    /// The current bucket's rows so far, `width` values each.
     rows: Vec<f64>,
-    order: Vec<usize>,
-    out: Vec<Vec<f64>>,
+    /// Per series, the offset in the bucket of its minimum and maximum so far, and their values.
+    min_at: Vec<usize>,
+    max_at: Vec<usize>,
+    min: Vec<f64>,
+    max: Vec<f64>,
+    kept: Vec<usize>,
+    /// Per group, [t, its series...].
+    out: Vec<Vec<Vec<f64>>>,
 }
 
 impl M4 {
-    /// An envelope of `series` series (besides t) over rows `start..start + n` in at most
-    /// `buckets` buckets.
-    pub fn new(series: usize, start: usize, n: usize, buckets: usize) -> M4 {
+    /// Envelopes of `groups` (each a list of series indices below `series`) over rows
+    /// `start..start + n` in at most `buckets` buckets.
+    pub fn new(
+        groups: Vec<Vec<usize>>,
+        series: usize,
+        start: usize,
+        n: usize,
+        buckets: usize,
+    ) -> M4 {
         let buckets = buckets.max(1);
         let whole = n <= M4_POINTS.saturating_mul(buckets);
-        let per_bucket = 2 + 2 * series;
-        let capacity = if whole {
-            n
-        } else {
-            buckets * per_bucket.min(n / buckets + 1)
-        };
+        let per_bucket = n / buckets + 1;
         let width = series + 1;
-        let candidates = 1 + 2 * series;
+        let out = groups
+            .iter()
+            .map(|g| {
+                let capacity = if whole {
+                    n
+                } else {
+                    buckets * (2 + 2 * g.len()).min(per_bucket)
+                };
+                // Each its own capacity (`vec![v; n]` clones, and a clone drops the capacity).
+                (0..=g.len())
+                    .map(|_| Vec::with_capacity(capacity))
+                    .collect()
+            })
+            .collect();
+        let widest = groups.iter().map(Vec::len).max().unwrap_or(0);
         let mut m = M4 {
             start,
             n,
             buckets,
             whole,
             width,
+            groups,
             bucket: 0,
             lo: start,
             hi: start,
-            at: vec![0; candidates],
-            rows: vec![0.0; candidates * width],
-            order: Vec::with_capacity(candidates + 1),
-            // Each its own capacity (`vec![v; n]` clones, and a clone drops the capacity).
-            out: (0..width).map(|_| Vec::with_capacity(capacity)).collect(),
+            rows: if whole {
+                Vec::new()
+            } else {
+                vec![0.0; per_bucket * width]
+            },
+            min_at: vec![0; series],
+            max_at: vec![0; series],
+            min: vec![0.0; series],
+            max: vec![0.0; series],
+            kept: Vec::with_capacity(2 + 2 * widest),
+            out,
         };
         m.hi = m.bucket_end(0);
         m
@@ -461,54 +496,54 @@ impl M4 {
         self.start + split(b + 1, self.n, self.buckets)
     }
 
-    fn emit(out: &mut [Vec<f64>], values: &[f64]) {
-        for (o, &v) in out.iter_mut().zip(values) {
-            o.push(v);
-        }
-    }
-
     /// Feeds row `i` (the rows of the window in order): `values` is [t, series...].
     pub fn push(&mut self, i: usize, values: &[f64]) {
         debug_assert_eq!(values.len(), self.width);
         if self.whole {
-            Self::emit(&mut self.out, values);
+            for (g, out) in self.groups.iter().zip(&mut self.out) {
+                out[0].push(values[0]);
+                for (o, &s) in out[1..].iter_mut().zip(g) {
+                    o.push(values[s + 1]);
+                }
+            }
             return;
         }
         let w = self.width;
-        if i == self.lo {
-            for c in 0..self.at.len() {
-                self.at[c] = i;
-                self.rows[c * w..(c + 1) * w].copy_from_slice(values);
-            }
+        let offset = i - self.lo;
+        self.rows[offset * w..(offset + 1) * w].copy_from_slice(values);
+        if offset == 0 {
+            self.min_at.fill(0);
+            self.max_at.fill(0);
+            self.min.copy_from_slice(&values[1..]);
+            self.max.copy_from_slice(&values[1..]);
         } else {
-            for s in 0..w - 1 {
-                let v = values[s + 1];
-                for (c, better) in [
-                    (1 + 2 * s, v < self.rows[(1 + 2 * s) * w + s + 1]),
-                    (2 + 2 * s, v > self.rows[(2 + 2 * s) * w + s + 1]),
-                ] {
-                    if better {
-                        self.at[c] = i;
-                        self.rows[c * w..(c + 1) * w].copy_from_slice(values);
-                    }
+            for (s, &v) in values[1..].iter().enumerate() {
+                if v < self.min[s] {
+                    (self.min[s], self.min_at[s]) = (v, offset);
+                }
+                if v > self.max[s] {
+                    (self.max[s], self.max_at[s]) = (v, offset);
                 }
             }
         }
         if i + 1 == self.hi {
-            // The bucket is complete: its candidates and its last row (this one), in row order,
-            // each row once.
-            self.order.clear();
-            self.order.extend(0..self.at.len());
-            let at = &self.at;
-            self.order.sort_unstable_by_key(|&c| (at[c], c));
-            let mut previous = None;
-            for &c in &self.order {
-                if previous != Some(at[c]) && at[c] != i {
-                    Self::emit(&mut self.out, &self.rows[c * w..(c + 1) * w]);
+            // The bucket is complete: per group, its kept rows in row order, each once.
+            for (g, out) in self.groups.iter().zip(&mut self.out) {
+                self.kept.clear();
+                self.kept.extend([0, offset]);
+                for &s in g {
+                    self.kept.extend([self.min_at[s], self.max_at[s]]);
                 }
-                previous = Some(at[c]);
+                self.kept.sort_unstable();
+                self.kept.dedup();
+                for &k in &self.kept {
+                    let row = &self.rows[k * w..(k + 1) * w];
+                    out[0].push(row[0]);
+                    for (o, &s) in out[1..].iter_mut().zip(g) {
+                        o.push(row[s + 1]);
+                    }
+                }
             }
-            Self::emit(&mut self.out, values);
             self.bucket += 1;
             self.lo = self.hi;
             if self.bucket < self.buckets {
@@ -517,8 +552,8 @@ impl M4 {
         }
     }
 
-    /// The envelope as [t, series...]: rows not fed are missing from it.
-    pub fn finish(self) -> Vec<Vec<f64>> {
+    /// The envelopes, per group [t, its series...]: rows not fed are missing from them.
+    pub fn finish(self) -> Vec<Vec<Vec<f64>>> {
         self.out
     }
 }

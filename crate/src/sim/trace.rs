@@ -10,14 +10,17 @@ use super::{LoopState, Row, Sink, COLUMNS};
 /// it is asked for (about 0.1 s at 20 kHz, under a millisecond of computing).
 pub const CHECKPOINT_EVERY: usize = 2048;
 
-/// An M4 envelope of whole runs, per group of columns, computed while the run goes.
+/// M4 envelopes of groups of columns over a window of rows, fed row by row: while the run goes
+/// (the overview of the whole run) or by a replay.
 #[derive(Clone, Debug)]
 pub(super) struct Overview {
     /// Column indices per group.
     pub(super) groups: Vec<Vec<usize>>,
     pub(super) buckets: usize,
-    envelopes: Vec<M4>,
-    /// [t, columns...] of the current row, for one group at a time.
+    /// The distinct columns of the groups.
+    columns: Vec<usize>,
+    envelopes: M4,
+    /// [t, columns...] of the current row.
     values: Vec<f64>,
 }
 
@@ -37,36 +40,44 @@ impl Overview {
     }
 
     pub(super) fn new(groups: Vec<Vec<usize>>, start: usize, n: usize, buckets: usize) -> Overview {
-        let widest = groups.iter().map(Vec::len).max().unwrap_or(0);
+        let mut columns: Vec<usize> = groups.iter().flatten().copied().collect();
+        columns.sort_unstable();
+        columns.dedup();
+        let series = groups
+            .iter()
+            .map(|g| {
+                g.iter()
+                    .map(|c| columns.binary_search(c).expect("a column of the groups"))
+                    .collect()
+            })
+            .collect();
         Overview {
-            envelopes: groups
-                .iter()
-                .map(|g| M4::new(g.len(), start, n, buckets))
-                .collect(),
+            envelopes: M4::new(series, columns.len(), start, n, buckets),
+            values: vec![0.0; columns.len() + 1],
+            columns,
             groups,
-            buckets,
-            values: Vec::with_capacity(widest + 1),
+            buckets: buckets.max(1),
         }
     }
 
     /// Feeds row `i`.
+    #[inline]
     pub(super) fn push(&mut self, i: usize, row: &Row) {
-        for (group, m4) in self.groups.iter().zip(&mut self.envelopes) {
-            self.values.clear();
-            self.values.push(row.t);
-            self.values.extend(group.iter().map(|&c| row.get(c)));
-            m4.push(i, &self.values);
+        self.values[0] = row.t;
+        for (v, &c) in self.values[1..].iter_mut().zip(&self.columns) {
+            *v = row.get(c);
         }
+        self.envelopes.push(i, &self.values);
     }
 
     /// The envelopes, per group [t, columns...].
     pub(super) fn finish(self) -> Vec<Vec<Vec<f64>>> {
-        self.envelopes.into_iter().map(M4::finish).collect()
+        self.envelopes.finish()
     }
 
     /// A copy of the envelopes so far.
     pub(super) fn result(&self) -> Vec<Vec<Vec<f64>>> {
-        self.clone().finish()
+        self.envelopes.clone().finish()
     }
 }
 
@@ -78,7 +89,7 @@ pub(super) struct Trace {
     /// Rows computed and checked so far.
     pub(super) len: usize,
     /// The whole run's envelope, when asked for before the run started.
-    pub(super) overview: Option<Overview>,
+    pub(super) overview: Option<Box<Overview>>,
 }
 
 impl Trace {
