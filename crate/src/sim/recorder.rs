@@ -517,13 +517,18 @@ impl M4 {
             self.min.copy_from_slice(&values[1..]);
             self.max.copy_from_slice(&values[1..]);
         } else {
-            for (s, &v) in values[1..].iter().enumerate() {
-                if v < self.min[s] {
-                    (self.min[s], self.min_at[s]) = (v, offset);
-                }
-                if v > self.max[s] {
-                    (self.max[s], self.max_at[s]) = (v, offset);
-                }
+            // Selects rather than branches: which sample is an extreme is unpredictable.
+            let extremes = self.min.iter_mut().zip(&mut self.min_at);
+            for ((v, (min, min_at)), (max, max_at)) in values[1..]
+                .iter()
+                .zip(extremes)
+                .zip(self.max.iter_mut().zip(&mut self.max_at))
+            {
+                let (lower, higher) = (*v < *min, *v > *max);
+                *min = if lower { *v } else { *min };
+                *min_at = if lower { offset } else { *min_at };
+                *max = if higher { *v } else { *max };
+                *max_at = if higher { offset } else { *max_at };
             }
         }
         if i + 1 == self.hi {

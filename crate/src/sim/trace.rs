@@ -63,9 +63,10 @@ impl Overview {
     /// Feeds row `i`.
     #[inline]
     pub(super) fn push(&mut self, i: usize, row: &Row) {
+        let all = row.values();
         self.values[0] = row.t;
         for (v, &c) in self.values[1..].iter_mut().zip(&self.columns) {
-            *v = row.get(c);
+            *v = all[c];
         }
         self.envelopes.push(i, &self.values);
     }
