@@ -1,5 +1,6 @@
 //! The native counterpart of tests/bench/node.mjs, for its WASM/native ratio: `ramp` 1 s and 5 s
-//! runs with every sample recorded, the same warm-up and best-of as the Node repetitions
+//! traced runs (checkpoints, every row computed and checked, no plot overview: what `new
+//! Simulation` in node.mjs does), the same warm-up and best-of as the Node repetitions
 //! (BENCH_WARMUP, default 3; BENCH_RUNS, default 10), printed as one JSON line of steps/s.
 //!
 //! The machine's speed drifts by tens of percent over seconds (see node.mjs), so node.mjs runs
@@ -7,9 +8,8 @@
 //! measured minutes apart would not compare. Criterion's `closed_loop` bench is the place for
 //! native figures themselves. Run alone with `cargo bench --bench native_speed`.
 //!
-//! Expect native 5 s runs slower than 1 s runs, and slower than WASM's: the allocator maps the
-//! 45 MB trace of a 5 s run afresh each time and the kernel zeroes every page on first write,
-//! while a 1 s trace (9 MB) is reused from the heap and WASM keeps its grown memory.
+//! A traced run writes a checkpoint every 2,048 samples (16 KB a simulated second), so 1 s and
+//! 5 s runs should be equally fast.
 
 use imlab::scenario::Scenario;
 use imlab::sim::Simulation;
@@ -32,13 +32,13 @@ fn setting(name: &str, fallback: usize) -> usize {
     }
 }
 
-/// Steps per second of one whole run of `s`, every sample recorded.
+/// Steps per second of one whole traced run of `s`.
 fn rate(s: &Scenario) -> f64 {
-    let mut sim = Simulation::new(s, 1).expect("accepted");
+    let mut sim = Simulation::traced(s).expect("accepted");
     let t = Instant::now();
     sim.run().expect("runs to the end");
     let wall = t.elapsed().as_secs_f64();
-    std::hint::black_box(sim.recorder().len());
+    std::hint::black_box(sim.len());
     sim.steps_done() as f64 / wall
 }
 

@@ -1,5 +1,6 @@
 // The same WASM build in Node: closed-loop steps per second of `ramp`, 1 s and 5 s runs, with
-// every sample recorded (as the page runs it, sim.step in chunks of 5,000), against the native
+// traced runs (checkpoints, every row computed and checked, sim.step in chunks of 5,000 as the
+// page's worker runs them, without the plot overview the page also asks for), against the native
 // build measured the same way in the same session.
 //
 // Each figure is the median (min–max) of BENCH_REPS (default 5) repetitions, each a fresh Node
@@ -127,7 +128,7 @@ if (process.env.IMLAB_BENCH_CHILD) {
   }
   const per = (list, key) => list.map((x) => M(x[key])).join(' ');
   const show = ([med, lo, hi], f = M) => `${f(med)} (${f(lo)}–${f(hi)})`;
-  console.log(`WASM closed loop in Node ${process.version}, ramp, every sample recorded: median (min–max) of ${REPS} processes, each the best of ${RUNS} runs after ${WARMUP} warm-up runs${native ? ', against the native build measured alternately the same way' : ''}:`);
+  console.log(`WASM closed loop in Node ${process.version}, ramp, traced: median (min–max) of ${REPS} processes, each the best of ${RUNS} runs after ${WARMUP} warm-up runs${native ? ', against the native build measured alternately the same way' : ''}:`);
   for (const [label] of SCENARIOS) {
     const node = spread(reps.map((x) => x[label]));
     console.log(`  ${label} runs: Node ${show(node)} M steps/s, ${(node[0] * 50e-6).toFixed(0)}× real time   [per process: ${per(reps, label)}]`);
