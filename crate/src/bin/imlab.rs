@@ -358,12 +358,11 @@ fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> 
         Some(path) => {
             let failed = |e: io::Error| format!("--out '{}': {e}", excerpt(path));
             let mut file = BufWriter::new(File::create(path).map_err(failed)?);
-            sim.recorder()
-                .write_csv(&mut file)
+            sim.write_csv(&mut file)
                 .and_then(|()| file.flush())
                 .map_err(failed)?;
         }
-        None => sim.recorder().write_csv(out).map_err(stdout_stop)?,
+        None => sim.write_csv(out).map_err(stdout_stop)?,
     }
     result.map_err(|e| format!("{e} (trace written up to the failure)").into())
 }

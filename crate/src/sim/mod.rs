@@ -831,16 +831,9 @@ impl Simulation {
         start: usize,
         count: usize,
     ) -> std::io::Result<()> {
-        if start == 0 {
-            recorder::write_header(out)?;
-        }
-        let mut line = String::with_capacity(NUM_COLUMNS * 24);
-        let mut result = Ok(());
-        self.visit(start, start.saturating_add(count), &mut |_, row| {
-            result = recorder::write_row(out, &mut line, row);
-            result.is_ok()
-        });
-        result
+        recorder::write_csv(out, start, &mut |f| {
+            self.visit(start, start.saturating_add(count), &mut |_, row| f(row));
+        })
     }
 
     /// Writes the header and every recorded row as CSV.

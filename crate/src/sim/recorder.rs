@@ -230,11 +230,6 @@ impl Recorder {
         &self.rows
     }
 
-    /// The value of column `name` in kept row `i`.
-    pub fn column_value(&self, i: usize, name: &str) -> Option<f64> {
-        Some(self.rows.get(i)?.values()[Self::index(name)?])
-    }
-
     /// A copy of the column named `name`, if there is one.
     pub fn column(&self, name: &str) -> Option<Vec<f64>> {
         let c = Self::index(name)?;
@@ -254,15 +249,14 @@ impl Recorder {
         start: usize,
         count: usize,
     ) -> std::io::Result<()> {
-        if start == 0 {
-            write_header(out)?;
-        }
         let end = start.saturating_add(count).min(self.rows.len());
-        let mut line = String::with_capacity(NUM_COLUMNS * 24);
-        for row in self.rows.get(start..end).unwrap_or(&[]) {
-            write_row(out, &mut line, row)?;
-        }
-        Ok(())
+        write_csv(out, start, &mut |f| {
+            for row in self.rows.get(start..end).unwrap_or(&[]) {
+                if !f(row) {
+                    return;
+                }
+            }
+        })
     }
 
     /// The whole trace as a CSV string.
@@ -273,8 +267,10 @@ impl Recorder {
     }
 
     /// M4 envelope (Jugel et al., VLDB 2014) of the named columns over rows with t in [t0, t1],
+    /// for the tests of [`m4`] (runs read theirs with `Simulation::view`),
     /// in at most `buckets` buckets: see [`m4`]. Returns [t, col1, col2, ...]; every point is a
     /// recorded sample, so a line plot of it draws no edge the samples do not have.
+    #[cfg(test)]
     pub fn envelope(
         &self,
         names: &[&str],
@@ -297,26 +293,35 @@ impl Recorder {
     }
 }
 
-/// Writes the CSV header line.
-pub(super) fn write_header(out: &mut impl std::io::Write) -> std::io::Result<()> {
-    writeln!(out, "{}", COLUMNS.join(","))
-}
+/// A visitor of rows in order: it returns false to stop.
+pub(super) type RowVisitor<'a> = dyn FnMut(&Row) -> bool + 'a;
 
-/// Writes `row` as one CSV line (shortest round-trip number format), using `line` as a buffer.
-pub(super) fn write_row(
+/// Writes the rows that `rows` gives (it calls its argument with each, in order, until that
+/// returns false) as CSV lines, preceded by the header when they start at row 0 (shortest
+/// round-trip number format).
+pub(super) fn write_csv(
     out: &mut impl std::io::Write,
-    line: &mut String,
-    row: &Row,
+    start: usize,
+    rows: &mut dyn FnMut(&mut RowVisitor<'_>),
 ) -> std::io::Result<()> {
-    line.clear();
-    for (i, v) in row.values().iter().enumerate() {
-        if i > 0 {
-            line.push(',');
-        }
-        write!(line, "{v}").expect("writing to a String");
+    if start == 0 {
+        writeln!(out, "{}", COLUMNS.join(","))?;
     }
-    line.push('\n');
-    out.write_all(line.as_bytes())
+    let mut line = String::with_capacity(NUM_COLUMNS * 24);
+    let mut result = Ok(());
+    rows(&mut |row| {
+        line.clear();
+        for (i, v) in row.values().iter().enumerate() {
+            if i > 0 {
+                line.push(',');
+            }
+            write!(line, "{v}").expect("writing to a String");
+        }
+        line.push('\n');
+        result = out.write_all(line.as_bytes());
+        result.is_ok()
+    });
+    result
 }
 
 /// `Ok` when every value of `row` is finite; otherwise the first column that is not, and its
@@ -357,6 +362,7 @@ impl super::Sink for Recorder {
 }
 
 /// Row range of `rows` with t in [t0, t1].
+#[cfg(test)]
 fn window(rows: &[Row], t0: f64, t1: f64) -> (usize, usize) {
     let start = rows.partition_point(|r| r.t < t0);
     let end = rows.partition_point(|r| r.t <= t1).max(start);
@@ -563,8 +569,10 @@ impl M4 {
     }
 }
 
+#[cfg(test)]
 impl Recorder {
     /// Overlay of column `name` of this run and of `others` (recorded at the same sampling period),
+    /// for the tests of [`m4`] (runs overlay with `Simulation::overlay`),
     /// with the differences this − other, over their common rows with t in [t0, t1]. Returns
     /// [t, this, others..., differences...] as one M4 envelope ([`m4`]).
     pub fn overlay(
