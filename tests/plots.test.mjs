@@ -89,6 +89,39 @@ test('the full-run envelope is made of recorded samples only', () =>
     });
   }));
 
+test('the walkthrough plots wait until shown, then draw recorded samples and follow a zoom', () =>
+  withPage('v=1&preset=sine200-1rad', async (page) => {
+    // A run on the plots tab leaves the walkthrough's plots for later.
+    assert.equal(await page.evaluate(() => window.imlab.walkthrough.charts.length), 0);
+    const nis = () => page.evaluate(() => {
+      const u = window.imlab.walkthrough.charts.find((c) => c.series[1]?.label === 'NIS');
+      return u ? [[...u.data[0]], [...u.data[1]]] : null;
+    });
+    const rows = new Map(cliRows('v=1&preset=sine200-1rad').map((r) => [r.t, r]));
+    const recorded = ([t, v]) => t.forEach((time, j) => {
+      assert.ok(rows.has(time), `t = ${time} is not a sample`);
+      assert.equal(v[j], rows.get(time).nis);
+    });
+    await page.click('[data-tab=walkthrough]');
+    await page.waitForFunction(() => window.imlab.walkthrough.charts.length === window.imlab.walkthrough.defs.length);
+    const whole = await nis();
+    assert.equal(whole[0][0], 0);
+    assert.equal(whole[0].at(-1), [...rows.keys()].at(-1));
+    recorded(whole);
+
+    // A zoom of the main plots refines the walkthrough's too.
+    await page.click('[data-tab=plots]');
+    await zoom(page, 0.2, 0.21, 0.25);
+    await page.waitForFunction(() => {
+      const u = window.imlab.walkthrough.charts.find((c) => c.series[1]?.label === 'NIS');
+      return u.data[0][0] > 0.19;
+    });
+    const zoomed = await nis();
+    assert.ok(zoomed[0][0] > 0.199 && zoomed[0].at(-1) < 0.211, `window ${zoomed[0][0]}–${zoomed[0].at(-1)}`);
+    assert.equal(zoomed[0].length, [...rows.keys()].filter((t) => t >= zoomed[0][0] && t <= zoomed[0].at(-1)).length);
+    recorded(zoomed);
+  }));
+
 test('the figures strip equals imlab metrics, and the y-axes leave out the start-up transient', () =>
   withPage('v=1&preset=step', async (page) => {
     const shown = await page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [

@@ -36,7 +36,17 @@ const state = {
   presetPending: false, // the picker moved by keyboard, not yet committed
   export: null, // the CSV export under way: {serial, parts: [Blob]}
   exportSerial: 0,
+  walkthroughAsked: 0, // the run whose whole-run walkthrough view was asked for
 };
+
+/**
+ * Resolves once the browser has rendered the next frame, or after a second if it renders none
+ * (a hidden tab).
+ */
+const painted = () => new Promise((resolve) => {
+  requestAnimationFrame(() => setTimeout(resolve, 0));
+  setTimeout(resolve, 1000);
+});
 
 /** Whether the y-axes leave out the start-up transient, and from which time. */
 const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: state.transient?.t ?? -Infinity });
@@ -81,7 +91,6 @@ walkthrough.onInspect = (t) => {
   walkthrough.plots.mark(t);
 };
 const plotSets = [plots, walkthrough.plots];
-const GROUPS = Object.assign({}, ...plotSets.map((p) => p.groups()));
 const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
@@ -272,7 +281,8 @@ function startRun() {
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
   walkthrough.closeInspect();
   setBusy(true);
-  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups: GROUPS, buckets: buckets() });
+  // The run keeps the whole-run view of the main plots; the walkthrough's is asked for when shown.
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups: plots.groups(), buckets: buckets() });
 }
 
 // One bucket a pixel column of the widest plot.
@@ -284,14 +294,33 @@ function requestWindow(t0, t1) {
   // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
   if (t0 <= plots.full[0] && t1 >= plots.full[1]) return;
   for (const set of plotSets) set.window = [t0, t1];
-  worker.postMessage({ type: 'view', id: state.runId, t0, t1, buckets: buckets() });
+  requestViews(t0, t1);
 }
 
 /** Returns every plot to the whole run. */
 function fullRun() {
   if (state.running || !plots.full) return;
   for (const set of plotSets) set.unzoom();
-  worker.postMessage({ type: 'view', id: state.runId, t0: 0, t1: Number.MAX_VALUE, buckets: buckets() });
+  requestViews(0, Number.MAX_VALUE);
+}
+
+/** Asks for a window of the main plots, and of the walkthrough's once they show this run. */
+function requestViews(t0, t1) {
+  requestView('plots', t0, t1);
+  if (!walkthrough.stale) requestView('walkthrough', t0, t1);
+}
+
+function requestView(set, t0, t1) {
+  const groups = (set === 'walkthrough' ? walkthrough.plots : plots).groups();
+  worker.postMessage({ type: 'view', id: state.runId, set, groups, t0, t1, buckets: buckets() });
+}
+
+/** Asks for the walkthrough's view of the whole run when it is on screen and does not have it yet. */
+function walkthroughView() {
+  if (state.running || !plots.full || !walkthrough.stale || !walkthrough.visible()) return;
+  if (state.walkthroughAsked === state.runId) return; // asked already
+  state.walkthroughAsked = state.runId;
+  requestView('walkthrough', 0, Number.MAX_VALUE);
 }
 
 function requestOverlay() {
@@ -380,7 +409,10 @@ function showTab(name) {
   }
   // Plots drawn while hidden have no width; size them now that they are visible.
   plots.resize();
-  if (name === 'walkthrough') walkthrough.draw();
+  if (name === 'walkthrough') {
+    walkthrough.shown();
+    walkthroughView();
+  }
   walkthrough.plots.resize();
   walkthrough.closeInspect();
 }
@@ -487,10 +519,13 @@ const handlers = {
     $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
     showFigures(figures);
     if (view) {
-      walkthrough.show(view, stability, state.nisBand);
-      await plots.show(view, { ifoc: ifocRun(), chunked: true });
+      walkthrough.show(stability, state.nisBand);
+      await plots.show(view, { ifoc: ifocRun() });
+      // "Plotted" is when the browser has painted them: the canvases are rasterised then.
+      await painted();
       // A newer run, or a worker crash while the plots were drawn, owns the page now.
       if (id !== state.runId || document.body.dataset.state === 'crashed') return;
+      walkthroughView();
     }
     const ms = performance.now() - state.started;
     Object.assign(document.body.dataset, {
@@ -532,11 +567,14 @@ const handlers = {
     ui.status.textContent = `Cancelled at ${(ui.progress.value * 100).toFixed(0)} %`;
     document.body.dataset.state = 'cancelled';
   },
-  view({ id, view }) {
+  view({ id, set, view }) {
     if (id !== state.runId) return;
-    plots.refine(view);
-    walkthrough.refine(view);
-    document.body.dataset.view = `${view.t0},${view.t1}`;
+    if (set === 'walkthrough') {
+      walkthrough.receive(view);
+    } else {
+      plots.refine(view);
+      document.body.dataset.view = `${view.t0},${view.t1}`;
+    }
   },
   inspected({ id, t, snapshot }) {
     if (id === state.runId) walkthrough.inspect(snapshot, t, Number(fieldValue(state.info, 'ts')));

@@ -172,10 +172,10 @@ export class Plots {
     const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
     for (const [column, label, axis] of plot.series) {
       const style = STYLE[column] ?? { stroke: '#444' };
-      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: 2 * this.scale, value: (u, v) => six(v) });
+      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: this.scale, value: (u, v) => six(v) });
     }
     for (const [label, axis] of plot.constants ?? []) {
-      series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: 1.5 * this.scale, value: (u, v) => six(v) });
+      series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: this.scale, value: (u, v) => six(v) });
     }
     const k = this.scale;
     const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };

@@ -109,6 +109,7 @@ export class Walkthrough {
     document.addEventListener('focusin', remember, true);
     this.sectionDivs = {};
     this.nisBand = [0, 0];
+    this.stale = false; // the plots wait for the view of the last run
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
       onWindow, onFull, onPick, framing, height: 220,
@@ -177,28 +178,36 @@ export class Walkthrough {
     this.container.querySelector('.lumped').replaceChildren(table);
   }
 
-  /** Takes a finished run: its view, the stability report and the NIS band (all from the core).
-   * The plots are drawn when the walkthrough is visible, so a run on another tab does not wait for them. */
-  show(view, stability, nisBand) {
+  /**
+   * Takes a finished run's stability report and the NIS band (both from the core). Its plots wait
+   * for their view, which the page asks for while the walkthrough is visible: a run on another
+   * tab neither computes nor draws them.
+   */
+  show(stability, nisBand) {
     this.nisBand = nisBand;
-    this.pending = view;
-    if (this.container.offsetParent !== null) this.draw();
+    this.stale = true;
     const report = this.container.querySelector('.stability-report');
     report.textContent = stabilityText(stability);
   }
 
-  /** Draws the last run's plots if they are not drawn yet (the walkthrough has just been shown). */
-  draw() {
-    this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
-    if (!this.pending) return;
-    const view = this.pending;
-    this.pending = null;
-    this.plots.show(view, { ifoc: this.ifoc });
+  /** Whether the walkthrough is on screen. */
+  visible() {
+    return this.container.offsetParent !== null;
   }
 
-  /** Replaces the data inside a zoom window (only once the plots exist). */
-  refine(view) {
-    if (!this.pending) this.plots.refine(view);
+  /** The walkthrough has just been shown: its equations learn whether they scroll. */
+  shown() {
+    this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
+  }
+
+  /** Takes a view of its plots: the first after a run draws the whole run, later ones a window. */
+  receive(view) {
+    if (this.stale) {
+      this.stale = false;
+      this.plots.show(view, { ifoc: this.ifoc });
+    } else {
+      this.plots.refine(view);
+    }
   }
 
   /** Marks the knob named `key` invalid with the codec's message (null clears every mark). */

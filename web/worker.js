@@ -9,8 +9,10 @@
 //        → {type: 'progress', id, done, total}* then
 //          {type: 'done', id, view, rows, failure, computeMs, stability, figures, transient}
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
+//     (`view` is the whole run's view of `groups`, kept while the run went)
 //   {type: 'cancel', id}
-//   {type: 'view', id, t0, t1, buckets}        → {type: 'view', id, view}
+//   {type: 'view', id, set, groups, t0, t1, buckets} → {type: 'view', id, set, view}
+//     (`set` names the page's plot set the view is for, and comes back as given)
 //   {type: 'csv', id, serial}                  → {type: 'csv', serial, bytes, rows, total}, one a chunk
 //     of rows (bytes a transferred Uint8Array; the chunks concatenate to the CSV; the last has
 //     rows === total) | {type: 'csv-failed', serial, message}
@@ -45,7 +47,7 @@ const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and 
 // of a CSV that can reach 1.3 GB, past what one JS string can hold.
 const CSV_ROWS = 20_000;
 
-let current = null; // {id, sim, groups, cancelled}
+let current = null; // {id, sim, cancelled}
 let comparison = null; // pinned runs, created with the module
 let exporting = null; // {serial, answer}: the CSV export waiting for the page's next request
 let crashed = false;
@@ -93,11 +95,14 @@ self.addEventListener('error', (e) => {
 /** The recorded columns of each plot, in the order of `groups` ({plotId: [column, ...]}). */
 const recordedColumns = (groups) => Object.values(groups).map((names) => names.filter((c) => c !== BOUND));
 
-/** One view of every plot: a single pass of the core over the window (a replay, or the overview the run kept). */
-function view(run, t0, t1, buckets) {
-  const all = run.sim.view(recordedColumns(run.groups), t0, t1, buckets);
+/**
+ * One view of the plots `groups`: a single pass of the core over the window (a replay, or the
+ * overview the run kept when `groups` are the run's own and the window is the whole run).
+ */
+function view(run, groups, t0, t1, buckets) {
+  const all = run.sim.view(recordedColumns(groups), t0, t1, buckets);
   const plots = {};
-  Object.entries(run.groups).forEach(([id, names], g) => {
+  Object.entries(groups).forEach(([id, names], g) => {
     const cols = all[g];
     const columns = {};
     names.filter((c) => c !== BOUND).forEach((name, i) => {
@@ -140,7 +145,7 @@ async function run({ id, scenario, groups, buckets }) {
     if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
     return;
   }
-  const me = { id, sim, groups, cancelled: false };
+  const me = { id, sim, cancelled: false };
   current = me;
   try {
     // The whole run's view is computed as it runs: the first plot needs no replay.
@@ -170,7 +175,7 @@ async function run({ id, scenario, groups, buckets }) {
     }
   }
   const recorded = sim.rows > 0;
-  const v = recorded ? view(me, 0, Number.MAX_VALUE, buckets) : null;
+  const v = recorded ? view(me, groups, 0, Number.MAX_VALUE, buckets) : null;
   const stability = recorded ? sim.stability() : null;
   const report = recorded ? sim.report() : null;
   const figures = report?.figures ?? [];
@@ -304,8 +309,8 @@ self.onmessage = async ({ data }) => {
       // A run that recorded nothing has no view to give (the page keeps the previous plots).
       if (current && current.id === data.id && current.sim.rows > 0) {
         try {
-          const v = view(current, data.t0, data.t1, data.buckets);
-          post({ type: 'view', id: data.id, view: v }, v);
+          const v = view(current, data.groups, data.t0, data.t1, data.buckets);
+          post({ type: 'view', id: data.id, set: data.set, view: v }, v);
         } catch (e) {
           if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
         }
