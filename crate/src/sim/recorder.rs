@@ -430,13 +430,15 @@ pub struct M4 {
     bucket: usize,
     lo: usize,
     hi: usize,
-    /// The current bucket's rows so far, `width` values each.
+    /// The current bucket's rows so far by column: value c of the row at offset o in the bucket
+    /// is at c·cap + o.
     rows: Vec<f64>,
-    /// Per series, the offset in the bucket of its minimum and maximum so far, and their values.
+    /// Rows a bucket holds at most.
+    cap: usize,
+    /// Per series, the offset in the bucket of its minimum and of its maximum (the first of
+    /// equal values), found when the bucket is complete.
     min_at: Vec<usize>,
     max_at: Vec<usize>,
-    min: Vec<f64>,
-    max: Vec<f64>,
     kept: Vec<usize>,
     /// Per group, [t, its series...].
     out: Vec<Vec<Vec<f64>>>,
@@ -486,10 +488,9 @@ impl M4 {
             } else {
                 vec![0.0; per_bucket * width]
             },
+            cap: per_bucket,
             min_at: vec![0; series],
             max_at: vec![0; series],
-            min: vec![0.0; series],
-            max: vec![0.0; series],
             kept: Vec::with_capacity(2 + 2 * widest),
             out,
         };
@@ -514,31 +515,28 @@ impl M4 {
             }
             return;
         }
-        let w = self.width;
-        let offset = i - self.lo;
-        self.rows[offset * w..(offset + 1) * w].copy_from_slice(values);
-        if offset == 0 {
-            self.min_at.fill(0);
-            self.max_at.fill(0);
-            self.min.copy_from_slice(&values[1..]);
-            self.max.copy_from_slice(&values[1..]);
-        } else {
-            // Selects rather than branches: which sample is an extreme is unpredictable.
-            let extremes = self.min.iter_mut().zip(&mut self.min_at);
-            for ((v, (min, min_at)), (max, max_at)) in values[1..]
-                .iter()
-                .zip(extremes)
-                .zip(self.max.iter_mut().zip(&mut self.max_at))
-            {
-                let (lower, higher) = (*v < *min, *v > *max);
-                *min = if lower { *v } else { *min };
-                *min_at = if lower { offset } else { *min_at };
-                *max = if higher { *v } else { *max };
-                *max_at = if higher { offset } else { *max_at };
-            }
+        let (cap, offset) = (self.cap, i - self.lo);
+        for (c, &v) in values.iter().enumerate() {
+            self.rows[c * cap + offset] = v;
         }
         if i + 1 == self.hi {
-            // The bucket is complete: per group, its kept rows in row order, each once.
+            // The bucket is complete. Each series' extremes, one column at a time (selects
+            // rather than branches: which sample is an extreme is unpredictable).
+            let len = offset + 1;
+            for (s, column) in self.rows[cap..].chunks_exact(cap).enumerate() {
+                let column = &column[..len];
+                let (mut min, mut max, mut min_at, mut max_at) = (column[0], column[0], 0, 0);
+                for (j, &v) in column.iter().enumerate().skip(1) {
+                    let (lower, higher) = (v < min, v > max);
+                    min = if lower { v } else { min };
+                    min_at = if lower { j } else { min_at };
+                    max = if higher { v } else { max };
+                    max_at = if higher { j } else { max_at };
+                }
+                self.min_at[s] = min_at;
+                self.max_at[s] = max_at;
+            }
+            // Per group, its kept rows in row order, each once.
             for (g, out) in self.groups.iter().zip(&mut self.out) {
                 self.kept.clear();
                 self.kept.extend([0, offset]);
@@ -548,10 +546,9 @@ impl M4 {
                 self.kept.sort_unstable();
                 self.kept.dedup();
                 for &k in &self.kept {
-                    let row = &self.rows[k * w..(k + 1) * w];
-                    out[0].push(row[0]);
+                    out[0].push(self.rows[k]);
                     for (o, &s) in out[1..].iter_mut().zip(g) {
-                        o.push(row[s + 1]);
+                        o.push(self.rows[(s + 1) * cap + k]);
                     }
                 }
             }
