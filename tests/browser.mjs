@@ -99,6 +99,12 @@ export function cliRows(scenario) {
   return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
 }
 
+/** Opens the walkthrough tab and waits until its plots are drawn (they ask the worker for their view). */
+export async function openWalkthrough(page) {
+  await page.click('[role=tab][data-tab=walkthrough]');
+  await page.waitForFunction(() => window.imlab.walkthrough.charts.length === window.imlab.walkthrough.defs.length);
+}
+
 /** Clicks the first trajectory plot at `fraction` of its width and waits for the inspect panel. */
 export async function inspectAt(page, fraction) {
   const over = page.locator('#plots .plot .u-over').first();

@@ -4,7 +4,7 @@
 // error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { browserSuite, settled } from './browser.mjs';
+import { browserSuite, openWalkthrough, settled } from './browser.mjs';
 
 const suite = browserSuite();
 const TABS = ['plots', 'walkthrough', 'lessons', 'analysis'];
@@ -23,8 +23,8 @@ const withPage = (path, [width, height], body) => suite.withPage(path, async (pa
 
 /** Shows tab `name` and waits until its plots are drawn. */
 async function showTab(page, name) {
-  await page.click(`[role=tab][data-tab=${name}]`);
-  if (name === 'walkthrough') await page.waitForFunction(() => window.imlab.walkthrough.charts.length === window.imlab.walkthrough.defs.length);
+  if (name === 'walkthrough') await openWalkthrough(page);
+  else await page.click(`[role=tab][data-tab=${name}]`);
 }
 
 /** How far the page scrolls sideways, with the elements that stick out past the right edge. */

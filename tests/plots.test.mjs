@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { browserSuite, cliRows, inspectAt, settled } from './browser.mjs';
+import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -102,8 +102,7 @@ test('the walkthrough plots wait until shown, then draw recorded samples and fol
       assert.ok(rows.has(time), `t = ${time} is not a sample`);
       assert.equal(v[j], rows.get(time).nis);
     });
-    await page.click('[data-tab=walkthrough]');
-    await page.waitForFunction(() => window.imlab.walkthrough.charts.length === window.imlab.walkthrough.defs.length);
+    await openWalkthrough(page);
     const whole = await nis();
     assert.equal(whole[0][0], 0);
     assert.equal(whole[0].at(-1), [...rows.keys()].at(-1));
@@ -134,7 +133,7 @@ test('the figures strip equals imlab metrics, and the y-axes leave out the start
     assert.match(await page.textContent('#fit-label'), new RegExp(`t ≥ ${Number((cli.transient_end * 1e3).toPrecision(3))} ms`));
     // The voltage plot with the fit on ignores the ±10 kV... start-up command; off, it shows it.
     const yRange = () => page.evaluate(() => { const u = window.imlab.walkthrough.charts.find((c) => c.root.closest('#section-step4')); return u ? [u.scales.y.min, u.scales.y.max] : null; });
-    await page.click('[data-tab=walkthrough]');
+    await openWalkthrough(page);
     const fitted = await yRange();
     await page.uncheck('#fit');
     const full = await yRange();
@@ -147,7 +146,7 @@ test('a walkthrough knob re-runs the scenario, and an invalid value is marked at
     // reference's derivatives are fed forward).
     const settling = () => page.$eval('#figures [data-name=tracking_peak]', (f) => Number(f.dataset.value));
     const before = await settling();
-    await page.click('[data-tab=walkthrough]');
+    await openWalkthrough(page);
     const run = Number(await page.evaluate(() => document.body.dataset.run));
     await page.fill('#knob-k1', '600');
     await page.press('#knob-k1', 'Enter');

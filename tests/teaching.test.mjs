@@ -1,7 +1,7 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { browserSuite, cliRows, inspectAt, settled } from './browser.mjs';
+import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 
 const suite = browserSuite();
 /** Opens the app at `query`, waits for its run, then runs `body(page)`. */
@@ -12,7 +12,7 @@ const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
 
 test('every walkthrough section renders its equations with no KaTeX error', () =>
   withPage('v=1&preset=step', async (page) => {
-    await page.click('[data-tab=walkthrough]');
+    await openWalkthrough(page);
     const sections = await page.$$eval('#walkthrough section.step', (ss) =>
       ss.map((s) => ({ id: s.id, equations: s.querySelectorAll('.equation').length, rendered: s.querySelectorAll('.equation > .katex-display').length })));
     assert.equal(sections.length, 7);

@@ -37,13 +37,18 @@ const state = {
   export: null, // the CSV export under way: {serial, parts: [Blob]}
   exportSerial: 0,
   walkthroughAsked: 0, // the run whose whole-run walkthrough view was asked for
+  shownRun: 0, // the run the plots show
 };
 
 /**
- * Resolves once the browser has rendered the next frame, or after a second if it renders none
- * (a hidden tab).
+ * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a
+ * second at most).
  */
 const painted = () => new Promise((resolve) => {
+  if (document.hidden) {
+    resolve(); // a hidden page paints nothing
+    return;
+  }
   requestAnimationFrame(() => setTimeout(resolve, 0));
   setTimeout(resolve, 1000);
 });
@@ -96,7 +101,8 @@ const lessons = new LessonPanel({
   list: $('lessons'),
   lessons: LESSONS,
   onOpen: async (lesson) => {
-    showTab(lesson.tab ?? 'plots');
+    // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
+    showTab(lesson.tab ?? 'plots', { fetch: false });
     window.scrollTo(0, 0);
     await load(`v=1&preset=${lesson.preset}`);
   },
@@ -281,15 +287,20 @@ function startRun() {
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
   walkthrough.closeInspect();
   setBusy(true);
-  // The run keeps the whole-run view of the main plots; the walkthrough's is asked for when shown.
-  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups: plots.groups(), buckets: buckets() });
+  // The run keeps the whole-run view of the plots on screen: the main plots, and the walkthrough's
+  // when it is shown (otherwise they ask for theirs when it is).
+  const groups = { ...plots.groups(), ...(walkthrough.visible() ? walkthrough.plots.groups() : {}) };
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups, buckets: buckets() });
 }
 
 // One bucket a pixel column of the widest plot.
 const buckets = () => Math.max(200, Math.round(plots.width()));
 
+/** Whether the worker holds the run the plots show (not a later one that was cancelled, refused or recorded nothing). */
+const showingLastRun = () => !state.running && plots.full !== null && state.shownRun === state.runId;
+
 function requestWindow(t0, t1) {
-  if (state.running || !plots.full) return;
+  if (!showingLastRun()) return;
   // uPlot reports each new chart's initial scale, the whole run, as a zoom; the charts already
   // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
   if (t0 <= plots.full[0] && t1 >= plots.full[1]) return;
@@ -299,7 +310,7 @@ function requestWindow(t0, t1) {
 
 /** Returns every plot to the whole run. */
 function fullRun() {
-  if (state.running || !plots.full) return;
+  if (!showingLastRun()) return;
   for (const set of plotSets) set.unzoom();
   requestViews(0, Number.MAX_VALUE);
 }
@@ -317,7 +328,7 @@ function requestView(set, t0, t1) {
 
 /** Asks for the walkthrough's view of the whole run when it is on screen and does not have it yet. */
 function walkthroughView() {
-  if (state.running || !plots.full || !walkthrough.stale || !walkthrough.visible()) return;
+  if (!showingLastRun() || !walkthrough.stale || !walkthrough.visible()) return;
   if (state.walkthroughAsked === state.runId) return; // asked already
   state.walkthroughAsked = state.runId;
   requestView('walkthrough', 0, Number.MAX_VALUE);
@@ -400,7 +411,8 @@ function fileStem() {
 
 const TABS = [...document.querySelectorAll('[role=tab]')];
 
-function showTab(name) {
+/** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
+function showTab(name, { fetch = true } = {}) {
   for (const tab of TABS) {
     const selected = tab.dataset.tab === name;
     tab.setAttribute('aria-selected', selected);
@@ -411,7 +423,7 @@ function showTab(name) {
   plots.resize();
   if (name === 'walkthrough') {
     walkthrough.shown();
-    walkthroughView();
+    if (fetch) walkthroughView();
   }
   walkthrough.plots.resize();
   walkthrough.closeInspect();
@@ -519,8 +531,11 @@ const handlers = {
     $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
     showFigures(figures);
     if (view) {
+      state.shownRun = id;
       walkthrough.show(stability, state.nisBand);
-      await plots.show(view, { ifoc: ifocRun() });
+      // The walkthrough's plots are in the view when it was on screen as the run started.
+      if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
+      plots.show(view, { ifoc: ifocRun() });
       // "Plotted" is when the browser has painted them: the canvases are rasterised then.
       await painted();
       // A newer run, or a worker crash while the plots were drawn, owns the page now.
@@ -706,6 +721,10 @@ ui.csv.addEventListener('click', startExport);
 ui.png.addEventListener('click', async () => {
   const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
   const set = tab === 'walkthrough' ? walkthrough.plots : plots;
+  if (set.charts.length === 0 || (tab === 'walkthrough' && walkthrough.stale)) {
+    say('These plots are still being drawn; export them in a moment.', 'info');
+    return;
+  }
   download(await png(set.figures(), pngHeader()), `${fileStem()}.png`);
 });
 ui.copy.addEventListener('click', async () => {

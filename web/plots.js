@@ -71,9 +71,6 @@ const NOT_DRIVING = ' (computed for comparison; not driving the motor)';
 
 const SYNC_KEY = 'imlab-time';
 
-// One chart is drawn per task, so drawing a long run's plots never blocks the page for long.
-const nextTask = () => new Promise((resolve) => { setTimeout(resolve, 0); });
-
 // A log axis spanning whole decades (uPlot's log splits need them), at most 14 below the maximum.
 function logRange(u, min, max) {
   const top = Math.ceil(Math.log10(max));
@@ -328,8 +325,11 @@ export class Plots {
     return rows;
   }
 
-  /** Draws a whole run; with `chunked`, one chart per task. Resolves when every chart is drawn. */
-  async show(view, { ifoc = false, chunked = false } = {}) {
+  /**
+   * Draws a whole run, every chart in this task: an envelope has at most four points per pixel
+   * column, so a chart costs the same for any run length.
+   */
+  show(view, { ifoc = false } = {}) {
     const t = view.plots[this.defs[0].id].t;
     this.full = [t[0], t[t.length - 1]];
     this.window = null;
@@ -353,7 +353,6 @@ export class Plots {
         this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), divs[i]));
         divs[i].querySelector('.caption').textContent = this.caption(plot);
         divs[i].setAttribute('aria-label', this.title(plot));
-        if (chunked) await nextTask();
       }
     } else {
       for (const [i, plot] of this.defs.entries()) {
@@ -364,7 +363,6 @@ export class Plots {
         this.syncing = true;
         this.charts[i].setData(this.data(plot, view), true);
         this.syncing = false;
-        if (chunked) await nextTask();
       }
     }
   }
