@@ -895,4 +895,6 @@ window.imlab = { plots, walkthrough: walkthrough.plots };
 
 setBusy(false);
 startWorker();
+// While the worker loads the core, the main plots are laid out, empty.
+plots.prepare();
 navigator.serviceWorker?.register('sw.js');

@@ -326,6 +326,33 @@ export class Plots {
   }
 
   /**
+   * Creates the charts, empty, so that the first run only fills them: their first layout and the
+   * first run of uPlot's code happen while the worker loads the core.
+   */
+  prepare() {
+    if (this.charts.length === 0) this.create((plot) => [[], ...plot.series.map(() => []), ...(plot.constants ?? []).map(() => [])]);
+  }
+
+  /** Creates a chart for each plot, with the data `data(plot)`. */
+  create(data) {
+    const width = this.width();
+    for (const [i, plot] of this.defs.entries()) {
+      // A focusable figure: its caption is the text alternative of the canvas.
+      const div = Object.assign(document.createElement('div'), { className: 'plot', tabIndex: 0 });
+      div.dataset.plot = plot.id;
+      div.setAttribute('role', 'figure');
+      const caption = Object.assign(document.createElement('p'), { className: 'caption sr-only', id: `caption-${this.container.id || 'plots'}-${plot.id}` });
+      div.setAttribute('aria-describedby', caption.id);
+      div.append(caption);
+      this.keyboard(div, i);
+      (plot.container ?? this.container).append(div);
+      this.charts.push(new uPlot(this.options(plot, width), data(plot), div));
+      caption.textContent = this.caption(plot);
+      div.setAttribute('aria-label', this.title(plot));
+    }
+  }
+
+  /**
    * Draws a whole run, every chart in this task: an envelope has at most four points per pixel
    * column, so a chart costs the same for any run length.
    */
@@ -336,34 +363,17 @@ export class Plots {
     this.marker = null;
     this.ifoc = ifoc;
     if (this.charts.length === 0) {
-      const width = this.width();
-      const divs = this.defs.map((plot, i) => {
-        // A focusable figure: its caption is the text alternative of the canvas.
-        const div = Object.assign(document.createElement('div'), { className: 'plot', tabIndex: 0 });
-        div.dataset.plot = plot.id;
-        div.setAttribute('role', 'figure');
-        const caption = Object.assign(document.createElement('p'), { className: 'caption sr-only', id: `caption-${this.container.id || 'plots'}-${plot.id}` });
-        div.setAttribute('aria-describedby', caption.id);
-        div.append(caption);
-        this.keyboard(div, i);
-        (plot.container ?? this.container).append(div);
-        return div;
-      });
-      for (const [i, plot] of this.defs.entries()) {
-        this.charts.push(new uPlot(this.options(plot, width), this.data(plot, view), divs[i]));
-        divs[i].querySelector('.caption').textContent = this.caption(plot);
-        divs[i].setAttribute('aria-label', this.title(plot));
-      }
-    } else {
-      for (const [i, plot] of this.defs.entries()) {
-        const title = this.charts[i].root.querySelector('.u-title');
-        if (title) title.textContent = this.title(plot);
-        this.charts[i].root.parentElement.querySelector('.caption').textContent = this.caption(plot);
-        this.charts[i].root.parentElement.setAttribute('aria-label', this.title(plot));
-        this.syncing = true;
-        this.charts[i].setData(this.data(plot, view), true);
-        this.syncing = false;
-      }
+      this.create((plot) => this.data(plot, view));
+      return;
+    }
+    for (const [i, plot] of this.defs.entries()) {
+      const title = this.charts[i].root.querySelector('.u-title');
+      if (title) title.textContent = this.title(plot);
+      this.charts[i].root.parentElement.querySelector('.caption').textContent = this.caption(plot);
+      this.charts[i].root.parentElement.setAttribute('aria-label', this.title(plot));
+      this.syncing = true;
+      this.charts[i].setData(this.data(plot, view), true);
+      this.syncing = false;
     }
   }
 

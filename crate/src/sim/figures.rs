@@ -4,7 +4,8 @@
 //! Everything here reads the recorded trace; `imlab metrics` prints the list and the page shows it
 //! as given.
 
-use super::{is_saturated, Row, Simulation};
+use super::trace::CHECKPOINT_EVERY;
+use super::{is_saturated, Recording, Row, Simulation};
 use crate::control::Reference;
 use crate::scenario::{ControllerKind, Scenario};
 use serde::Serialize;
@@ -110,6 +111,11 @@ pub(super) trait Samples {
     /// Calls `f(i, row)` for rows `start..end` in order until it returns false.
     fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool);
 
+    /// What a traced run tallied for the transient as its rows came, if it did.
+    fn tally(&self) -> Option<&TransientTally> {
+        None
+    }
+
     /// Row `i`.
     fn row(&self, i: usize) -> Row {
         let mut out = Row::default();
@@ -144,6 +150,95 @@ impl Samples for Simulation {
     }
     fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
         Simulation::visit(self, start, end, f);
+    }
+    fn tally(&self) -> Option<&TransientTally> {
+        match &self.recording {
+            Recording::Trace(t) => Some(&t.transient),
+            Recording::Rows(_) => None,
+        }
+    }
+}
+
+/// What [`transient`] reads from every row, gathered by a traced run as its rows come: per
+/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sum
+/// of the NIS over the second half of the run as planned (from −0, in row order, as
+/// [`transient`] sums it). A run that ends early has another second half; [`transient`] then
+/// reads the rows again.
+#[derive(Clone, Debug)]
+pub(super) struct TransientTally {
+    band: Vec<(f64, f64)>,
+    half_index: usize,
+    late_sum: f64,
+}
+
+impl TransientTally {
+    /// For a run of `steps` samples of `ts` (row k at time k·ts).
+    pub(super) fn new(steps: usize, ts: f64) -> TransientTally {
+        let last = steps.saturating_sub(1);
+        // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
+        let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
+        let (mut lo, mut hi) = (0, steps);
+        while lo < hi {
+            let mid = lo + (hi - lo) / 2;
+            if (mid as f64 * ts) < half {
+                lo = mid + 1;
+            } else {
+                hi = mid;
+            }
+        }
+        TransientTally {
+            band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
+            half_index: lo.min(last),
+            late_sum: -0.0,
+        }
+    }
+
+    /// Takes row `i`, the rows coming in order from 0.
+    #[inline]
+    pub(super) fn push(&mut self, i: usize, r: &Row) {
+        let band = r.innov_band_a;
+        if i % CHECKPOINT_EVERY == 0 {
+            self.band.push((band, band));
+        } else if let Some((lo, hi)) = self.band.last_mut() {
+            *lo = if band < *lo { band } else { *lo };
+            *hi = if band > *hi { band } else { *hi };
+        }
+        if i >= self.half_index {
+            self.late_sum += r.nis;
+        }
+    }
+
+    /// Bytes it holds.
+    pub(super) fn bytes(&self) -> usize {
+        self.band.capacity() * std::mem::size_of::<(f64, f64)>()
+    }
+
+    /// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
+    /// form an interval of values (`settled` compares |band − final| with a bound, and rounding
+    /// is monotonic), so an interval of rows whose least and greatest band are settled is settled
+    /// throughout; only the last interval that is not is read again.
+    fn last_unsettled(
+        &self,
+        rows: &dyn Samples,
+        len: usize,
+        settled: &dyn Fn(f64) -> bool,
+    ) -> Option<usize> {
+        let b = self
+            .band
+            .iter()
+            .rposition(|&(lo, hi)| !(settled(lo) && settled(hi)))?;
+        let mut last = None;
+        rows.visit(
+            b * CHECKPOINT_EVERY,
+            len.min((b + 1) * CHECKPOINT_EVERY),
+            &mut |i, r| {
+                if !settled(r.innov_band_a) {
+                    last = Some(i);
+                }
+                true
+            },
+        );
+        last
     }
 }
 
@@ -185,15 +280,25 @@ fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
     // gives both.
     let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
     let (mut unsettled, mut late_sum) = (None, -0.0);
-    rows.visit(0, len, &mut |i, r| {
-        if !settled(r.innov_band_a) {
-            unsettled = Some(i);
+    match rows
+        .tally()
+        .filter(|t| t.half_index == half_index && t.band.len() == len.div_ceil(CHECKPOINT_EVERY))
+    {
+        // A traced run's tally, when its second half is the one it summed.
+        Some(tally) => {
+            unsettled = tally.last_unsettled(rows, len, &settled);
+            late_sum = tally.late_sum;
         }
-        if i >= half_index {
-            late_sum += r.nis;
-        }
-        true
-    });
+        None => rows.visit(0, len, &mut |i, r| {
+            if !settled(r.innov_band_a) {
+                unsettled = Some(i);
+            }
+            if i >= half_index {
+                late_sum += r.nis;
+            }
+            true
+        }),
+    }
     let observer = unsettled.map_or(0, |i| (i + 1).min(len - 1));
     let t_observer = rows.time(observer);
     // (b)
@@ -614,6 +719,65 @@ mod tests {
             0.4
         } else {
             0.004
+        }
+    }
+
+    /// Rows with a tally, as a traced run gives them.
+    struct Tallied(Vec<Row>, TransientTally);
+
+    impl Samples for Tallied {
+        fn count(&self) -> usize {
+            self.0.count()
+        }
+        fn time(&self, i: usize) -> f64 {
+            self.0.time(i)
+        }
+        fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
+            self.0.visit(start, end, f);
+        }
+        fn tally(&self) -> Option<&TransientTally> {
+            Some(&self.1)
+        }
+    }
+
+    fn tallied(rows: &[Row], steps: usize) -> Tallied {
+        let mut tally = TransientTally::new(steps, TS);
+        for (i, r) in rows.iter().enumerate() {
+            tally.push(i, r);
+        }
+        Tallied(rows.to_vec(), tally)
+    }
+
+    #[test]
+    fn a_tally_gives_the_transient_the_rows_give() {
+        let s = preset("step").unwrap();
+        let n = 3 * CHECKPOINT_EVERY + 17;
+        // Bands that settle in the first, second, third or last interval, never, or at once, with
+        // values just inside and just outside 10 % of the final value, and NIS that varies.
+        for (case, last_off) in [(0, 40), (1, 2100), (2, 5000), (3, n - 3), (4, n), (5, 0)] {
+            let rows = trace(n, |k, r| {
+                let off = k < last_off && (case == 4 || k % 7 != 3);
+                r.innov_band_a = if off {
+                    [0.0111, 0.0089, 0.5][k % 3]
+                } else {
+                    [0.01, 0.01099, 0.00901][k % 3]
+                };
+                r.nis = 2.0 + (k % 13) as f64 * 0.25 + if k < 300 { 40.0 } else { 0.0 };
+            });
+            let expect = transient(&s, &rows);
+            assert_eq!(transient(&s, &tallied(&rows, n)).1, expect.1, "case {case}");
+            assert_eq!(
+                transient(&s, &tallied(&rows, n)).0.reason,
+                expect.0.reason,
+                "case {case}"
+            );
+            // A run that ended early: its half is not the planned one, so the rows are read.
+            let early = &rows[..n - 1000];
+            assert_eq!(
+                transient(&s, &tallied(early, n)).1,
+                transient(&s, &early.to_vec()).1,
+                "case {case}"
+            );
         }
     }
 

@@ -12,7 +12,9 @@ pub use recorder::{m4, Recorder, Row, COLUMNS, COLUMN_DOCS, M4, NUM_COLUMNS};
 use trace::Trace;
 pub use trace::CHECKPOINT_EVERY;
 
-use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, LyapunovBound};
+use crate::control::{
+    Adapted, Backstepping, ControlError, ControlInput, Gains, Ifoc, LyapunovBound,
+};
 use crate::inverter::{self, Limit};
 use crate::model::{self, Input, State};
 use crate::observer::Filter;
@@ -164,6 +166,8 @@ trait Sink {
 }
 
 /// How a run keeps its samples.
+// One per simulation, so the size of its larger variant does not matter.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Debug)]
 enum Recording {
     /// Every kept row in memory (analysis runs, tests, `--every`).
@@ -311,7 +315,7 @@ impl Simulation {
                 k: 0,
             },
             recording: if traced {
-                Recording::Trace(Trace::new(steps))
+                Recording::Trace(Trace::new(scenario, steps))
             } else {
                 Recording::Rows(Recorder::with_capacity(rows, every))
             },
@@ -853,29 +857,79 @@ impl Simulation {
     }
 
     /// Where the recorded V(t) leaves the bound (59), and whether the voltage limit was active then.
+    /// A traced run counts as its rows come; a run that keeps its rows counts them now.
     pub fn stability(&self) -> Option<Stability> {
-        let bound = self.lyapunov_bound()?;
-        let limit = self.lp.limit;
-        let (mut outside, mut outside_saturated, mut saturated) = (0, 0, 0);
-        let mut first_outside = None;
-        self.visit(0, self.len(), &mut |_, r| {
-            let at_limit = is_saturated(r, &limit);
-            saturated += usize::from(at_limit);
-            if r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE {
-                outside += 1;
-                outside_saturated += usize::from(at_limit);
-                first_outside.get_or_insert(r.t);
+        let perfect = self.lp.scenario.perfect;
+        match &self.recording {
+            Recording::Trace(t) => t.stability.finish(perfect),
+            Recording::Rows(_) => {
+                let mut tally = StabilityTally::new(self.lp.scenario.gains, self.lp.limit);
+                self.visit(0, self.len(), &mut |_, r| {
+                    tally.push(r);
+                    true
+                });
+                tally.finish(perfect)
             }
-            true
-        });
+        }
+    }
+}
+
+/// Where V(t) leaves the bound (59), counted row by row from the first (whose V is V(0)).
+#[derive(Clone, Debug)]
+struct StabilityTally {
+    gains: Gains,
+    limit: Limit,
+    bound: Option<LyapunovBound>,
+    samples: usize,
+    outside: usize,
+    outside_saturated: usize,
+    saturated: usize,
+    first_outside: Option<f64>,
+}
+
+impl StabilityTally {
+    fn new(gains: Gains, limit: Limit) -> StabilityTally {
+        StabilityTally {
+            gains,
+            limit,
+            bound: None,
+            samples: 0,
+            outside: 0,
+            outside_saturated: 0,
+            saturated: 0,
+            first_outside: None,
+        }
+    }
+
+    /// Counts the next row.
+    #[inline]
+    fn push(&mut self, r: &Row) {
+        let gains = &self.gains;
+        let bound = *self
+            .bound
+            .get_or_insert_with(|| LyapunovBound::new(gains, r.lyapunov));
+        let at_limit = is_saturated(r, &self.limit);
+        self.samples += 1;
+        self.saturated += usize::from(at_limit);
+        if r.lyapunov > bound.at(r.t) * (1.0 + BOUND_TOL) + f64::MIN_POSITIVE {
+            self.outside += 1;
+            self.outside_saturated += usize::from(at_limit);
+            self.first_outside.get_or_insert(r.t);
+        }
+    }
+
+    /// The report of the rows counted; None before the first.
+    fn finish(&self, perfect: bool) -> Option<Stability> {
+        let bound = self.bound?;
+        let outside = self.outside;
         // Most likely reason: saturation when most samples above the bound had the limit active;
         // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
         // estimation errors when ε = 0; otherwise ε or the sampling.
         let cause = if outside == 0 {
             "none"
-        } else if 2 * outside_saturated > outside {
+        } else if 2 * self.outside_saturated > outside {
             "saturation"
-        } else if self.lp.scenario.perfect {
+        } else if perfect {
             "sampling"
         } else if bound.eps == 0.0 {
             "estimation_errors"
@@ -884,11 +938,11 @@ impl Simulation {
         };
         Some(Stability {
             bound,
-            samples: self.len(),
+            samples: self.samples,
             outside,
-            outside_saturated,
-            saturated,
-            first_outside,
+            outside_saturated: self.outside_saturated,
+            saturated: self.saturated,
+            first_outside: self.first_outside,
             cause,
         })
     }

@@ -3,8 +3,10 @@
 //! checks every row it computes (finite values only) and can feed an M4 overview of the whole
 //! run as it goes, so that the first plot needs no replay.
 
+use super::figures::TransientTally;
 use super::recorder::{finite, M4};
-use super::{LoopState, Row, Sink, COLUMNS};
+use super::{LoopState, Row, Sink, StabilityTally, COLUMNS};
+use crate::scenario::Scenario;
 
 /// Samples between checkpoints: a replay starts at most this many samples before the first row
 /// it is asked for (about 0.1 s at 20 kHz, under a millisecond of computing).
@@ -91,15 +93,21 @@ pub(super) struct Trace {
     pub(super) len: usize,
     /// The whole run's envelope, when asked for before the run started.
     pub(super) overview: Option<Box<Overview>>,
+    /// The stability report and what the start-up transient needs, tallied as the rows come, so
+    /// that neither replays the whole run.
+    pub(super) stability: StabilityTally,
+    pub(super) transient: TransientTally,
 }
 
 impl Trace {
-    /// A trace with room for the checkpoints of `steps` samples.
-    pub(super) fn new(steps: usize) -> Trace {
+    /// A trace with room for the checkpoints of the `steps` samples of `scenario`.
+    pub(super) fn new(scenario: &Scenario, steps: usize) -> Trace {
         Trace {
             checkpoints: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
             len: 0,
             overview: None,
+            stability: StabilityTally::new(scenario.gains, scenario.limit()),
+            transient: TransientTally::new(steps, scenario.ts),
         }
     }
 
@@ -115,7 +123,7 @@ impl Trace {
 
     /// Bytes the trace holds.
     pub(super) fn bytes(&self) -> usize {
-        self.checkpoints.capacity() * std::mem::size_of::<LoopState>()
+        self.checkpoints.capacity() * std::mem::size_of::<LoopState>() + self.transient.bytes()
     }
 }
 
@@ -131,6 +139,8 @@ impl Sink for Trace {
         if let Some(o) = &mut self.overview {
             o.push(self.len, row);
         }
+        self.stability.push(row);
+        self.transient.push(self.len, row);
         self.len += 1;
         Ok(())
     }
