@@ -24,6 +24,14 @@ export function tex(source, displayMode = true, label = null) {
   return span;
 }
 
+/** A display equation typeset when the walkthrough is first shown (see `Walkthrough.shown`):
+ * typesetting all of them takes KaTeX longer than anything else at page load. */
+function laterTex(source) {
+  const span = el('span', { className: 'equation' });
+  span.dataset.tex = source;
+  return span;
+}
+
 /** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */
 function plain(source) {
   return source.replace(/\\hat ([a-z])/g, '$1\u0302').replace(/\\psi/g, 'ψ').replace(/\\omega/g, 'ω').replace(/\\cdot/g, '·')
@@ -121,7 +129,7 @@ export class Walkthrough {
     const div = el('section', { className: 'step', id: `section-${s.id}` });
     div.append(el('h2', { textContent: s.title }));
     for (const p of s.prose) div.append(el('p', { textContent: p }));
-    s.equations.forEach((e, i) => div.append(scrollBox(tex(e), `Equation ${i + 1} of section ${s.title}`)));
+    s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
     if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
     if (s.lumped) div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
     if (s.stability) div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
@@ -195,8 +203,13 @@ export class Walkthrough {
     return this.container.offsetParent !== null;
   }
 
-  /** The walkthrough has just been shown: its equations learn whether they scroll. */
+  /** The walkthrough has just been shown: its equations are typeset (the first time) and learn
+   * whether they scroll. */
   shown() {
+    for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
+      katex.render(span.dataset.tex, span, { displayMode: true, throwOnError: false, strict: 'ignore' });
+      delete span.dataset.tex;
+    }
     this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
   }
 
