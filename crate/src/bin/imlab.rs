@@ -350,9 +350,15 @@ fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
 }
 
 /// Runs the scenario keeping every `every`-th sample and writes the trace as CSV to `file` or
-/// `out`; after a failure, the trace up to it, then the failure as the error.
+/// `out`; after a failure, the trace up to it, then the failure as the error. Every sample is
+/// kept as checkpoints and computed again as it is written (little memory); every N-th as rows.
 fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> Result<(), Stop> {
-    let mut sim = Simulation::new(s, every).map_err(|e| e.to_string())?;
+    let sim = if every == 1 {
+        Simulation::traced(s)
+    } else {
+        Simulation::new(s, every)
+    };
+    let mut sim = sim.map_err(|e| e.to_string())?;
     let result = sim.run();
     match file {
         Some(path) => {
@@ -367,10 +373,11 @@ fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> 
     result.map_err(|e| format!("{e} (trace written up to the failure)").into())
 }
 
-/// Runs the scenario, recording every sample, and writes its figures as `name,value,unit` lines;
-/// after a failure, the figures of the samples before it, then the failure as the error.
+/// Runs the scenario, recording every sample as checkpoints, and writes its figures as
+/// `name,value,unit` lines; after a failure, the figures of the samples before it, then the
+/// failure as the error.
 fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
-    let mut sim = Simulation::new(s, 1).map_err(|e| e.to_string())?;
+    let mut sim = Simulation::traced(s).map_err(|e| e.to_string())?;
     let result = sim.run();
     let list = figures(&sim);
     write_figures(list.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
