@@ -373,7 +373,7 @@ fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> 
     result.map_err(|e| format!("{e} (trace written up to the failure)").into())
 }
 
-/// Runs the scenario, recording every sample as checkpoints, and writes its figures as
+/// Runs the scenario, keeping a checkpoint every 2,048 samples, and writes its figures as
 /// `name,value,unit` lines; after a failure, the figures of the samples before it, then the
 /// failure as the error.
 fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {

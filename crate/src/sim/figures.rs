@@ -96,8 +96,9 @@ pub struct Report {
     pub figures: Option<Vec<Figure>>,
 }
 
-/// [`transient_end`] and [`figures`] of `sim` at once: a traced run is replayed about twice
-/// (once for the transient, once for the window after it), not once per figure.
+/// [`transient_end`] and [`figures`] of `sim` at once. A finished traced run is replayed once,
+/// for the window after the transient (and, for a step reference, from the step if that is
+/// earlier); what the transient reads from every row it tallied as it ran.
 pub fn report(sim: &Simulation) -> Report {
     figures_of(sim.scenario(), sim)
 }
@@ -410,7 +411,16 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
         ripple_peak: f64::NEG_INFINITY,
         ripple_sq: -0.0,
     };
-    rows.visit(start, len, &mut |_, r| {
+    // One pass over the window, from the step on for a step reference that comes earlier.
+    let mut settling = Settling::of(&s.reference, s.ts, rows, &last);
+    let first = settling.as_ref().map_or(start, |st| st.from.min(start));
+    rows.visit(first, len, &mut |i, r| {
+        if let Some(st) = &mut settling {
+            st.push(i, r);
+        }
+        if i < start {
+            return true;
+        }
         w.n += 1;
         w.tracking_sq += r.omega_err * r.omega_err;
         w.tracking_peak = w.tracking_peak.max(r.omega_err.abs());
@@ -460,7 +470,7 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
         "rad/s",
         &in_w,
     );
-    if let Some((value, time)) = settling_time(&s.reference, s.ts, rows) {
+    if let Some((value, time)) = settling.map(|st| st.result()) {
         push(
             "settling_time",
             "2 % settling time of ω after the step",
@@ -562,29 +572,63 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
 /// |size|, minus the step time; 0 when ω never leaves the band. None for other references, when
 /// the recording stops before the step, or when ω is still outside the band at the last sample
 /// (not settled: the settling time is unknown).
+#[cfg(test)]
 fn settling_time(reference: &Reference, ts: f64, rows: &dyn Samples) -> Option<(f64, f64)> {
-    let Reference::Step { size, time, .. } = *reference else {
-        return None;
-    };
     let len = rows.count();
     let last = rows.row(len.checked_sub(1)?);
-    if last.t < time {
-        return None;
-    }
-    let target = reference.sample(time - ts).value + size;
-    let band = SETTLING_BAND * size.abs();
-    let outside = |r: &Row| (r.omega - target).abs() > band;
-    if outside(&last) {
-        return None;
-    }
-    let mut last_out = None;
-    rows.visit(rows.first_at(time), len, &mut |_, r| {
-        if outside(r) {
-            last_out = Some(r.t);
-        }
+    let mut settling = Settling::of(reference, ts, rows, &last)?;
+    rows.visit(settling.from, len, &mut |i, r| {
+        settling.push(i, r);
         true
     });
-    Some((last_out.map_or(0.0, |t| t - time), time))
+    Some(settling.result())
+}
+
+/// [`settling_time`] as a pass over the rows takes it: the step of a step reference and its 2 %
+/// band, when the run has reached the step and ends inside the band.
+struct Settling {
+    /// Step time (s) and its first row.
+    time: f64,
+    from: usize,
+    target: f64,
+    band: f64,
+    /// The last time ω was outside the band, from the step on.
+    last_out: Option<f64>,
+}
+
+impl Settling {
+    fn of(reference: &Reference, ts: f64, rows: &dyn Samples, last: &Row) -> Option<Settling> {
+        let Reference::Step { size, time, .. } = *reference else {
+            return None;
+        };
+        if last.t < time {
+            return None;
+        }
+        let settling = Settling {
+            time,
+            from: rows.first_at(time),
+            target: reference.sample(time - ts).value + size,
+            band: SETTLING_BAND * size.abs(),
+            last_out: None,
+        };
+        (!settling.outside(last)).then_some(settling)
+    }
+
+    fn outside(&self, r: &Row) -> bool {
+        (r.omega - self.target).abs() > self.band
+    }
+
+    /// Takes row `i` (rows in order; those before the step are ignored).
+    fn push(&mut self, i: usize, r: &Row) {
+        if i >= self.from && self.outside(r) {
+            self.last_out = Some(r.t);
+        }
+    }
+
+    /// The settling time after the step and the step time (s).
+    fn result(&self) -> (f64, f64) {
+        (self.last_out.map_or(0.0, |t| t - self.time), self.time)
+    }
 }
 
 /// The 95 % band (low, high) of the mean NIS of a consistent filter over `samples` samples.
