@@ -89,7 +89,7 @@ test('the full-run envelope is made of recorded samples only', () =>
     });
   }));
 
-test('the walkthrough plots wait until shown, then draw recorded samples and follow a zoom', () =>
+test('the walkthrough plots wait until it is first opened, then draw recorded samples, follow a zoom and come with later runs', () =>
   withPage('v=1&preset=sine200-1rad', async (page) => {
     // A run on the plots tab leaves the walkthrough's plots for later.
     assert.equal(await page.evaluate(() => window.imlab.walkthrough.charts.length), 0);
@@ -119,6 +119,17 @@ test('the walkthrough plots wait until shown, then draw recorded samples and fol
     assert.ok(zoomed[0][0] > 0.199 && zoomed[0].at(-1) < 0.211, `window ${zoomed[0][0]}–${zoomed[0].at(-1)}`);
     assert.equal(zoomed[0].length, [...rows.keys()].filter((t) => t >= zoomed[0][0] && t <= zoomed[0].at(-1)).length);
     recorded(zoomed);
+
+    // Once opened, the walkthrough's view comes with every run: after a run of another preset
+    // on the plots tab, its plots show that run as soon as the tab is clicked.
+    const before = Number(await page.evaluate(() => document.body.dataset.run));
+    await page.selectOption('#preset', 'step');
+    await page.waitForFunction((n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done', before);
+    await page.click('[role=tab][data-tab=walkthrough]');
+    const step = new Map(cliRows('v=1&preset=step').map((r) => [r.t, r]));
+    const shown = await nis();
+    assert.equal(shown[0].at(-1), [...step.keys()].at(-1));
+    shown[0].forEach((time, j) => assert.equal(shown[1][j], step.get(time).nis));
   }));
 
 test('the figures strip equals imlab metrics, and the y-axes leave out the start-up transient', () =>

@@ -287,9 +287,9 @@ function startRun() {
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
   walkthrough.closeInspect();
   setBusy(true);
-  // The run keeps the whole-run view of the plots on screen: the main plots, and the walkthrough's
-  // when it is shown (otherwise they ask for theirs when it is).
-  const groups = { ...plots.groups(), ...(walkthrough.visible() ? walkthrough.plots.groups() : {}) };
+  // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
+  // opened (until then they ask for theirs when it is, and a run does not pay for them).
+  const groups = { ...plots.groups(), ...(walkthrough.opened || walkthrough.visible() ? walkthrough.plots.groups() : {}) };
   worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups, buckets: buckets() });
 }
 
@@ -318,7 +318,7 @@ function fullRun() {
 /** Asks for a window of the main plots, and of the walkthrough's once they show this run. */
 function requestViews(t0, t1) {
   requestView('plots', t0, t1);
-  if (!walkthrough.stale) requestView('walkthrough', t0, t1);
+  if (walkthrough.drawn()) requestView('walkthrough', t0, t1);
 }
 
 function requestView(set, t0, t1) {
@@ -533,7 +533,7 @@ const handlers = {
     if (view) {
       state.shownRun = id;
       walkthrough.show(stability, state.nisBand);
-      // The walkthrough's plots are in the view when it was on screen as the run started.
+      // The walkthrough's plots are in the view once it has been opened.
       if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
       plots.show(view, { ifoc: ifocRun() });
       // "Plotted" is when the browser has painted them: the canvases are rasterised then.
@@ -721,7 +721,7 @@ ui.csv.addEventListener('click', startExport);
 ui.png.addEventListener('click', async () => {
   const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
   const set = tab === 'walkthrough' ? walkthrough.plots : plots;
-  if (set.charts.length === 0 || (tab === 'walkthrough' && walkthrough.stale)) {
+  if (set.charts.length === 0 || (tab === 'walkthrough' && !walkthrough.drawn())) {
     say('These plots are still being drawn; export them in a moment.', 'info');
     return;
   }

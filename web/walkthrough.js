@@ -118,6 +118,8 @@ export class Walkthrough {
     this.sectionDivs = {};
     this.nisBand = [0, 0];
     this.stale = false; // the plots wait for the view of the last run
+    this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
+    this.opened = false; // whether the walkthrough has been shown
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
       onWindow, onFull, onPick, framing, height: 220,
@@ -188,12 +190,13 @@ export class Walkthrough {
 
   /**
    * Takes a finished run's stability report and the NIS band (both from the core). Its plots wait
-   * for their view, which the page asks for while the walkthrough is visible: a run on another
-   * tab neither computes nor draws them.
+   * for their view: the run's own when the walkthrough has been opened before, otherwise one the
+   * page asks for when it is (until then a run neither computes nor draws them).
    */
   show(stability, nisBand) {
     this.nisBand = nisBand;
     this.stale = true;
+    this.pending = null;
     const report = this.container.querySelector('.stability-report');
     report.textContent = stabilityText(stability);
   }
@@ -203,22 +206,36 @@ export class Walkthrough {
     return this.container.offsetParent !== null;
   }
 
+  /** Whether its plots show the last run (they can take a zoom window then). */
+  drawn() {
+    return !this.stale && this.pending === null;
+  }
+
   /** The walkthrough has just been shown: its equations are typeset (the first time) and learn
-   * whether they scroll. */
+   * whether they scroll, and a waiting view is drawn. */
   shown() {
+    this.opened = true;
     for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
       katex.render(span.dataset.tex, span, { displayMode: true, throwOnError: false, strict: 'ignore' });
       delete span.dataset.tex;
     }
     this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
+    if (this.pending) {
+      this.plots.show(this.pending, { ifoc: this.ifoc });
+      this.pending = null;
+    }
   }
 
-  /** Takes a view of its plots: the first after a run draws the whole run, later ones a window. */
+  /**
+   * Takes a view of its plots: the first after a run is the whole run, drawn now if the
+   * walkthrough is on screen and when it is shown otherwise; later ones are zoom windows.
+   */
   receive(view) {
     if (this.stale) {
       this.stale = false;
-      this.plots.show(view, { ifoc: this.ifoc });
-    } else {
+      if (this.visible()) this.plots.show(view, { ifoc: this.ifoc });
+      else this.pending = view;
+    } else if (this.pending === null) {
       this.plots.refine(view);
     }
   }

@@ -1,6 +1,6 @@
 // Browser benchmark: the time of a full sine200 run (worker compute, transfer and first plot),
-// the in-browser closed-loop speed (first run after load, 5 s runs, 1 s runs), a parameter
-// sweep and the WASM size. Run with `make bench` (or `node tests/bench/browser.mjs` after
+// the in-browser closed-loop speed (first run after load, 5 s runs, 1 s runs), view requests on
+// a 5 s run, a parameter sweep and the WASM size. Run with `make bench` (or `node tests/bench/browser.mjs` after
 // `make dist`).
 //
 // The run figures are the median (min–max) of BENCH_REPS (default 5) repetitions, each in a
@@ -42,6 +42,39 @@ async function repetition() {
   for (let i = 0; i < 3; i++) runs.push(await runAgain(page));
   out.long = rate(best(runs));
   out.longRunMs = Number(best(runs).runMs);
+  // View requests on the 5 s run, from the request to the next painted frame after the plots
+  // took the answer: a zoom to 1 s (a replay of that window), the whole run again (the overview
+  // the run kept), and the walkthrough opened after a run on the plots tab: the first time (its
+  // equations typeset, and a replay of the whole run for its plots), and after another run (whose
+  // view of the walkthrough's plots came with the run).
+  const viewMs = (request) => page.evaluate((request) => new Promise((resolve) => {
+    const start = performance.now();
+    const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+    const observer = new MutationObserver(() => {
+      observer.disconnect();
+      painted();
+    });
+    observer.observe(document.body, { attributes: true, attributeFilter: ['data-view'] });
+    if (request === 'zoom') window.imlab.plots.charts[0].setScale('x', { min: 2, max: 3 });
+    else document.getElementById('full-run').click();
+  }), request);
+  out.zoomMs = await viewMs('zoom');
+  out.fullMs = await viewMs('full');
+  const walkthroughMs = () => page.evaluate(() => new Promise((resolve) => {
+    const set = window.imlab.walkthrough;
+    const old = set.charts.at(-1)?.data[0];
+    const drawn = () => set.charts.length === set.defs.length && set.charts.at(-1).data[0] !== old;
+    const start = performance.now();
+    document.querySelector('[role=tab][data-tab=walkthrough]').click();
+    const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+    const check = () => (drawn() ? painted() : setTimeout(check, 0));
+    check();
+  }));
+  out.walkFirstMs = await walkthroughMs();
+  await page.click('[role=tab][data-tab=plots]');
+  await runAgain(page);
+  out.walkMs = await walkthroughMs();
+  await page.click('[role=tab][data-tab=plots]');
   // Same length as the Node benchmark (tests/bench/node.mjs): 1 s runs of `ramp`.
   await run('v=1&preset=ramp&duration=1');
   const short = [];
@@ -68,6 +101,7 @@ console.log(`  sine200 (5,000 steps) run → plotted: first run after load ${spr
 console.log(`  closed loop, ramp 5 s, first run after load: ${steps('longFirst')}; run → plot ${spread('longFirstRunMs', 0)} ms`);
 console.log(`  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`);
 console.log(`  closed loop, ramp 1 s, best of 10 runs: ${steps('short')}`);
+console.log(`  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with its equations typeset, ${spread('walkFirstMs', 0)} ms)`);
 
 const page = await newPage(browser, errors);
 await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
