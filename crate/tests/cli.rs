@@ -281,7 +281,7 @@ fn run_writes_the_library_csv_byte_for_byte() {
     let library = |text: &str, every: usize| {
         let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), every).unwrap();
         sim.run().unwrap();
-        sim.recorder().csv()
+        sim.csv()
     };
     assert_eq!(
         String::from_utf8(stdout_of(["run", "step"])).unwrap(),
@@ -316,7 +316,7 @@ fn a_diverged_run_writes_its_trace_then_exits_2() {
     );
     let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
     sim.run().unwrap_err();
-    assert_eq!(String::from_utf8(out.stdout).unwrap(), sim.recorder().csv());
+    assert_eq!(String::from_utf8(out.stdout).unwrap(), sim.csv());
 }
 
 #[test]

@@ -192,12 +192,10 @@ fn ekf_converges_on_every_unsaturated_preset_and_p_stays_psd() {
 
 #[test]
 fn same_scenario_gives_bit_identical_traces_and_seeds_matter() {
-    let a = run("v=1&preset=sine200&duration=0.05").recorder().csv();
-    let b = run("v=1&preset=sine200&duration=0.05").recorder().csv();
+    let a = run("v=1&preset=sine200&duration=0.05").csv();
+    let b = run("v=1&preset=sine200&duration=0.05").csv();
     assert_eq!(a, b);
-    let c = run("v=1&preset=sine200&duration=0.05&seed=2")
-        .recorder()
-        .csv();
+    let c = run("v=1&preset=sine200&duration=0.05&seed=2").csv();
     assert_ne!(a, c);
 }
 
@@ -209,7 +207,7 @@ fn chunked_and_decimated_runs_match_the_full_run() {
     while !chunked.is_finished() {
         chunked.advance(333).unwrap();
     }
-    assert_eq!(full.recorder().csv(), chunked.recorder().csv());
+    assert_eq!(full.csv(), chunked.csv());
     let mut every = Simulation::new(&s, 10).unwrap();
     every.run().unwrap();
     let (a, b) = (col(&full, "omega"), col(&every, "omega"));

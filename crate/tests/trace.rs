@@ -11,12 +11,6 @@ fn both(s: &Scenario) -> (Simulation, Simulation) {
     (rows, traced)
 }
 
-fn csv(sim: &Simulation) -> Vec<u8> {
-    let mut out = Vec::new();
-    sim.write_csv(&mut out).unwrap();
-    out
-}
-
 fn groups(names: &[&[&str]]) -> Vec<Vec<String>> {
     names
         .iter()
@@ -37,7 +31,7 @@ fn every_read_of_a_traced_run_equals_the_kept_rows_bit_for_bit() {
         let s = preset(p.name).unwrap();
         let (rows, traced) = both(&s);
         assert_eq!(rows.len(), traced.len(), "{}", p.name);
-        assert_eq!(csv(&rows), csv(&traced), "{}", p.name);
+        assert_eq!(rows.csv(), traced.csv(), "{}", p.name);
         assert_eq!(
             format!("{:?}", sim::report(&rows)),
             format!("{:?}", sim::report(&traced)),
@@ -83,7 +77,7 @@ fn csv_chunks_and_the_kept_overview_equal_the_whole() {
     let mut traced = Simulation::traced(&s).unwrap();
     traced.keep_overview(&g, 640).unwrap();
     traced.run().unwrap();
-    let whole = csv(&traced);
+    let whole = traced.csv().into_bytes();
     let mut chunks = Vec::new();
     for start in (0..traced.len()).step_by(CHECKPOINT_EVERY + 777) {
         traced
@@ -138,7 +132,7 @@ fn a_failed_traced_run_reads_the_rows_before_its_failure() {
         let (rows, traced) = both(&s);
         assert!(traced.failure().is_some(), "{text}");
         assert_eq!(rows.len(), traced.len(), "{text}");
-        assert_eq!(csv(&rows), csv(&traced), "{text}");
+        assert_eq!(rows.csv(), traced.csv(), "{text}");
         assert_eq!(
             format!("{:?}", sim::report(&rows)),
             format!("{:?}", sim::report(&traced)),

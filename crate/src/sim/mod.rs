@@ -845,6 +845,13 @@ impl Simulation {
         self.write_csv_rows(out, 0, usize::MAX)
     }
 
+    /// The header and every recorded row as one CSV string.
+    pub fn csv(&self) -> String {
+        let mut out = Vec::new();
+        self.write_csv(&mut out).expect("writing to a Vec");
+        String::from_utf8(out).expect("CSV is ASCII")
+    }
+
     /// The EKF's posterior covariance P_{k|k} (5×5, or larger with estimated parameters).
     pub fn covariance(&self) -> nalgebra::DMatrix<f64> {
         with_filter!(&self.state.ekf, f => nalgebra::DMatrix::from_column_slice(f.covariance().nrows(), f.covariance().ncols(), f.covariance().as_slice()))

@@ -236,36 +236,6 @@ impl Recorder {
         Some(self.rows.iter().map(|r| r.values()[c]).collect())
     }
 
-    /// Writes the header and every row as CSV (shortest round-trip number format).
-    pub fn write_csv(&self, out: &mut impl std::io::Write) -> std::io::Result<()> {
-        self.write_csv_rows(out, 0, self.rows.len())
-    }
-
-    /// Writes kept rows `start..start + count` (clamped to those recorded) as CSV lines, preceded
-    /// by the header when `start` is 0, so that consecutive chunks concatenate to [`Self::csv`].
-    pub fn write_csv_rows(
-        &self,
-        out: &mut impl std::io::Write,
-        start: usize,
-        count: usize,
-    ) -> std::io::Result<()> {
-        let end = start.saturating_add(count).min(self.rows.len());
-        write_csv(out, start, &mut |f| {
-            for row in self.rows.get(start..end).unwrap_or(&[]) {
-                if !f(row) {
-                    return;
-                }
-            }
-        })
-    }
-
-    /// The whole trace as a CSV string.
-    pub fn csv(&self) -> String {
-        let mut buf = Vec::new();
-        self.write_csv(&mut buf).expect("writing to a Vec");
-        String::from_utf8(buf).expect("CSV is ASCII")
-    }
-
     /// M4 envelope (Jugel et al., VLDB 2014) of the named columns over rows with t in [t0, t1],
     /// for the tests of [`m4`] (runs read theirs with `Simulation::view`),
     /// in at most `buckets` buckets: see [`m4`]. Returns [t, col1, col2, ...]; every point is a
@@ -677,14 +647,20 @@ mod tests {
 
     #[test]
     fn chunks_of_rows_concatenate_to_the_whole_csv() {
-        let r = ramp_recorder(1000);
+        // A run that keeps its rows, written through the one CSV writer.
+        let s = crate::scenario::preset("decay").unwrap();
+        let mut sim = super::super::Simulation::new(&s, 1).unwrap();
+        sim.run().unwrap();
+        assert_eq!(sim.len(), 400);
+        let whole = sim.csv().into_bytes();
+        assert_eq!(String::from_utf8_lossy(&whole).lines().count(), 401);
         let mut chunks = Vec::new();
-        for start in (0..1000).step_by(333) {
-            r.write_csv_rows(&mut chunks, start, 333).unwrap();
+        for start in (0..400).step_by(133) {
+            sim.write_csv_rows(&mut chunks, start, 133).unwrap();
         }
-        assert_eq!(String::from_utf8(chunks).unwrap(), r.csv());
+        assert_eq!(chunks, whole);
         let mut past = Vec::new();
-        r.write_csv_rows(&mut past, 5000, 10).unwrap();
+        sim.write_csv_rows(&mut past, 5000, 10).unwrap();
         assert!(past.is_empty());
     }
 
