@@ -289,7 +289,7 @@ function startRun() {
   setBusy(true);
   // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
   // opened (until then they ask for theirs when it is, and a run does not pay for them).
-  const groups = { ...plots.groups(), ...(walkthrough.opened || walkthrough.visible() ? walkthrough.plots.groups() : {}) };
+  const groups = { ...plots.groups(), ...(walkthrough.opened ? walkthrough.plots.groups() : {}) };
   worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups, buckets: buckets() });
 }
 
