@@ -895,6 +895,8 @@ window.imlab = { plots, walkthrough: walkthrough.plots };
 
 setBusy(false);
 startWorker();
-// While the worker loads the core, the main plots are laid out, empty.
+// While the worker loads the core, the main plots are laid out, empty, and their drawing code is
+// compiled.
 plots.prepare();
+plots.warm();
 navigator.serviceWorker?.register('sw.js');
