@@ -32,6 +32,9 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
     await runAgain(page);
     await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
     assert.match(await page.textContent('#pins'), /k1: 1200 → 600 1\/s/);
+    // The runs kept ω for the overlay; another column is read by one replay of each, then kept.
+    await page.selectOption('#overlay-column', 'u_a');
+    await page.waitForFunction(() => document.querySelector('#overlay-plots .u-title')?.textContent === 'voltage u_sa: current run and pinned runs');
     shared = page.url();
     assert.match(shared, /#pins=v%3D1%26preset%3Dstep$/);
   });

@@ -194,10 +194,12 @@ function exercise(s) {
       attempt('stability', () => sim.stability());
       attempt('lyapunov_bound', (t) => sim.lyapunov_bound(t), Float64Array.from({ length: rng.int(0, 5) }, () => oddArg(rng.next())));
       attempt('column', (name) => sim.column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
+      attempt('keep_column', (name) => sim.keep_column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
       attempt('getters', () => [sim.done, sim.total, sim.rows, sim.finished, sim.failure, sim.scenario]);
     }
-    if (short) attempt('pin', (text) => comparison.pin(text), s);
-    attempt('pin', (text) => comparison.pin(text), 'v=1&preset=step&duration=0.002');
+    const column = () => (rng.chance(0.8) ? rng.pick(COLUMNS) : randomBytes().slice(0, 10));
+    if (short) attempt('pin', (text, c) => comparison.pin(text, c), s, column());
+    attempt('pin', (text, c) => comparison.pin(text, c), 'v=1&preset=step&duration=0.002', column());
     if (sim) {
       attempt('legends', () => comparison.legends(sim));
       attempt('overlay', (...a) => comparison.overlay(sim, ...a), rng.chance(0.7) ? rng.pick(COLUMNS) : s, oddArg(0), oddArg(0.01), rng.pick([0, 1, 100, 2 ** 32 - 1, -1]));

@@ -290,7 +290,9 @@ function startRun() {
   // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
   // opened (until then they ask for theirs when it is, and a run does not pay for them).
   const groups = { ...plots.groups(), ...(walkthrough.opened ? walkthrough.plots.groups() : {}) };
-  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups, buckets: buckets() });
+  // With runs pinned, the run keeps the overlay's column as it goes.
+  const overlay = state.pins.length ? $('overlay-column').value : null;
+  worker.postMessage({ type: 'run', id, scenario: state.info.encoded, groups, buckets: buckets(), overlay });
 }
 
 // One bucket a pixel column of the widest plot.
@@ -559,9 +561,9 @@ const handlers = {
     if (state.shared.pins) {
       const { scenarios, malformed } = decodePins(state.shared.pins);
       if (malformed.length) say(`Ignored a malformed pin in the address: ${malformed.map((m) => `'${excerpt(m)}'`).join(', ')}.`);
-      worker.postMessage({ type: 'pin', scenarios });
+      worker.postMessage({ type: 'pin', scenarios, column: $('overlay-column').value });
     } else if (state.pins.length) {
-      worker.postMessage({ type: 'pin', scenarios: [] });
+      worker.postMessage({ type: 'pin', scenarios: [], column: $('overlay-column').value });
     }
     // A shared link with a sweep in its fragment runs that sweep once, after the first run.
     const shared = state.shared.sweep;
@@ -879,7 +881,7 @@ async function runSeeds() {
   }
 }
 
-$('pin').addEventListener('click', () => worker.postMessage({ type: 'pin', scenarios: [state.info.encoded] }));
+$('pin').addEventListener('click', () => worker.postMessage({ type: 'pin', scenarios: [state.info.encoded], column: $('overlay-column').value }));
 $('overlay-column').addEventListener('change', requestOverlay);
 $('sweep-run').addEventListener('click', runSweep);
 $('sweep-cancel').addEventListener('click', () => analysis.pool.cancel());

@@ -5,11 +5,12 @@
 //   {type: 'describe', req, scenario}          → {type: 'described', req, info} | {type: 'invalid', req, message}
 //   {type: 'recover', req, scenario}           → {type: 'described', req, info: {...info, rejected}} | invalid
 //     (keeps the acceptable fields of a bad scenario and lists the rejected ones)
-//   {type: 'run', id, scenario, groups, buckets}
+//   {type: 'run', id, scenario, groups, buckets, overlay}
 //        → {type: 'progress', id, done, total}* then
 //          {type: 'done', id, view, rows, failure, computeMs, stability, figures, transient}
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
-//     (`view` is the whole run's view of `groups`, kept while the run went)
+//     (`view` is the whole run's view of `groups`, kept while the run went; `overlay`, a column
+//     or null, is kept as it goes for the overlay with the pins)
 //   {type: 'cancel', id}
 //   {type: 'view', id, set, groups, t0, t1, buckets} → {type: 'view', id, set, view}
 //     (`set` names the page's plot set the view is for, and comes back as given)
@@ -20,10 +21,11 @@
 //   {type: 'csv-cancel', serial}               ends the export (a new run ends it too)
 //   {type: 'inspect', id, t}                   → {type: 'inspected', id, t, snapshot} | {type: 'invalid', id, message}
 //   {type: 'compare', id, columns, buckets}    → {type: 'compared', id, results: [{predictor, metrics}]}
-//   {type: 'pin', scenarios}                   → {type: 'pins', scenarios, legends, rejected: [{scenario, message}]}
-//     (runs and pins each; `rejected` lists those the core refused)
+//   {type: 'pin', scenarios, column}           → {type: 'pins', scenarios, legends, rejected: [{scenario, message}]}
+//     (runs and pins each, keeping the overlay's `column`; `rejected` lists those the core refused)
 //   {type: 'unpin', index}                     → {type: 'pins', scenarios, legends, rejected: []}
 //   {type: 'overlay', id, column, t0, t1, buckets} → {type: 'overlay', id, column, data: [t, current, pins..., diffs...]}
+//     (every run keeps `column` from then on: the next overlay of it replays none)
 //   {type: 'job', job, kind, ...}              → {type: 'job', job, result} | {type: 'job', job, error}
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
 //     'grid' {lo, hi, n}, 'bands' {runs}, 'summary' {points}, 'sweep-csv' {points}, 'seeds-csv' {results}
@@ -135,7 +137,7 @@ function yieldToMessages() {
   });
 }
 
-async function run({ id, scenario, groups, buckets }) {
+async function run({ id, scenario, groups, buckets, overlay }) {
   if (current) current.sim.free();
   current = null;
   let sim;
@@ -150,6 +152,8 @@ async function run({ id, scenario, groups, buckets }) {
   try {
     // The whole run's view is computed as it runs: the first plot needs no replay.
     sim.keep_overview(recordedColumns(groups), buckets);
+    // With runs pinned, the overlay's column is kept as it runs: the overlay replays no run.
+    if (overlay) sim.keep_column(overlay);
   } catch (e) {
     if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
     return;
@@ -336,7 +340,7 @@ self.onmessage = async ({ data }) => {
       const rejected = [];
       for (const scenario of data.scenarios) {
         try {
-          comparison.pin(scenario);
+          comparison.pin(scenario, data.column);
         } catch (e) {
           if (trapped(e)) return;
           rejected.push({ scenario, message: String(e) });

@@ -8,7 +8,7 @@
 //!   sample 0 kept, no row computed or checked otherwise), side by side;
 //! - `view`: the read paths on a traced 5 s `ramp`: the page's view request (every plot) over the
 //!   whole run from the overview and replayed, zoomed to 1 s and to 20 ms; one plot zoomed; the
-//!   overlay of two runs; a CSV chunk of 20,000 rows; inspect at the last sample.
+//!   overlay of two runs, replayed and from the column they keep; a CSV chunk of 20,000 rows; inspect at the last sample.
 //!
 //! Criterion's "elem/s" is steps per second for `preset/*` and `long/*`, and rows per second for
 //! `view/csv`. Building the simulation and dropping it are outside the timing; faulting in fresh
@@ -181,6 +181,15 @@ fn view(c: &mut Criterion) {
     });
     group.bench_function(BenchmarkId::new("overlay", "whole"), |b| {
         b.iter(|| current.overlay(&[&pinned], black_box("omega"), 0.0, end, BUCKETS));
+    });
+    // As the page overlays a run with a pin once both keep the column (a run keeps it from its
+    // start when runs are pinned, a pin from its own run, any run after one replay).
+    let (mut current_kept, mut pinned_kept) = (current.clone(), pinned.clone());
+    for s in [&mut current_kept, &mut pinned_kept] {
+        s.keep_column("omega").expect("a column");
+    }
+    group.bench_function(BenchmarkId::new("overlay", "whole_kept"), |b| {
+        b.iter(|| current_kept.overlay(&[&pinned_kept], black_box("omega"), 0.0, end, BUCKETS));
     });
     group.throughput(Throughput::Elements(CSV_ROWS as u64));
     let mut out = Vec::new();

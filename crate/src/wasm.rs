@@ -59,6 +59,12 @@ impl Simulation {
             .map_err(js_error)
     }
 
+    /// Keeps column `name` of every sample for overlays (see [`Comparison::overlay`]): from the
+    /// first step when called before it, otherwise by one replay of the ended run.
+    pub fn keep_column(&mut self, name: &str) -> Result<(), JsValue> {
+        self.inner.keep_column(name).map_err(js_error)
+    }
+
     /// Runs up to `max_steps` samples; returns how many ran, or throws the failure message.
     pub fn step(&mut self, max_steps: u32) -> Result<u32, JsValue> {
         let done = self.inner.advance(max_steps as usize).map_err(js_error)?;
@@ -355,8 +361,9 @@ impl Comparison {
         Comparison::default()
     }
 
-    /// Runs `scenario` to the end (or its failure) and pins it.
-    pub fn pin(&mut self, scenario: &str) -> Result<(), JsValue> {
+    /// Runs `scenario` to the end (or its failure) and pins it, keeping its column `column` for
+    /// overlays.
+    pub fn pin(&mut self, scenario: &str, column: &str) -> Result<(), JsValue> {
         if self.pins.len() >= MAX_PINS {
             return Err(js_error(format!(
                 "at most {MAX_PINS} runs can be pinned; unpin one first"
@@ -366,6 +373,7 @@ impl Comparison {
         // A pin keeps checkpoints only (a few MiB for the longest run), so the number of pins
         // is the only limit.
         let mut sim = sim::Simulation::traced(&s).map_err(js_error)?;
+        sim.keep_column(column).map_err(js_error)?;
         // A run that stops early stays pinned with the samples before its failure.
         let _ = sim.run();
         self.pins.push(sim);
@@ -402,9 +410,11 @@ impl Comparison {
 
     /// Column `name` of `current` and of each pin, then current − pin for each, as min/max
     /// envelopes over t in [t0, t1]: an array of `Float64Array`s [t, current, pins..., diffs...].
+    /// Each run keeps the column (one replay for a run that did not yet), so that the next
+    /// overlay of it replays none.
     pub fn overlay(
-        &self,
-        current: &Simulation,
+        &mut self,
+        current: &mut Simulation,
         name: &str,
         t0: f64,
         t1: f64,
@@ -413,6 +423,9 @@ impl Comparison {
         let ts = current.inner.scenario().ts;
         if let Some(p) = self.pins.iter().find(|p| p.scenario().ts != ts) {
             return Err(js_error(format!("pinned run {} samples at Ts = {} s, the current one at {ts} s: overlays need the same Ts", p.scenario().encode(), p.scenario().ts)));
+        }
+        for s in std::iter::once(&mut current.inner).chain(&mut self.pins) {
+            s.keep_column(name).map_err(js_error)?;
         }
         let others: Vec<&sim::Simulation> = self.pins.iter().collect();
         let cols = current

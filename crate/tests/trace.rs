@@ -121,6 +121,59 @@ fn overlays_of_traced_runs_equal_those_of_kept_rows() {
     assert!(ta.overlay(&[&tb], "nope", 0.0, 1.0, 10).is_err());
 }
 
+/// A traced run that keeps the overlay's column, from its start or by a replay once it has
+/// ended (a failed run too), gives the same overlay as runs that keep their rows; asking for
+/// another column replaces the kept one, and only the kept one is read from memory.
+#[test]
+fn overlays_from_kept_columns_equal_those_of_kept_rows() {
+    let a = Scenario::parse("v=1&preset=sine200&duration=0.3").unwrap();
+    let b = Scenario::parse("v=1&preset=sine200&duration=0.3&k1=300").unwrap();
+    // Stops early: its column holds the rows before the failure.
+    // A 10 kN m load step at 0.1 s: the flux leaves its bounds at 0.16 s.
+    let failing =
+        Scenario::parse("v=1&preset=sine200&duration=0.3&load.torque=10000&load.time=0.1").unwrap();
+    let (ra, _) = both(&a);
+    let (rb, _) = both(&b);
+    let (rf, _) = both(&failing);
+    assert!(
+        rf.failure().is_some() && rf.len() > 100,
+        "the third run fails after some rows"
+    );
+    let mut ta = Simulation::traced(&a).unwrap();
+    ta.keep_column("omega").unwrap();
+    let bytes = ta.recording_bytes();
+    let (mut tb, mut tf) = (
+        Simulation::traced(&b).unwrap(),
+        Simulation::traced(&failing).unwrap(),
+    );
+    assert!(ta.run().is_ok() && tb.run().is_ok() && tf.run().is_err());
+    tb.keep_column("omega").unwrap();
+    tf.keep_column("omega").unwrap();
+    // The whole run's column is reserved before it starts: 8 bytes a sample.
+    assert_eq!(
+        bytes - Simulation::traced(&a).unwrap().recording_bytes(),
+        8 * a.steps()
+    );
+    for column in ["omega", "u_a", "omega"] {
+        for (t0, t1, buckets) in [(0.0, 1.0, 800), (0.05, 0.06, 800), (0.1, 0.25, 13)] {
+            let kept = ra.overlay(&[&rb, &rf], column, t0, t1, buckets).unwrap();
+            assert_eq!(
+                kept,
+                ta.overlay(&[&tb, &tf], column, t0, t1, buckets).unwrap(),
+                "{column} {t0}–{t1} s"
+            );
+        }
+        for s in [&mut ta, &mut tb, &mut tf] {
+            s.keep_column(column).unwrap();
+        }
+    }
+    assert!(ta.keep_column("nope").is_err());
+    // Not in the middle of a run.
+    let mut partway = Simulation::traced(&a).unwrap();
+    partway.advance(100).unwrap();
+    assert!(partway.keep_column("omega").is_err());
+}
+
 /// A run that fails keeps, traced or not, the same rows before its failure and replays them.
 #[test]
 fn a_failed_traced_run_reads_the_rows_before_its_failure() {

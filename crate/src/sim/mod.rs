@@ -801,14 +801,14 @@ impl Simulation {
             return Ok(m4.finish().pop().expect("one group"));
         }
         let mut values = vec![0.0; 2 * others.len() + 2];
-        let mut readers: Vec<Reader> = std::iter::once(self)
+        let mut readers: Vec<_> = std::iter::once(self)
             .chain(others.iter().copied())
-            .map(|s| s.reader(start))
+            .map(|s| s.column(c, start))
             .collect();
         for i in start..end {
             values[0] = self.time(i);
             for (j, r) in readers.iter_mut().enumerate() {
-                values[1 + j] = r.next_row().get(c);
+                values[1 + j] = r.next().expect("a recorded row");
             }
             for j in 0..others.len() {
                 values[2 + others.len() + j] = values[1] - values[2 + j];
@@ -818,12 +818,50 @@ impl Simulation {
         Ok(m4.finish().pop().expect("one group"))
     }
 
-    /// Rows from `i` on, one at a time, for either kind of run.
-    fn reader(&self, i: usize) -> Reader<'_> {
+    /// Column `c` of the rows from `i` on: kept in memory (the rows, or the column a traced run
+    /// keeps), or replayed.
+    fn column(&self, c: usize, i: usize) -> Box<dyn Iterator<Item = f64> + '_> {
         match &self.recording {
-            Recording::Rows(r) => Reader::Rows(r.rows()[i..].iter()),
-            Recording::Trace(_) => Reader::Replay(Box::new(self.cursor(i))),
+            Recording::Rows(r) => Box::new(r.rows()[i..].iter().map(move |row| row.get(c))),
+            Recording::Trace(Trace {
+                column: Some(kept), ..
+            }) if kept.index == c => Box::new(kept.values[i..].iter().copied()),
+            Recording::Trace(_) => {
+                let mut cursor = self.cursor(i);
+                Box::new(std::iter::from_fn(move || Some(cursor.next_row().get(c))))
+            }
         }
+    }
+
+    /// Keeps column `name` of every row of a traced run, so that [`Simulation::overlay`] reads it
+    /// instead of replaying the run: as the run goes when it has not started, otherwise (a run
+    /// finished or stopped by a failure) by one replay now. One column at a time: another
+    /// replaces it. A run that keeps its rows needs none. Errs for an unknown column or a run in
+    /// progress.
+    pub fn keep_column(&mut self, name: &str) -> Result<(), String> {
+        let index = trace::Overview::indices(&[name])?[0];
+        let Recording::Trace(trace) = &self.recording else {
+            return Ok(());
+        };
+        if trace.column.as_ref().is_some_and(|c| c.index == index) {
+            return Ok(());
+        }
+        let started = self.state.k > 0;
+        if started && !self.is_finished() && self.failure.is_none() {
+            return Err("a run keeps a column from its start, or once it has ended".to_string());
+        }
+        // The whole run's worth is reserved now: the run's pushes do not allocate.
+        let mut values = Vec::with_capacity(if started { self.len() } else { self.lp.steps });
+        if started {
+            self.visit(0, self.len(), &mut |_, row| {
+                values.push(row.get(index));
+                true
+            });
+        }
+        if let Recording::Trace(trace) = &mut self.recording {
+            trace.column = Some(trace::Column { index, values });
+        }
+        Ok(())
     }
 
     /// Writes recorded rows `start..start + count` (clamped to those recorded) as CSV lines,
@@ -990,21 +1028,6 @@ impl Cursor<'_> {
         let _ = self.lp.step(&mut self.state, &mut capture);
         self.state.k += 1;
         capture.row.expect("a replay of a recorded row")
-    }
-}
-
-/// Rows one at a time: from memory, or by replay.
-enum Reader<'a> {
-    Rows(std::slice::Iter<'a, Row>),
-    Replay(Box<Cursor<'a>>),
-}
-
-impl Reader<'_> {
-    fn next_row(&mut self) -> Row {
-        match self {
-            Reader::Rows(rows) => *rows.next().expect("a recorded row"),
-            Reader::Replay(c) => c.next_row(),
-        }
     }
 }
 

@@ -97,6 +97,17 @@ pub(super) struct Trace {
     /// that neither replays the whole run.
     pub(super) stability: StabilityTally,
     pub(super) transient: TransientTally,
+    /// One column of every row, kept as the run goes, when asked for before it started (the
+    /// overlay of runs reads it instead of replaying them).
+    pub(super) column: Option<Column>,
+}
+
+/// The values of one column, row by row.
+#[derive(Clone, Debug)]
+pub(super) struct Column {
+    /// Its index in [`COLUMNS`].
+    pub(super) index: usize,
+    pub(super) values: Vec<f64>,
 }
 
 impl Trace {
@@ -108,6 +119,7 @@ impl Trace {
             overview: None,
             stability: StabilityTally::new(scenario.gains, scenario.limit()),
             transient: TransientTally::new(steps, scenario.ts),
+            column: None,
         }
     }
 
@@ -123,7 +135,9 @@ impl Trace {
 
     /// Bytes the trace holds.
     pub(super) fn bytes(&self) -> usize {
-        self.checkpoints.capacity() * std::mem::size_of::<LoopState>() + self.transient.bytes()
+        self.checkpoints.capacity() * std::mem::size_of::<LoopState>()
+            + self.transient.bytes()
+            + self.column.as_ref().map_or(0, |c| c.values.capacity() * 8)
     }
 }
 
@@ -141,6 +155,10 @@ impl Sink for Trace {
         }
         self.stability.push(row);
         self.transient.push(self.len, row);
+        if let Some(c) = &mut self.column {
+            // Within the capacity reserved for the whole run: no allocation.
+            c.values.push(row.get(c.index));
+        }
         self.len += 1;
         Ok(())
     }
