@@ -1,6 +1,6 @@
 // Browser benchmark: the time of a full sine200 run (worker compute, transfer and first plot),
-// the in-browser closed-loop speed (first run after load, 5 s runs, 1 s runs), view requests on
-// a 5 s run, a parameter sweep and the WASM size. Run with `make bench` (or `node tests/bench/browser.mjs` after
+// the in-browser closed-loop speed (first run after load, 5 s runs, 1 s runs), view requests and
+// overlays on a 5 s run, a parameter sweep and the WASM size. Run with `make bench` (or `node tests/bench/browser.mjs` after
 // `make dist`).
 //
 // The run figures are the median (min–max) of BENCH_REPS (default 5) repetitions, each in a
@@ -81,6 +81,25 @@ async function repetition() {
   await runAgain(page);
   out.walkMs = await walkthroughMs();
   await page.click('[role=tab][data-tab=plots]');
+  // The overlay of the 5 s run with a pin of it, from choosing its column to the painted frame:
+  // another column than the runs keep (one replay of each, after which they keep it), then the
+  // same column again (read from what they keep, as after a run with runs pinned).
+  await page.click('#pin');
+  await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
+  const overlayMs = (column) => page.evaluate((column) => new Promise((resolve) => {
+    const plots = document.getElementById('overlay-plots');
+    const start = performance.now();
+    const observer = new MutationObserver(() => {
+      observer.disconnect();
+      requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+    });
+    observer.observe(plots, { childList: true });
+    const select = document.getElementById('overlay-column');
+    select.value = column;
+    select.dispatchEvent(new Event('change'));
+  }), column);
+  out.overlayNewMs = await overlayMs('u_a');
+  out.overlayKeptMs = await overlayMs('u_a');
   await page.context().close();
   return out;
 }
@@ -103,6 +122,7 @@ console.log(`  closed loop, ramp 5 s, first run after load: ${steps('longFirst')
 console.log(`  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`);
 console.log(`  closed loop, ramp 1 s, best of 10 runs: ${steps('short')}`);
 console.log(`  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with its equations typeset, ${spread('walkFirstMs', 0)} ms)`);
+console.log(`  overlay of a 5 s run and a pin of it: a column the runs keep ${spread('overlayKeptMs', 0)} ms; another column (one replay of each) ${spread('overlayNewMs', 0)} ms`);
 
 const page = await newPage(browser, errors);
 await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
