@@ -61,7 +61,8 @@ fn closed_loop_steps_do_not_allocate() {
 
 #[test]
 fn traced_steps_do_not_allocate() {
-    // Checkpoints go into room made when the run is prepared; the overview's envelopes too.
+    // Checkpoints go into room made when the run is prepared; the overview's envelopes and the
+    // kept overlay column too.
     let groups: Vec<Vec<String>> = [&["omega", "omega_hat", "omega_ref"][..], &["i_sa", "nis"]]
         .iter()
         .map(|g| g.iter().map(|n| n.to_string()).collect())
@@ -70,6 +71,7 @@ fn traced_steps_do_not_allocate() {
         let s = imlab::scenario::preset(p.name).unwrap();
         let mut sim = Simulation::traced(&s).unwrap();
         sim.keep_overview(&groups, 1000).unwrap();
+        sim.keep_column("omega").unwrap();
         let before = allocations();
         let result = sim.advance(5000);
         let after = allocations();
