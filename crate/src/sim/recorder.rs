@@ -400,11 +400,9 @@ pub struct M4 {
     bucket: usize,
     lo: usize,
     hi: usize,
-    /// The current bucket's rows so far by column: value c of the row at offset o in the bucket
-    /// is at c·cap + o.
+    /// The current bucket's rows so far, one after the other: value c of the row at offset o in
+    /// the bucket is at o·width + c.
     rows: Vec<f64>,
-    /// Rows a bucket holds at most.
-    cap: usize,
     /// Per series, the offset in the bucket of its minimum and of its maximum (the first of
     /// equal values), found when the bucket is complete.
     min_at: Vec<usize>,
@@ -458,7 +456,6 @@ impl M4 {
             } else {
                 vec![0.0; per_bucket * width]
             },
-            cap: per_bucket,
             min_at: vec![0; series],
             max_at: vec![0; series],
             kept: Vec::with_capacity(2 + 2 * widest),
@@ -485,26 +482,37 @@ impl M4 {
             }
             return;
         }
-        let (cap, offset) = (self.cap, i - self.lo);
-        for (c, &v) in values.iter().enumerate() {
-            self.rows[c * cap + offset] = v;
-        }
+        let (width, offset) = (self.width, i - self.lo);
+        self.rows[offset * width..(offset + 1) * width].copy_from_slice(values);
         if i + 1 == self.hi {
-            // The bucket is complete. Each series' extremes, one column at a time (selects
-            // rather than branches: which sample is an extreme is unpredictable).
+            // The bucket is complete. Each series' extremes (the first of equal values), with
+            // selects rather than branches: which sample is an extreme is unpredictable.
             let len = offset + 1;
-            for (s, column) in self.rows[cap..].chunks_exact(cap).enumerate() {
-                let column = &column[..len];
-                let (mut min, mut max, mut min_at, mut max_at) = (column[0], column[0], 0, 0);
-                for (j, &v) in column.iter().enumerate().skip(1) {
-                    let (lower, higher) = (v < min, v > max);
-                    min = if lower { v } else { min };
-                    min_at = if lower { j } else { min_at };
-                    max = if higher { v } else { max };
-                    max_at = if higher { j } else { max_at };
+            // Four columns at a time: four independent chains of selects overlap (more spill
+            // the registers on x86-64).
+            const LANES: usize = 4;
+            let series = self.min_at.len();
+            let rows = &self.rows;
+            for first in (0..series).step_by(LANES) {
+                let lanes = LANES.min(series - first);
+                let at = |l: usize, j: usize| rows[j * width + 1 + first + l];
+                let (mut min, mut max) = ([0.0; LANES], [0.0; LANES]);
+                let (mut min_at, mut max_at) = ([0; LANES], [0; LANES]);
+                for l in 0..lanes {
+                    (min[l], max[l]) = (at(l, 0), at(l, 0));
                 }
-                self.min_at[s] = min_at;
-                self.max_at[s] = max_at;
+                for j in 1..len {
+                    for l in 0..lanes {
+                        let v = at(l, j);
+                        let (lower, higher) = (v < min[l], v > max[l]);
+                        min[l] = if lower { v } else { min[l] };
+                        min_at[l] = if lower { j } else { min_at[l] };
+                        max[l] = if higher { v } else { max[l] };
+                        max_at[l] = if higher { j } else { max_at[l] };
+                    }
+                }
+                self.min_at[first..first + lanes].copy_from_slice(&min_at[..lanes]);
+                self.max_at[first..first + lanes].copy_from_slice(&max_at[..lanes]);
             }
             // Per group, its kept rows in row order, each once.
             for (g, out) in self.groups.iter().zip(&mut self.out) {
@@ -516,9 +524,9 @@ impl M4 {
                 self.kept.sort_unstable();
                 self.kept.dedup();
                 for &k in &self.kept {
-                    out[0].push(self.rows[k]);
+                    out[0].push(self.rows[k * width]);
                     for (o, &s) in out[1..].iter_mut().zip(g) {
-                        o.push(self.rows[(s + 1) * cap + k]);
+                        o.push(self.rows[k * width + s + 1]);
                     }
                 }
             }
