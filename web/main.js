@@ -419,15 +419,21 @@ function showTab(name, { fetch = true } = {}) {
     const selected = tab.dataset.tab === name;
     tab.setAttribute('aria-selected', selected);
     tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
-    $(`panel-${tab.dataset.tab}`).hidden = !selected;
+    const panel = $(`panel-${tab.dataset.tab}`);
+    panel.hidden = !selected;
+    // The style keeps a hidden panel laid out (skipped, see style.css): out of the accessibility
+    // tree as the `hidden` attribute alone would put it.
+    if (selected) panel.removeAttribute('aria-hidden');
+    else panel.setAttribute('aria-hidden', 'true');
   }
-  // Plots drawn while hidden have no width; size them now that they are visible.
-  plots.resize();
+  // A hidden panel keeps its layout (style.css), so its plots keep their size; the shown ones
+  // are sized in case the window changed meanwhile (a chart of the right size is left alone).
+  if (name === 'plots') plots.resize();
   if (name === 'walkthrough') {
     walkthrough.shown();
     if (fetch) walkthroughView();
+    walkthrough.plots.resize();
   }
-  walkthrough.plots.resize();
   walkthrough.closeInspect();
 }
 

@@ -40,17 +40,20 @@ function plain(source) {
 
 // A box that scrolls sideways (a long equation, a wide table) must be reachable from the keyboard
 // and named; one that fits stays out of the tab order, so the walkthrough does not gain a tab stop
-// per equation on a wide screen. Checked whenever a box changes size and when the tab is shown.
-function markScrollable(box) {
-  const scrolls = box.scrollWidth > box.clientWidth + 1;
-  if (scrolls === (box.getAttribute('role') === 'region')) return;
-  if (scrolls) {
-    setAttributes(box, { tabindex: '0', role: 'region', 'aria-label': box.dataset.label });
-  } else {
-    for (const name of ['tabindex', 'role', 'aria-label']) box.removeAttribute(name);
-  }
+// per equation on a wide screen. Checked whenever a box changes size and when the tab is shown:
+// every box is measured before any is marked, so that the page is laid out once, not once a box.
+function markScrollable(boxes) {
+  const scrolls = boxes.map((box) => box.scrollWidth > box.clientWidth + 1);
+  boxes.forEach((box, i) => {
+    if (scrolls[i] === (box.getAttribute('role') === 'region')) return;
+    if (scrolls[i]) {
+      setAttributes(box, { tabindex: '0', role: 'region', 'aria-label': box.dataset.label });
+    } else {
+      for (const name of ['tabindex', 'role', 'aria-label']) box.removeAttribute(name);
+    }
+  });
 }
-const scrollBoxes = new ResizeObserver((entries) => entries.forEach((e) => markScrollable(e.target)));
+const scrollBoxes = new ResizeObserver((entries) => markScrollable(entries.map((e) => e.target)));
 
 /** Registers `box` as a sideways scroll box named `label`. */
 function scrollBox(box, label) {
@@ -203,7 +206,7 @@ export class Walkthrough {
 
   /** Whether the walkthrough is on screen. */
   visible() {
-    return this.container.offsetParent !== null;
+    return this.container.checkVisibility();
   }
 
   /** Whether its plots show the last run (they can take a zoom window then). */
@@ -219,7 +222,7 @@ export class Walkthrough {
       katex.render(span.dataset.tex, span, { displayMode: true, throwOnError: false, strict: 'ignore' });
       delete span.dataset.tex;
     }
-    this.container.querySelectorAll('.scroll-box').forEach(markScrollable);
+    markScrollable([...this.container.querySelectorAll('.scroll-box')]);
     if (this.pending) {
       this.plots.show(this.pending, { ifoc: this.ifoc });
       this.pending = null;
@@ -264,7 +267,7 @@ export class Walkthrough {
     close.setAttribute('aria-keyshortcuts', 'Escape');
     close.addEventListener('click', () => {
       this.closeInspect();
-      if (this.lastPlot?.offsetParent) this.lastPlot.focus({ preventScroll: true });
+      if (this.lastPlot?.checkVisibility()) this.lastPlot.focus({ preventScroll: true });
     });
     const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
     const lines = snap.columns.map((c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
@@ -326,7 +329,7 @@ export class Walkthrough {
   reveal(plot) {
     const box = this.inspectBox;
     box.style.maxHeight = '';
-    const shown = plot?.isConnected && plot.offsetParent !== null;
+    const shown = plot?.isConnected && plot.checkVisibility();
     const rem = parseFloat(getComputedStyle(document.documentElement).fontSize);
     const gap = 0.5 * rem;
     if (shown) {
