@@ -280,6 +280,7 @@ fn summary(since: SystemTime) {
         "page_view/zoom_20ms",
         "speed_plot/zoom_1s",
         "overlay/whole",
+        "overlay/whole_kept",
         &format!("csv/{CSV_ROWS}"),
         "inspect/end_of_5s",
     ] {
