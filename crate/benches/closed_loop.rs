@@ -3,9 +3,10 @@
 //! Three kinds of group:
 //! - `preset/<name>`: each preset run to its end as the page runs it: traced (checkpoints), with
 //!   the overview of the page's plots at 1000 buckets computed as it goes;
-//! - `long`: `ramp` lasting 5 s and 20 s, traced as the page runs it (`recorded`), with every row
-//!   kept in memory (`rows`, the design before checkpoints) and with recording off (`off`: only
-//!   sample 0 kept, no row computed or checked otherwise), side by side;
+//! - `long`: `ramp` lasting 5 s and 20 s, traced as the page runs it (`recorded`), traced without
+//!   the overview (`checkpoints`), with every row kept in memory (`rows`, the design before
+//!   checkpoints) and with recording off (`off`: only sample 0 kept, no row computed or checked
+//!   otherwise), side by side;
 //! - `view`: the read paths on a traced 5 s `ramp`: the page's view request (every plot) over the
 //!   whole run from the overview and replayed, zoomed to 1 s and to 20 ms; one plot zoomed; the
 //!   overlay of two runs, replayed and from the column they keep; a CSV chunk of 20,000 rows; inspect at the last sample.
@@ -64,6 +65,8 @@ fn page_groups() -> Vec<Vec<String>> {
 enum Keep {
     /// As the page runs it: checkpoints, and the overview of the page's plots at BUCKETS.
     Traced,
+    /// Checkpoints only, no overview: what the overview costs is the difference.
+    Checkpoints,
     /// Every row in memory (the design before checkpoints; analysis runs still use it).
     Rows,
     /// Sample 0 only: the loop without recording.
@@ -78,6 +81,7 @@ fn prepare(s: &Scenario, keep: Keep) -> Simulation {
             sim.keep_overview(&page_groups(), BUCKETS).expect("columns");
             sim
         }
+        Keep::Checkpoints => Simulation::traced(s).expect("accepted"),
         Keep::Rows => Simulation::new(s, 1).expect("accepted"),
         Keep::Off => Simulation::new(s, s.steps()).expect("accepted"),
     }
@@ -143,6 +147,12 @@ fn long(c: &mut Criterion) {
             &format!("{seconds}s_recorded"),
             &s,
             Keep::Traced,
+        );
+        bench_run(
+            &mut group,
+            &format!("{seconds}s_checkpoints"),
+            &s,
+            Keep::Checkpoints,
         );
         bench_run(&mut group, &format!("{seconds}s_rows"), &s, Keep::Rows);
         bench_run(&mut group, &format!("{seconds}s_off"), &s, Keep::Off);
@@ -254,9 +264,15 @@ fn summary(since: SystemTime) {
     for seconds in LONG_DURATIONS {
         let steps = scenario(&format!("v=1&preset=ramp&duration={seconds}")).steps();
         let recorded = rate(&format!("long/{seconds}s_recorded"), steps);
+        let checkpoints = rate(&format!("long/{seconds}s_checkpoints"), steps);
         let rows = rate(&format!("long/{seconds}s_rows"), steps);
         let off = rate(&format!("long/{seconds}s_off"), steps);
-        for (name, r) in [("recorded", recorded), ("rows", rows), ("off", off)] {
+        for (name, r) in [
+            ("recorded", recorded),
+            ("checkpoints", checkpoints),
+            ("rows", rows),
+            ("off", off),
+        ] {
             if let Some(r) = r {
                 lines.push(format!(
                     "long/{seconds}s_{name:<17} {:>7.2} M steps/s {:>6.0}× real time",
