@@ -121,23 +121,34 @@ fn overlays_of_traced_runs_equal_those_of_kept_rows() {
     assert!(ta.overlay(&[&tb], "nope", 0.0, 1.0, 10).is_err());
 }
 
-/// A traced run that keeps the overlay's column, from its start or by a replay once it has
-/// ended (a failed run too), gives the same overlay as runs that keep their rows; asking for
-/// another column replaces the kept one, and only the kept one is read from memory.
+/// A traced run that keeps the overlay's column, from its start, by a replay once it has ended
+/// (a failed run too, even one that failed after its first sample), or by a replay partway and
+/// then as it goes on, gives the same overlay as runs that keep their rows; asking for another
+/// column replays the rows again and keeps that one.
 #[test]
 fn overlays_from_kept_columns_equal_those_of_kept_rows() {
     let a = Scenario::parse("v=1&preset=sine200&duration=0.3").unwrap();
     let b = Scenario::parse("v=1&preset=sine200&duration=0.3&k1=300").unwrap();
-    // Stops early: its column holds the rows before the failure.
     // A 10 kN m load step at 0.1 s: the flux leaves its bounds at 0.16 s.
     let failing =
         Scenario::parse("v=1&preset=sine200&duration=0.3&load.torque=10000&load.time=0.1").unwrap();
+    // The same load on a motor a million times lighter: the speed leaves its bounds after the
+    // first sample, which is the run's only row.
+    let at_once = Scenario::parse(
+        "v=1&preset=sine200&duration=0.3&plant.j=1e-6&load.torque=10000&load.time=0",
+    )
+    .unwrap();
     let (ra, _) = both(&a);
     let (rb, _) = both(&b);
     let (rf, _) = both(&failing);
+    let (r0, _) = both(&at_once);
     assert!(
         rf.failure().is_some() && rf.len() > 100,
         "the third run fails after some rows"
+    );
+    assert!(
+        r0.failure().is_some() && r0.len() == 1,
+        "the fourth run fails after one row"
     );
     let mut ta = Simulation::traced(&a).unwrap();
     ta.keep_column("omega").unwrap();
@@ -146,32 +157,34 @@ fn overlays_from_kept_columns_equal_those_of_kept_rows() {
         Simulation::traced(&b).unwrap(),
         Simulation::traced(&failing).unwrap(),
     );
-    assert!(ta.run().is_ok() && tb.run().is_ok() && tf.run().is_err());
+    let mut t0 = Simulation::traced(&at_once).unwrap();
+    // Kept partway: the rows so far replayed, the rest as the run goes on.
+    tb.advance(1000).unwrap();
     tb.keep_column("omega").unwrap();
-    tf.keep_column("omega").unwrap();
+    assert!(ta.run().is_ok() && tb.run().is_ok() && tf.run().is_err() && t0.run().is_err());
     // The whole run's column is reserved before it starts: 8 bytes a sample.
     assert_eq!(
         bytes - Simulation::traced(&a).unwrap().recording_bytes(),
         8 * a.steps()
     );
     for column in ["omega", "u_a", "omega"] {
-        for (t0, t1, buckets) in [(0.0, 1.0, 800), (0.05, 0.06, 800), (0.1, 0.25, 13)] {
-            let kept = ra.overlay(&[&rb, &rf], column, t0, t1, buckets).unwrap();
-            assert_eq!(
-                kept,
-                ta.overlay(&[&tb, &tf], column, t0, t1, buckets).unwrap(),
-                "{column} {t0}–{t1} s"
-            );
-        }
-        for s in [&mut ta, &mut tb, &mut tf] {
+        for s in [&mut ta, &mut tb, &mut tf, &mut t0] {
             s.keep_column(column).unwrap();
         }
+        for (t_0, t_1, buckets) in [(0.0, 1.0, 800), (0.05, 0.06, 800), (0.1, 0.25, 13)] {
+            let kept = ra.overlay(&[&rb, &rf], column, t_0, t_1, buckets).unwrap();
+            let read = ta.overlay(&[&tb, &tf], column, t_0, t_1, buckets).unwrap();
+            assert_eq!(kept, read, "{column} {t_0}–{t_1} s");
+        }
+        let kept = ra.overlay(&[&r0], column, 0.0, 1.0, 800).unwrap();
+        assert_eq!(
+            kept,
+            ta.overlay(&[&t0], column, 0.0, 1.0, 800).unwrap(),
+            "{column}"
+        );
+        assert_eq!(kept[0].len(), 1, "one common row");
     }
     assert!(ta.keep_column("nope").is_err());
-    // Not in the middle of a run.
-    let mut partway = Simulation::traced(&a).unwrap();
-    partway.advance(100).unwrap();
-    assert!(partway.keep_column("omega").is_err());
 }
 
 /// A run that fails keeps, traced or not, the same rows before its failure and replays them.

@@ -616,7 +616,8 @@ impl Simulation {
         &self.lp.scenario
     }
 
-    /// Bytes the recording holds: the rows, or the checkpoints of a traced run.
+    /// Bytes the recording holds: the rows, or the checkpoints of a traced run (with the column
+    /// it keeps for overlays, if any).
     pub fn recording_bytes(&self) -> usize {
         match &self.recording {
             Recording::Rows(r) => r.len() * Recorder::ROW_BYTES,
@@ -834,10 +835,9 @@ impl Simulation {
     }
 
     /// Keeps column `name` of every row of a traced run, so that [`Simulation::overlay`] reads it
-    /// instead of replaying the run: as the run goes when it has not started, otherwise (a run
-    /// finished or stopped by a failure) by one replay now. One column at a time: another
-    /// replaces it. A run that keeps its rows needs none. Errs for an unknown column or a run in
-    /// progress.
+    /// instead of replaying the run: the rows recorded so far by one replay now (none before the
+    /// run starts), then each further row as the run goes. One column at a time: another
+    /// replaces it. A run that keeps its rows needs none. Errs for an unknown column.
     pub fn keep_column(&mut self, name: &str) -> Result<(), String> {
         let index = trace::Overview::indices(&[name])?[0];
         let Recording::Trace(trace) = &self.recording else {
@@ -846,18 +846,13 @@ impl Simulation {
         if trace.column.as_ref().is_some_and(|c| c.index == index) {
             return Ok(());
         }
-        let started = self.state.k > 0;
-        if started && !self.is_finished() && self.failure.is_none() {
-            return Err("a run keeps a column from its start, or once it has ended".to_string());
-        }
-        // The whole run's worth is reserved now: the run's pushes do not allocate.
-        let mut values = Vec::with_capacity(if started { self.len() } else { self.lp.steps });
-        if started {
-            self.visit(0, self.len(), &mut |_, row| {
-                values.push(row.get(index));
-                true
-            });
-        }
+        // Room for every row the run can still record: its pushes do not allocate.
+        let ended = self.is_finished() || self.failure.is_some();
+        let mut values = Vec::with_capacity(if ended { self.len() } else { self.lp.steps });
+        self.visit(0, self.len(), &mut |_, row| {
+            values.push(row.get(index));
+            true
+        });
         if let Recording::Trace(trace) = &mut self.recording {
             trace.column = Some(trace::Column { index, values });
         }

@@ -716,8 +716,78 @@ mod tests {
     #[cfg(not(target_arch = "wasm32"))]
     use proptest::prelude::*;
 
+    /// M4 as its documentation states it, the slow way: per bucket and group, its first and last
+    /// row and each series' first least and first greatest row, in row order without repeats.
+    #[cfg(not(target_arch = "wasm32"))]
+    fn m4_by_definition(
+        rows: &[Vec<f64>],
+        groups: &[Vec<usize>],
+        buckets: usize,
+    ) -> Vec<Vec<Vec<f64>>> {
+        let n = rows.len();
+        groups
+            .iter()
+            .map(|g| {
+                let mut kept = Vec::new();
+                if n <= M4_POINTS * buckets {
+                    kept.extend(0..n);
+                } else {
+                    for b in 0..buckets {
+                        let (lo, hi) = (split(b, n, buckets), split(b + 1, n, buckets));
+                        let mut k = vec![lo, hi - 1];
+                        for &s in g {
+                            let v = |i: usize| rows[i][s + 1];
+                            let first = |better: &dyn Fn(f64, f64) -> bool| {
+                                (lo..hi).fold(lo, |at, i| if better(v(i), v(at)) { i } else { at })
+                            };
+                            k.push(first(&|a, b| a < b));
+                            k.push(first(&|a, b| a > b));
+                        }
+                        k.sort_unstable();
+                        k.dedup();
+                        kept.extend(k);
+                    }
+                }
+                let mut out = vec![kept.iter().map(|&i| rows[i][0]).collect::<Vec<f64>>()];
+                out.extend(
+                    g.iter()
+                        .map(|&s| kept.iter().map(|&i| rows[i][s + 1]).collect()),
+                );
+                out
+            })
+            .collect()
+    }
+
     #[cfg(not(target_arch = "wasm32"))]
     proptest! {
+        /// M4 against its definition, with many ties (small integers) and one to nine series in
+        /// groups that share some: the first of equal values is kept, whichever lane a series
+        /// is found in.
+        #[test]
+        fn m4_equals_its_definition(
+            series in 1usize..10,
+            values in prop::collection::vec(0u8..4, 1..9000),
+            buckets in 1usize..60,
+            split_at in 0usize..10,
+        ) {
+            let width = series + 1;
+            let rows: Vec<Vec<f64>> = values
+                .chunks_exact(series)
+                .enumerate()
+                .map(|(i, c)| std::iter::once(i as f64).chain(c.iter().map(|&v| f64::from(v))).collect())
+                .collect();
+            prop_assume!(!rows.is_empty());
+            let all: Vec<usize> = (0..series).collect();
+            let cut = split_at.min(series);
+            let groups = vec![all.clone(), all[cut..].to_vec(), all[..cut].iter().rev().copied().collect()];
+            let mut m = M4::new(groups.clone(), series, 0, rows.len(), buckets);
+            for (i, r) in rows.iter().enumerate() {
+                debug_assert_eq!(r.len(), width);
+                m.push(i, r);
+            }
+            prop_assert_eq!(m.finish(), m4_by_definition(&rows, &groups, buckets));
+        }
+
         /// For random traces, windows and bucket counts: every emitted (t, value) pair is a
         /// recorded sample, t never decreases, and each bucket keeps its samples' min and max.
         #[test]

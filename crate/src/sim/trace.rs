@@ -97,8 +97,8 @@ pub(super) struct Trace {
     /// that neither replays the whole run.
     pub(super) stability: StabilityTally,
     pub(super) transient: TransientTally,
-    /// One column of every row, kept as the run goes, when asked for before it started (the
-    /// overlay of runs reads it instead of replaying them).
+    /// One column of every row recorded, when asked for (the overlay of runs reads it instead of
+    /// replaying them): filled by a replay of the rows so far, then as the run goes.
     pub(super) column: Option<Column>,
 }
 
