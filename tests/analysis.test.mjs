@@ -33,8 +33,22 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
     await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
     assert.match(await page.textContent('#pins'), /k1: 1200 → 600 1\/s/);
     // The runs kept ω for the overlay; another column is read by one replay of each, then kept.
-    await page.selectOption('#overlay-column', 'u_a');
-    await page.waitForFunction(() => document.querySelector('#overlay-plots .u-title')?.textContent === 'voltage u_sa: current run and pinned runs');
+    // The envelope keeps every bucket's extremes, so its extremes are the CLI run's.
+    const extremes = (values) => [Math.min(...values), Math.max(...values)];
+    const column = (scenario, name) => {
+      const csv = execFileSync(cli, ['run', scenario], { stdio: ['ignore', 'pipe', 'ignore'], maxBuffer: 1 << 30 });
+      const [header, ...rows] = csv.toString().trim().split('\n');
+      const c = header.split(',').indexOf(name);
+      return rows.map((r) => Number(r.split(',')[c]));
+    };
+    for (const name of ['u_a', 'omega']) {
+      await page.selectOption('#overlay-column', name);
+      await page.waitForFunction((name) => window.imlab.overlay?.column === name, name);
+      const [, current, pinned] = await page.evaluate(() => window.imlab.overlay.data.map((a) => [...a]));
+      assert.deepEqual(extremes(current), extremes(column('v=1&preset=step&k1=600', name)), name);
+      assert.deepEqual(extremes(pinned), extremes(column('v=1&preset=step', name)), name);
+    }
+    assert.match(await page.textContent('#overlay-plots .u-title'), /^speed ω: current run and pinned runs$/);
     shared = page.url();
     assert.match(shared, /#pins=v%3D1%26preset%3Dstep$/);
   });

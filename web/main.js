@@ -347,6 +347,7 @@ function requestOverlay() {
 
 // Overlay of the current run and the pins, and their differences (all envelopes from the core).
 function drawOverlay(column, data) {
+  window.imlab.overlay = { column, data };
   const n = state.pins.length;
   const colors = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
   const label = $('overlay-column').selectedOptions[0].textContent;
@@ -899,7 +900,7 @@ $('seeds-run').addEventListener('click', runSeeds);
 $('seeds-csv').addEventListener('click', () => download(new Blob([state.seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'));
 
 // The page's plot sets, for the browser tests and the console.
-window.imlab = { plots, walkthrough: walkthrough.plots };
+window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 setBusy(false);
 startWorker();

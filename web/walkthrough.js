@@ -38,6 +38,14 @@ function plain(source) {
     .replace(/\\text\{([^}]*)\}/g, '$1').replace(/\\ /g, ' ').replace(/ - /g, ' − ').replace(/[_{}^]/g, '');
 }
 
+/**
+ * Whether `element` is rendered: not under a hidden tab's panel, which is skipped
+ * (`content-visibility`, style.css) where the browser has it and not displayed otherwise.
+ */
+function rendered(element) {
+  return element.checkVisibility?.() ?? element.offsetParent !== null;
+}
+
 // A box that scrolls sideways (a long equation, a wide table) must be reachable from the keyboard
 // and named; one that fits stays out of the tab order, so the walkthrough does not gain a tab stop
 // per equation on a wide screen. Checked whenever a box changes size and when the tab is shown:
@@ -206,7 +214,7 @@ export class Walkthrough {
 
   /** Whether the walkthrough is on screen. */
   visible() {
-    return this.container.checkVisibility();
+    return rendered(this.container);
   }
 
   /** Whether its plots show the last run (they can take a zoom window then). */
@@ -267,7 +275,7 @@ export class Walkthrough {
     close.setAttribute('aria-keyshortcuts', 'Escape');
     close.addEventListener('click', () => {
       this.closeInspect();
-      if (this.lastPlot?.checkVisibility()) this.lastPlot.focus({ preventScroll: true });
+      if (this.lastPlot && rendered(this.lastPlot)) this.lastPlot.focus({ preventScroll: true });
     });
     const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
     const lines = snap.columns.map((c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
@@ -329,17 +337,17 @@ export class Walkthrough {
   reveal(plot) {
     const box = this.inspectBox;
     box.style.maxHeight = '';
-    const shown = plot?.isConnected && plot.checkVisibility();
+    const visible = plot?.isConnected && rendered(plot);
     const rem = parseFloat(getComputedStyle(document.documentElement).fontSize);
     const gap = 0.5 * rem;
-    if (shown) {
+    if (visible) {
       const room = innerHeight - plot.getBoundingClientRect().height - 2 * gap;
       const full = box.offsetHeight;
       if (room < full) box.style.maxHeight = `${Math.max(room, Math.min(full, 10 * rem))}px`;
     }
     const height = box.offsetHeight;
     document.documentElement.style.setProperty('--inspect-height', `${height}px`);
-    if (!shown) return;
+    if (!visible) return;
     const whole = plot.getBoundingClientRect();
     const limit = innerHeight - height - gap;
     const canvas = plot.querySelector('.u-wrap') ?? plot;
