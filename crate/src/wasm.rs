@@ -59,8 +59,8 @@ impl Simulation {
             .map_err(js_error)
     }
 
-    /// Keeps column `name` of every sample for overlays (see [`Comparison::overlay`]): from the
-    /// first step when called before it, otherwise by one replay of the ended run.
+    /// Keeps column `name` of every sample for overlays (see [`Comparison::overlay`]): the samples
+    /// run so far by one replay, then each further one as the run goes.
     pub fn keep_column(&mut self, name: &str) -> Result<(), JsValue> {
         self.inner.keep_column(name).map_err(js_error)
     }

@@ -5,7 +5,7 @@
 //! as given.
 
 use super::trace::CHECKPOINT_EVERY;
-use super::{is_saturated, Recording, Row, Simulation};
+use super::{first_not, is_saturated, Recording, Row, Simulation};
 use crate::control::Reference;
 use crate::scenario::{ControllerKind, Scenario};
 use serde::Serialize;
@@ -129,16 +129,7 @@ pub(super) trait Samples {
 
     /// The first row at or after time `t` (the number of rows if none is).
     fn first_at(&self, t: f64) -> usize {
-        let (mut lo, mut hi) = (0, self.count());
-        while lo < hi {
-            let mid = lo + (hi - lo) / 2;
-            if self.time(mid) < t {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
-        lo
+        first_not(self.count(), |i| self.time(i) < t)
     }
 }
 
@@ -178,18 +169,9 @@ impl TransientTally {
         let last = steps.saturating_sub(1);
         // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
         let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
-        let (mut lo, mut hi) = (0, steps);
-        while lo < hi {
-            let mid = lo + (hi - lo) / 2;
-            if (mid as f64 * ts) < half {
-                lo = mid + 1;
-            } else {
-                hi = mid;
-            }
-        }
         TransientTally {
             band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
-            half_index: lo.min(last),
+            half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
             late_sum: -0.0,
         }
     }

@@ -185,6 +185,21 @@ pub struct Simulation {
     failure: Option<SimError>,
 }
 
+/// The first of `0..n` for which `holds` is false, where it holds for a prefix of `0..n` (row times
+/// increase with the row): a binary search.
+fn first_not(n: usize, holds: impl Fn(usize) -> bool) -> usize {
+    let (mut lo, mut hi) = (0, n);
+    while lo < hi {
+        let mid = lo + (hi - lo) / 2;
+        if holds(mid) {
+            lo = mid + 1;
+        } else {
+            hi = mid;
+        }
+    }
+    lo
+}
+
 /// Whether the commanded voltage of `row` is beyond the inverter's limit.
 fn is_saturated(row: &Row, limit: &Limit) -> bool {
     limit.exceeds(&[row.u_a_cmd, row.u_b_cmd])
@@ -703,21 +718,8 @@ impl Simulation {
 
     /// Row indices with t in [t0, t1].
     fn window(&self, t0: f64, t1: f64) -> (usize, usize) {
-        let first = |pred: &dyn Fn(f64) -> bool| {
-            // The first row whose time does not satisfy `pred` (times increase with the row).
-            let (mut lo, mut hi) = (0, self.len());
-            while lo < hi {
-                let mid = lo + (hi - lo) / 2;
-                if pred(self.time(mid)) {
-                    lo = mid + 1;
-                } else {
-                    hi = mid;
-                }
-            }
-            lo
-        };
-        let start = first(&|t| t < t0);
-        let end = first(&|t| t <= t1).max(start);
+        let start = first_not(self.len(), |i| self.time(i) < t0);
+        let end = first_not(self.len(), |i| self.time(i) <= t1).max(start);
         (start, end)
     }
 

@@ -770,7 +770,6 @@ mod tests {
             buckets in 1usize..60,
             split_at in 0usize..10,
         ) {
-            let width = series + 1;
             let rows: Vec<Vec<f64>> = values
                 .chunks_exact(series)
                 .enumerate()
@@ -782,7 +781,6 @@ mod tests {
             let groups = vec![all.clone(), all[cut..].to_vec(), all[..cut].iter().rev().copied().collect()];
             let mut m = M4::new(groups.clone(), series, 0, rows.len(), buckets);
             for (i, r) in rows.iter().enumerate() {
-                debug_assert_eq!(r.len(), width);
                 m.push(i, r);
             }
             prop_assert_eq!(m.finish(), m4_by_definition(&rows, &groups, buckets));

@@ -137,7 +137,10 @@ impl Trace {
     pub(super) fn bytes(&self) -> usize {
         self.checkpoints.capacity() * std::mem::size_of::<LoopState>()
             + self.transient.bytes()
-            + self.column.as_ref().map_or(0, |c| c.values.capacity() * 8)
+            + self
+                .column
+                .as_ref()
+                .map_or(0, |c| c.values.capacity() * std::mem::size_of::<f64>())
     }
 }
 
