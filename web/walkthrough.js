@@ -19,9 +19,14 @@ function setAttributes(e, attributes) {
  * plain-text name for screen readers (a table header needs one: axe does not read MathML). */
 export function tex(source, displayMode = true, label = null) {
   const span = el('span', { className: displayMode ? 'equation' : 'math' });
-  katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
+  typeset(span, source, displayMode);
   if (label) setAttributes(span.querySelector('.katex'), { role: 'math', 'aria-label': label });
   return span;
+}
+
+/** Typesets our TeX `source` into `span`. */
+function typeset(span, source, displayMode) {
+  katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
 }
 
 /** A display equation typeset when the walkthrough is first shown (see `Walkthrough.shown`):
@@ -227,7 +232,7 @@ export class Walkthrough {
   shown() {
     this.opened = true;
     for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
-      katex.render(span.dataset.tex, span, { displayMode: true, throwOnError: false, strict: 'ignore' });
+      typeset(span, span.dataset.tex, true);
       delete span.dataset.tex;
     }
     markScrollable([...this.container.querySelectorAll('.scroll-box')]);
