@@ -54,6 +54,17 @@ export async function settled(page, timeout = 30_000) {
   return page.evaluate(() => document.body.dataset.state);
 }
 
+/**
+ * Does `action`, waits until it has started a run (the page counts runs started in
+ * `data-started`, set with the running state) and until that run ends; returns how it ended.
+ */
+export async function startRun(page, action, timeout = 30_000) {
+  const before = Number(await page.evaluate(() => document.body.dataset.started ?? 0));
+  await action();
+  await page.waitForFunction((n) => Number(document.body.dataset.started ?? 0) > n, before, { timeout });
+  return settled(page, timeout);
+}
+
 /** Clicks Run and waits for that run to finish; returns the page's run figures. */
 export async function runAgain(page) {
   const before = Number(await page.evaluate(() => document.body.dataset.run ?? 0));

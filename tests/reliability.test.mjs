@@ -9,7 +9,7 @@ import { createReadStream, statSync, unlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { browserSuite, runAgain, settled } from './browser.mjs';
+import { browserSuite, runAgain, settled, startRun } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -24,23 +24,22 @@ const CRASH_MESSAGE = /^The simulation worker failed \(.+\)\. It was restarted; 
 /** The simulation worker: the page's first, as long as it has not been restarted. */
 const simulationWorker = (page) => page.workers()[0];
 
-/** Fills the core's memory in the worker until even small allocations trap; returns the traps. */
-function exhaustMemory(worker) {
+/**
+ * Makes the worker's next chunk of a run exhaust the core's memory: `Simulation.prototype.step`
+ * (the binding the worker calls, shared through the one module instance) is replaced by one that
+ * allocates the largest accepted run until the allocator fails. That is a real trap of the core
+ * (Rust aborts on a failed allocation with `unreachable`), reached on the next run whatever the
+ * memory the worker has freed or the garbage collector has released meanwhile.
+ */
+function trapOnNextStep(worker) {
   return worker.evaluate(async (largest) => {
     // The same module URL gives the page's worker module, so the same WASM instance.
     const m = await import(new URL('../pkg/imlab.js', self.location.href));
-    self.hoard = [];
-    const traps = [];
-    // Each largest run preallocates about 512 MiB; WASM32 memory ends at 4 GiB. Smaller runs
-    // then fill what is left, so the next call of the page's own needs memory that is not there.
-    for (const scenario of [largest, 'v=1&preset=step&duration=0.2&ts=0.0000167', 'v=1&preset=step&duration=0.02', 'v=1&preset=step&duration=0.001']) {
-      try {
-        for (;;) self.hoard.push(new m.Simulation(scenario));
-      } catch (e) {
-        traps.push(`${e.name}: ${e.message}`);
-      }
-    }
-    return traps;
+    const hoard = [];
+    m.Simulation.prototype.step = function exhaust() {
+      // Each largest run preallocates about 512 MiB; WASM32 memory ends at 4 GiB.
+      for (;;) hoard.push(new m.Simulation(largest));
+    };
   }, LARGEST);
 }
 
@@ -53,10 +52,8 @@ async function assertDrawn(page) {
 test('a trap in the worker is reported, the worker is replaced, and the next run works', () =>
   withPage('?v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');
-    const traps = await exhaustMemory(simulationWorker(page));
-    assert.deepEqual(new Set(traps), new Set(['RuntimeError: unreachable']));
-    await page.click('#run');
-    assert.equal(await settled(page), 'crashed');
+    await trapOnNextStep(simulationWorker(page));
+    assert.equal(await startRun(page, () => page.click('#run')), 'crashed');
     const message = await page.textContent('#message');
     assert.match(message, CRASH_MESSAGE);
     assert.match(message, /RuntimeError: unreachable; most likely the core ran out of memory/);
@@ -245,9 +242,18 @@ test('a run that recorded nothing keeps the worker: Escape and Full run ask for 
     await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
     assert.equal(await settled(page), 'failed');
     assert.match(await page.textContent('#message'), /column 'v2' would record inf/);
+    // Count what the page asks the worker from here on: Escape and Full run post synchronously.
+    await page.evaluate(() => {
+      window.asked = [];
+      const post = Worker.prototype.postMessage;
+      Worker.prototype.postMessage = function counted(message, ...rest) {
+        window.asked.push(message?.type);
+        return post.call(this, message, ...rest);
+      };
+    });
     await page.keyboard.press('Escape');
     await page.click('#full-run');
-    await page.waitForTimeout(300);
+    assert.deepEqual(await page.evaluate(() => window.asked), []);
     assert.equal(await page.evaluate(() => document.body.dataset.state), 'failed');
     assert.doesNotMatch(await page.textContent('#message'), /worker failed/);
   }));

@@ -282,6 +282,7 @@ function startRun() {
   markRun(state.info.encoded);
   state.fromRun = document.activeElement === ui.run; // started from Run: focus returns there
   document.body.dataset.scenario = state.info.encoded;
+  document.body.dataset.started = id; // runs started: tests wait on it, not on a time
   state.started = performance.now();
   ui.progress.value = 0;
   ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;

@@ -389,11 +389,18 @@ fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
     result.map_err(|e| format!("{e} ({printed})").into())
 }
 
-/// Writes the header `name,value,unit` and one line per figure.
+/// Writes the header `name,value,unit` and one line per figure; a value read at the last sample
+/// is followed by its trend over the last tenth of the run, `NAME_rate` (its unit per second) and
+/// `NAME_settled` (1 when the value had settled by the end of the run, 0 when it was still
+/// changing).
 fn write_figures(list: &[Figure], out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "name,value,unit")?;
     for f in list {
         writeln!(out, "{},{},{}", f.name, f.value, f.unit)?;
+        if let Some(t) = &f.trend {
+            writeln!(out, "{}_rate,{},{}/s", f.name, t.rate, f.unit)?;
+            writeln!(out, "{}_settled,{},", f.name, u8::from(t.settled))?;
+        }
     }
     Ok(())
 }

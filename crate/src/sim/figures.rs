@@ -44,6 +44,100 @@ pub struct Figure {
     pub unit: &'static str,
     /// The part of the run it covers, e.g. "t ≥ 4.2 ms" or "last sample, t = 99.95 ms".
     pub window: String,
+    /// For a value read at the last sample: whether it had settled by then.
+    pub trend: Option<Trend>,
+}
+
+/// How a value read at the last sample was still moving: the slope of a least-squares line
+/// through its samples over the last tenth of the recorded run. It has settled when that line
+/// changes by at most `tolerance` over the window; otherwise the run ended inside a transient and
+/// the value is not final.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct Trend {
+    /// Slope of the fitted line (the figure's unit per second).
+    pub rate: f64,
+    /// Length of the window it is fitted over: the last tenth of the recorded run (s).
+    pub over: f64,
+    /// The most the fitted line may change over the window for the value to count as settled
+    /// (the figure's unit): the largest of a fixed tolerance, 2 % of the value and twice the
+    /// samples' scatter about the line.
+    pub tolerance: f64,
+    /// |rate|·over ≤ tolerance.
+    pub settled: bool,
+}
+
+/// Fraction of the recorded run, at its end, over which a final value's trend is fitted.
+const TREND_SHARE: f64 = 0.1;
+
+/// A final speed error has settled when it changes by at most this over the trend's window, or
+/// by at most [`TREND_RELATIVE`] of its value if that is larger (rad/s): 0.01 rad/s is below
+/// what any lesson reads, and a 200 Hz ripple of the presets' size fits a line of nearly zero
+/// slope over whole periods.
+const SPEED_TREND_TOL: f64 = 0.01;
+
+/// A final flux error has settled when it changes by at most this over the trend's window, or by
+/// at most [`TREND_RELATIVE`] of its value if that is larger (Wb): 0.1 % of the presets' 1 Wb.
+const FLUX_TREND_TOL: f64 = 1e-3;
+
+/// Relative part of a final value's tolerance: a 2 % change of the value itself.
+const TREND_RELATIVE: f64 = 0.02;
+
+/// A change within twice the samples' scatter about the line cannot be told from the ripple of
+/// a periodic reference or from noise, so it counts as settled too.
+const TREND_SCATTER: f64 = 2.0;
+
+/// Sums for a least-squares line through (t − t0, y) of several signals at once.
+#[derive(Clone, Copy)]
+struct LineFit<const N: usize> {
+    t0: f64,
+    n: f64,
+    st: f64,
+    stt: f64,
+    sy: [f64; N],
+    syy: [f64; N],
+    sty: [f64; N],
+}
+
+impl<const N: usize> LineFit<N> {
+    fn new(t0: f64) -> Self {
+        LineFit {
+            t0,
+            n: 0.0,
+            st: 0.0,
+            stt: 0.0,
+            sy: [0.0; N],
+            syy: [0.0; N],
+            sty: [0.0; N],
+        }
+    }
+
+    fn push(&mut self, t: f64, y: [f64; N]) {
+        let dt = t - self.t0;
+        self.n += 1.0;
+        self.st += dt;
+        self.stt += dt * dt;
+        for k in 0..N {
+            self.sy[k] += y[k];
+            self.syy[k] += y[k] * y[k];
+            self.sty[k] += dt * y[k];
+        }
+    }
+
+    /// The slope of signal `k` (per second); None with fewer than two distinct times.
+    fn slope(&self, k: usize) -> Option<f64> {
+        let d = self.n * self.stt - self.st * self.st;
+        (self.n >= 2.0 && d > 0.0).then(|| (self.n * self.sty[k] - self.st * self.sy[k]) / d)
+    }
+
+    /// The standard deviation of signal `k` about its line (0 with fewer than three samples).
+    fn scatter(&self, k: usize, slope: f64) -> f64 {
+        if self.n < 3.0 {
+            return 0.0;
+        }
+        let syy = self.syy[k] - self.sy[k] * self.sy[k] / self.n;
+        let sty = self.sty[k] - self.st * self.sy[k] / self.n;
+        ((syy - slope * sty) / (self.n - 2.0)).max(0.0).sqrt()
+    }
 }
 
 /// Where the start-up transient ends, and why there.
@@ -396,12 +490,21 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
     // One pass over the window, from the step on for a step reference that comes earlier.
     let mut settling = Settling::of(&s.reference, s.ts, rows, &last);
     let first = settling.as_ref().map_or(start, |st| st.from.min(start));
+    // The final values' trend: their line over the last tenth (inside the window, which starts
+    // at most half-way).
+    let t_first = rows.time(0);
+    let trend_from = rows.first_at(last.t - TREND_SHARE * (last.t - t_first));
+    let trend_t0 = rows.time(trend_from.min(len - 1));
+    let mut trend = LineFit::<3>::new(trend_t0);
     rows.visit(first, len, &mut |i, r| {
         if let Some(st) = &mut settling {
             st.push(i, r);
         }
         if i < start {
             return true;
+        }
+        if i >= trend_from {
+            trend.push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
         }
         w.n += 1;
         w.tracking_sq += r.omega_err * r.omega_err;
@@ -420,7 +523,20 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
     let in_w = format!("t ≥ {}", time_text(end.t));
     let at_last = format!("last sample, t = {}", time_text(last.t));
     let mut out = Vec::new();
-    let mut push = |name, label, value: f64, unit, window: &String| {
+    let over = last.t - trend_t0;
+    let trend_of = |k: usize, value: f64, tol: f64| {
+        let rate = trend.slope(k)?;
+        let tolerance = tol
+            .max(TREND_RELATIVE * value.abs())
+            .max(TREND_SCATTER * trend.scatter(k, rate));
+        rate.is_finite().then_some(Trend {
+            rate,
+            over,
+            tolerance,
+            settled: (rate * over).abs() <= tolerance,
+        })
+    };
+    let mut with_trend = |name, label, value: f64, unit, window: &String, trend| {
         if value.is_finite() {
             out.push(Figure {
                 name,
@@ -428,8 +544,12 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
                 value,
                 unit,
                 window: window.clone(),
+                trend,
             });
         }
+    };
+    let mut push = |name, label, value: f64, unit, window: &String| {
+        with_trend(name, label, value, unit, window, None);
     };
     push(
         "transient_end",
@@ -522,26 +642,33 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
             &in_w,
         );
     }
-    push(
+    let flux_final = last.flux - last.flux_ref;
+    let flux_trend = trend_of(0, flux_final, FLUX_TREND_TOL);
+    let speed_trend = trend_of(1, last.omega_err, SPEED_TREND_TOL);
+    let estimate_trend = trend_of(2, last.omega_est_err, SPEED_TREND_TOL);
+    with_trend(
         "flux_error_final",
         "final flux error |φ_r| − √ψ_d",
-        last.flux - last.flux_ref,
+        flux_final,
         "Wb",
         &at_last,
+        flux_trend,
     );
-    push(
+    with_trend(
         "speed_error_final",
         "final speed error ω − ω_d",
         last.omega_err,
         "rad/s",
         &at_last,
+        speed_trend,
     );
-    push(
+    with_trend(
         "speed_estimate_error_final",
         "final speed-estimate error ω − ω̂",
         last.omega_est_err,
         "rad/s",
         &at_last,
+        estimate_trend,
     );
     Report {
         transient: end,
