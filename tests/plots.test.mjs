@@ -136,6 +136,7 @@ test('the figures strip equals imlab metrics, and the y-axes leave out the start
   withPage('v=1&preset=step', async (page) => {
     const shown = await page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
       [f.dataset.name, Number(f.dataset.value)],
+      ...(f.dataset.settled ? [[`${f.dataset.name}_rate`, Number(f.dataset.rate)], [`${f.dataset.name}_settled`, Number(f.dataset.settled)]] : []),
       ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
       ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
     ])));
@@ -208,3 +209,27 @@ test('the inspect panel rounds t to its sample, shows units, marks the instant a
     assert.equal(await page.isHidden('#inspect'), true);
     assert.equal(await page.evaluate(() => window.imlab.plots.marker), null);
   }));
+
+test('final values say whether they settled, and an inconsistent EKF is named in words', async () => {
+  const final = (page) => page.$eval('#figures [data-name=speed_error_final]', (f) => ({ settled: f.dataset.settled, text: f.textContent, flagged: f.classList.contains('unsettled') }));
+  const warning = (page) => page.$eval('#consistency', (p) => (p.hidden ? '' : p.textContent));
+  // Both end inside a slow transient: the rotor-resistance mismatch's slow mode, the load step's fall.
+  for (const preset of ['rr-mismatch', 'load-step']) {
+    await withPage(`v=1&preset=${preset}`, async (page) => {
+      const f = await final(page);
+      assert.equal(f.settled, '0', preset);
+      assert.ok(f.flagged, preset);
+      assert.match(f.text, /still changing: -?[\d.]+ rad\/s per s over the last [\d.]+ ms; not a final value, run longer/, preset);
+    });
+  }
+  await withPage('v=1&preset=step', async (page) => {
+    const f = await final(page);
+    assert.equal(f.settled, '1');
+    assert.match(f.text, /settled: changes under [\d.]+ rad\/s over the last [\d.]+ ms/);
+    assert.equal(await warning(page), '');
+  });
+  // The paper's Euler EKF on sine200: mean NIS about 35 against a band near 2.
+  await withPage('v=1&preset=sine200', async (page) => {
+    assert.match(await warning(page), /^The EKF is inconsistent on this run: its mean NIS is 3\d\.?\d*, far above the 95 % band/);
+  });
+});

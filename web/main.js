@@ -14,7 +14,7 @@ const ui = {
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
   present: $('present'), inspect: $('inspect'), settingsToggle: $('settings-toggle'), embed: $('copy-embed'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
-  figures: $('figures'),
+  figures: $('figures'), consistency: $('consistency'),
 };
 
 const state = {
@@ -452,6 +452,36 @@ function componentLimit() {
 }
 
 /** The figures strip: each figure of the run with its unit and window (all from the core). */
+/** Whether a final value `f` had settled, in words, from its trend over the end of the run. */
+function trendText(f) {
+  const { rate, over, tolerance, settled } = f.trend;
+  const ms = `${Number((over * 1e3).toPrecision(3))} ms`;
+  const unit = f.unit ? ` ${f.unit}` : '';
+  if (settled) return `settled: changes under ${Number(tolerance.toPrecision(2))}${unit} over the last ${ms}`;
+  return `still changing: ${Number(rate.toPrecision(3))}${unit} per s over the last ${ms}; not a final value, run longer`;
+}
+
+/**
+ * One sentence when the EKF is far from consistent (its mean NIS over 5 times the top of its 95 %
+ * band, or under a fifth of the bottom): its estimates, and the speed the controller acts on,
+ * may then be far from the truth, however confident they look.
+ */
+function consistencyWarning(nis) {
+  if (!('mean_nis' in nis) || !('mean_nis_low' in nis)) return '';
+  const band = `${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}`;
+  const mean = Number(nis.mean_nis.toPrecision(3));
+  if (nis.mean_nis > FAR_OUTSIDE * nis.mean_nis_high) {
+    return `The EKF is inconsistent on this run: its mean NIS is ${mean}, far above the 95 % band ${band} of a filter whose model fits. Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.`;
+  }
+  if (nis.mean_nis < nis.mean_nis_low / FAR_OUTSIDE) {
+    return `The EKF is inconsistent on this run: its mean NIS is ${mean}, far below the 95 % band ${band}: it assumes more noise than there is.`;
+  }
+  return '';
+}
+
+// A mean NIS this many times past its band's end is called inconsistent in words.
+const FAR_OUTSIDE = 5;
+
 function showFigures(figures) {
   const fmt = (f) => {
     if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
@@ -472,6 +502,12 @@ function showFigures(figures) {
     const item = Object.assign(document.createElement('div'), { className: 'figure' });
     item.dataset.name = f.name;
     item.dataset.value = String(f.value);
+    // A value read at the last sample says whether the run had settled by then.
+    const trend = f.trend && trendText(f);
+    if (f.trend) {
+      Object.assign(item.dataset, { rate: String(f.trend.rate), settled: f.trend.settled ? '1' : '0' });
+      if (!f.trend.settled) item.classList.add('unsettled');
+    }
     if (f.name === 'mean_nis') Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
     if (f.name === 'current_peak' && rated) item.dataset.rated = String(rated.value);
     item.append(
@@ -479,13 +515,17 @@ function showFigures(figures) {
       Object.assign(document.createElement('dd'), { textContent: text, title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}` }),
       Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
     );
+    if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend }));
     return item;
   });
+  const warning = consistencyWarning(nis);
+  ui.consistency.textContent = warning;
+  ui.consistency.hidden = !warning;
   ui.figures.replaceChildren(...items);
   ui.figures.hidden = items.length === 0;
   // The plots' text alternatives carry the same figures.
   const sentence = items.map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`).join('; ');
-  for (const set of plotSets) set.describe(sentence ? `Figures of this run: ${sentence}.` : '');
+  for (const set of plotSets) set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');
 }
 
 /** The lines the PNG export carries above the plots: the scenario and the run's figures. */

@@ -2,7 +2,7 @@
 //! (settling through the reference filter, saturation, EKF consistency) and against the library.
 
 use imlab::scenario::Scenario;
-use imlab::sim::{figures, Simulation};
+use imlab::sim::{figures, Figure, Simulation};
 use std::process::Command;
 
 /// Runs `imlab metrics SCENARIO` and returns its (name, value, unit) lines after the header.
@@ -30,6 +30,24 @@ fn metrics(scenario: &str) -> Vec<(String, f64, String)> {
             (fields[0].to_string(), value, fields[2].to_string())
         })
         .collect()
+}
+
+/// The lines `imlab metrics` prints for `list`: each figure, and after a final value its trend's
+/// rate and settled flag.
+fn expected_lines(list: &[Figure]) -> Vec<(String, f64, String)> {
+    let mut out = Vec::new();
+    for f in list {
+        out.push((f.name.to_string(), f.value, f.unit.to_string()));
+        if let Some(t) = &f.trend {
+            out.push((format!("{}_rate", f.name), t.rate, format!("{}/s", f.unit)));
+            out.push((
+                format!("{}_settled", f.name),
+                f64::from(u8::from(t.settled)),
+                String::new(),
+            ));
+        }
+    }
+    out
 }
 
 fn get(lines: &[(String, f64, String)], name: &str) -> Option<f64> {
@@ -80,8 +98,14 @@ fn step_figures_show_the_filter_settling_and_a_consistent_ekf() {
             ("current_rms", "A"),
             ("current_rated", "A"),
             ("flux_error_final", "Wb"),
+            ("flux_error_final_rate", "Wb/s"),
+            ("flux_error_final_settled", ""),
             ("speed_error_final", "rad/s"),
+            ("speed_error_final_rate", "rad/s/s"),
+            ("speed_error_final_settled", ""),
             ("speed_estimate_error_final", "rad/s"),
+            ("speed_estimate_error_final_rate", "rad/s/s"),
+            ("speed_estimate_error_final_settled", ""),
         ]
     );
 }
@@ -101,18 +125,12 @@ fn printed_figures_are_the_library_figures_exactly() {
         let printed = metrics(text);
         let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
         sim.run().unwrap();
-        let lib = figures(&sim).unwrap();
+        let lib = expected_lines(&figures(&sim).unwrap());
         assert_eq!(printed.len(), lib.len(), "{text}");
         for (p, f) in printed.iter().zip(&lib) {
-            assert_eq!((p.0.as_str(), p.2.as_str()), (f.name, f.unit), "{text}");
+            assert_eq!((&p.0, &p.2), (&f.0, &f.2), "{text}");
             // `{}` prints the shortest string that parses back to the same f64.
-            assert!(
-                p.1 == f.value,
-                "{text}: {} printed {} ≠ {}",
-                f.name,
-                p.1,
-                f.value
-            );
+            assert!(p.1 == f.1, "{text}: {} printed {} ≠ {}", f.0, p.1, f.1);
         }
     }
 }
@@ -131,8 +149,42 @@ fn a_diverged_run_prints_the_figures_before_the_failure_and_fails() {
     let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
     sim.run().unwrap_err();
     let mut expected = String::from("name,value,unit\n");
-    for f in figures(&sim).expect("samples before the failure") {
-        expected.push_str(&format!("{},{},{}\n", f.name, f.value, f.unit));
+    for (name, value, unit) in expected_lines(&figures(&sim).expect("samples before the failure")) {
+        expected.push_str(&format!("{name},{value},{unit}\n"));
     }
     assert_eq!(String::from_utf8_lossy(&out.stdout), expected);
+}
+
+/// Whether the final speed error of `scenario` had settled by the end of its run, and its rate.
+fn final_speed(scenario: &str) -> (f64, f64, bool) {
+    let m = metrics(scenario);
+    let settled = get(&m, "speed_error_final_settled").expect("a settled flag");
+    assert!(settled == 0.0 || settled == 1.0, "flag {settled}");
+    (
+        get(&m, "speed_error_final").unwrap(),
+        get(&m, "speed_error_final_rate").expect("a rate"),
+        settled == 1.0,
+    )
+}
+
+#[test]
+fn a_final_value_read_inside_a_slow_transient_is_flagged_as_not_settled() {
+    // The rotor-resistance mismatch's slow mode (a time constant near 0.6 s): at the preset's
+    // 0.3 s the error is −5 rad/s and shrinking at about 10 rad/s per second.
+    let (value, rate, settled) = final_speed("rr-mismatch");
+    assert!(!settled && value < -4.0 && rate > 5.0, "{value} rad/s, {rate} rad/s²");
+    // 8 s later it has settled to its small steady bias.
+    let (value, rate, settled) = final_speed("v=1&preset=rr-mismatch&duration=8");
+    assert!(
+        settled && (0.05..0.2).contains(&value) && rate.abs() < 0.01,
+        "{value} rad/s, {rate} rad/s²"
+    );
+    // The unknown load step: still falling at 0.3 s, settled 25 rad/s low by 3 s.
+    let (value, rate, settled) = final_speed("load-step");
+    assert!(!settled && rate < -10.0, "{value} rad/s, {rate} rad/s²");
+    let (value, _, settled) = final_speed("v=1&preset=load-step&duration=3");
+    assert!(settled && (-26.0..-24.0).contains(&value), "{value} rad/s");
+    // The paper's step is over long before its run ends.
+    let (value, _, settled) = final_speed("step");
+    assert!(settled && value.abs() < 0.01, "{value} rad/s");
 }
