@@ -452,13 +452,16 @@ function componentLimit() {
 }
 
 /** The figures strip: each figure of the run with its unit and window (all from the core). */
-/** Whether a final value `f` had settled, in words, from its trend over the end of the run. */
+/**
+ * Whether a final value `f` had settled, in words, from its trend over the end of the run:
+ * [short text, the detail for its tooltip].
+ */
 function trendText(f) {
   const { rate, over, tolerance, settled } = f.trend;
-  const ms = `${Number((over * 1e3).toPrecision(3))} ms`;
   const unit = f.unit ? ` ${f.unit}` : '';
-  if (settled) return `settled: changes under ${Number(tolerance.toPrecision(2))}${unit} over the last ${ms}`;
-  return `still changing: ${Number(rate.toPrecision(3))}${unit} per s over the last ${ms}; not a final value, run longer`;
+  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s; settled means it changes by at most ${Number(tolerance.toPrecision(2))}${unit} over that time`;
+  if (settled) return ['settled by the end of the run', fit];
+  return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer`, fit];
 }
 
 /**
@@ -515,7 +518,7 @@ function showFigures(figures) {
       Object.assign(document.createElement('dd'), { textContent: text, title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}` }),
       Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
     );
-    if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend }));
+    if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }));
     return item;
   });
   const warning = consistencyWarning(nis);

@@ -97,7 +97,8 @@ impl MotorParams {
 /// The lumped parameters of model (2); the paper has no a4.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Lumped {
-    /// a1 = μ = 3 n_p M / (2 J L_r) (torque constant over inertia, 1/(kg H)).
+    /// a1 = μ = 3 n_p M / (2 J L_r) (torque constant over inertia, 1/(kg m²)): a1·(x3·x4 − x2·x5)
+    /// is torque/J in rad/s², not a torque.
     pub a1: f64,
     /// a2 = T_0 / J (rad/s²).
     pub a2: f64,

@@ -172,7 +172,10 @@ fn a_final_value_read_inside_a_slow_transient_is_flagged_as_not_settled() {
     // The rotor-resistance mismatch's slow mode (a time constant near 0.6 s): at the preset's
     // 0.3 s the error is −5 rad/s and shrinking at about 10 rad/s per second.
     let (value, rate, settled) = final_speed("rr-mismatch");
-    assert!(!settled && value < -4.0 && rate > 5.0, "{value} rad/s, {rate} rad/s²");
+    assert!(
+        !settled && value < -4.0 && rate > 5.0,
+        "{value} rad/s, {rate} rad/s²"
+    );
     // 8 s later it has settled to its small steady bias.
     let (value, rate, settled) = final_speed("v=1&preset=rr-mismatch&duration=8");
     assert!(

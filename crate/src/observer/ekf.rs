@@ -22,8 +22,14 @@ pub enum Predictor {
 pub struct EkfConfig {
     /// Predictor discretisation.
     pub predictor: Predictor,
-    /// Process noise Q = q·Ts·I (the paper uses q = 0.001).
+    /// Process noise Q = q·Ts·I (the paper uses q = 0.001): one number for states of mixed
+    /// units, so its unit is each state's unit squared per second (A²/s for the currents,
+    /// (rad/s)²/s for ω, Wb²/s for the fluxes).
     pub q: f64,
+    /// Process noise added to the speed state alone: Q_ωω = q·Ts + q_speed·Ts ((rad/s)²/s).
+    /// Without a load state it lets the speed estimate follow an unknown load, at the price of a
+    /// noisier estimate.
+    pub q_speed: f64,
     /// Measurement noise standard deviation assumed in R = r_std²·I (A).
     pub r_std: f64,
     /// Estimate the load a2 = T_L0/J as a random-walk state, started at the model's T0/J.
@@ -159,6 +165,8 @@ impl<const N: usize> Filter<N> {
             "state size"
         );
         let mut q = SMatrix::<f64, N, N>::identity() * (config.q * ts);
+        // q·Ts > 0, so adding 0·Ts leaves Q's bits as they were without the speed's own noise.
+        q[(0, 0)] += config.q_speed * ts;
         let mut x = SVector::<f64, N>::zeros();
         let mut std = [0.0; N];
         for i in 0..5 {
@@ -455,6 +463,7 @@ mod tests {
         EkfConfig {
             predictor: Predictor::Rk4,
             q: 0.001,
+            q_speed: 0.0,
             r_std: 0.002,
             load,
             q_load: 1.0,

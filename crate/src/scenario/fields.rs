@@ -321,10 +321,10 @@ fn table() -> Vec<Field> {
         number("k3", "gains", "1/s", above(0.0, 1e6), "flux-error rate k3", at!(gains.k3)),
         number("k4", "gains", "1/s", above(0.0, 1e6), "flux-derivative-error rate k4", at!(gains.k4)),
         number("robust", "gains", "", whole(0.0, 1.0), "apply robust terms (38) and (53) (0/1)", flag!(gains.robust)),
-        number("eps2", "gains", "", above(0.0, 1e6), "ε2 of (38)", at!(gains.eps2)),
-        number("h2", "gains", "", closed(0.0, 1e9), "h2 of (38): bound on |d̃2|", at!(gains.h2)),
-        number("eps4", "gains", "", above(0.0, 1e6), "ε4 of (53)", at!(gains.eps4)),
-        number("h4", "gains", "", closed(0.0, 1e9), "h4 of (53): bound on |d̃4|", at!(gains.h4)),
+        number("eps2", "gains", "rad²/s⁵", above(0.0, 1e6), "ε2 of (38): the bound on z2·(v2s2 + d̃2)", at!(gains.eps2)),
+        number("h2", "gains", "rad/s³", closed(0.0, 1e9), "h2 of (38): bound on |d̃2|", at!(gains.h2)),
+        number("eps4", "gains", "Wb⁴/s³", above(0.0, 1e6), "ε4 of (53): the bound on z4·(v4s2 + d̃4)", at!(gains.eps4)),
+        number("h4", "gains", "Wb²/s²", closed(0.0, 1e9), "h4 of (53): bound on |d̃4|", at!(gains.h4)),
         choice("controller", "controller", "backstepping (paper) or ifoc (classical sensorless FOC baseline)", Access::Choice {
             options: &["backstepping", "ifoc"],
             get: |s| match s.controller { ControllerKind::Backstepping => "backstepping", ControllerKind::Ifoc => "ifoc" },
@@ -340,7 +340,8 @@ fn table() -> Vec<Field> {
             get: |s| match s.ekf.predictor { Predictor::Euler => "euler", Predictor::Rk4 => "rk4" },
             set: |s, name| s.ekf.predictor = if name == "rk4" { Predictor::Rk4 } else { Predictor::Euler },
         }),
-        number("ekf.q", "observer", "1/s", above(0.0, 1e6), "process noise Q = q·Ts·I", at!(ekf.q)),
+        number("ekf.q", "observer", "(state unit)²/s", above(0.0, 1e6), "process noise Q = q·Ts·I, one number for every state: A²/s for the currents, (rad/s)²/s for ω, Wb²/s for the fluxes", at!(ekf.q)),
+        number("ekf.q_speed", "observer", "(rad/s)²/s", closed(0.0, 1e10), "process noise added to the speed state alone, Q_ωω = (q + q_speed)·Ts", at!(ekf.q_speed)),
         // R = r_std²·I must stay a positive number: below 1 µA it is numerically zero for the
         // innovation covariance S = HPHᵀ + R once P has converged.
         number("ekf.r_std", "observer", "A", closed(1e-6, 10.0), "assumed current noise, R = r_std²·I", at!(ekf.r_std)),

@@ -82,6 +82,7 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
         ekf: EkfConfig {
             predictor: Predictor::Euler,
             q: 0.001,
+            q_speed: 0.0,
             r_std: 0.002,
             load: false,
             q_load: LOAD_Q,
