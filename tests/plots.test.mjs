@@ -179,12 +179,14 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
     const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
-    assert.equal(lessons.length, 10);
+    assert.equal(lessons.length, 11);
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
-    for (const [i, preset] of lessons.entries()) {
-      await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `v=1&preset=${preset}`);
+    for (const [i, run] of lessons.entries()) {
+      await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', run);
       assert.equal(await page.isVisible('#lesson-panel'), true);
-      assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), preset);
+      assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), run);
+      // Focus follows the content: the lesson's title, not the page's body.
+      assert.equal(await page.evaluate(() => document.activeElement.matches('#lesson-panel h2')), true, `lesson ${i + 1} focus`);
       assert.ok((await page.textContent('#lesson-panel .question')).length > 20);
       assert.equal(await page.isVisible('#lesson-panel .answer p'), false);
       await page.click('#lesson-panel .answer summary');

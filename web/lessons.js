@@ -10,14 +10,14 @@ function el(tag, props = {}, children = []) {
 export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
-   * lesson's preset.
+   * lesson's run (a scenario string).
    */
   constructor({ panel, list, lessons, onOpen }) {
     Object.assign(this, { panel, lessons, onOpen });
     this.index = null;
     lessons.forEach((lesson, i) => {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
-      start.dataset.lesson = lesson.preset;
+      start.dataset.lesson = lesson.run;
       start.addEventListener('click', () => this.open(i));
       list.append(el('article', { className: 'lesson' }, [
         el('h3', { textContent: `${i + 1}. ${lesson.title}` }),
@@ -28,7 +28,7 @@ export class LessonPanel {
     });
   }
 
-  /** Opens lesson `i`: shows its panel, scrolled to the top, and runs its preset. */
+  /** Opens lesson `i`: shows its panel, scrolled to the top, with focus on its title, and runs it. */
   async open(i) {
     this.index = i;
     const lesson = this.lessons[i];
@@ -42,8 +42,8 @@ export class LessonPanel {
     const answer = el('details', { className: 'answer' }, [el('summary', { textContent: 'Show answer (for the lecturer)' }), el('p', { textContent: lesson.answer })]);
     this.panel.replaceChildren(
       close,
-      el('p', { className: 'lesson-count', textContent: `Lesson ${i + 1} of ${this.lessons.length} · preset ${lesson.preset}` }),
-      el('h2', { textContent: lesson.title }),
+      el('p', { className: 'lesson-count', textContent: `Lesson ${i + 1} of ${this.lessons.length} · run ${lesson.run}` }),
+      el('h2', { textContent: lesson.title, tabIndex: -1 }),
       el('h3', { textContent: 'What to look for' }),
       el('p', { className: 'look', textContent: lesson.look }),
       el('h3', { textContent: 'Question' }),
@@ -52,11 +52,14 @@ export class LessonPanel {
       answer,
       el('div', { className: 'buttons' }, [previous, next]),
     );
-    this.panel.dataset.open = lesson.preset;
+    this.panel.dataset.open = lesson.run;
     this.panel.hidden = false;
     this.panel.scrollTop = 0;
     document.body.classList.add('with-lesson');
-    await this.onOpen(lesson);
+    // Keyboard and screen-reader users continue where the content is, not at the page's top.
+    const started = this.onOpen(lesson);
+    this.panel.querySelector('h2').focus({ preventScroll: true });
+    await started;
   }
 
   close() {

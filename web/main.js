@@ -104,7 +104,7 @@ const lessons = new LessonPanel({
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     showTab(lesson.tab ?? 'plots', { fetch: false });
     window.scrollTo(0, 0);
-    await load(`v=1&preset=${lesson.preset}`);
+    await load(lesson.run);
   },
 });
 const analysis = new Analysis({ scenario: () => state.info.encoded });
