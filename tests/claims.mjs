@@ -29,10 +29,28 @@ export class Core {
   /** Figure `name` of `imlab metrics run` (undefined when the run has none). */
   fig(run, name) {
     if (!this.metrics.has(run)) {
-      const lines = execFileSync(CLI, ['metrics', run]).toString().trim().split('\n').slice(1);
+      let out;
+      try {
+        out = execFileSync(CLI, ['metrics', run], { stdio: ['ignore', 'pipe', 'pipe'] });
+      } catch (e) {
+        // A run that ran away prints its figures, then fails with its message.
+        if (!/ran away/.test(e.stderr)) throw e;
+        out = e.stdout;
+      }
+      const lines = out.toString().trim().split('\n').slice(1);
       this.metrics.set(run, Object.fromEntries(lines.map((l) => l.split(',')).map(([n, v]) => [n, Number(v)])));
     }
     return this.metrics.get(run)[name];
+  }
+
+  /** Whether `imlab metrics run` reports that the run ran away. */
+  ranAway(run) {
+    try {
+      execFileSync(CLI, ['metrics', run], { stdio: ['ignore', 'ignore', 'pipe'] });
+      return false;
+    } catch (e) {
+      return /ran away/.test(e.stderr);
+    }
   }
 
   /** The recorded rows of `run`: {t, column(name) → Float64Array}. */

@@ -5,7 +5,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { LESSONS } from '../web/teaching.js';
+import { LESSONS, SECTIONS } from '../web/teaching.js';
 import { Core, checkText, numbersIn } from './claims.mjs';
 
 const core = new Core();
@@ -262,4 +262,98 @@ test('the checks fail when a number in a lesson changes', () => {
   // A measured figure written off by more than its tolerance.
   const spec = { givens: [], checks: [['4.80', 0.005, (m) => 1e3 * m.fig(STEP, 'settling_time')]] };
   assert.notDeepEqual(checkText('settles in 4.80 ms', spec, core), []);
+});
+
+// The walkthrough's statements of fact (prose and notes of each section), by section id.
+const STEP3 = (m, run) => {
+  // ż3 from successive samples against −k3·z3 + z4 averaged over the interval, from the end of
+  // step's start-up on (one window for the three runs): the RMS of the difference over the RMS
+  // of ż3, in %.
+  const tr = m.trace(run);
+  const [z3, z4] = [tr.column('z3'), tr.column('z4')];
+  const from = m.fig(STEP, 'transient_end');
+  let [miss, rate] = [0, 0];
+  for (let i = 0; i + 1 < z3.length; i++) {
+    if (tr.t[i] < from) continue;
+    const d = (z3[i + 1] - z3[i]) / (tr.t[i + 1] - tr.t[i]);
+    const model = 0.5 * ((-1200 * z3[i] + z4[i]) + (-1200 * z3[i + 1] + z4[i + 1]));
+    miss += (d - model) ** 2;
+    rate += d * d;
+  }
+  return 100 * Math.sqrt(miss / rate);
+};
+const peakCommand = (m, run) => Math.max(m.stat(run, 'u_a_cmd', 0, 1).maxAbs, m.stat(run, 'u_b_cmd', 0, 1).maxAbs);
+
+const SECTION_SPECS = {
+  model: { givens: ['1/J', '3n_pM/(2JL_r)'], checks: [] },
+  ekf: { givens: ['(10)', '(11)', '(4)', '±2σ', '95 %', 'averaging 2', '200 Hz', 'Section 3.1'], checks: [] },
+  step1: { givens: ['Step 1', '(31)'], checks: [] },
+  step2: { givens: ['Step 2', '(32)', '(36)', 'h2²z2/(4ε2)'], checks: [] },
+  step3: {
+    givens: ['Step 3', '2a10(x2·x̂4 + x3·x̂5)', 'noise=0', 'perfect=1'],
+    checks: [
+      ['10.1', 0.05, (m) => 1e3 * m.fig(STEP, 'transient_end')],
+      ['71', 0.5, (m) => STEP3(m, STEP)],
+      ['11', 0.5, (m) => STEP3(m, `${STEP}&noise=0`)],
+      ['2.7', 0.05, (m) => STEP3(m, `${STEP}&perfect=1`)],
+    ],
+  },
+  step4: {
+    givens: ['Step 4', 'v4 = 2a10·b', '(54)', '(55)', '±400 V', '(48)'],
+    checks: [
+      ['14', 0.5, (m) => 1e-3 * peakCommand(m, STEP)],
+      ['45', 0.5, (m) => 1e-3 * peakCommand(m, 'v=1&preset=rr-mismatch')],
+      ['18', 0.5, (m) => 1e3 * m.lastSaturated('v=1&preset=rr-mismatch')],
+    ],
+  },
+  stability: {
+    givens: ['(59)', '10 %', 'vmax=100000', 'init_err=0'],
+    checks: [
+      ['6,287', 0.5, (m) => m.fig('v=1&preset=sine200&vmax=100000', 'speed_error_final')],
+      ['9.3', 0.05, (m) => m.fig('v=1&preset=sine200&vmax=100000', 'flux_error_final') + Math.SQRT1_2],
+      ['0.013', 0.0005, (m) => m.fig('v=1&preset=sine200&vmax=100000&init_err=0', 'tracking_rms')],
+      ['reported as a run that ran away', 'claim', (m) => m.ranAway('v=1&preset=sine200&vmax=100000') && !m.ranAway('v=1&preset=sine200&vmax=100000&init_err=0')],
+    ],
+  },
+};
+
+for (const section of SECTIONS) {
+  test(`walkthrough: ${section.title}`, () => {
+    const text = [...section.prose, section.note ?? ''].join('\n');
+    assert.deepEqual(checkText(text, SECTION_SPECS[section.id], core), []);
+  });
+}
+
+// The preset descriptions (`imlab list`), by preset.
+const PRESET_SPECS = {
+  sine200: { givens: ['Fig 2', '0.5 sin(2π·200 t)'], checks: [['1.9', 0.05, (m) => m.fig(SINE, 'current_peak') / m.fig(SINE, 'current_rated')]] },
+  step: { givens: ['Fig 3', '0 → 0.5 rad/s', '50 ms', '200 Hz'], checks: [] },
+  ramp: { givens: ['Fig 4', '100 rad/s', '±400 rad/s²'], checks: [] },
+  'sine200-1rad': { givens: ['1 rad/s at 200 Hz', '400 V'], checks: [['saturates', 'claim', (m) => m.fig('v=1&preset=sine200-1rad', 'saturated_share') > 0.1]] },
+  'sine200-rk4': { givens: ['Fig 2', 'rk4'], checks: [] },
+  'rr-mismatch': {
+    givens: ['50 rad/s', '10 %', '6 s'],
+    checks: [
+      ['0.6', 0.05, (m) => slowMode(m, RR, 0.3, 1)],
+      ['ends within 6 s', 'claim', (m) => m.fig(RR, 'speed_error_final_settled') === 1],
+    ],
+  },
+  'load-step': { givens: ['50 rad/s', '2 N m', '0.15 s', '5-state'], checks: [] },
+  decay: { givens: ['ω_d ≡ 0', '1200/s'], checks: [] },
+  'ifoc-step': { givens: ['40 rad/s'], checks: [] },
+  'load-step-est': { givens: ['rk4'], checks: [['the speed holds', 'claim', (m) => m.stat(LOAD_EST, 'omega_err', 0.15, 0.3).maxAbs < 0.2]] },
+  'rr-mismatch-est': {
+    givens: ['rk4', '4 s'],
+    // Every sample from the first 50 ms on, in which the estimate leaves its start.
+    checks: [['2.5', 'claim', (m) => Math.abs(m.stat(RR_EST, 'rr_hat', 0.05, 4).max / 5.445 - 1) < 0.025 && Math.abs(m.stat(RR_EST, 'rr_hat', 0.05, 4).min / 5.445 - 1) < 0.025]],
+  },
+  'sine200-drive': { givens: ['200 Hz', '540 V'], checks: [] },
+  'high-gain': { givens: ['3000/s', '2.5×', '400 V'], checks: [['saturate', 'claim', (m) => m.fig(HIGH, 'saturated_share') > 0.9]] },
+};
+
+test('the preset descriptions', () => {
+  const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+  const list = execFileSync(cli, ['list']).toString().trim().split('\n').map((l) => l.match(/^(\S+)\s+(.*)$/).slice(1));
+  assert.deepEqual(list.map(([name]) => name).sort(), Object.keys(PRESET_SPECS).sort());
+  for (const [name, description] of list) assert.deepEqual(checkText(description, PRESET_SPECS[name], core), [], name);
 });

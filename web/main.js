@@ -464,28 +464,7 @@ function trendText(f) {
   return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer`, fit];
 }
 
-/**
- * One sentence when the EKF is far from consistent (its mean NIS over 5 times the top of its 95 %
- * band, or under a fifth of the bottom): its estimates, and the speed the controller acts on,
- * may then be far from the truth, however confident they look.
- */
-function consistencyWarning(nis) {
-  if (!('mean_nis' in nis) || !('mean_nis_low' in nis)) return '';
-  const band = `${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}`;
-  const mean = Number(nis.mean_nis.toPrecision(3));
-  if (nis.mean_nis > FAR_OUTSIDE * nis.mean_nis_high) {
-    return `The EKF is inconsistent on this run: its mean NIS is ${mean}, far above the 95 % band ${band} of a filter whose model fits. Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.`;
-  }
-  if (nis.mean_nis < nis.mean_nis_low / FAR_OUTSIDE) {
-    return `The EKF is inconsistent on this run: its mean NIS is ${mean}, far below the 95 % band ${band}: it assumes more noise than there is.`;
-  }
-  return '';
-}
-
-// A mean NIS this many times past its band's end is called inconsistent in words.
-const FAR_OUTSIDE = 5;
-
-function showFigures(figures) {
+function showFigures(figures, warnings = []) {
   const fmt = (f) => {
     if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
     if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
@@ -521,7 +500,9 @@ function showFigures(figures) {
     if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }));
     return item;
   });
-  const warning = consistencyWarning(nis);
+  // What the figures must not be read without, in the core's words.
+  // (A run that ran away says so in the message above, as a failure.)
+  const warning = warnings.filter((w) => w.kind !== 'runaway').map((w) => w.text).join(' ');
   ui.consistency.textContent = warning;
   ui.consistency.hidden = !warning;
   ui.figures.replaceChildren(...items);
@@ -570,7 +551,7 @@ const handlers = {
     ui.progress.value = done / total;
     ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
   },
-  async done({ id, rows, failure, view, computeMs, stability, figures, transient }) {
+  async done({ id, rows, failure, view, computeMs, stability, figures, transient, warnings }) {
     if (id !== state.runId) return;
     setBusy(false);
     ui.progress.value = 1;
@@ -582,7 +563,7 @@ const handlers = {
       : 'Fit y-axes after the start-up transient';
     ui.fitLabel.title = transient?.reason ?? '';
     $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
-    showFigures(figures);
+    showFigures(figures, warnings);
     if (view) {
       state.shownRun = id;
       walkthrough.show(stability, state.nisBand);
@@ -600,9 +581,15 @@ const handlers = {
       plotMs: (performance.now() - arrived).toFixed(1), runMs: ms.toFixed(1), rows, computeMs: computeMs.toFixed(2), run: id,
     });
     ui.csv.disabled = ui.png.disabled = rows === 0;
+    const ranAway = warnings.find((w) => w.kind === 'runaway');
     if (failure) {
       say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
       ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
+      document.body.dataset.state = 'failed';
+    } else if (ranAway) {
+      // The simulation completed, but as a control run it failed: say so before any figure.
+      say(`${ranAway.text} The plots show what the motor did.`);
+      ui.status.textContent = `Ran away: ${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
       document.body.dataset.state = 'failed';
     } else {
       ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;

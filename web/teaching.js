@@ -10,7 +10,7 @@ export const SECTIONS = [
     title: '1. The motor model (2)',
     prose: [
       'The state is the rotor speed ω = x1, the stator currents i_sa, i_sb = x2, x3 and the rotor fluxes φ_ra, φ_rb = x4, x5 in the stationary a–b frame. Only the currents are measured; the voltages u1, u2 are the inputs.',
-      'Torque is a1(x3·x4 − x2·x5): current crossed with flux. The load a2 + a3·x1 is the constant T0 and the friction Cf·ω over J. The lumped parameters below are computed by the core from the motor parameters in use; the plant (the simulated motor) and the model (what the EKF and controller assume) can differ.',
+      'The torque over the inertia is a1(x3·x4 − x2·x5), in rad/s²: current crossed with flux (a1 = 3n_pM/(2JL_r) already contains 1/J, so multiply by J for N m). The load a2 + a3·x1 is the constant T0 and the friction Cf·ω over J. The lumped parameters below are computed by the core from the motor parameters in use; the plant (the simulated motor) and the model (what the EKF and controller assume) can differ.',
     ],
     equations: [
       t`\dot x_1 = a_1(x_3x_4 - x_2x_5) - a_2 - a_3x_1`,
@@ -27,9 +27,9 @@ export const SECTIONS = [
     title: '2. The extended Kalman filter (10)–(20)',
     prose: [
       'The EKF estimates all five states from the measured currents and the applied voltages. It predicts with the model discretised by forward Euler (10), linearised by the Jacobian (11), and corrects with the innovation: the measured minus the predicted currents.',
-      'Q (process noise, q·Ts·I) says how much the model is trusted; R (measurement noise, r_std²·I) how much the sensors are. The gain K_k enters the controller as the observer gain L = K_k/Ts of the general form (4): the estimation errors x̃ are what the controller must tolerate.',
+      'Q (process noise: q·Ts on every state, plus q_speed·Ts on the speed alone) says how much the model is trusted; R (measurement noise, r_std²·I) how much the sensors are. One q for states of mixed units is the paper’s choice; q_speed lets the speed estimate move without loosening the rest. The gain K_k enters the controller as the observer gain L = K_k/Ts of the general form (4): the estimation errors x̃ are what the controller must tolerate.',
       'A consistent filter has innovations inside their ±2σ band about 95 % of the time and a normalised innovation squared (NIS) averaging 2. The Euler predictor cannot follow 200 Hz currents: compare it with RK4 below.',
-      'Section 3.1 names a remedy it does not build: treat slowly varying quantities as extra states. The knob ekf.load adds a2 = T_L0/J as a random walk (the controller then uses â2 and its rate, the injection l_a·(x̃2, x̃3)); ekf.rr adds the rotor resistance (the controller’s a5, a7, a8, a10 follow R̂_r). The last two plots show both estimates with their ±2σ bands from P against the truth.',
+      'Section 3.1 names a remedy it does not build: treat slowly varying quantities as extra states. The knob ekf.load adds a2 = T_L0/J as a random walk (the controller then uses â2 and its rate, the injection l_a·(x̃2, x̃3)); ekf.rr adds the rotor resistance (the controller’s a5, a7, a8, a10 follow R̂_r). The last two plots show both estimates with their ±2σ bands from P against the truth. An extra state absorbs whatever the model lacks, right or wrong: a rotor-resistance state under an unknown load takes the load for a resistance (see the lessons).',
     ],
     equations: [
       t`\hat x_{k|k-1} = \hat x_{k-1|k-1} + T_s f(\hat x_{k-1|k-1}, u_{k-1}),\qquad A_{k-1} = I + T_s \tfrac{\partial f}{\partial x}\Big|_{\hat x_{k-1|k-1}}`,
@@ -64,14 +64,14 @@ export const SECTIONS = [
       title: 'Rotor resistance: estimate with its ±2σ band, and the motor’s', unit: 'Ω',
       series: [['rr_band', 'R̂_r + 2σ', null, 1, 'rr_hat'], ['rr_band', 'R̂_r − 2σ', null, -1, 'rr_hat'], ['rr_hat', 'R̂_r estimated'], ['rr', 'R_r of the motor']],
     },
-    knobs: ['ekf', 'ekf.q', 'ekf.r_std', 'ekf.load', 'ekf.q_load', 'ekf.rr', 'ekf.q_rr'],
+    knobs: ['ekf', 'ekf.q', 'ekf.q_speed', 'ekf.r_std', 'ekf.load', 'ekf.q_load', 'ekf.rr', 'ekf.q_rr'],
     compare: true,
   },
   {
     id: 'step1',
     title: '3. Step 1: the speed loop',
     prose: [
-      'Step 1 regulates the estimated speed: z1 = x̂1 − ω_d. Its virtual control is the torque term a1(x3·x̂4 − x2·x̂5), built from measured currents and estimated fluxes; v1 is the torque Step 1 asks for, and z2 is how far the actual torque term is from it.',
+      'Step 1 regulates the estimated speed: z1 = x̂1 − ω_d. Its virtual control is the torque term a1(x3·x̂4 − x2·x̂5), built from measured currents and estimated fluxes; v1 is the torque over the inertia (rad/s²) that Step 1 asks for, and z2 is how far the actual torque term is from it.',
       'The feedforward v1a cancels the modelled load, the reference acceleration and the observer injection si1 = l11·x̃2 + l12·x̃3 (a measured residual, hence known). The feedback v1s = −k1s1·z1 with k1 = a3 + k1s1 makes ż1 = −k1·z1 + z2.',
     ],
     equations: [
@@ -112,7 +112,7 @@ export const SECTIONS = [
     title: '5. Step 3: the flux outer loop',
     prose: [
       'Step 3 regulates the estimated flux modulus squared: z3 = x̂4² + x̂5² − ψ_d. Its virtual control is 2a10(x2·x̂4 + x3·x̂5), the part of ż3 the stator currents drive.',
-      'ψ3 depends only on estimates and measured residuals, so Step 3 has no unknown term at all: with v3 = −ψ3 − k3·z3, ż3 = −k3·z3 + z4 holds exactly.',
+      'ψ3 depends only on estimates and measured residuals, so Step 3 has no unknown term at all: with v3 = −ψ3 − k3·z3, ż3 = −k3·z3 + z4 holds exactly in continuous time, for the observer’s own flux estimate. The sampled loop meets it only approximately, and the measurement noise enters through the innovations: on step, after the start-up (t ≥ 10.1 ms), the recorded z3 misses it by 71 % of the RMS of ż3, by 11 % without noise (noise=0) and by 2.7 % with the perfect observer (perfect=1). The z3 plot shows the estimate’s error, not the motor’s.',
     ],
     equations: [
       t`z_3 = \hat x_4^2 + \hat x_5^2 - \psi_d,\qquad \dot z_3 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) + \psi_3`,
@@ -131,14 +131,14 @@ export const SECTIONS = [
     title: '6. Step 4: the flux inner loop and the voltages',
     prose: [
       'Step 4 drives z4 to zero; its input v4 = 2a10·b(x̂4·u1 + x̂5·u2) is the second combination of the voltages. ψ4 is long but known: the current and flux dynamics of the observer, the nominal residual dynamics and k3(−k3z3 + z4) from differentiating v3. d̃4 again collects the unmeasurable estimation errors.',
-      'v2 and v4 together fix both voltages through the decoupling matrix (54), which is invertible while the estimated flux is not zero (55). The voltage limit then clips each component; when it does, the designed error dynamics no longer hold.',
+      'v2 and v4 together fix both voltages through the decoupling matrix (54), which is invertible while the estimated flux is not zero (55). The voltage limit then acts: the paper’s ±400 V box clips each component, while the circle and the inverter’s hexagon (vlimit) scale the whole vector down, keeping its direction. While it acts, the designed error dynamics no longer hold.',
     ],
     equations: [
       t`\dot z_4 = v_4 + \psi_4 + \tilde d_4,\qquad v_4 = a_{41}bu_1 + a_{42}bu_2,\quad a_{41} = 2a_{10}\hat x_4,\ a_{42} = 2a_{10}\hat x_5`,
       t`v_4 = v_{4a} + v_{4s},\quad v_{4a} = -\psi_4 - z_3,\quad v_{4s} = -k_4z_4 - \tfrac{h_4^2}{4\epsilon_4}z_4,\qquad \dot z_4 = -k_4z_4 - z_3 + v_{4s2} + \tilde d_4`,
       t`\begin{bmatrix}u_1\\u_2\end{bmatrix} = \frac1b\begin{bmatrix}-a_1\hat x_5 & a_1\hat x_4\\ 2a_{10}\hat x_4 & 2a_{10}\hat x_5\end{bmatrix}^{-1}\begin{bmatrix}v_2\\v_4\end{bmatrix},\qquad \det = -2a_1a_{10}(\hat x_4^2 + \hat x_5^2) \ne 0`,
     ],
-    note: 'Printed (48) has a21, a22 where a41, a42 belong (corrected above). In the first milliseconds the start-up transient commands up to ±10 kV (clipped to ±400 V). The plots fit their y-axes to the run after that transient; untick “Fit y-axes after the start-up transient” above the plots to see it.',
+    note: 'Printed (48) has a21, a22 where a41, a42 belong (corrected above). In the first milliseconds the start-up transient commands up to 14 kV on step, and up to 45 kV on rr-mismatch, where it stays beyond the limit until 18 ms; the limit clips it. The plots fit their y-axes to the run after that transient; untick “Fit y-axes after the start-up transient” above the plots to see it.',
     plot: {
       title: 'Step 4: z4, v4 and the voltage before and after the limit', unit: 'V', unit2: 'Wb²/s',
       series: [['u_a_cmd', 'u_sa commanded (V)'], ['u_a', 'u_sa applied (V)'], ['z4', 'z4 (Wb²/s, right)', 'y2']],
@@ -151,6 +151,7 @@ export const SECTIONS = [
     prose: [
       'With V = ½(z1² + z2² + z3² + z4²), the four designed error dynamics give V̇ = −k1z1² − k2z2² − k3z3² − k4z4² + z2(v2s2 + d̃2) + z4(v4s2 + d̃4). The cross terms ±z1z2 and ±z3z4 cancel: that is what the −z1 in v2a and the −z3 in v4a are for.',
       'If the robust terms keep z2(v2s2 + d̃2) ≤ ε2 and z4(v4s2 + d̃4) ≤ ε4, then V̇ ≤ −λV + ε and V stays under the bound (59). The plot compares the recorded V with that bound for this run.',
+      'The theorem is about the errors z_i of the estimates: it assumes the estimation errors stay small enough for d̃2, d̃4 to be bounded, and says nothing about the true motor when they are not. With the EKF’s 10 % initial error only the voltage limit holds the start-up: without it (sine200 with vmax=100000) the run ends 6,287 rad/s off with the flux at 9.3 Wb, and the page reports it as a run that ran away; from a correct initial estimate (init_err=0) the same run tracks to 0.013 rad/s RMS.',
     ],
     equations: [
       t`V_s = \tfrac12(z_1^2 + z_2^2 + z_3^2 + z_4^2),\qquad \dot V_s \le -\lambda V_s + \epsilon,\qquad \lambda = 2\min(k_1,k_2,k_3,k_4),\ \epsilon = \epsilon_2 + \epsilon_4`,

@@ -6,7 +6,7 @@ use imlab::analysis::{
     checked_grid, seed_run, seeds_csv, summarise, sweep_csv, sweep_point, SweepSettings,
 };
 use imlab::scenario::{excerpt, Scenario, PRESETS};
-use imlab::sim::{figures, Figure, Simulation};
+use imlab::sim::{report, Figure, Simulation};
 use std::fmt;
 use std::fs::File;
 use std::io::{self, BufWriter, ErrorKind, Write};
@@ -379,14 +379,22 @@ fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> 
 fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
     let mut sim = Simulation::traced(s).map_err(|e| e.to_string())?;
     let result = sim.run();
-    let list = figures(&sim);
-    write_figures(list.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
-    let printed = if list.is_some() {
+    let report = report(&sim);
+    write_figures(report.figures.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
+    let printed = if report.figures.is_some() {
         "figures printed of the samples before the failure"
     } else {
         "nothing recorded before the failure"
     };
-    result.map_err(|e| format!("{e} ({printed})").into())
+    result.map_err(|e| format!("{e} ({printed})"))?;
+    // A run that ran away fails as a control run, although the simulation itself completed.
+    for w in &report.warnings {
+        if w.kind == "runaway" {
+            return Err(format!("{} (figures printed)", w.text).into());
+        }
+        to_stderr(format_args!("imlab metrics: warning: {}\n", w.text));
+    }
+    Ok(())
 }
 
 /// Writes the header `name,value,unit` and one line per figure; a value read at the last sample

@@ -188,7 +188,30 @@ pub struct Report {
     pub transient: Transient,
     /// See [`figures`].
     pub figures: Option<Vec<Figure>>,
+    /// What the figures must not be read without, in words (see [`Warning`]).
+    pub warnings: Vec<Warning>,
 }
+
+/// A finding about the whole run that its figures alone would hide.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Warning {
+    /// "runaway": the true state left the region the design holds it in, so the run failed as
+    /// a control run, however its samples look; "inconsistent": the EKF's mean NIS is far
+    /// outside the band of a filter whose model fits, so its estimates cannot be trusted.
+    pub kind: &'static str,
+    /// One or two sentences that name what happened, with the run's numbers.
+    pub text: String,
+}
+
+/// A mean NIS this many times past an end of its 95 % band is called inconsistent.
+const FAR_OUTSIDE: f64 = 5.0;
+
+/// A run has run away when its true speed ends further than this from the reference, beyond
+/// twice the largest reference of the window (rad/s)...
+const RUNAWAY_SPEED: f64 = 100.0;
+
+/// ... or its true flux modulus ends above this multiple of the flux target √ψ_d.
+const RUNAWAY_FLUX: f64 = 4.0;
 
 /// [`transient_end`] and [`figures`] of `sim` at once. A finished traced run is replayed once,
 /// for the window after the transient (and, for a step reference, from the step if that is
@@ -462,6 +485,7 @@ struct Window {
     current_sq: f64,
     ripple_peak: f64,
     ripple_sq: f64,
+    reference_peak: f64,
 }
 
 /// The figures of a trace `rows` recorded from scenario `s`.
@@ -472,6 +496,7 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
         return Report {
             transient: end,
             figures: None,
+            warnings: Vec::new(),
         };
     }
     let last = rows.row(len - 1);
@@ -486,6 +511,7 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
         current_sq: -0.0,
         ripple_peak: f64::NEG_INFINITY,
         ripple_sq: -0.0,
+        reference_peak: 0.0,
     };
     // One pass over the window, from the step on for a step reference that comes earlier.
     let mut settling = Settling::of(&s.reference, s.ts, rows, &last);
@@ -516,6 +542,7 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
             .max((r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt());
         w.current_sq += r.i_sa * r.i_sa + r.i_sb * r.i_sb;
         w.ripple_peak = w.ripple_peak.max(r.i_ripple);
+        w.reference_peak = w.reference_peak.max(r.omega_ref.abs());
         w.ripple_sq += r.i_ripple * r.i_ripple;
         true
     });
@@ -670,10 +697,57 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
         &at_last,
         estimate_trend,
     );
+    let warnings = warnings_of(&last, w.reference_peak, w.nis / n, (low, high));
     Report {
         transient: end,
         figures: Some(out),
+        warnings,
     }
+}
+
+/// The warnings of a run whose last row is `last`, whose reference stayed within
+/// ±`reference_peak` over the window, and whose mean NIS over it is `nis` against `band`.
+fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> Vec<Warning> {
+    let mut out = Vec::new();
+    let target = last.flux_ref;
+    if last.omega_err.abs() > 2.0 * reference_peak + RUNAWAY_SPEED
+        || last.flux > RUNAWAY_FLUX * target
+    {
+        out.push(Warning {
+            kind: "runaway",
+            text: format!(
+                "The run ran away: at its end the true speed is {} rad/s from the reference (which stays within ±{} rad/s) and the flux is {} Wb against its target of {} Wb. The controller acts on the EKF's estimates; Theorem 4.6 assumes it sees the true state, and when the estimates are far off (a start-up error held only by the voltage limit, a wrong model, low speed) nothing bounds the motor.",
+                significant(last.omega_err, 3),
+                significant(reference_peak, 3),
+                significant(last.flux, 3),
+                significant(target, 3)
+            ),
+        });
+    }
+    let (low, high) = band;
+    let describe = |side: &str, meaning: &str| {
+        Warning {
+        kind: "inconsistent",
+        text: format!(
+            "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
+            significant(nis, 3),
+            significant(low, 3),
+            significant(high, 3)
+        ),
+    }
+    };
+    if nis > FAR_OUTSIDE * high {
+        out.push(describe(
+            "above",
+            "Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.",
+        ));
+    } else if nis < low / FAR_OUTSIDE {
+        out.push(describe(
+            "below",
+            "It assumes more noise than there is, so it follows the measurements more slowly than it could.",
+        ));
+    }
+    out
 }
 
 /// The 2 % settling time of the true speed after a step reference, and the step time (s):

@@ -7,7 +7,7 @@ mod figures;
 mod recorder;
 mod trace;
 
-pub use figures::{figures, report, transient_end, Figure, Report, Transient};
+pub use figures::{figures, report, transient_end, Figure, Report, Transient, Warning};
 pub use recorder::{m4, Recorder, Row, COLUMNS, COLUMN_DOCS, M4, NUM_COLUMNS};
 use trace::Trace;
 pub use trace::CHECKPOINT_EVERY;
