@@ -78,10 +78,55 @@ function logRange(u, min, max) {
   return [10 ** bottom, 10 ** top];
 }
 
-// Tick labels that stay readable from 1e-9 to 1e6 (uPlot's default shows tiny values as 0).
-function tickLabels(u, splits) {
-  return splits.map((v) => (v == null ? '' : String(Number(v.toPrecision(3)))));
+// Tick steps of 1, 2 and 5 times a power of ten: a step of 2.5 would cost every label one more digit.
+const STEPS = Array.from({ length: 33 }, (_, i) => i - 16).flatMap((e) => [1, 2, 5].map((m) => Number(`${m}e${e}`)));
+
+/** Decimals that write `step` exactly (0.25 needs 2, 200 needs none). */
+function decimals(step) {
+  for (let d = 0; d < 20; d++) {
+    const m = step * 10 ** d;
+    if (Math.round(m) >= 1 && Math.abs(m - Math.round(m)) < 1e-6 * m) return d;
+  }
+  return 20;
 }
+
+// Values this far from 1 read better as powers of ten than as long runs of zeros.
+const SMALL = 1e-3;
+const LARGE = 1e6;
+
+/**
+ * Tick labels with the digits their spacing needs, so that neighbouring ticks never read alike
+ * at any zoom; tiny and huge values as powers of ten. A log axis's ticks are each one digit times
+ * a power of ten, so three significant digits write every one of them.
+ */
+function tickLabels(u, splits, axisIdx, space, step) {
+  if (u.scales[u.axes[axisIdx].scale].distr === 3 || !(step > 0)) {
+    return splits.map((v) => (v == null ? '' : String(Number(v.toPrecision(3)))));
+  }
+  // A tick that should be zero often misses it by a rounding error, which would print as −0.
+  const ticks = splits.map((v) => (v == null ? null : Math.abs(v) < step * 1e-6 ? 0 : v));
+  const largest = Math.max(...ticks.map((v) => Math.abs(v ?? 0)));
+  const d = decimals(step);
+  if (largest === 0 || (largest >= SMALL && largest < LARGE)) return ticks.map((v) => (v == null ? '' : v.toFixed(d)));
+  return ticks.map((v) => {
+    if (v == null) return '';
+    if (v === 0) return '0';
+    const digits = Math.min(Math.max(Math.floor(Math.log10(Math.abs(v))) + d, 0), 20);
+    return v.toExponential(digits).replace(/\.?0+e/, 'e').replace('e+', 'e');
+  });
+}
+
+/**
+ * The least room between time ticks (px), `least` or more: room for a label with the window's
+ * whole digits and the decimals of the finest step `least` allows, and a gap of one `em` (the
+ * font size, px), so that the long labels of a narrow window do not run into each other.
+ */
+const timeSpace = (em, least) => (u, axisIdx, lo, hi, dim) => {
+  const step = ((hi - lo) * least) / dim;
+  if (!(step > 0)) return least;
+  const chars = String(Math.trunc(Math.max(Math.abs(lo), Math.abs(hi)))).length + 1 - Math.floor(Math.log10(step));
+  return Math.max(least, (chars * 0.6 + 1) * em);
+};
 
 /** A value as the read-out shows it: 6 significant digits. */
 export const six = (v) => (v == null ? '–' : String(Number(v.toPrecision(6))));
@@ -119,14 +164,30 @@ function padded([lo, hi]) {
   return [lo - d, hi + d];
 }
 
-/** Widens two ranges so that zero sits at the same height on both axes. */
+// Aligning the zeros of two axes may shrink a series to this fraction of the plot's height, no
+// less: further, the shared zero line costs more than it shows.
+const MIN_SHARE = 0.5;
+
+/**
+ * Widens two ranges so that zero sits at the same height on both axes, when both ranges hold zero
+ * and neither series shrinks below MIN_SHARE of the height; otherwise returns them as they are.
+ * Either range only grows, so each still holds its series.
+ */
 function shareZero(a, b) {
-  const withZero = ([lo, hi]) => [Math.min(lo, 0), Math.max(hi, 0)];
-  const [r1, r2] = [withZero(a), withZero(b)];
   const below = ([lo, hi]) => -lo / (hi - lo); // zero's height as a fraction of the axis
-  const f = Math.max(below(r1), below(r2));
-  const fit = ([lo, hi]) => (f >= 1 ? [lo, 0] : [Math.min(lo, (-f * hi) / (1 - f)), hi]);
-  return [fit(r1), fit(r2)];
+  const [fa, fb] = [below(a), below(b)];
+  if (!(fa >= 0 && fa <= 1 && fb >= 0 && fb <= 1) || fa === fb) return [a, b];
+  const [low, high] = fa < fb ? [a, b] : [b, a]; // the axis with zero lower, and the other
+  const [f0, f1] = [Math.min(fa, fb), Math.max(fa, fb)];
+  // Either lower the bottom of `low` until its zero is as high as on `high`, or raise the top of
+  // `high` until its zero is as low as on `low`: whichever shrinks its series less.
+  const lowered = f1 < 1 ? (1 - f0) / (1 - f1) : Infinity;
+  const raised = f0 > 0 ? f1 / f0 : Infinity;
+  if (Math.min(lowered, raised) > 1 / MIN_SHARE) return [a, b];
+  const aligned = lowered <= raised
+    ? [[Math.min(low[0], (-f1 * low[1]) / (1 - f1)), low[1]], high]
+    : [low, [high[0], Math.max(high[1], (-high[0] * (1 - f0)) / f0)]];
+  return fa < fb ? aligned : [aligned[1], aligned[0]];
 }
 
 /**
@@ -177,10 +238,10 @@ export class Plots {
     const k = this.scale;
     const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
     const axes = [
-      { label: 't (s)', ...font, size: 50 * k, space: 50 * k },
-      { label: plot.unit, scale: 'y', ...font, size: 80 * k, values: tickLabels },
+      { label: 't (s)', ...font, size: 50 * k, space: timeSpace(14 * k, 50 * k), incrs: STEPS, values: tickLabels },
+      { label: plot.unit, scale: 'y', ...font, size: 80 * k, ...(plot.log ? {} : { incrs: STEPS }), values: tickLabels },
     ];
-    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80 * k, values: tickLabels });
+    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80 * k, incrs: STEPS, values: tickLabels });
     const range = (u, min, max, key) => this.range(u, key, !!plot.unit2);
     const scales = {
       // While zoomed, new data keeps the window; otherwise the axis spans the data.
