@@ -381,7 +381,7 @@ export class Walkthrough {
     const cell = (text, i, j) => (i === 0 || j === 0 ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text }) : el('td', { textContent: text }));
     const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c, j) => cell(c, i, j)))));
     box.replaceChildren(
-      el('p', { textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on.` }),
+      el('p', { textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.` }),
       table,
     );
   }

@@ -328,10 +328,15 @@ fn metrics_summarise_the_trace_and_show_the_observer_limit_at_200_hz() {
     let euler = run("sine200");
     let m = euler.metrics().unwrap();
     let from = m.from;
-    assert!(
-        (from - 0.05).abs() < 1e-12,
-        "window starts after the first fifth: {from}"
-    );
+    // The window is the run's figures' own: one value for one figure wherever it is shown.
+    assert_eq!(from, imlab::sim::transient_end(&euler).t);
+    let strip = imlab::sim::figures(&euler).unwrap();
+    let strip_rms = strip
+        .iter()
+        .find(|f| f.name == "tracking_rms")
+        .unwrap()
+        .value;
+    assert_eq!(m.tracking_rms, strip_rms);
     assert!((m.tracking_rms - tracking_rms(&euler, from, 1.0)).abs() < 1e-12);
     let rk4 = run("sine200-rk4").metrics().unwrap();
     // Same controller and seed; only the predictor differs.

@@ -1031,7 +1031,8 @@ impl Cursor<'_> {
 /// Summary figures of a run, for comparing variants.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Metrics {
-    /// Start of the window the figures cover (s): after the first fifth of the run.
+    /// Start of the window the figures cover (s): the end of the start-up transient, the window
+    /// of the run's figures ([`figures`]), so that a figure has one value wherever it is shown.
     pub from: f64,
     /// RMS of ω − ω_d (rad/s).
     pub tracking_rms: f64,
@@ -1048,13 +1049,14 @@ pub struct Metrics {
 }
 
 impl Simulation {
-    /// RMS errors, mean NIS and saturation over the last four fifths of the recorded run.
+    /// RMS errors, mean NIS and saturation after the start-up transient (see [`Metrics::from`]).
     pub fn metrics(&self) -> Option<Metrics> {
         let len = self.len();
-        let from = len / 5;
-        if from == len {
+        if len == 0 {
             return None;
         }
+        let start = transient_end(self).t;
+        let from = first_not(len, |i| self.time(i) < start);
         let n = (len - from) as f64;
         let limit = self.lp.limit;
         // Sums in row order, as `Iterator::sum` adds.
