@@ -173,3 +173,17 @@ test('after a frequency sweep on a phone the page still does not scroll sideways
     const { over, culprits } = await sideways(page);
     assert.ok(over <= 0, `the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);
   }));
+
+for (const [width, height] of [[1280, 720], [1024, 768]]) {
+  test(`presentation mode at ${width}×${height}: the first screen shows the main plot and the key figures, the strip one click away`, () =>
+    withPage('?v=1&preset=rr-mismatch#present=1', [width, height], async (page) => {
+      const top = await page.$eval('#plots .plot', (p) => p.getBoundingClientRect().top);
+      assert.ok(top < height - 200, `the first plot starts ${top} px down`);
+      assert.equal(await page.isVisible('#key-figures'), true);
+      assert.match(await page.textContent('#key-figures'), /RMS of ω − ω_d .* · final ω − ω_d -5\.02 rad\/s \(still changing\)/);
+      assert.equal(await page.isVisible('#figures'), false);
+      await page.click('#figures-toggle');
+      assert.equal(await page.isVisible('#figures'), true);
+      assert.equal(await page.getAttribute('#figures-toggle', 'aria-expanded'), 'true');
+    }));
+}

@@ -14,7 +14,7 @@ const ui = {
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
   present: $('present'), inspect: $('inspect'), settingsToggle: $('settings-toggle'), embed: $('copy-embed'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
-  figures: $('figures'), consistency: $('consistency'),
+  figures: $('figures'), consistency: $('consistency'), keyFigures: $('key-figures'), figuresBar: document.querySelector('.figures-bar'), figuresToggle: $('figures-toggle'),
 };
 
 const state = {
@@ -452,6 +452,28 @@ function componentLimit() {
 }
 
 /** The figures strip: each figure of the run with its unit and window (all from the core). */
+// The figures the compact row shows, in this order.
+const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_final'];
+
+/** The compact row of key figures that stands for the strip on small screens and projectors. */
+function showKeyFigures(figures, rated) {
+  const [low, high] = ['mean_nis_low', 'mean_nis_high'].map((n) => figures.find((f) => f.name === n));
+  const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name)).filter(Boolean).map((f) => {
+    const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
+    const span = document.createElement('span');
+    if (f.name === 'current_peak' && rated) span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
+    else if (f.name === 'speed_error_final' && f.trend) {
+      span.textContent = `final ω − ω_d ${value} (${f.trend.settled ? 'settled' : 'still changing'})`;
+      if (!f.trend.settled) span.className = 'unsettled';
+    } else if (f.name === 'mean_nis' && low && high) {
+      span.textContent = `mean NIS ${value} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
+    } else span.textContent = `${f.label} ${value}`;
+    return span;
+  });
+  ui.keyFigures.replaceChildren(...parts.flatMap((p, i) => (i ? [' · ', p] : [p])));
+  ui.figuresBar.hidden = parts.length === 0;
+}
+
 /**
  * Whether a final value `f` had settled, in words, from its trend over the end of the run:
  * [short text, the detail for its tooltip].
@@ -507,6 +529,7 @@ function showFigures(figures, warnings = []) {
   ui.consistency.hidden = !warning;
   ui.figures.replaceChildren(...items);
   ui.figures.hidden = items.length === 0;
+  showKeyFigures(figures, rated);
   // The plots' text alternatives carry the same figures.
   const sentence = items.map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`).join('; ');
   for (const set of plotSets) set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');
@@ -735,6 +758,12 @@ walk.addEventListener('input', (e) => {
   state.knobTimer = setTimeout(() => knobChanged(e.target), 800);
 });
 ui.fullRun.addEventListener('click', fullRun);
+ui.figuresToggle.addEventListener('click', () => {
+  const open = !ui.figures.classList.contains('open');
+  ui.figures.classList.toggle('open', open);
+  ui.figuresToggle.setAttribute('aria-expanded', String(open));
+  ui.figuresToggle.textContent = open ? 'Fewer figures' : 'All figures';
+});
 ui.fit.addEventListener('change', () => {
   plotSets.forEach((p) => p.refit());
   analysis.refit();
