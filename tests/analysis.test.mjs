@@ -28,8 +28,9 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
     await page.waitForSelector('#pins li');
     await page.fill('#field-k1', '600');
     await page.press('#field-k1', 'Tab');
-    await page.waitForFunction(() => location.search.includes('k1=600'));
+    await page.waitForFunction(() => document.body.dataset.unrun === '1');
     await runAgain(page);
+    assert.ok(page.url().includes('k1=600'));
     await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
     assert.match(await page.textContent('#pins'), /k1: 1200 → 600 1\/s/);
     // The runs kept ω for the overlay; another column is read by one replay of each, then kept.

@@ -14,7 +14,7 @@ const ui = {
   cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
   copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
   present: $('present'), inspect: $('inspect'), settingsToggle: $('settings-toggle'), embed: $('copy-embed'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
-  figures: $('figures'), consistency: $('consistency'), keyFigures: $('key-figures'), figuresBar: document.querySelector('.figures-bar'), figuresToggle: $('figures-toggle'),
+  unrun: $('unrun'), figures: $('figures'), consistency: $('consistency'), keyFigures: $('key-figures'), figuresBar: document.querySelector('.figures-bar'), figuresToggle: $('figures-toggle'),
 };
 
 const state = {
@@ -244,12 +244,14 @@ async function formChanged() {
   try {
     const info = await describe(text);
     applyDescription(info);
-    showScenario(info.encoded);
+    // The address keeps describing the run on screen until these settings run.
+    markUnrun(info.encoded !== state.ranScenario);
     walkthrough.markKnob(null);
     say('');
     return true;
   } catch (e) {
     if (e instanceof WorkerFailed) return false;
+    markUnrun(true);
     markInvalid(ui.form, e.message);
     // The field must be visible to be fixed: open the drawer where the settings live in one.
     if (ui.form.offsetParent === null && ui.form.querySelector('.invalid')) openSettings(true);
@@ -268,8 +270,16 @@ async function knobChanged(knob) {
   if (await formChanged()) startRun();
 }
 
+/** Marks the settings as changed and not yet run (or not), beside Run. */
+function markUnrun(unrun) {
+  ui.unrun.hidden = !unrun;
+  if (unrun) document.body.dataset.unrun = '1';
+  else delete document.body.dataset.unrun;
+}
+
 function startRun() {
   if (!state.info) return;
+  markUnrun(false);
   if (state.running) worker.postMessage({ type: 'cancel', id: state.runId });
   if (document.body.dataset.state === 'crashed') say(''); // the crash was told; this is the retry
   // The new run replaces the one being exported in the worker.
@@ -738,10 +748,16 @@ function commitPreset() {
   load(`v=1&preset=${ui.preset.value}`);
 }
 ui.form.addEventListener('change', formChanged);
-// Enter in a settings field runs the scenario.
-ui.form.addEventListener('submit', async (e) => {
+// Enter in a settings field runs the scenario (a form of many fields and no submit button has no
+// implicit submission, so Enter is taken here).
+ui.form.addEventListener('keydown', (e) => {
+  if (e.key !== 'Enter' || !e.target.matches('input, select')) return;
   e.preventDefault();
-  if (await formChanged()) startRun();
+  runForm();
+});
+ui.form.addEventListener('submit', (e) => {
+  e.preventDefault();
+  runForm();
 });
 // A walkthrough knob re-runs on change, on Enter, or after a pause in typing.
 const walk = $('walkthrough');
@@ -777,10 +793,11 @@ document.addEventListener('keydown', (e) => {
   } else fullRun();
 });
 // An edit still being checked by the core must land before the run starts.
-ui.run.addEventListener('click', async () => {
+async function runForm() {
   if (composeScenario(ui.form, ui.preset.value) !== state.composed && !(await formChanged())) return;
   if (!ui.run.disabled) startRun();
-});
+}
+ui.run.addEventListener('click', runForm);
 // Cancel stops the run or the CSV export, whichever is under way.
 ui.cancel.addEventListener('click', () => {
   if (state.export) cancelExport('CSV export cancelled');
