@@ -144,7 +144,10 @@ test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
     const visiblePlots = () => page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot));
     assert.deepEqual(await visiblePlots(), ['speed']);
     for (const hidden of ['#settings', '[role=tablist]', 'header']) assert.equal(await page.isVisible(hidden), false, hidden);
-    assert.equal(await page.isVisible('#figures'), true);
+    assert.equal(await page.isVisible('#key-figures'), true);
+    // The plot fills the frame under the run row: the frame shows it whole.
+    const bottom = await page.$eval('.plot.embedded', (p) => p.getBoundingClientRect().bottom);
+    assert.ok(bottom <= 520, `the plot ends at ${bottom} px of 520`);
     const before = Number(await page.evaluate(() => document.body.dataset.run));
     await page.click('#run');
     await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
@@ -153,10 +156,24 @@ test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
     await page.evaluate(() => { document.body.classList.remove('embed'); });
     await page.click('#copy-embed');
     const snippet = await page.evaluate(() => navigator.clipboard.readText());
-    assert.match(snippet, /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed" title="IM Lab: step"/);
+    // It embeds the plots in view: at 720×520, the speed plot alone.
+    assert.match(snippet, /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed" title="IM Lab: step, speed"/);
     const host = await page.context().newPage();
     await host.setContent(`<!doctype html><title>course page</title>${snippet}`);
     const frame = await (await host.waitForSelector('iframe')).contentFrame();
     await frame.waitForFunction(() => document.body.dataset.state === 'done', null, { timeout: 30_000 });
     assert.equal(await frame.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).length), 1);
+  }));
+
+test('Copy embed code embeds the plots in view, and an unknown plot is named until the user runs', () =>
+  withPage('?v=1&preset=step#embed=speed,nope,flux', [900, 800], async (page) => {
+    assert.deepEqual(await page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot)), ['speed', 'flux']);
+    assert.match(await page.textContent('#message'), /No plot named 'nope'; showing speed, flux\./);
+    // Both plots fit the frame.
+    const bottom = await page.$$eval('.plot.embedded', (ps) => Math.max(...ps.map((p) => p.getBoundingClientRect().bottom)));
+    assert.ok(bottom <= 800, `the plots end at ${bottom} px of 800`);
+    const before = Number(await page.evaluate(() => document.body.dataset.run));
+    await page.click('#run');
+    await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
+    assert.doesNotMatch(await page.textContent('#message'), /No plot named/);
   }));

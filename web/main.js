@@ -23,6 +23,7 @@ const state = {
   nisBand: [0, 0],
   pins: [], // pinned scenarios, in pin order
   shared: { pins: fragment('pins'), sweep: fragment('sweep') }, // from the link that opened the page
+  notice: null, // a notice about the link that stays until the user acts
   runId: 0,
   running: false,
   ranScenario: null, // the scenario of the last run started
@@ -58,6 +59,9 @@ const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: 
 const ifocRun = () => fieldValue(state.info, 'controller') === 'ifoc';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
+// The least height of an embedded plot, however small its frame (px).
+const EMBED_MIN_HEIGHT = 120;
+const EMBED_MARGIN = 8;
 // Presentation mode draws plot text and lines this much larger: 14 px ticks become 21 px.
 const PRESENT_SCALE = 1.5;
 const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
@@ -217,7 +221,7 @@ async function load(text, { run = true } = {}) {
 async function describeLoaded(text) {
   try {
     const info = await describe(text);
-    say('');
+    say(state.notice ?? '', 'info');
     return info;
   } catch (e) {
     if (e instanceof WorkerFailed) throw e;
@@ -280,6 +284,8 @@ function markUnrun(unrun) {
 function startRun() {
   if (!state.info) return;
   markUnrun(false);
+  // The first run is the link's own; a later one is the user's act, which ends the link's notice.
+  if (state.runId > 0) state.notice = null;
   if (state.running) worker.postMessage({ type: 'cancel', id: state.runId });
   if (document.body.dataset.state === 'crashed') say(''); // the crash was told; this is the retry
   // The new run replaces the one being exported in the worker.
@@ -603,6 +609,7 @@ const handlers = {
       // The walkthrough's plots are in the view once it has been opened.
       if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
       plots.show(view, { ifoc: ifocRun() });
+      state.fitEmbed?.();
       // "Plotted" is when the browser has painted them: the canvases are rasterised then.
       await painted();
       // A newer run, or a worker crash while the plots were drawn, owns the page now.
@@ -853,13 +860,23 @@ function openSettings(open) {
 }
 ui.settingsToggle.addEventListener('click', () => openSettings(!document.body.classList.contains('settings-open')));
 
-// An embed (`#embed=PLOT`) shows one plot of the Trajectories tab with Run and the figures.
+// An embed (`#embed=PLOT,PLOT...`) shows those plots of the Trajectories tab with Run and the key
+// figures, the plots sharing the frame's height, so that the frame holds them at any size.
 const embedded = fragment('embed');
 if (embedded !== null) {
-  const known = PLOTS.some((p) => p.id === embedded);
+  const asked = embedded.split(',').slice(0, PLOTS.length);
+  const ids = asked.filter((id) => PLOTS.some((p) => p.id === id));
+  const unknown = asked.filter((id) => !ids.includes(id));
+  if (ids.length === 0) ids.push('speed');
   document.body.classList.add('embed');
-  document.body.dataset.embed = known ? embedded : 'speed';
-  if (!known) say(`The embedded plot '${excerpt(embedded)}' does not exist; showing the speed plot. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`);
+  document.body.dataset.embed = ids.join(',');
+  plots.embedded = ids;
+  for (const div of ui.plots.querySelectorAll('.plot[data-plot]')) div.classList.toggle('embedded', ids.includes(div.dataset.plot));
+  // Kept until the user acts: a load's message would otherwise clear it.
+  if (unknown.length) state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
+  say(state.notice ?? '', 'info');
+  state.fitEmbed = () => plots.resize(embedHeight(ids.length));
+  window.addEventListener('resize', state.fitEmbed);
 }
 if (fragment('present') === '1') {
   document.body.classList.add('present');
@@ -868,15 +885,42 @@ if (fragment('present') === '1') {
   [plots.height, walkthrough.plots.height] = PLOT_HEIGHT.present;
 }
 
+/**
+ * Height of each of `n` embedded plots: together they fill the frame under the run row. What is
+ * not plot (the run row, the key figures, titles and legends) is measured from the page as laid
+ * out, down to the last plot's bottom and a margin.
+ */
+function embedHeight(n) {
+  const shown = [...ui.plots.querySelectorAll('.plot.embedded')];
+  if (shown.length === 0) return plots.height;
+  const bottom = Math.max(...shown.map((p) => p.getBoundingClientRect().bottom)) + scrollY + EMBED_MARGIN;
+  return Math.max(EMBED_MIN_HEIGHT, Math.floor(plots.height + (innerHeight - bottom) / n));
+}
+
+/** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
+function plotsInView() {
+  if (ui.plots.offsetParent === null) return ['speed'];
+  const inView = [...ui.plots.querySelectorAll('.plot[data-plot]')].filter((p) => {
+    const box = p.getBoundingClientRect();
+    const shown = Math.min(box.bottom, innerHeight) - Math.max(box.top, 0);
+    return box.height > 0 && shown >= box.height / 2;
+  }).map((p) => p.dataset.plot);
+  return inView.length ? inView : ['speed'];
+}
+
 ui.embed.addEventListener('click', async () => {
-  const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=speed`;
-  const title = `IM Lab: ${presetNamed(state.info.encoded)}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
-  const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="720" height="520" style="border:0" loading="lazy"></iframe>`;
+  const ids = plotsInView();
+  const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=${ids.join(',')}`;
+  const title = `IM Lab: ${presetNamed(state.info.encoded)}, ${ids.join(', ')}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
+  // The plots share whatever height the frame has; this one gives each about 300 px.
+  const height = 140 + 300 * ids.length;
+  const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="100%" height="${height}" style="border:0;max-width:960px" loading="lazy"></iframe>`;
+  const what = `the ${ids.join(', ')} plot${ids.length > 1 ? 's' : ''} of this run (the Trajectories plots in view)`;
   try {
     await navigator.clipboard.writeText(code);
-    say('Embed code copied: paste it into a slide or a course page.', 'info');
+    say(`Embed code copied: ${what}. Paste it into a slide or a course page.`, 'info');
   } catch {
-    say(`Copy this embed code: ${code}`, 'info');
+    say(`Copy this embed code for ${what}: ${code}`, 'info');
   }
 });
 window.addEventListener('popstate', () => load(scenarioFromUrl()));

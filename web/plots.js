@@ -428,6 +428,8 @@ export class Plots {
       // A focusable figure: its caption is the text alternative of the canvas.
       const div = Object.assign(document.createElement('div'), { className: 'plot', tabIndex: 0 });
       div.dataset.plot = plot.id;
+      // An embed shows only the plots its link names.
+      if (this.embedded?.includes(plot.id)) div.classList.add('embedded');
       div.setAttribute('role', 'figure');
       const caption = Object.assign(document.createElement('p'), { className: 'caption sr-only', id: `caption-${this.container.id || 'plots'}-${plot.id}` });
       div.setAttribute('aria-describedby', caption.id);
