@@ -1,5 +1,7 @@
 // Service worker: network first, so a served update is always picked up; the cache answers when
-// the network is gone, so a loaded app keeps working (and reloads) offline.
+// the network is gone, so a loaded app keeps working (and reloads) offline. Each file is cached
+// once, under its path without the query: a scenario link's query changes the run, not the file,
+// so a class opening hundreds of links keeps one copy of the page.
 const CACHE = 'imlab-v1';
 
 self.addEventListener('install', () => self.skipWaiting());
@@ -12,7 +14,9 @@ self.addEventListener('fetch', (event) => {
       .then((response) => {
         if (response.ok) {
           const copy = response.clone();
-          caches.open(CACHE).then((cache) => cache.put(event.request, copy));
+          const key = new URL(event.request.url);
+          key.search = '';
+          caches.open(CACHE).then((cache) => cache.put(key.href, copy));
         }
         return response;
       })

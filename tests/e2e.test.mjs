@@ -163,6 +163,17 @@ test('a loaded app reloads and runs offline', () =>
     await page.reload();
     assert.equal(await settled(page), 'done');
     assert.equal(scenarioInUrl(page), 'v=1&preset=step');
+    // Other scenario links are answered from the same cached page, and add no copy of it.
+    await page.goto(`${suite.server.url}?v=1&preset=ramp`);
+    assert.equal(await settled(page), 'done');
+    await page.context().setOffline(false);
+    for (const preset of ['sine200', 'decay', 'ifoc-step']) {
+      await page.goto(`${suite.server.url}?v=1&preset=${preset}`);
+      await settled(page);
+    }
+    const pages = () => page.evaluate(async () => (await (await caches.open('imlab-v1')).keys()).filter((r) => new URL(r.url).pathname === '/').map((r) => r.url));
+    await page.waitForFunction(async () => (await (await caches.open('imlab-v1')).keys()).some((r) => r.url.endsWith('/')));
+    assert.deepEqual(await pages(), [`${suite.server.url}`]);
   }));
 
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>

@@ -197,9 +197,23 @@ test('hostile fragments are named in a message and the rest of the link still wo
     assert.equal(await settled(page), 'done');
     await page.waitForFunction(() => document.getElementById('message').textContent.includes('Could not pin'));
     const message = await page.textContent('#message');
-    assert.match(message, /^Could not pin v=1&preset=<img src=x>: .*preset.*\. Could not pin v=1&preset=step&k1=-5: .*'k1'.*\.$/);
+    assert.match(message, /^Could not pin v=1&preset=<img src=x>: .*preset.*; could not pin v=1&preset=step&k1=-5: .*'k1'.*\.$/);
     assert.equal(await page.locator('#message img').count(), 0);
     assert.equal(await page.locator('#pins li').count(), 0);
+  });
+  // A fragment of half a million pins: refused whole, with its size, and the page keeps working.
+  await withPage(`?v=1&preset=step#pins=${'|x'.repeat(524_288)}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.waitForFunction(() => document.getElementById('message').textContent.startsWith('The pins in the address were not run'));
+    assert.match(await page.textContent('#message'), /^The pins in the address were not run: 1,048,576 characters, more than the 65,536 a pins fragment may hold\.$/);
+    assert.ok(!page.url().includes('pins='));
+    assert.equal((await runAgain(page)).state, 'done');
+  });
+  // Many malformed pins under the size: a few are quoted, the rest counted.
+  await withPage(`?v=1&preset=step#pins=${Array.from({ length: 1000 }, (_, i) => `%z${i}`).join('|')}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('more'));
+    assert.match(await page.textContent('#message'), /^Ignored a malformed pin in the address: '%z0', '%z1', '%z2', '%z3', '%z4' … and 995 more\.$/);
   });
   // Sweep sizes must be whole numbers; other malformed sweeps name their bad part.
   for (const [sweep, expected] of [

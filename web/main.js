@@ -274,6 +274,23 @@ async function knobChanged(knob) {
   if (await formChanged()) startRun();
 }
 
+/**
+ * The first few `items` joined by `sep`, and how many more there are: a message quotes a bounded
+ * number of parts of an address, however many it holds.
+ */
+function listed(items, sep = ', ') {
+  const shown = items.slice(0, LISTED).join(sep);
+  return items.length > LISTED ? `${shown} … and ${(items.length - LISTED).toLocaleString()} more` : shown;
+}
+const LISTED = 5;
+
+// A pins fragment longer than this is refused whole (characters): four pins of the longest
+// scenario the codec accepts (16 KiB each) fit.
+const MAX_PINS_CHARS = 65_536;
+// Pins sent to the worker from a link: one more than the core keeps, so that its refusal of the
+// extra one is named.
+const MAX_PINS_SENT = 5;
+
 /** Marks the settings as changed and not yet run (or not), beside Run. */
 function markUnrun(unrun) {
   ui.unrun.hidden = !unrun;
@@ -636,10 +653,17 @@ const handlers = {
       document.body.dataset.state = 'done';
     }
     // Pins from a shared link are re-run once; afterwards each run refreshes the comparison.
-    if (state.shared.pins) {
+    if (state.shared.pins && state.shared.pins.length > MAX_PINS_CHARS) {
+      say(`The pins in the address were not run: ${state.shared.pins.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`);
+      setFragment('pins', null);
+    } else if (state.shared.pins) {
       const { scenarios, malformed } = decodePins(state.shared.pins);
-      if (malformed.length) say(`Ignored a malformed pin in the address: ${malformed.map((m) => `'${excerpt(m)}'`).join(', ')}.`);
-      worker.postMessage({ type: 'pin', scenarios, column: $('overlay-column').value });
+      if (malformed.length) say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
+      // The core pins a few runs at most and names the rest; no more are sent than it can take.
+      const sent = scenarios.slice(0, MAX_PINS_SENT);
+      const dropped = scenarios.length - sent.length;
+      if (dropped > 0) say(`Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`);
+      worker.postMessage({ type: 'pin', scenarios: sent, column: $('overlay-column').value });
     } else if (state.pins.length) {
       worker.postMessage({ type: 'pin', scenarios: [], column: $('overlay-column').value });
     }
@@ -678,7 +702,7 @@ const handlers = {
     if (id === state.runId) walkthrough.showComparison(results);
   },
   pins({ scenarios, legends, rejected }) {
-    if (rejected.length) say(rejected.map((r) => `Could not pin ${excerpt(r.scenario)}: ${r.message}.`).join(' '));
+    if (rejected.length) say(listed(rejected.map((r) => `could not pin ${excerpt(r.scenario)}: ${r.message}`), '; ').replace(/^c/, 'C') + '.');
     showPins(scenarios, legends);
   },
   overlay({ id, column, data }) {
