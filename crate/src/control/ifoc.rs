@@ -161,7 +161,10 @@ impl Ifoc {
         for k in 0..2 {
             let free = self.kp_i * e[k] + self.ki_i * self.current_integral[k] + ff[k];
             u_dq[k] = free;
-            // Anti-windup: integrate only while the voltage stays inside the limit.
+            // Anti-windup: integrate only while the voltage stays inside the limit. It acts per
+            // dq component against the per-component limit, not on the voltage vector against the
+            // drive's limit shape (circle or hexagon): a simplification of the baseline, listed
+            // with the departures from textbook practice in docs/model-and-paper.md.
             if free.abs() < limit {
                 self.current_integral[k] += self.ts * e[k];
             }
