@@ -10,7 +10,7 @@ wasm: setup
 	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
 	rm -f dist/pkg/.gitignore
 
-# A self-contained static folder that any static host can serve.
+# A self-contained static folder that any static host can serve, with the guides in dist/docs/.
 dist: wasm
 	mkdir -p dist/web dist/vendor/katex/fonts
 	cp static/*.html static/*.css static/*.js dist/
@@ -18,6 +18,7 @@ dist: wasm
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
 	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
+	scripts/docs_html.py dist/docs
 
 serve: dist
 	@echo "IM Lab is at http://localhost:$(PORT)/  (Ctrl-C stops it)"

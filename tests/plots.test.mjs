@@ -1,4 +1,4 @@
-// Browser tests of issue 8: plots true to the samples at every zoom, the run's figures, knobs
+// Browser tests of the plots: true to the samples at every zoom, the run's figures, knobs
 // that run, and lessons with their panel. Every test fails on a console error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';

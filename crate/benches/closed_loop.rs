@@ -282,7 +282,7 @@ fn summary(since: SystemTime) {
             }
         }
         if let (Some(recorded), Some(off)) = (recorded, off) {
-            // The bar: at least 85 %.
+            // The bar: at least 85 %.
             lines.push(format!(
                 "long/{seconds}s recorded/off       {:>7.0} %",
                 100.0 * recorded / off

@@ -61,7 +61,7 @@ fn perfect_observer_errors_decay_at_the_designed_rate() {
     }
 }
 
-/// Settling band: 2 % of the step size, as the issue asks.
+/// Settling band: 2 % of the step size, the usual definition of settling time.
 const SETTLING_BAND: f64 = 0.02;
 
 #[test]
@@ -434,7 +434,7 @@ fn mean_after(sim: &Simulation, name: &str, from: f64) -> f64 {
     tail.iter().sum::<f64>() / tail.len() as f64
 }
 
-/// The issue's bars for the remedies of Section 3.1.
+/// The bars for the remedies of Section 3.1.
 const LOAD_BAND: f64 = 0.5; // rad/s: the speed stays within this of 50 rad/s after the step
 const LOAD_REL: f64 = 0.02; // the load estimate within 2 % of the true 2.5 N m
 const RR_BIAS: f64 = 1.0; // rad/s: speed bias after convergence

@@ -1,4 +1,4 @@
-//! What a real drive adds (issue 12): the computation delay, the inverter's voltage limits, PWM
+//! What a real drive adds: the computation delay, the inverter's voltage limits, PWM
 //! and the IFOC's torque feedforward, each checked against what it must do by construction.
 
 use imlab::inverter::Shape;

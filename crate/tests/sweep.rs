@@ -35,7 +35,7 @@ fn ifoc_runs_too_short_to_reach_their_operating_speed_are_flagged_and_give_no_ba
     );
     assert_eq!(s.unsettled, 2);
 
-    // The same frequencies in 3 s runs (the README's IFOC sweep) settle.
+    // The same frequencies in 3 s runs (the IFOC sweep of docs/figures.md) settle.
     let long = SweepSettings {
         amp: 0.05,
         duration: 3.0,

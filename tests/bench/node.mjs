@@ -1,7 +1,7 @@
 // The same WASM build in Node: closed-loop steps per second of `ramp`, 1 s and 5 s runs, with
 // traced runs (checkpoints, every row computed and checked, sim.step in chunks of 5,000 as the
 // page's worker runs them, without the plot overview the page also asks for), against the native
-// build measured the same way in the same session.
+// build measured the same way in the same bench run.
 //
 // Each figure is the median (min–max) of BENCH_REPS (default 5) repetitions, each a fresh Node
 // process that warms up (BENCH_WARMUP runs of each length, default 3) and keeps the best of
@@ -11,8 +11,8 @@
 // the WASM/native figure is the median of the pairs' ratios. BENCH_NATIVE=0 skips the native
 // side.
 //
-// Why this shape (measured on the 2-core VM this was written on, guest otherwise idle):
-// - The machine's memory system drifts, and that is the swing (the old best-of-40 gave 1.73 to
+// Why this shape (measured on the 2-core build machine, otherwise idle):
+// - The machine's memory system drifts, and that is the swing (a best-of-40 gives 1.73 to
 //   2.79 M steps/s in 8 back-to-back runs). It has a fast and a slow state lasting from seconds
 //   to tens of seconds: the WASM loop runs at 2.7 or 1.6–1.8 M steps/s, the native loop at 2.8
 //   or 2.1, a pure-JS loop streaming writes over 9 MB at 3.0 or 1.9–2.2 GB/s (correlation with

@@ -16,7 +16,7 @@ use std::process::ExitCode;
 #[derive(Parser)]
 #[command(
     name = "imlab",
-    // The hand-rolled parser this replaces let a repeated option override the earlier one.
+    // A repeated option overrides the earlier one, as in most command lines.
     args_override_self = true,
     after_help = "SCENARIO is a preset name or a query string such as \
                   'v=1&preset=step&step.size=0.3'; `imlab list` names the presets."

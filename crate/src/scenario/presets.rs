@@ -32,7 +32,7 @@ pub const PRESETS: &[Preset] = &[
     Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): the Euler EKF's prediction errors through the gains saturate the 400 V limit" },
 ];
 
-// Tuning of the added EKF states (Section 3.1's remedies), justified in the README.
+// Tuning of the added EKF states (Section 3.1's remedies), justified in docs/model-and-paper.md.
 /// Random-walk intensity of the load torque ((N m)²/s): on `load-step-est` the speed stays within
 /// 0.2 rad/s of 50 rad/s through the 2 N m step, and the estimate's 2σ band is ±0.35 N m.
 const LOAD_Q: f64 = 10.0;
@@ -47,7 +47,7 @@ const RR_STD: f64 = 0.5;
 /// Rated current of the paper's motor, as the amplitude |i_s| of its rated phase current (A);
 /// the paper gives no rating. At ψ_d = 0.5 Wb² the magnetising current is |φ_r|/M = 1.35 A, and
 /// the torque per q-current is (3/2)·n_p·(M/L_r)·|φ_r| = 2.06 N m/A. A 4-pole motor of these
-/// parameters is of the 1.1–1.5 kW class (the estimate of issue 12), whose rated torque at about
+/// parameters is of the 1.1–1.5 kW class, whose rated torque at about
 /// 1430 rpm is 7.3–10 N m: i_q = 3.6–4.9 A and |i_s| = 3.8–5.1 A. 4 A (2.8 A rms per phase)
 /// gives 7.7 N m; at the model's slip for that current (25.5 rad/s electrical, 8.1 % at 50 Hz,
 /// 1378 rpm) that is 1.12 kW, at the low end of that class.
@@ -199,7 +199,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
             s.ekf.rr = name == "rr-mismatch-est";
             s
         }
-        // Issue 12's headline: what a 400 V-class drive adds (540 V DC link, an update of the
+        // The real-drive question: what a 400 V-class drive adds (540 V DC link, an update of the
         // PWM once per period); `delay.comp=1` adds the compensation.
         "sine200-drive" => {
             let mut s = paper_base(name, SINE200, 0.25);

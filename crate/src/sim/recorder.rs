@@ -696,7 +696,7 @@ mod tests {
         assert!(r.envelope(&["nope"], 0.0, 1.0, 10).is_none());
     }
 
-    /// A falling edge inside one bucket: the old envelope drew (first t, min), (last t, max),
+    /// A falling edge inside one bucket: an envelope of (first t, min), (last t, max) would draw
     /// a rising sawtooth the samples do not have.
     #[test]
     fn a_falling_edge_stays_falling() {
