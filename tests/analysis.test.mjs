@@ -61,13 +61,42 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
   });
 });
 
+/** `imlab sweep SCENARIO ARGS...` as CSV text. */
+const cliSweep = (scenario, ...args) => execFileSync(cli, ['sweep', scenario, ...args], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+
+/** The column `name` of a sweep CSV's points, as numbers. */
+function sweepColumn(csv, name) {
+  const [header, ...lines] = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
+  const c = header.split(',').indexOf(name);
+  return lines.map((l) => Number(l.split(',')[c]));
+}
+
+test('input quoted in a message has its invisible and reordering characters escaped, by the page as by the core', () =>
+  // A pin whose key holds a right-to-left override: the page quotes the pin, the core the key.
+  withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=step&k\u202e1=5')}`, async (page) => {
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('not pin'));
+    const message = await page.textContent('#message');
+    assert.match(message, /ould not pin v=1&preset=step&k\\u\{202e\}1=5: field 'k\\u\{202e\}1' is not a scenario field/);
+    assert.doesNotMatch(message, /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u);
+  }));
+
 test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
   withPage('?v=1&preset=step#sweep=10,1000,12,0.02,0,0.2,euler.ifocpi', async (page) => {
     assert.equal(await sweepDone(page), 'done');
     const parallel = await download(page, '#sweep-csv');
-    const expected = execFileSync(cli, ['sweep', 'v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    const expected = cliSweep('v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2');
     assert.equal(parallel, expected);
     assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 2);
+    // The peak current each point needs, its largest in the table against the rated 4 A of the
+    // step preset, for each variant as the CLI measures it.
+    assert.match(parallel.split('\n')[0], /,peak_current_a$/);
+    assert.equal(await page.textContent('#sweep-table th:nth-child(7)'), 'peak |i_s| (A)');
+    const ifocpi = cliSweep('v=1&preset=step&controller=ifoc', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2');
+    for (const [variant, csv] of [['euler', expected], ['ifocpi', ifocpi]]) {
+      const peak = Math.max(...sweepColumn(csv, 'peak_current_a'));
+      assert.ok(peak > 0 && peak < 4, `${variant}: ${peak}`);
+      assert.equal(await page.textContent(`#sweep-table tr[data-variant=${variant}] td:nth-child(7)`), `${peak.toPrecision(3)} (rated 4.00)`);
+    }
     // The IFOC's PI alone at standstill never settles in 0.2 s runs (its MRAS is blind near zero
     // speed), so the core gives no bandwidth for it.
     assert.match(await page.textContent('#sweep-table tr[data-variant=ifocpi] td:nth-child(2)'), /^not given: it would rest on a point that had not settled$/);
@@ -75,6 +104,28 @@ test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
     await page.click('#sweep-run');
     await page.waitForFunction(() => document.getElementById('sweep-status').textContent.includes('on 1 worker.'));
     assert.equal(await download(page, '#sweep-csv'), parallel);
+  }));
+
+test('the points whose peak current is above the rated current are listed and marked', () =>
+  withPage('?v=1&preset=step&i_rated=1.52#sweep=10,1000,4,0.02,0,0.2,euler', async (page) => {
+    assert.equal(await sweepDone(page), 'done');
+    const csv = cliSweep('v=1&preset=step&i_rated=1.52', '--freqs', '10:1000:4');
+    assert.equal(await download(page, '#sweep-csv'), csv);
+    const freqs = sweepColumn(csv, 'freq_hz');
+    const peaks = sweepColumn(csv, 'peak_current_a');
+    const above = freqs.filter((_, i) => peaks[i] > 1.52).map((f) => `${f.toPrecision(4)} Hz`);
+    assert.deepEqual(above, ['215.4 Hz', '1000 Hz']);
+    const cell = page.locator('#sweep-table tr[data-variant=euler] td:nth-child(7)');
+    assert.equal(await cell.textContent(), `${Math.max(...peaks).toPrecision(3)} (rated 1.52); above the rating at 2: ${above.join(', ')}`);
+    assert.equal(await cell.getAttribute('class'), 'over-rating');
+  }));
+
+test('a sweep amplitude too small to measure is refused with the core\'s message, as by the CLI', () =>
+  withPage('?v=1&preset=step#sweep=100,100,1,1e-200,0,0.05,euler', async (page) => {
+    assert.equal(await sweepDone(page), 'failed');
+    const status = await page.textContent('#sweep-status');
+    assert.match(status, /field 'sine\.amp' = 1e-200: out of range, allowed an amplitude the sweep can measure/);
+    assert.doesNotMatch(status, /inf|NaN/);
   }));
 
 test('points that had not settled are drawn hollow, listed with the reason, and give no bandwidth', () =>
@@ -124,4 +175,14 @@ test('a seed sweep shows mean and min–max bands and its CSV equals the CLI', (
     const csv = await download(page, '#seeds-csv');
     const expected = execFileSync(cli, ['seeds', 'v=1&preset=step', '--n', '4'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
     assert.equal(csv, expected);
+  }));
+
+test('a seed range past the largest seed is refused before any run, naming the range', () =>
+  withPage('?v=1&preset=step&seed=9007199254740990', async (page) => {
+    await page.click('[data-tab=analysis]');
+    await page.fill('#seeds-form [name=n]', '4');
+    await page.click('#seeds-run');
+    await page.waitForFunction(() => document.getElementById('seeds-status').textContent.startsWith('Seed sweep failed'));
+    assert.equal(await page.textContent('#seeds-status'), 'Seed sweep failed: seeds 9007199254740990 to 9007199254740993 (4 from 9007199254740990): past the largest seed, 9007199254740991 (2^53 − 1); start at 9007199254740988 at most');
+    assert.equal(await page.locator('#seeds-plots .plot canvas').count(), 0);
   }));

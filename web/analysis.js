@@ -175,6 +175,23 @@ function bodePlot(title, unit, freqs, series, width, marker) {
   return [opts, data];
 }
 
+/**
+ * The table cell of the largest stator current |i_s| a variant's points need (each over its fit
+ * window, from the core), against the scenario's rated current; the points above the rating are
+ * listed and the cell is marked.
+ */
+function peakCell(points) {
+  const measured = points.filter((p) => !p.failure);
+  if (!measured.length) return el('td', { textContent: 'none measured' });
+  const peak = Math.max(...measured.map((p) => p.peak_current));
+  const rated = measured[0].rated_current;
+  const above = measured.filter((p) => p.peak_current > p.rated_current).map((p) => `${p.freq.toPrecision(4)} Hz`);
+  const text = `${peak.toPrecision(3)} (rated ${rated.toPrecision(3)})`;
+  return above.length
+    ? el('td', { className: 'over-rating', textContent: `${text}; above the rating at ${above.length}: ${above.join(', ')}` })
+    : el('td', { textContent: text });
+}
+
 export class Analysis {
   constructor({ scenario }) {
     this.scenario = scenario;
@@ -233,7 +250,7 @@ export class Analysis {
       bodeBox.append(div);
       new uPlot(opts, data, div);
     }
-    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points', 'unsettled points'].map((h) => el('th', { textContent: h }))));
+    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points', 'unsettled points', 'peak |i_s| (A)'].map((h) => el('th', { textContent: h }))));
     for (const v of variants) {
       const { points, summary } = out[v];
       const fmt = (x, unit, missing) => (x == null ? missing : `${x.toPrecision(4)} ${unit}`);
@@ -246,15 +263,20 @@ export class Analysis {
       const row = el('tr', {}, [VARIANTS[v].label, bandwidth, phase,
         `${worst.toPrecision(3)} of samples`, String(points.filter((p) => p.failure).length),
         unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0'].map((c) => el('td', { textContent: c })));
+      row.append(peakCell(points));
       row.dataset.variant = v;
       table.append(row);
     }
   }
 
-  /** Runs `n` seeds from the scenario's seed; resolves with {results, bands}. */
+  /**
+   * Runs `n` seeds from `first`; resolves with {results, bands}. The core gives the seeds, and
+   * refuses a range past the largest seed before any run.
+   */
   async seeds(n, first, steps, onProgress = () => {}) {
     const every = Math.max(1, Math.floor(steps / 1000));
-    const jobs = Array.from({ length: n }, (_, i) => ({ kind: 'seed', scenario: this.scenario(), seed: first + i, every }));
+    const [seeds] = await this.pool.run([{ kind: 'seed-range', first, n }]);
+    const jobs = seeds.map((seed) => ({ kind: 'seed', scenario: this.scenario(), seed, every }));
     const runs = await this.pool.run(jobs, (done) => onProgress(done / n));
     const [bands] = await this.pool.run([{ kind: 'bands', runs }]);
     const [csv] = await this.pool.run([{ kind: 'seeds-csv', results: runs.map((r) => r.result) }]);

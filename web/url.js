@@ -30,11 +30,21 @@ export function fragment(key) {
   return fragmentEntries().find(([k]) => k === key)?.[1] ?? null;
 }
 
-/** `text` cut to `max` characters for quoting in a message (address parts can be any length). */
+// The characters a message escapes: the Unicode categories Cc, Cf, Zl and Zp, as the core's.
+const INVISIBLE = /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u;
+const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
+
+/**
+ * `text` as a message quotes it (address parts can be any length and hold any character), as the
+ * core's `excerpt` (crate/src/quote.rs) does: the characters that do not show or that reorder the
+ * text around them escaped as Rust writes them (`\n`, `\u{202e}`), cut to 40 characters with the
+ * full length noted. The main thread holds no instance of the core (one there would compile the
+ * module a second time before the worker starts, delaying the first run), so tests/quote.test.mjs
+ * checks this against the core's, exported through the bindings, for every code point.
+ */
 export function excerpt(text, max = 40) {
-  // As the core quotes input (scenario::excerpt): control characters escaped, cut with the length.
   const chars = [...text];
-  const shown = chars.slice(0, max).map((c) => (/[\p{Cc}\u200b\ufeff]/u.test(c) ? `\\u{${c.codePointAt(0).toString(16)}}` : c)).join('');
+  const shown = chars.slice(0, max).map((c) => (INVISIBLE.test(c) ? ESCAPES[c] ?? `\\u{${c.codePointAt(0).toString(16)}}` : c)).join('');
   return chars.length > max ? `${shown}… (${chars.length} characters)` : shown;
 }
 

@@ -28,7 +28,8 @@
 //     (every run keeps `column` from then on: the next overlay of it replays none)
 //   {type: 'job', job, kind, ...}              → {type: 'job', job, result} | {type: 'job', job, error}
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
-//     'grid' {lo, hi, n}, 'bands' {runs}, 'summary' {points}, 'sweep-csv' {points}, 'seeds-csv' {results}
+//     'grid' {lo, hi, n}, 'seed-range' {first, n}, 'bands' {runs}, 'summary' {points},
+//     'sweep-csv' {points}, 'seeds-csv' {results}
 //     (stateless, so any worker of a pool can take any job)
 // Unprompted: {type: 'ready', presets, nisBand} once the core is loaded, and {type: 'crashed', message}
 // when the core trapped (a panic or running out of memory) or the worker hit an uncaught error:
@@ -39,7 +40,7 @@
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 
 const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
@@ -272,6 +273,7 @@ function withChanges(scenario, changes) {
 const JOBS = {
   grid: (d) => [...log_grid(d.lo, d.hi, d.n)],
   sweep: (d) => sweep_point(withChanges(d.scenario, d.changes), d.freq, d.amp, d.duration, d.offset),
+  'seed-range': (d) => [...seed_range(d.first, d.n)],
   seed: (d) => seed_run(d.scenario, d.seed, d.every),
   bands: (d) => seed_bands(d.runs),
   summary: (d) => sweep_summary(d.points),

@@ -3,7 +3,7 @@
 //! parallel workers and the tests share these functions.
 
 use crate::control::Reference;
-use crate::scenario::{short, Scenario, ScenarioError};
+use crate::scenario::{short, Scenario, ScenarioError, MAX_SEED};
 use crate::sim::{Row, Simulation};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -48,6 +48,11 @@ pub struct SweepPoint {
     pub phase_hat: f64,
     /// Fraction of samples whose commanded voltage exceeded the limit.
     pub saturated: f64,
+    /// Largest stator-current magnitude |i_s| = √(i_sa² + i_sb²) of the motor over the fit
+    /// window (A): the current the point needs.
+    pub peak_current: f64,
+    /// The scenario's rated current, the |i_s| to compare [`SweepPoint::peak_current`] with (A).
+    pub rated_current: f64,
     /// Why the run stopped early, if it did (the other figures are then NaN).
     pub failure: Option<String>,
     /// Change of |ω|/|ω_d| from the first to the second half of the settling check (dB).
@@ -69,6 +74,13 @@ pub struct SweepPoint {
 pub const SETTLED_GAIN_DB: f64 = 0.4;
 /// See [`SETTLED_GAIN_DB`] (degrees).
 pub const SETTLED_PHASE_DEG: f64 = 3.0;
+
+/// How far the amplitude fitted from ω_d itself over the fit window may be from the amplitude set
+/// (relative). The fit of an exact sine is within rounding of it (1e-12 relative at the default
+/// 0.02 rad/s, up to the Nyquist frequency); only an amplitude lost to rounding misses it: one
+/// whose square underflows (below about 1e-154 rad/s) or that vanishes against the offset in
+/// offset + amp·sin(·). Such an amplitude would give an infinite or meaningless gain.
+pub const SWEEP_AMP_TOL: f64 = 0.01;
 
 /// `count` log-spaced frequencies from `lo` to `hi` (Hz), after checking the request.
 pub fn checked_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, String> {
@@ -97,13 +109,17 @@ pub fn log_grid(lo: f64, hi: f64, count: usize) -> Vec<f64> {
 /// squares: x ≈ a·sin(wt) + b·cos(wt) + c. The constant is fitted too, because a window of whole
 /// periods rarely holds a whole number of samples, so an offset would leak into a and b.
 fn fundamental(rows: &[Row], w: f64, signal: impl Fn(&Row) -> f64) -> (f64, f64) {
+    fit(rows.iter().map(|r| (r.t, signal(r))), w)
+}
+
+/// [`fundamental`] of the samples (t, x).
+fn fit(samples: impl Iterator<Item = (f64, f64)>, w: f64) -> (f64, f64) {
     // Normal equations G·[a, b, c] = h with basis (sin, cos, 1).
     let mut g = [[0.0; 3]; 3];
     let mut h = [0.0; 3];
-    for r in rows {
-        let (s, c) = libm::sincos(w * r.t);
+    for (t, x) in samples {
+        let (s, c) = libm::sincos(w * t);
         let basis = [s, c, 1.0];
-        let x = signal(r);
         for i in 0..3 {
             h[i] += basis[i] * x;
             for j in 0..3 {
@@ -195,13 +211,44 @@ pub fn sweep_point(
             ),
         });
     }
+    let period = 1.0 / freq;
+    let w = 2.0 * PI * freq;
+    // Whether a row at time t belongs to the run's part from time `start` on (the row times are
+    // the loop's k·Ts).
+    let ts = s.ts;
+    let from = move |start: f64| move |t: f64| t >= start - 0.5 * ts;
+    let window_start = settings.duration - periods * period;
+    // ω_d over the fit window is known before the run: an amplitude the fit cannot resolve is
+    // refused here, by name, rather than measured as an infinite gain.
+    let in_window = from(window_start);
+    let (reference_amp, _) = fit(
+        (0..s.steps())
+            .map(|k| k as f64 * s.ts)
+            .filter(|&t| in_window(t))
+            .map(|t| (t, s.reference.sample(t).value)),
+        w,
+    );
+    let resolved = (reference_amp - settings.amp).abs() <= SWEEP_AMP_TOL * settings.amp;
+    // A NaN fit is not resolved either.
+    if !resolved {
+        return Err(unmeasurable(
+            settings,
+            format!(
+                "the fit of ω_d itself over the fit window finds {} rad/s, more than {} % off \
+                 (the amplitude's square underflows, or offset + amplitude rounds to the offset \
+                 {} rad/s)",
+                short(reference_amp),
+                SWEEP_AMP_TOL * 100.0,
+                short(settings.offset)
+            ),
+        ));
+    }
     let mut sim = Simulation::new(&s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
     let rows = sim.recorder().rows();
     // The index of the first row at or after time t.
-    let at = |t: f64| rows.partition_point(|r| r.t < t - 0.5 * s.ts);
-    let period = 1.0 / freq;
-    let window = &rows[at(settings.duration - periods * period)..];
+    let at = |t: f64| rows.partition_point(|r| !from(t)(r.t));
+    let window = &rows[at(window_start)..];
     let k = (periods / 2.0).floor().max(1.0);
     let halves = [
         &rows[at(settings.duration - 2.0 * k * period)..at(settings.duration - k * period)],
@@ -216,13 +263,14 @@ pub fn sweep_point(
             gain_hat: f64::NAN,
             phase_hat: f64::NAN,
             saturated: f64::NAN,
+            peak_current: f64::NAN,
+            rated_current: s.i_rated,
             failure: failure.or(Some("nothing recorded in the fit window".to_string())),
             gain_change_db: f64::NAN,
             phase_change: f64::NAN,
             unsettled: None,
         });
     }
-    let w = 2.0 * PI * freq;
     let (gain, phase) = response(window, w, |r| r.omega);
     let (gain_hat, phase_hat) = response(window, w, |r| r.omega_used);
     // ω only: at high frequencies the fundamental of the IFOC's MRAS estimate is buried in its
@@ -230,6 +278,25 @@ pub fn sweep_point(
     let [(g1, p1), (g2, p2)] = halves.map(|h| response(h, w, |r| r.omega));
     let gain_change_db = 20.0 * libm::log10(g2 / g1);
     let phase_change = libm::remainder((p2 - p1) * 180.0 / PI, 360.0);
+    let gain_db = 20.0 * libm::log10(gain);
+    // A response too small for the fit (its square underflows) reads as a gain of 0 or ∞.
+    let figures = [
+        ("gain_db", gain_db),
+        ("gain_hat", gain_hat),
+        ("phase", phase),
+        ("phase_hat", phase_hat),
+        ("gain_change_db", gain_change_db),
+        ("phase_change", phase_change),
+    ];
+    if let Some((name, value)) = figures.iter().find(|(_, v)| !v.is_finite()) {
+        return Err(unmeasurable(
+            settings,
+            format!(
+                "at {} Hz the response reads as {name} = {value}, too small for the fit",
+                short(freq)
+            ),
+        ));
+    }
     let settled =
         gain_change_db.abs() <= SETTLED_GAIN_DB && phase_change.abs() <= SETTLED_PHASE_DEG;
     // The scenario's own limit: the box, the circle or the hexagon.
@@ -239,14 +306,22 @@ pub fn sweep_point(
         .filter(|r| limit.exceeds(&[r.u_a_cmd, r.u_b_cmd]))
         .count() as f64
         / rows.len() as f64;
+    // The largest |i_s|² first: √ is monotonic, so its root is the largest |i_s|.
+    let peak_current = window
+        .iter()
+        .map(|r| r.i_sa * r.i_sa + r.i_sb * r.i_sb)
+        .fold(0.0, f64::max)
+        .sqrt();
     Ok(SweepPoint {
         freq,
         gain,
-        gain_db: 20.0 * libm::log10(gain),
+        gain_db,
         phase: lag_degrees(phase),
         gain_hat,
         phase_hat: lag_degrees(phase_hat),
         saturated,
+        peak_current,
+        rated_current: s.i_rated,
         failure: None,
         gain_change_db,
         phase_change,
@@ -261,17 +336,26 @@ pub fn sweep_point(
     })
 }
 
+/// The error for a sweep amplitude that cannot be measured, with the reason.
+fn unmeasurable(settings: &SweepSettings, reason: String) -> ScenarioError {
+    ScenarioError::OutOfRange {
+        key: "sine.amp".to_string(),
+        value: settings.amp,
+        allowed: format!("an amplitude the sweep can measure: {reason}; raise the amplitude"),
+    }
+}
+
 /// The sweep as CSV: one line per frequency, then a `#` line with the summary. `settled` is
-/// false for a failed run too.
+/// false for a failed run too; `peak_current_a` is the largest |i_s| over the fit window (A).
 pub fn sweep_csv(points: &[SweepPoint]) -> String {
     let mut out = String::from(
         "freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure,\
-         settled,gain_change_db,phase_change_deg\n",
+         settled,gain_change_db,phase_change_deg,peak_current_a\n",
     );
     for p in points {
         let failure = p.failure.as_deref().unwrap_or("").replace(',', ";");
         out += &format!(
-            "{},{},{},{},{},{},{},{failure},{},{},{}\n",
+            "{},{},{},{},{},{},{},{failure},{},{},{},{}\n",
             p.freq,
             p.gain,
             p.gain_db,
@@ -281,7 +365,8 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
             p.saturated,
             p.failure.is_none() && p.unsettled.is_none(),
             p.gain_change_db,
-            p.phase_change
+            p.phase_change,
+            p.peak_current
         );
     }
     let s = summarise(points);
@@ -412,6 +497,28 @@ pub struct SeedRun {
     pub error: Vec<f64>,
     /// ω − ω̂ at those times (rad/s).
     pub estimate: Vec<f64>,
+}
+
+/// Most seeds one seed sweep runs.
+pub const MAX_SEED_RUNS: u64 = 10_000;
+
+/// The seeds of a seed sweep, `first` to `first + count − 1`, after checking that there are 1 to
+/// [`MAX_SEED_RUNS`] of them and that the last is a seed ([`MAX_SEED`] at most): a range that
+/// would run past it is refused before any run, naming the range.
+pub fn seed_range(first: u64, count: u64) -> Result<std::ops::RangeInclusive<u64>, String> {
+    if !(1..=MAX_SEED_RUNS).contains(&count) {
+        return Err(format!("{count} seeds: expected 1 to {MAX_SEED_RUNS} runs"));
+    }
+    // In u128: first + count − 1 may pass u64.
+    let last = u128::from(first) + u128::from(count) - 1;
+    if last > u128::from(MAX_SEED) {
+        return Err(format!(
+            "seeds {first} to {last} ({count} from {first}): past the largest seed, {MAX_SEED} \
+             (2^53 − 1); start at {} at most",
+            MAX_SEED.saturating_sub(count - 1)
+        ));
+    }
+    Ok(first..=first + (count - 1))
 }
 
 /// Runs `base` with noise seed `seed`; the figures use every sample, the traces keep every
@@ -608,6 +715,8 @@ mod tests {
             gain_hat: gain,
             phase_hat: phase,
             saturated: 0.0,
+            peak_current: 1.0,
+            rated_current: 5.0,
             failure: None,
             gain_change_db: 0.0,
             phase_change: 0.0,

@@ -4,7 +4,8 @@
 //! Data flows one way: [`params`] → [`model`] (plant) → [`observer`] (EKF) → [`control`]
 //! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
-//! runs many simulations (frequency responses, seed sweeps).
+//! runs many simulations (frequency responses, seed sweeps); [`quote`] is how every message quotes
+//! user input.
 
 pub mod analysis;
 pub mod control;
@@ -12,6 +13,7 @@ pub mod inverter;
 pub mod model;
 pub mod observer;
 pub mod params;
+pub mod quote;
 pub mod rng;
 pub mod scenario;
 pub mod sim;

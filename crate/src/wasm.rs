@@ -2,7 +2,7 @@
 
 use crate::analysis;
 use crate::params::Lumped;
-use crate::scenario::{Scenario, PRESETS};
+use crate::scenario::{Scenario, MAX_SEED, PRESETS};
 use crate::sim::{self, COLUMNS};
 use js_sys::{Array, Float64Array};
 use serde::Serialize;
@@ -118,7 +118,7 @@ impl Simulation {
         let c = COLUMNS
             .iter()
             .position(|c| *c == name)
-            .ok_or_else(|| js_error(format!("no column '{name}'")))?;
+            .ok_or_else(|| js_error(format!("no column '{}'", crate::quote::excerpt(name))))?;
         let mut out = Vec::with_capacity(self.inner.len());
         self.inner.visit(0, usize::MAX, &mut |_, row| {
             out.push(row.get(c));
@@ -317,16 +317,38 @@ pub fn sweep_csv(points: JsValue) -> Result<String, JsValue> {
     Ok(analysis::sweep_csv(&points))
 }
 
+/// `value` as a seed, or a message naming it as `what`.
+fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
+    if !(0.0..=MAX_SEED as f64).contains(&value) || value.fract() != 0.0 {
+        return Err(js_error(format!(
+            "{what} {value}: expected a whole number from 0 to 2^53 − 1"
+        )));
+    }
+    Ok(value as u64)
+}
+
+/// The seeds of a seed sweep of `count` seeds from `first`, in order; throws, naming the range,
+/// when it would run past the largest seed (2^53 − 1), before any run.
+#[wasm_bindgen]
+pub fn seed_range(first: f64, count: f64) -> Result<Vec<f64>, JsValue> {
+    let range = analysis::seed_range(whole("first seed", first)?, whole("seeds", count)?)
+        .map_err(js_error)?;
+    // Every seed is at most 2^53 − 1, so each is a JavaScript number exactly.
+    Ok(range.map(|seed| seed as f64).collect())
+}
+
+/// `text` as every message of the core quotes input: the characters of the Unicode categories
+/// Cc, Cf, Zl and Zp escaped (`\u{202e}`), cut to 40 characters with the full length noted.
+#[wasm_bindgen]
+pub fn excerpt(text: &str) -> String {
+    crate::quote::excerpt(text)
+}
+
 /// One seed's run of `scenario`, keeping every `every`-th sample of its error traces.
 #[wasm_bindgen]
 pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
-    if !(0.0..=9_007_199_254_740_991.0).contains(&seed) || seed.fract() != 0.0 {
-        return Err(js_error(format!(
-            "seed {seed}: expected a whole number from 0 to 2^53 − 1"
-        )));
-    }
-    let seed = seed as u64;
+    let seed = whole("seed", seed)?;
     to_js(&analysis::seed_run(&s, seed, every).map_err(js_error)?)
 }
 

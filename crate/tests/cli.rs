@@ -236,6 +236,53 @@ fn usage_errors_exit_2_and_name_the_option_and_value() {
             &["seeds", "step", "--first", "-1"],
             &["--first '-1'", "≥ 0"],
         ),
+        (
+            &[
+                "sweep",
+                "step",
+                "--freqs",
+                "100",
+                "--duration",
+                "0.05",
+                "--amp",
+                "1e-200",
+            ],
+            &["'sine.amp' = 1e-200", "can measure"],
+        ),
+        (
+            &[
+                "seeds",
+                "step",
+                "--n",
+                "2",
+                "--first",
+                "18446744073709551615",
+            ],
+            &[
+                "seeds 18446744073709551615 to 18446744073709551616",
+                "largest seed, 9007199254740991",
+            ],
+        ),
+        (
+            &["seeds", "step", "--n", "2", "--first", "9007199254740991"],
+            &["seeds 9007199254740991 to 9007199254740992"],
+        ),
+        // Refused at once: run, it would take minutes.
+        (
+            &[
+                "run",
+                "v=1&preset=sine200-drive&ts=0.000001&duration=1&substeps=1000",
+                "--out",
+                "/dev/null",
+            ],
+            &[
+                "1000000 samples",
+                "7000 plant RK4 steps a sample",
+                "= 7000000000 steps",
+                "more than the 10000000 allowed",
+                "lower 'substeps'",
+            ],
+        ),
         (&["describe"], &["<SCENARIO>"]),
         (&["list", "step"], &["'step'"]),
         (&["nonsense"], &["'nonsense'"]),
@@ -249,6 +296,57 @@ fn usage_errors_exit_2_and_name_the_option_and_value() {
         for word in *words {
             assert!(stderr.contains(word), "{args:?}: '{word}' not in {stderr}");
         }
+        // A seed range is refused before the first run.
+        assert!(!stderr.contains("imlab seeds: 1/"), "{args:?}: {stderr}");
+    }
+}
+
+#[test]
+fn invisible_and_reordering_characters_are_quoted_as_escapes() {
+    // A right-to-left override, an isolate, a zero-width joiner, a line separator and a tag:
+    // echoed raw, each would change how the rest of the message reads.
+    let cases: [(Vec<OsString>, &str); 4] = [
+        (
+            vec!["run".into(), "v=1&preset=step&k\u{202e}1=5".into()],
+            "'k\\u{202e}1'",
+        ),
+        (
+            vec![
+                "run".into(),
+                "step".into(),
+                "--every".into(),
+                "\u{2066}7\u{2069}".into(),
+            ],
+            "--every '\\u{2066}7\\u{2069}'",
+        ),
+        (
+            vec![
+                "sweep".into(),
+                "step".into(),
+                "--freqs".into(),
+                "1\u{200d}0\u{2028}".into(),
+            ],
+            "'1\\u{200d}0\\u{2028}'",
+        ),
+        (
+            vec!["run".into(), "step".into(), "--x\u{e0041}".into()],
+            "--x\\u{e0041}",
+        ),
+    ];
+    for (args, quoted) in &cases {
+        let out = output(args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(quoted),
+            "{args:?}: {quoted} not in {stderr}"
+        );
+        assert!(
+            !stderr
+                .chars()
+                .any(|c| c != '\n' && imlab::quote::is_invisible(c)),
+            "{args:?}: {stderr:?}"
+        );
     }
 }
 
@@ -356,13 +454,16 @@ fn sweep_marks_points_that_had_not_settled_in_the_csv_its_summary_and_on_stderr(
         assert_eq!(
             lines[0],
             "freq_hz,gain,gain_db,phase_deg,gain_hat,phase_hat_deg,saturated,failure,\
-             settled,gain_change_db,phase_change_deg",
+             settled,gain_change_db,phase_change_deg,peak_current_a",
         );
         for line in &lines[1..3] {
             let fields: Vec<&str> = line.split(',').collect();
-            assert_eq!(fields.len(), 11, "{line}");
+            assert_eq!(fields.len(), 12, "{line}");
             assert_eq!(fields[8], settled, "{line}");
             assert!(fields[9].parse::<f64>().unwrap().is_finite(), "{line}");
+            // At 40 rad/s the magnetising and torque currents give a few amperes.
+            let peak: f64 = fields[11].parse().unwrap();
+            assert!((1.0..20.0).contains(&peak), "{line}");
         }
         assert_eq!(lines[3..], [summary]);
         assert_eq!(

@@ -81,3 +81,53 @@ fn the_saturated_share_of_a_point_is_against_the_scenarios_own_limit() {
     );
     assert!(boxed < 0.01 && hex > 0.3, "box {boxed}, hex {hex}");
 }
+
+#[test]
+fn the_peak_current_of_a_point_is_the_largest_stator_current_of_its_fit_window() {
+    // The same run as an ordinary scenario: 10 whole periods of 100 Hz in the second half of
+    // 0.2 s, so the fit window starts at 0.1 s.
+    let step = preset("step").unwrap();
+    let point = sweep_point(&step, 100.0, &SweepSettings::default()).unwrap();
+    let s = imlab::scenario::Scenario::parse(
+        "v=1&preset=step&ref=sine&sine.amp=0.02&sine.freq=100&sine.offset=0&duration=0.2",
+    )
+    .unwrap();
+    let mut sim = imlab::sim::Simulation::new(&s, 1).unwrap();
+    sim.run().unwrap();
+    let rows = sim.recorder().rows();
+    let magnitude = |r: &imlab::sim::Row| (r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt();
+    let window = rows.iter().filter(|r| r.t >= 0.1 - 0.5 * s.ts);
+    let peak = window.map(magnitude).fold(0.0, f64::max);
+    assert_eq!(point.peak_current, peak);
+    // The start (|i_s(0)| = 2√2 A) lies outside the window and is larger: the window decides.
+    assert!(magnitude(&rows[0]) > peak, "{peak}");
+    assert_eq!(point.rated_current, s.i_rated);
+}
+
+#[test]
+fn an_amplitude_too_small_to_measure_is_refused_naming_it() {
+    let step = preset("step").unwrap();
+    // Its square underflows; against a 100 rad/s offset it rounds away; both before any run.
+    for (amp, offset) in [(1e-200, 0.0), (1e-20, 100.0)] {
+        let settings = SweepSettings {
+            amp,
+            duration: 0.05,
+            offset,
+        };
+        let err = sweep_point(&step, 100.0, &settings)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains(&format!("'sine.amp' = {amp:e}")) && err.contains("can measure"),
+            "{err}"
+        );
+    }
+    // Tiny but resolved amplitudes are measured, with finite figures.
+    let settings = SweepSettings {
+        amp: 1e-9,
+        duration: 0.05,
+        offset: 0.0,
+    };
+    let p = sweep_point(&step, 100.0, &settings).unwrap();
+    assert!(p.gain_db.is_finite() && p.phase.is_finite(), "{p:?}");
+}

@@ -149,3 +149,34 @@ fn figures_and_transient_are_the_core_values() {
         serde_wasm_bindgen::from_value(Simulation::new("step").unwrap().report().unwrap()).unwrap();
     assert!(report.figures.is_none());
 }
+
+#[wasm_bindgen_test]
+fn quoting_seed_ranges_and_work_are_the_cores() {
+    // The page quotes with the core's excerpt: the CLI's escapes and cut.
+    for text in [
+        "a\u{202e}b\u{2066}c\u{200d}\u{2028}\u{ad}\u{e0041}",
+        &"x".repeat(90),
+    ] {
+        assert_eq!(imlab::wasm::excerpt(text), imlab::quote::excerpt(text));
+    }
+    assert_eq!(imlab::wasm::excerpt("k\u{202e}1"), "k\\u{202e}1");
+    // A seed range past 2^53 − 1 is refused with the range before any run.
+    assert_eq!(
+        imlab::wasm::seed_range(9_007_199_254_740_990.0, 2.0).unwrap(),
+        [9_007_199_254_740_990.0, 9_007_199_254_740_991.0]
+    );
+    let e = error_text(imlab::wasm::seed_range(9_007_199_254_740_991.0, 4.0).unwrap_err());
+    assert!(
+        e.contains("seeds 9007199254740991 to 9007199254740994"),
+        "{e}"
+    );
+    let e = error_text(imlab::wasm::seed_range(0.5, 4.0).unwrap_err());
+    assert!(e.contains("first seed 0.5"), "{e}");
+    // The work limit refuses a scenario in the page as in the CLI.
+    let e = error_text(
+        Simulation::new("v=1&preset=sine200-drive&ts=0.000001&duration=1&substeps=1000")
+            .err()
+            .unwrap(),
+    );
+    assert!(e.contains("= 7000000000 steps"), "{e}");
+}

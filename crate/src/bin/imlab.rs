@@ -3,7 +3,8 @@
 use clap::error::{ContextKind, ContextValue};
 use clap::{Args, Parser, Subcommand};
 use imlab::analysis::{
-    checked_grid, seed_run, seeds_csv, summarise, sweep_csv, sweep_point, SweepSettings,
+    checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
+    SweepSettings, MAX_SEED_RUNS,
 };
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::{report, Figure, Simulation};
@@ -119,7 +120,8 @@ enum Command {
             allow_hyphen_values = true
         )]
         n: String,
-        /// First seed, a whole number ≥ 0 [default: the scenario's seed]
+        /// First seed, a whole number ≥ 0; the last seed run is at most 2^53 − 1 [default: the
+        /// scenario's seed]
         #[arg(long, value_name = "SEED", allow_hyphen_values = true)]
         first: Option<String>,
     },
@@ -259,14 +261,15 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             let n = number(
                 "--n",
                 &n,
-                |n: &u64| (1..=10_000).contains(n),
-                "a whole number from 1 to 10000",
+                |n: &u64| (1..=MAX_SEED_RUNS).contains(n),
+                &format!("a whole number from 1 to {MAX_SEED_RUNS}"),
             )?;
             let first = match first {
                 Some(value) => number("--first", &value, |_: &u64| true, "a whole number ≥ 0")?,
                 None => s.seed,
             };
-            seeds(&s, n, first, out)
+            let range = seed_range(first, n).map_err(|e| format!("--first, --n: {e}"))?;
+            seeds(&s, range, out)
         }
     }
 }
@@ -448,10 +451,15 @@ fn sweep(
         .map_err(stdout_stop)
 }
 
-/// Runs the scenario with seeds `first`, `first + 1`, … (`n` of them), with progress on stderr,
-/// and writes each run's figures as CSV.
-fn seeds(s: &Scenario, n: u64, first: u64, out: &mut impl Write) -> Result<(), Stop> {
-    let results: Result<Vec<_>, _> = (first..first.saturating_add(n))
+/// Runs the scenario with each seed of `range`, with progress on stderr, and writes each run's
+/// figures as CSV.
+fn seeds(
+    s: &Scenario,
+    range: std::ops::RangeInclusive<u64>,
+    out: &mut impl Write,
+) -> Result<(), Stop> {
+    let n = range.end() - range.start() + 1;
+    let results: Result<Vec<_>, _> = range
         .enumerate()
         .map(|(i, seed)| {
             to_stderr(format_args!("\rimlab seeds: {}/{n}   ", i + 1));

@@ -8,8 +8,9 @@ use crate::inverter::Shape;
 use crate::observer::Predictor;
 use serde::Serialize;
 
-/// Largest integer a JavaScript number holds exactly (2^53 − 1), the bound for seeds.
-const MAX_SEED: f64 = 9_007_199_254_740_991.0;
+/// Largest seed: the largest integer a JavaScript number holds exactly (2^53 − 1), so that the
+/// page reads every seed as the CLI does.
+pub const MAX_SEED: u64 = (1 << 53) - 1;
 
 /// Longest simulated time accepted (s).
 pub const MAX_DURATION: f64 = 20.0;
@@ -354,7 +355,7 @@ fn table() -> Vec<Field> {
         number("init_err", "observer", "", closed(0.0, 1.0), "initial relative estimation error", at!(init_error)),
         number("perfect", "observer", "", whole(0.0, 1.0), "perfect observer: controller gets the true state (0/1)", flag!(perfect)),
         number("noise", "noise", "A", closed(0.0, 10.0), "current-measurement noise std", at!(noise)),
-        number("seed", "noise", "", whole(0.0, MAX_SEED), "noise seed", at!(seed)),
+        number("seed", "noise", "", whole(0.0, MAX_SEED as f64), "noise seed", at!(seed)),
     ];
     v.extend(motor!(plant));
     v.extend(motor!(model));

@@ -8,8 +8,10 @@
 mod fields;
 mod presets;
 
-pub use fields::{FieldInfo, MAX_DURATION};
+pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
 pub use presets::{preset, Preset, PRESETS};
+// The codec's errors quote input with these.
+pub use crate::quote::{excerpt, EXCERPT_CHARS};
 
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::{Limit, Shape};
@@ -28,6 +30,23 @@ pub const CODEC_VERSION: u32 = 1;
 pub const MAX_SCENARIO_BYTES: usize = 16 * 1024;
 /// Most samples one run may take.
 pub const MAX_STEPS: usize = 2_000_000;
+/// Most plant RK4 steps one run may take: samples × [`Scenario::plant_steps_per_sample`]. The
+/// plant's integration is the one cost of a sample that a field multiplies (up to 8,000 RK4
+/// steps a sample, against about ten steps' worth for everything else a sample does), so
+/// [`MAX_STEPS`] alone bounds a run's time only with one substep.
+///
+/// Chosen so that the plant's work adds about a second at most to any run. Measured on
+/// 2026-11-25 on this machine (2 cores, shared with other builds: load 4–6), user time of the
+/// release build: the work-bound worst case, the heaviest sample (7-state EKF with the RK4
+/// predictor, PWM, the perfect observer's prediction) at exactly this limit, `imlab run
+/// 'v=1&preset=sine200-drive&ekf=rk4&ekf.load=1&ekf.rr=1&delay.comp=1&perfect=1&substeps=1000&duration=0.0625'
+/// --out /dev/null` (1,250 samples × 8,000 steps), 1.1 s. The worst cases bound by the samples
+/// instead, that sample at the largest trace (`…&duration=20&ts=0.00001878`, 8.5 million
+/// steps): `imlab metrics` 4.1 s, `imlab run … --out /dev/null` 12.8 s, of which writing the
+/// 1.2 GB of CSV takes about 9 s whatever the work (the plain
+/// `v=1&preset=step&duration=20&ts=0.00001878` takes 10.0 s); that share is bounded by the
+/// trace's size limit ([`crate::sim::MAX_TRACE_BYTES`]), not by this one.
+pub const MAX_WORK: u64 = 10_000_000;
 
 /// An extra load torque applied from a given time on, unknown to the controller and observer.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -112,30 +131,6 @@ pub struct Scenario {
     /// Rated stator current of the motor: the amplitude of its rated phase current, which is
     /// |i_s| at rated load in the amplitude-invariant a–b frame (A).
     pub i_rated: f64,
-}
-
-/// Longest excerpt of user input quoted in a message (characters).
-pub const EXCERPT_CHARS: usize = 40;
-
-/// `text` as quoted in a message: control and other invisible characters written as escapes
-/// (`\n`, `\u{7f}`), cut to [`EXCERPT_CHARS`] characters with the full length noted.
-pub fn excerpt(text: &str) -> String {
-    let count = text.chars().count();
-    let mut out: String = text
-        .chars()
-        .take(EXCERPT_CHARS)
-        .flat_map(|c| {
-            if c.is_control() || c == '\u{200b}' || c == '\u{feff}' {
-                c.escape_default().collect::<Vec<_>>()
-            } else {
-                vec![c]
-            }
-        })
-        .collect();
-    if count > EXCERPT_CHARS {
-        out.push_str(&format!("… ({count} characters)"));
-    }
-    out
 }
 
 /// `v` for a message: the codec's shortest form, or scientific notation where that is long
@@ -466,7 +461,49 @@ impl Scenario {
                 ),
             });
         }
+        // At most MAX_STEPS × 8,000 here, far inside u64.
+        let per_sample = self.plant_steps_per_sample();
+        let work = samples as u64 * per_sample;
+        if work > MAX_WORK {
+            let substeps = self.substeps;
+            let plant = if self.drive.pwm {
+                format!("'substeps' = {substeps} on each of 7 PWM intervals")
+            } else {
+                format!("'substeps' = {substeps}")
+            };
+            let how = if per_sample / u64::from(substeps) > if self.drive.pwm { 7 } else { 1 } {
+                format!(
+                    "{plant}, and {substeps} for the perfect observer's prediction ('delay.comp')"
+                )
+            } else {
+                plant
+            };
+            let pwm_hint = if self.drive.pwm {
+                ", or turn 'pwm' off"
+            } else {
+                ""
+            };
+            return Err(ScenarioError::TooLarge {
+                what: format!(
+                    "the run's work, {samples} samples ('duration'/'ts' = {duration} s / {ts} s) × \
+                     {per_sample} plant RK4 steps a sample ({how}) = {work} steps, is more than the \
+                     {MAX_WORK} allowed; lower 'substeps' or 'duration', or raise 'ts'{pwm_hint}"
+                ),
+            });
+        }
         Ok(())
+    }
+
+    /// RK4 steps of the plant per sample: `substeps` on each of the up to seven intervals of
+    /// constant voltage of a PWM period (one interval without PWM), and `substeps` more where
+    /// the perfect observer's delay compensation advances the true state to the next sample.
+    pub fn plant_steps_per_sample(&self) -> u64 {
+        let intervals = if self.drive.pwm { 7 } else { 1 };
+        let prediction = self.drive.delay
+            && self.drive.delay_comp
+            && self.perfect
+            && self.controller == ControllerKind::Backstepping;
+        u64::from(self.substeps) * (intervals + u64::from(prediction))
     }
 
     /// The inverter's voltage limit.
@@ -660,6 +697,72 @@ mod tests {
     }
 
     #[test]
+    fn the_work_limit_refuses_runaway_substeps_and_keeps_the_presets_and_long_runs() {
+        for p in PRESETS {
+            for text in [
+                p.name.to_string(),
+                format!("v=1&preset={}&duration=20", p.name),
+            ] {
+                let s = Scenario::parse(&text).unwrap();
+                assert!(s.steps() as u64 * s.plant_steps_per_sample() <= MAX_WORK);
+            }
+        }
+        // The largest trace at 20 s, also with PWM; the finest integration of short runs.
+        for text in [
+            "v=1&preset=step&duration=20&ts=0.00001878",
+            "v=1&preset=sine200-drive&duration=20&ts=0.00001878",
+            "v=1&preset=step&substeps=1000",
+            "v=1&preset=sine200&substeps=1000",
+            "v=1&preset=sine200-drive&substeps=100",
+            // Exactly at the limit: 10,000 samples × 1,000 substeps.
+            "v=1&preset=step&duration=0.5&substeps=1000",
+        ] {
+            Scenario::parse(text).unwrap();
+        }
+        // One sample more.
+        let err = Scenario::parse("v=1&preset=step&duration=0.50005&substeps=1000")
+            .unwrap_err()
+            .to_string();
+        assert!(
+            err.contains("10001 samples") && err.contains("= 10001000 steps"),
+            "{err}"
+        );
+        let err = Scenario::parse("v=1&preset=sine200-drive&ts=0.000001&duration=1&substeps=1000")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(
+            err,
+            "the run's work, 1000000 samples ('duration'/'ts' = 1 s / 0.000001 s) × 7000 plant \
+             RK4 steps a sample ('substeps' = 1000 on each of 7 PWM intervals) = 7000000000 \
+             steps, is more than the 10000000 allowed; lower 'substeps' or 'duration', or raise \
+             'ts', or turn 'pwm' off"
+        );
+        // The perfect observer's delay compensation integrates the plant once more a sample.
+        let s =
+            Scenario::parse("v=1&preset=sine200-drive&perfect=1&delay.comp=1&substeps=3").unwrap();
+        assert_eq!(s.plant_steps_per_sample(), 24);
+        let err = Scenario::parse(
+            "v=1&preset=step&duration=0.5&perfect=1&delay=1&delay.comp=1&substeps=600",
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(
+            err.contains(
+                "1200 plant RK4 steps a sample ('substeps' = 600, and 600 for the \
+                 perfect observer's prediction ('delay.comp'))"
+            ),
+            "{err}"
+        );
+        // Leniently, the field that would exceed it is left out and named.
+        let (s, errors) = Scenario::parse_lenient("v=1&preset=ramp&substeps=1000&k1=1500").unwrap();
+        assert_eq!(s.encode(), "v=1&preset=ramp&k1=1500");
+        assert!(
+            errors[0].to_string().contains("14000000 steps"),
+            "{errors:?}"
+        );
+    }
+
+    #[test]
     fn long_input_is_refused_at_once_with_the_cap() {
         let text = format!("v=1&preset=step&{}", "k1=1&".repeat(4000));
         let err = Scenario::parse(&text).unwrap_err().to_string();
@@ -682,6 +785,12 @@ mod tests {
         assert!(err.contains("1\\n\\u{1b}[31m999"), "{err}");
         assert!(err.contains("(507 characters)"), "{err}");
         assert!(err.chars().count() < 200, "{err}");
+        // A right-to-left override in a key would reverse the rest of the message as shown.
+        let err = Scenario::parse("v=1&preset=step&k\u{202e}1=5")
+            .unwrap_err()
+            .to_string();
+        assert!(err.contains("field 'k\\u{202e}1'"), "{err}");
+        assert!(!err.chars().any(crate::quote::is_invisible), "{err:?}");
     }
 }
 
@@ -794,7 +903,7 @@ mod properties {
             if let Err(e) = Scenario::parse(&text) {
                 let m = e.to_string();
                 prop_assert!(names_something(&m) || m.contains("unknown preset"), "{}", m);
-                prop_assert!(!m.chars().any(char::is_control), "{:?}", m);
+                prop_assert!(!m.chars().any(crate::quote::is_invisible), "{:?}", m);
             }
         }
 

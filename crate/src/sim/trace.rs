@@ -36,7 +36,7 @@ impl Overview {
                 COLUMNS
                     .iter()
                     .position(|c| *c == n)
-                    .ok_or_else(|| format!("no column '{n}'"))
+                    .ok_or_else(|| format!("no column '{}'", crate::quote::excerpt(n)))
             })
             .collect()
     }
