@@ -192,7 +192,11 @@ function applyDescription(info) {
   else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
   walkthrough.describe(info);
   ui.preset.value = presetNamed(info.encoded);
-  ui.presetDoc.textContent = state.presets.find((p) => p.name === ui.preset.value)?.description ?? '';
+  // The preset's description, and what this run changes of it (a lesson's run may hold another
+  // speed or length than the preset says).
+  const changed = info.encoded.split('&').slice(2).map((part) => part.split('=')[0]);
+  const description = state.presets.find((p) => p.name === ui.preset.value)?.description ?? '';
+  ui.presetDoc.textContent = changed.length ? `${description}. This run changes: ${changed.join(', ')}.` : description;
   ui.run.disabled = state.running;
   markInvalid(ui.form, null);
 }
@@ -496,10 +500,10 @@ function showKeyFigures(figures, rated) {
     const span = document.createElement('span');
     if (f.name === 'current_peak' && rated) span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
     else if (f.name === 'speed_error_final' && f.trend) {
-      span.textContent = `final ω − ω_d ${value} (${f.trend.settled ? 'settled' : 'still changing'})`;
+      span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating' }[f.trend.state]})`;
       if (!f.trend.settled) span.className = 'unsettled';
     } else if (f.name === 'mean_nis' && low && high) {
-      span.textContent = `mean NIS ${value} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
+      span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
     } else span.textContent = `${f.label} ${value}`;
     return span;
   });
@@ -512,10 +516,11 @@ function showKeyFigures(figures, rated) {
  * [short text, the detail for its tooltip].
  */
 function trendText(f) {
-  const { rate, over, tolerance, settled } = f.trend;
+  const { rate, over, tolerance, scatter, state } = f.trend;
   const unit = f.unit ? ` ${f.unit}` : '';
-  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s; settled means it changes by at most ${Number(tolerance.toPrecision(2))}${unit} over that time`;
-  if (settled) return ['settled by the end of the run', fit];
+  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it; settled means both within ${Number(tolerance.toPrecision(2))}${unit}`;
+  if (state === 'settled') return ['settled by the end of the run', fit];
+  if (state === 'fluctuating') return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
   return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer`, fit];
 }
 

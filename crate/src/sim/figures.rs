@@ -48,21 +48,27 @@ pub struct Figure {
     pub trend: Option<Trend>,
 }
 
-/// How a value read at the last sample was still moving: the slope of a least-squares line
-/// through its samples over the last tenth of the recorded run. It has settled when that line
-/// changes by at most `tolerance` over the window; otherwise the run ended inside a transient and
-/// the value is not final.
+/// How a value read at the last sample was still moving: a least-squares line through its
+/// samples over the last tenth of the recorded run. It has settled when that line changes by at
+/// most `tolerance` over the window and the samples scatter about it by at most as much;
+/// otherwise the run ended inside a transient ("changing") or the value swings too widely for
+/// its last sample to stand for it ("fluctuating"), and it is not a final value.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Trend {
     /// Slope of the fitted line (the figure's unit per second).
     pub rate: f64,
     /// Length of the window it is fitted over: the last tenth of the recorded run (s).
     pub over: f64,
-    /// The most the fitted line may change over the window for the value to count as settled
-    /// (the figure's unit): the largest of a fixed tolerance, 2 % of the value and twice the
-    /// samples' scatter about the line.
+    /// The most the fitted line may change over the window, and the samples may scatter about
+    /// it, for the value to count as settled (the figure's unit): the larger of a fixed
+    /// tolerance and 2 % of the value.
     pub tolerance: f64,
-    /// |rate|·over ≤ tolerance.
+    /// Standard deviation of the samples about the line (the figure's unit).
+    pub scatter: f64,
+    /// "settled", "changing" (the line moves by more than the tolerance and by more than twice
+    /// the scatter) or "fluctuating" (the scatter exceeds the tolerance).
+    pub state: &'static str,
+    /// state == "settled".
     pub settled: bool,
 }
 
@@ -83,7 +89,7 @@ const FLUX_TREND_TOL: f64 = 1e-3;
 const TREND_RELATIVE: f64 = 0.02;
 
 /// A change within twice the samples' scatter about the line cannot be told from the ripple of
-/// a periodic reference or from noise, so it counts as settled too.
+/// a periodic reference or from noise: it is not called a trend.
 const TREND_SCATTER: f64 = 2.0;
 
 /// Sums for a least-squares line through (t − t0, y) of several signals at once.
@@ -553,14 +559,23 @@ fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
     let over = last.t - trend_t0;
     let trend_of = |k: usize, value: f64, tol: f64| {
         let rate = trend.slope(k)?;
-        let tolerance = tol
-            .max(TREND_RELATIVE * value.abs())
-            .max(TREND_SCATTER * trend.scatter(k, rate));
+        let tolerance = tol.max(TREND_RELATIVE * value.abs());
+        let scatter = trend.scatter(k, rate);
+        let change = (rate * over).abs();
+        let state = if change > tolerance.max(TREND_SCATTER * scatter) {
+            "changing"
+        } else if scatter > tolerance {
+            "fluctuating"
+        } else {
+            "settled"
+        };
         rate.is_finite().then_some(Trend {
             rate,
             over,
             tolerance,
-            settled: (rate * over).abs() <= tolerance,
+            scatter,
+            state,
+            settled: state == "settled",
         })
     };
     let mut with_trend = |name, label, value: f64, unit, window: &String, trend| {
@@ -716,11 +731,11 @@ fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> V
         out.push(Warning {
             kind: "runaway",
             text: format!(
-                "The run ran away: at its end the true speed is {} rad/s from the reference (which stays within ±{} rad/s) and the flux is {} Wb against its target of {} Wb. The controller acts on the EKF's estimates; Theorem 4.6 assumes it sees the true state, and when the estimates are far off (a start-up error held only by the voltage limit, a wrong model, low speed) nothing bounds the motor.",
-                significant(last.omega_err, 3),
-                significant(reference_peak, 3),
-                significant(last.flux, 3),
-                significant(target, 3)
+                "The run ran away: at its end the true speed is {} rad/s from the reference, the speed estimate {} rad/s from the true speed, and the flux {} Wb against its target of {} Wb. The controller regulates the EKF's estimates; Theorem 4.6 bounds the closed loop only while the estimation errors stay bounded, and when they do not (a start-up error held only by the voltage limit, a wrong model at low speed) nothing bounds the motor.",
+                rounded(last.omega_err, 3),
+                rounded(-last.omega_est_err, 3),
+                rounded(last.flux, 3),
+                rounded(target, 3)
             ),
         });
     }
@@ -730,9 +745,9 @@ fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> V
         kind: "inconsistent",
         text: format!(
             "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
-            significant(nis, 3),
-            significant(low, 3),
-            significant(high, 3)
+            rounded(nis, 4),
+            rounded(low, 3),
+            rounded(high, 3)
         ),
     }
     };
@@ -830,6 +845,19 @@ fn mean_nis_band(samples: usize) -> (f64, f64) {
         k * c * c * c / n
     };
     (quantile(-Z_975), quantile(Z_975))
+}
+
+/// `v` rounded to `digits` significant digits, the integer part included (179361 → 179400 at 4).
+fn rounded(v: f64, digits: i32) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let scale = 10f64.powi(v.abs().log10().floor() as i32 + 1 - digits);
+    if scale >= 1.0 {
+        format!("{}", ((v / scale).round() * scale) as i64)
+    } else {
+        significant(v, digits)
+    }
 }
 
 /// `t` (s) with up to 4 significant digits: in ms below 1 s, in s from 1 s on.
