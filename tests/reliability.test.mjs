@@ -271,3 +271,37 @@ test('a run that recorded nothing keeps the worker: Escape and Full run ask for 
     assert.equal(await page.evaluate(() => document.body.dataset.state), 'failed');
     assert.doesNotMatch(await page.textContent('#message'), /worker failed/);
   }));
+
+test('a slow pin runs in slices with progress, Cancel stops it, and the next pin works', () =>
+  // The pin is about as heavy as the core accepts: 20,000 samples of 71 substeps on each of 7 PWM
+  // intervals.
+  withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=sine200-drive&substeps=71&duration=1')}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.waitForFunction(() => document.body.dataset.pinning === 'running' && /Running pin 1 of 1: \d+ %/.test(document.getElementById('status').textContent));
+    assert.ok(await page.isEnabled('#cancel'));
+    await page.click('#cancel');
+    await page.waitForFunction(() => document.body.dataset.pinning === 'cancelled');
+    assert.equal(await page.locator('#pins li').count(), 0);
+    assert.match(await page.textContent("#message"), /^Could not pin v=1&preset=sine200-drive.*: cancelled\.$/);
+    // The worker is free: a run and a pin go through.
+    assert.equal((await runAgain(page)).state, 'done');
+    await page.click('#pin');
+    await page.waitForFunction(() => document.body.dataset.pinning === 'done');
+    assert.equal(await page.locator('#pins li').count(), 1);
+  }));
+
+test('seed runs show their progress, Cancel stops them at once, and the next seed runs work', () =>
+  withPage('?v=1&preset=step&duration=5', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.click('[data-tab=analysis]');
+    await page.fill('#seeds-form [name=n]', '200');
+    await page.click('#seeds-run');
+    await page.waitForFunction(() => document.getElementById('seeds-progress').value > 0);
+    await page.click('#seeds-cancel');
+    await page.waitForFunction(() => document.body.dataset.seeds === 'cancelled');
+    assert.equal(await page.textContent('#seeds-status'), 'Seed runs cancelled.');
+    assert.ok(await page.isDisabled('#seeds-cancel'));
+    await page.fill('#seeds-form [name=n]', '2');
+    await page.click('#seeds-run');
+    await page.waitForFunction(() => document.body.dataset.seeds === 'done', null, { timeout: 60_000 });
+  }));

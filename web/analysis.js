@@ -46,11 +46,11 @@ class Member {
     });
   }
 
-  fail(reason) {
+  fail(reason, error = new Error(`a worker failed (${reason}); the next run starts a fresh one`)) {
     if (this.failed) return;
     this.failed = reason;
     this.worker.terminate();
-    this.waiting?.reject(new Error(`a worker failed (${reason}); the next run starts a fresh one`));
+    this.waiting?.reject(error);
     this.waiting = null;
   }
 }
@@ -102,8 +102,13 @@ export class Pool {
     return results;
   }
 
+  /**
+   * Stops the jobs under way at once: a job runs in one call, so the workers that hold one are
+   * terminated (the next run starts fresh ones) rather than waited for.
+   */
   cancel() {
     this.generation++;
+    for (const m of this.members) if (m.waiting) m.fail('cancelled', new Error('cancelled'));
   }
 }
 

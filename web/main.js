@@ -24,6 +24,7 @@ const state = {
   pins: [], // pinned scenarios, in pin order
   shared: { pins: fragment('pins'), sweep: fragment('sweep') }, // from the link that opened the page
   notice: null, // a notice about the link that stays until the user acts
+  pinning: false, // pins are being run in the worker
   runId: 0,
   running: false,
   ranScenario: null, // the scenario of the last run started
@@ -155,6 +156,7 @@ function workerFailed(reason) {
   state.pending.clear();
   if (state.export) endExport('failed', 'CSV export stopped');
   const wasRunning = state.running;
+  state.pinning = false;
   setBusy(false);
   ui.csv.disabled = true;
   document.body.dataset.state = 'crashed';
@@ -706,7 +708,22 @@ const handlers = {
   compared({ id, results }) {
     if (id === state.runId) walkthrough.showComparison(results);
   },
+  'pin-progress'({ index, count, done, total }) {
+    state.pinning = true;
+    ui.cancel.disabled = false;
+    if (!state.running) {
+      ui.progress.value = done / total;
+      ui.status.textContent = `Running pin ${index + 1} of ${count}: ${((100 * done) / total).toFixed(0)} %`;
+    }
+    document.body.dataset.pinning = 'running';
+  },
   pins({ scenarios, legends, rejected }) {
+    if (state.pinning) {
+      state.pinning = false;
+      ui.cancel.disabled = !state.running && state.export === null;
+      if (!state.running) ui.status.textContent = rejected.some((r) => /cancel/.test(r.message)) ? 'Pinning cancelled' : 'Pinned';
+    }
+    document.body.dataset.pinning = rejected.some((r) => /cancel/.test(r.message)) ? 'cancelled' : 'done';
     if (rejected.length) say(listed(rejected.map((r) => `could not pin ${excerpt(r.scenario)}: ${r.message}`), '; ').replace(/^c/, 'C') + '.');
     showPins(scenarios, legends);
   },
@@ -836,7 +853,8 @@ async function runForm() {
 ui.run.addEventListener('click', runForm);
 // Cancel stops the run or the CSV export, whichever is under way.
 ui.cancel.addEventListener('click', () => {
-  if (state.export) cancelExport('CSV export cancelled');
+  if (state.pinning && !state.running) worker.postMessage({ type: 'pin-cancel' });
+  else if (state.export) cancelExport('CSV export cancelled');
   else worker.postMessage({ type: 'cancel', id: state.runId });
 });
 ui.csv.addEventListener('click', startExport);
@@ -1025,16 +1043,27 @@ async function runSeeds() {
     return;
   }
   status.textContent = 'Running seeds…';
+  const progress = $('seeds-progress');
+  progress.value = 0;
+  $('seeds-cancel').disabled = false;
+  document.body.dataset.seeds = 'running';
   try {
     const first = Number(fieldValue(state.info, 'seed'));
-    const out = await analysis.seeds(n, first, state.info.steps, (p) => { status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`; });
+    const out = await analysis.seeds(n, first, state.info.steps, (p) => {
+      progress.value = p;
+      status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`;
+    });
     analysis.showSeeds(out, $('seeds-plots'), framing);
     state.seedsCsv = out.csv;
     $('seeds-csv').disabled = false;
     status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
     document.body.dataset.seeds = 'done';
   } catch (e) {
-    status.textContent = `Seed sweep failed: ${e.message}`;
+    const cancelled = e.message === 'cancelled';
+    status.textContent = cancelled ? 'Seed runs cancelled.' : `Seed sweep failed: ${e.message}`;
+    document.body.dataset.seeds = cancelled ? 'cancelled' : 'failed';
+  } finally {
+    $('seeds-cancel').disabled = true;
   }
 }
 
@@ -1047,6 +1076,7 @@ $('sweep-csv').addEventListener('click', async () => {
   download(new Blob([await analysis.sweepCsv(first)], { type: 'text/csv' }), `imlab-sweep-${first}.csv`);
 });
 $('seeds-run').addEventListener('click', runSeeds);
+$('seeds-cancel').addEventListener('click', () => analysis.pool.cancel());
 $('seeds-csv').addEventListener('click', () => download(new Blob([state.seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'));
 
 // The page's plot sets, for the browser tests and the console.

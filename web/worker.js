@@ -21,8 +21,11 @@
 //   {type: 'csv-cancel', serial}               ends the export (a new run ends it too)
 //   {type: 'inspect', id, t}                   → {type: 'inspected', id, t, snapshot} | {type: 'invalid', id, message}
 //   {type: 'compare', id, columns, buckets}    → {type: 'compared', id, results: [{predictor, metrics}]}
-//   {type: 'pin', scenarios, column}           → {type: 'pins', scenarios, legends, rejected: [{scenario, message}]}
-//     (runs and pins each, keeping the overlay's `column`; `rejected` lists those the core refused)
+//   {type: 'pin', scenarios, column}           → {type: 'pin-progress', index, count, done, total}* then
+//          {type: 'pins', scenarios, legends, rejected: [{scenario, message}]}
+//     (runs each in time slices and pins it, keeping the overlay's `column`; `rejected` lists those
+//     the core refused and those a cancel left unrun)
+//   {type: 'pin-cancel'}                       stops the pins being run at the next slice
 //   {type: 'unpin', index}                     → {type: 'pins', scenarios, legends, rejected: []}
 //   {type: 'overlay', id, column, t0, t1, buckets} → {type: 'overlay', id, column, data: [t, current, pins..., diffs...]}
 //     (every run keeps `column` from then on: the next overlay of it replays none)
@@ -43,8 +46,10 @@ import init, {
   Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 
-const CHUNK_STEPS = 5_000; // 1–2 ms of work: cancel is honoured at once, and optimised code
-// compiled in the background is picked up at the next chunk
+// A slice of work between two looks at the message queue (ms of the worker's clock, read by the
+// core): Cancel is honoured within it, and optimised code compiled in the background is picked
+// up at the next slice. Bounded by time, as one sample can cost a thousand ordinary ones.
+const SLICE_MS = 4;
 
 // Rows per CSV chunk, about 22 MB: neither the worker nor the page holds more than a chunk or two
 // of a CSV that can reach 1.3 GB, past what one JS string can hold.
@@ -53,6 +58,7 @@ const CSV_ROWS = 20_000;
 let current = null; // {id, sim, cancelled}
 let comparison = null; // pinned runs, created with the module
 let exporting = null; // {serial, answer}: the CSV export waiting for the page's next request
+let pinning = null; // {cancelled}: the pins being run
 let crashed = false;
 
 const BOUND = 'lyapunov_bound';
@@ -164,7 +170,7 @@ async function run({ id, scenario, groups, buckets, overlay }) {
   while (!sim.finished) {
     const start = performance.now();
     try {
-      sim.step(CHUNK_STEPS);
+      sim.step_for(SLICE_MS);
       computeMs += performance.now() - start;
     } catch (e) {
       if (trapped(e)) return;
@@ -225,7 +231,7 @@ async function runToEnd(scenario) {
   const sim = new Simulation(scenario);
   try {
     while (!sim.finished) {
-      sim.step(CHUNK_STEPS);
+      sim.step_for(SLICE_MS);
       await yieldToMessages();
     }
     return sim.metrics();
@@ -258,11 +264,63 @@ async function compare({ id }) {
 function warmUp() {
   const sim = new Simulation('v=1&preset=decay');
   sim.keep_overview([['omega']], 100);
-  while (!sim.finished) sim.step(10);
+  while (!sim.finished) sim.step_for(0);
   sim.view([['omega']], 0, Number.MAX_VALUE, 100);
   sim.stability();
   sim.report();
   sim.free();
+}
+
+/**
+ * Runs and pins `scenarios` one after the other, each in time slices like a run, with progress
+ * ({type: 'pin-progress', index, count, done, total}); a 'pin-cancel' stops at the next slice and
+ * pins nothing more. Then the pins message, naming each scenario refused or not run.
+ */
+async function pinAll({ scenarios, column }) {
+  const me = { cancelled: false };
+  pinning = me;
+  const rejected = [];
+  for (const [index, scenario] of scenarios.entries()) {
+    if (me.cancelled) {
+      rejected.push({ scenario, message: 'not run: pinning was cancelled' });
+      continue;
+    }
+    let sim;
+    try {
+      comparison.check_room();
+      sim = new Simulation(scenario);
+      sim.keep_column(column);
+    } catch (e) {
+      sim?.free();
+      if (trapped(e)) return;
+      rejected.push({ scenario, message: String(e) });
+      continue;
+    }
+    while (!sim.finished) {
+      try {
+        sim.step_for(SLICE_MS);
+      } catch (e) {
+        if (trapped(e)) return;
+        break; // a run that fails stays pinned with the samples before its failure
+      }
+      self.postMessage({ type: 'pin-progress', index, count: scenarios.length, done: sim.done, total: sim.total });
+      await yieldToMessages();
+      if (me.cancelled) break;
+    }
+    if (me.cancelled) {
+      sim.free();
+      rejected.push({ scenario, message: 'cancelled' });
+      continue;
+    }
+    try {
+      comparison.adopt(sim); // takes the run; `sim` is spent
+    } catch (e) {
+      if (trapped(e)) return;
+      rejected.push({ scenario, message: String(e) });
+    }
+  }
+  if (pinning === me) pinning = null;
+  post(pinsMessage(rejected));
 }
 
 /** `scenario` with the field changes `[[key, value], ...]` applied by the core. */
@@ -339,19 +397,12 @@ self.onmessage = async ({ data }) => {
     case 'compare':
       if (current && current.id === data.id) compare(data);
       break;
-    case 'pin': {
-      const rejected = [];
-      for (const scenario of data.scenarios) {
-        try {
-          comparison.pin(scenario, data.column);
-        } catch (e) {
-          if (trapped(e)) return;
-          rejected.push({ scenario, message: String(e) });
-        }
-      }
-      post(pinsMessage(rejected));
+    case 'pin':
+      pinAll(data);
       break;
-    }
+    case 'pin-cancel':
+      if (pinning) pinning.cancelled = true;
+      break;
     case 'unpin':
       comparison.unpin(data.index);
       post(pinsMessage());

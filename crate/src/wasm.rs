@@ -7,6 +7,7 @@ use crate::sim::{self, COLUMNS};
 use js_sys::{Array, Float64Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
+use wasm_bindgen::JsCast;
 
 thread_local! {
     /// The text of the last Rust panic, kept for the worker to report after the trap it causes.
@@ -69,6 +70,26 @@ impl Simulation {
     pub fn step(&mut self, max_steps: u32) -> Result<u32, JsValue> {
         let done = self.inner.advance(max_steps as usize).map_err(js_error)?;
         Ok(done as u32)
+    }
+
+    /// Runs samples for about `ms` milliseconds of the worker's clock (at least one sample, fewer
+    /// if the run ends); returns the number run. A chunk bounded by time, not by a count: one
+    /// sample with many substeps and PWM costs as much as thousands of ordinary ones, and Cancel
+    /// must still come within a slice. The same samples as any other division of the run.
+    pub fn step_for(&mut self, ms: f64) -> Result<u32, JsValue> {
+        let start = now();
+        let mut done = 0;
+        loop {
+            done += self.inner.advance(CLOCK_EVERY).map_err(js_error)?;
+            // Without a clock, one batch is the slice.
+            let late = match (start, now()) {
+                (Some(start), Some(t)) => t - start >= ms,
+                _ => true,
+            };
+            if self.inner.is_finished() || late {
+                return Ok(done as u32);
+            }
+        }
     }
 
     /// Samples run so far.
@@ -375,6 +396,19 @@ pub struct Comparison {
 
 /// Most pinned runs at once.
 const MAX_PINS: usize = 4;
+
+/// Samples between two reads of the clock in [`Simulation::step_for`]: the clock costs a call
+/// out of the module, and 16 of the heaviest samples the codec accepts take well under 10 ms.
+const CLOCK_EVERY: usize = 16;
+
+/// The worker's clock, `performance.now()` (ms); in a page or in Node the global scope has the
+/// same `performance`.
+fn now() -> Option<f64> {
+    js_sys::global()
+        .unchecked_into::<web_sys::WorkerGlobalScope>()
+        .performance()
+        .map(|p| p.now())
+}
 #[wasm_bindgen]
 impl Comparison {
     /// An empty set of pins.
@@ -383,14 +417,28 @@ impl Comparison {
         Comparison::default()
     }
 
-    /// Runs `scenario` to the end (or its failure) and pins it, keeping its column `column` for
-    /// overlays; throws for a bad scenario or an unknown column, and pins nothing then.
-    pub fn pin(&mut self, scenario: &str, column: &str) -> Result<(), JsValue> {
+    /// Whether another run can be pinned; throws, naming the limit, when not.
+    pub fn check_room(&self) -> Result<(), JsValue> {
         if self.pins.len() >= MAX_PINS {
             return Err(js_error(format!(
                 "at most {MAX_PINS} runs can be pinned; unpin one first"
             )));
         }
+        Ok(())
+    }
+
+    /// Pins `run`, a run the worker has run in slices (to its end, or its failure) after asking
+    /// it to keep the overlay's column; it leaves the caller.
+    pub fn adopt(&mut self, run: Simulation) -> Result<(), JsValue> {
+        self.check_room()?;
+        self.pins.push(run.inner);
+        Ok(())
+    }
+
+    /// Runs `scenario` to the end (or its failure) and pins it, keeping its column `column` for
+    /// overlays; throws for a bad scenario or an unknown column, and pins nothing then.
+    pub fn pin(&mut self, scenario: &str, column: &str) -> Result<(), JsValue> {
+        self.check_room()?;
         let s = Scenario::parse(scenario).map_err(js_error)?;
         // A pin keeps its checkpoints (under 1 MB for the longest run) and the overlay's column
         // (8 bytes a sample: 8.5 MB for the longest run), so the number of pins is the only
