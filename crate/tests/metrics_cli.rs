@@ -222,3 +222,15 @@ fn a_run_that_runs_away_fails_and_names_why_and_an_inconsistent_filter_is_named(
         );
     }
 }
+
+#[test]
+fn metrics_of_the_longest_accepted_run_need_no_memory_for_its_rows() {
+    // 2,000,000 samples: kept as rows they would need about 1 GB; traced, the figures come from
+    // checkpoints and a replay of the window.
+    let m = metrics("v=1&preset=step&duration=20&ts=0.00001");
+    let settling = get(&m, "settling_time").unwrap();
+    assert!(
+        (STEP_SETTLING.0..=STEP_SETTLING.1).contains(&settling),
+        "{settling} s"
+    );
+}
