@@ -4,7 +4,7 @@
 //! Everything here reads the recorded trace; `imlab metrics` prints the list and the page shows it
 //! as given.
 
-use super::trace::CHECKPOINT_EVERY;
+use super::trace::{TransientTally, CHECKPOINT_EVERY};
 use super::{first_not, is_saturated, Recording, Row, Simulation};
 use crate::control::Reference;
 use crate::scenario::{ControllerKind, Scenario};
@@ -274,78 +274,32 @@ impl Samples for Simulation {
     }
 }
 
-/// What [`transient`] reads from every row, gathered by a traced run as its rows come: per
-/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sum
-/// of the NIS over the second half of the run as planned (from −0, in row order, as
-/// [`transient`] sums it). A run that ends early has another second half; [`transient`] then
-/// reads the rows again.
-#[derive(Clone, Debug)]
-pub(super) struct TransientTally {
-    band: Vec<(f64, f64)>,
-    half_index: usize,
-    late_sum: f64,
-}
-
-impl TransientTally {
-    /// For a run of `steps` samples of `ts` (row k at time k·ts).
-    pub(super) fn new(steps: usize, ts: f64) -> TransientTally {
-        let last = steps.saturating_sub(1);
-        // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
-        let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
-        TransientTally {
-            band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
-            half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
-            late_sum: -0.0,
-        }
-    }
-
-    /// Takes row `i`, the rows coming in order from 0.
-    #[inline]
-    pub(super) fn push(&mut self, i: usize, r: &Row) {
-        let band = r.innov_band_a;
-        if i % CHECKPOINT_EVERY == 0 {
-            self.band.push((band, band));
-        } else if let Some((lo, hi)) = self.band.last_mut() {
-            *lo = if band < *lo { band } else { *lo };
-            *hi = if band > *hi { band } else { *hi };
-        }
-        if i >= self.half_index {
-            self.late_sum += r.nis;
-        }
-    }
-
-    /// Bytes it holds.
-    pub(super) fn bytes(&self) -> usize {
-        self.band.capacity() * std::mem::size_of::<(f64, f64)>()
-    }
-
-    /// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
-    /// form an interval of values (`settled` compares |band − final| with a bound, and rounding
-    /// is monotonic), so an interval of rows whose least and greatest band are settled is settled
-    /// throughout; only the last interval that is not is read again.
-    fn last_unsettled(
-        &self,
-        rows: &dyn Samples,
-        len: usize,
-        settled: &dyn Fn(f64) -> bool,
-    ) -> Option<usize> {
-        let b = self
-            .band
-            .iter()
-            .rposition(|&(lo, hi)| !(settled(lo) && settled(hi)))?;
-        let mut last = None;
-        rows.visit(
-            b * CHECKPOINT_EVERY,
-            len.min((b + 1) * CHECKPOINT_EVERY),
-            &mut |i, r| {
-                if !settled(r.innov_band_a) {
-                    last = Some(i);
-                }
-                true
-            },
-        );
-        last
-    }
+/// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
+/// form an interval of values (`settled` compares |band − final| with a bound, and rounding
+/// is monotonic), so an interval of rows whose least and greatest band are settled is settled
+/// throughout; only the last interval that is not is read again.
+fn last_unsettled(
+    tally: &TransientTally,
+    rows: &dyn Samples,
+    len: usize,
+    settled: &dyn Fn(f64) -> bool,
+) -> Option<usize> {
+    let b = tally
+        .band
+        .iter()
+        .rposition(|&(lo, hi)| !(settled(lo) && settled(hi)))?;
+    let mut last = None;
+    rows.visit(
+        b * CHECKPOINT_EVERY,
+        len.min((b + 1) * CHECKPOINT_EVERY),
+        &mut |i, r| {
+            if !settled(r.innov_band_a) {
+                last = Some(i);
+            }
+            true
+        },
+    );
+    last
 }
 
 /// Hand-made traces of the tests.
@@ -392,7 +346,7 @@ fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
     {
         // A traced run's tally, when its second half is the one it summed.
         Some(tally) => {
-            unsettled = tally.last_unsettled(rows, len, &settled);
+            unsettled = last_unsettled(tally, rows, len, &settled);
             late_sum = tally.late_sum;
         }
         None => rows.visit(0, len, &mut |i, r| {

@@ -3,9 +3,8 @@
 //! checks every row it computes (finite values only) and can feed an M4 overview of the whole
 //! run as it goes, so that the first plot needs no replay.
 
-use super::figures::TransientTally;
 use super::recorder::{finite, M4};
-use super::{LoopState, Row, Sink, StabilityTally, COLUMNS};
+use super::{first_not, LoopState, Row, Sink, StabilityTally, COLUMNS};
 use crate::scenario::Scenario;
 
 /// Samples between checkpoints: a replay starts at most this many samples before the first row
@@ -164,5 +163,51 @@ impl Sink for Trace {
         }
         self.len += 1;
         Ok(())
+    }
+}
+
+/// What the transient (`figures::transient`) reads from every row, gathered by a traced run as its rows come: per
+/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sum
+/// of the NIS over the second half of the run as planned (from −0, in row order, as the
+/// transient sums it). A run that ends early has another second half; the transient then
+/// reads the rows again.
+#[derive(Clone, Debug)]
+pub(super) struct TransientTally {
+    pub(super) band: Vec<(f64, f64)>,
+    pub(super) half_index: usize,
+    pub(super) late_sum: f64,
+}
+
+impl TransientTally {
+    /// For a run of `steps` samples of `ts` (row k at time k·ts).
+    pub(super) fn new(steps: usize, ts: f64) -> TransientTally {
+        let last = steps.saturating_sub(1);
+        // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
+        let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
+        TransientTally {
+            band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
+            half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
+            late_sum: -0.0,
+        }
+    }
+
+    /// Takes row `i`, the rows coming in order from 0.
+    #[inline]
+    pub(super) fn push(&mut self, i: usize, r: &Row) {
+        let band = r.innov_band_a;
+        if i % CHECKPOINT_EVERY == 0 {
+            self.band.push((band, band));
+        } else if let Some((lo, hi)) = self.band.last_mut() {
+            *lo = if band < *lo { band } else { *lo };
+            *hi = if band > *hi { band } else { *hi };
+        }
+        if i >= self.half_index {
+            self.late_sum += r.nis;
+        }
+    }
+
+    /// Bytes it holds.
+    pub(super) fn bytes(&self) -> usize {
+        self.band.capacity() * std::mem::size_of::<(f64, f64)>()
     }
 }
