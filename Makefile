@@ -33,11 +33,13 @@ test: dist
 	wasm-pack test --node crate
 	node --test --test-concurrency=1 tests/*.test.mjs
 
-# Criterion benchmarks (about 2 minutes after the build), then the Node and browser figures.
+# Criterion benchmarks (about 2 minutes after the build), the speed against the floor
+# (../shared/bench/rustfloor, built by the bench), then the Node and browser figures.
 # BENCH_ARGS goes to criterion: `make bench BENCH_ARGS=--quick` for a short pass,
 # `BENCH_ARGS=long` for one group. BENCH_REPS=n sets the repetitions of the Node and browser
 # figures (default 5; each prints the median).
 bench: dist
 	cargo bench --bench closed_loop --bench codec -- $(BENCH_ARGS)
+	node tests/bench/floor.mjs
 	node tests/bench/node.mjs
 	node tests/bench/browser.mjs
