@@ -132,34 +132,31 @@ export class Core {
     return last < 0 ? 0 : tr.t[last + 1] - from;
   }
 
-  /** The share of all recorded samples whose voltage command the limit changed. */
-  clippedShare(run) {
+  /** For each recorded sample of `run`, whether the limit changed its voltage command. */
+  clipped(run) {
     const tr = this.trace(run);
     const [ua, ub, ca, cb] = ['u_a', 'u_b', 'u_a_cmd', 'u_b_cmd'].map((c) => tr.column(c));
-    let n = 0;
-    tr.t.forEach((_, i) => {
-      if (ua[i] !== ca[i] || ub[i] !== cb[i]) n++;
-    });
-    return n / tr.t.length;
+    return { t: tr.t, at: (i) => ua[i] !== ca[i] || ub[i] !== cb[i] };
+  }
+
+  /** The share of all recorded samples whose voltage command the limit changed. */
+  clippedShare(run) {
+    const { t, at } = this.clipped(run);
+    return t.filter((_, i) => at(i)).length / t.length;
   }
 
   /** The time of the first sample whose voltage command the limit changed (s), or Infinity. */
   firstSaturated(run) {
-    const tr = this.trace(run);
-    const [ua, ub, ca, cb] = ['u_a', 'u_b', 'u_a_cmd', 'u_b_cmd'].map((c) => tr.column(c));
-    const i = tr.t.findIndex((_, k) => ua[k] !== ca[k] || ub[k] !== cb[k]);
-    return i < 0 ? Infinity : tr.t[i];
+    const { t, at } = this.clipped(run);
+    const i = t.findIndex((_, k) => at(k));
+    return i < 0 ? Infinity : t[i];
   }
 
   /** The time of the last sample whose voltage command the limit changed (s), or −Infinity. */
   lastSaturated(run) {
-    const tr = this.trace(run);
-    const [ua, ub, ca, cb] = ['u_a', 'u_b', 'u_a_cmd', 'u_b_cmd'].map((c) => tr.column(c));
-    let last = -Infinity;
-    tr.t.forEach((t, i) => {
-      if (ua[i] !== ca[i] || ub[i] !== cb[i]) last = t;
-    });
-    return last;
+    const { t, at } = this.clipped(run);
+    const i = t.findLastIndex((_, k) => at(k));
+    return i < 0 ? -Infinity : t[i];
   }
 }
 

@@ -234,9 +234,7 @@ async function describeLoaded(text) {
     try {
       // Keep what is valid; name every field that was left out.
       const info = await describe(text, 'recover');
-      const shown = info.rejected.slice(0, 5).join('; ');
-      const more = info.rejected.length > 5 ? `; and ${info.rejected.length - 5} more` : '';
-      say(`Some settings in the address were rejected and left at the preset's values: ${shown}${more}.`);
+      say(`Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`);
       return info;
     } catch (again) {
       if (again instanceof WorkerFailed) throw again;
