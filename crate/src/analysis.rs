@@ -3,8 +3,9 @@
 //! parallel workers and the tests share these functions.
 
 use crate::control::Reference;
+use crate::record::Row;
 use crate::scenario::{short, Scenario, ScenarioError, MAX_SEED};
-use crate::sim::{Row, Simulation};
+use crate::sim::Simulation;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -531,7 +532,7 @@ pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, Sce
     let failure = sim.run().err().map(|e| e.to_string());
     // The figures are the run's own metrics; a run that recorded nothing has none.
     let m = sim.metrics();
-    let figure = |f: fn(&crate::sim::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
+    let figure = |f: fn(&crate::record::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
     let rows = sim.recorder().rows();
     Ok(SeedRun {
         result: SeedResult {
@@ -633,7 +634,7 @@ pub fn seed_bands(runs: &[SeedRun]) -> Result<SeedBands, String> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::sim::Row;
+    use crate::record::Row;
 
     #[test]
     fn fundamental_ignores_a_large_offset_on_a_window_of_whole_periods_but_not_whole_samples() {

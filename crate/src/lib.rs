@@ -2,7 +2,8 @@
 //! "Integrated design of speed sensorless control algorithms for induction motors".
 //!
 //! Data flows one way: [`params`] → [`model`] (plant) → [`observer`] (EKF) → [`control`]
-//! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`sim`] (20 kHz loop and recorder). [`scenario`] holds every
+//! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`record`] (what a run keeps,
+//! and the figures read from it) → [`sim`] (the 20 kHz loop, advanced in chunks). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
 //! runs many simulations (frequency responses, seed sweeps); [`quote`] is how every message quotes
 //! user input.
@@ -14,6 +15,7 @@ pub mod model;
 pub mod observer;
 pub mod params;
 pub mod quote;
+pub mod record;
 pub mod rng;
 pub mod scenario;
 pub mod sim;

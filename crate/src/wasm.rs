@@ -2,8 +2,9 @@
 
 use crate::analysis;
 use crate::params::Lumped;
+use crate::record::COLUMNS;
 use crate::scenario::{Scenario, MAX_SEED, PRESETS};
-use crate::sim::{self, COLUMNS};
+use crate::sim;
 use js_sys::{Array, Float64Array};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
@@ -196,7 +197,7 @@ impl Simulation {
     /// `{transient: {t, reason}, figures: [{name, label, value, unit, window}] | null}`, the
     /// figures as `imlab metrics` prints them (null when nothing is recorded).
     pub fn report(&self) -> Result<JsValue, JsValue> {
-        to_js(&sim::report(&self.inner))
+        to_js(&self.inner.report())
     }
 
     /// Recorded rows `start..start + count` as CSV bytes (with the header when `start` is 0):

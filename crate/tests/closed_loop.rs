@@ -76,7 +76,8 @@ fn step_settles_within_6_ms() {
     let settling = last_out - step_time;
     assert!(settling < 0.006, "2 % settling time {settling} s");
     // The run's figures compute the same thing.
-    let figure = imlab::sim::figures(&sim)
+    let figure = sim
+        .figures()
         .unwrap()
         .into_iter()
         .find(|f| f.name == "settling_time")
@@ -231,7 +232,7 @@ fn divergence_is_reported_and_nothing_non_finite_is_recorded() {
         err,
         "a failed run stays failed"
     );
-    for name in imlab::sim::COLUMNS {
+    for name in imlab::record::COLUMNS {
         assert!(
             col(&sim, name).iter().all(|v| v.is_finite()),
             "{name} has a non-finite value"
@@ -329,8 +330,8 @@ fn metrics_summarise_the_trace_and_show_the_observer_limit_at_200_hz() {
     let m = euler.metrics().unwrap();
     let from = m.from;
     // The window is the run's figures' own: one value for one figure wherever it is shown.
-    assert_eq!(from, imlab::sim::transient_end(&euler).t);
-    let strip = imlab::sim::figures(&euler).unwrap();
+    assert_eq!(from, euler.transient_end().t);
+    let strip = euler.figures().unwrap();
     let strip_rms = strip
         .iter()
         .find(|f| f.name == "tracking_rms")
@@ -507,7 +508,7 @@ fn at_zero_slip_the_rotor_resistance_is_not_observable() {
 #[test]
 fn the_filters_with_added_states_are_consistent() {
     for name in ["load-step-est", "rr-mismatch-est"] {
-        let f = imlab::sim::figures(&run(name)).unwrap();
+        let f = run(name).figures().unwrap();
         let get = |n: &str| f.iter().find(|x| x.name == n).unwrap().value;
         let (nis, lo, hi) = (get("mean_nis"), get("mean_nis_low"), get("mean_nis_high"));
         assert!(

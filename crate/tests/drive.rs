@@ -4,7 +4,7 @@
 use imlab::inverter::Shape;
 use imlab::observer::Filter;
 use imlab::scenario::Scenario;
-use imlab::sim::{figures, Simulation};
+use imlab::sim::Simulation;
 
 fn run(text: &str) -> Simulation {
     let s = Scenario::parse(text).unwrap();
@@ -18,7 +18,7 @@ fn col(sim: &Simulation, name: &str) -> Vec<f64> {
 }
 
 fn figure(sim: &Simulation, name: &str) -> f64 {
-    figures(sim)
+    sim.figures()
         .unwrap()
         .iter()
         .find(|f| f.name == name)
@@ -195,7 +195,8 @@ fn pwm_ripple_is_bounded_and_the_sampled_loop_matches_the_averaged_one() {
     assert!((a / b - 1.0).abs() < 0.05, "PWM {a}, averaged {b}");
     // Without PWM there is no ripple, and no ripple figure.
     assert!(col(&averaged, "i_ripple").iter().all(|&r| r == 0.0));
-    assert!(figures(&averaged)
+    assert!(averaged
+        .figures()
         .unwrap()
         .iter()
         .all(|f| f.name != "ripple_peak"));

@@ -1,8 +1,9 @@
 //! `imlab metrics`: the figures of a run as the CLI prints them, checked against the physics
 //! (settling through the reference filter, saturation, EKF consistency) and against the library.
 
+use imlab::record::Figure;
 use imlab::scenario::Scenario;
-use imlab::sim::{figures, Figure, Simulation};
+use imlab::sim::Simulation;
 use std::process::Command;
 
 /// Runs `imlab metrics SCENARIO` and returns its (name, value, unit) lines after the header.
@@ -125,7 +126,7 @@ fn printed_figures_are_the_library_figures_exactly() {
         let printed = metrics(text);
         let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
         sim.run().unwrap();
-        let lib = expected_lines(&figures(&sim).unwrap());
+        let lib = expected_lines(&sim.figures().unwrap());
         assert_eq!(printed.len(), lib.len(), "{text}");
         for (p, f) in printed.iter().zip(&lib) {
             assert_eq!((&p.0, &p.2), (&f.0, &f.2), "{text}");
@@ -149,7 +150,7 @@ fn a_diverged_run_prints_the_figures_before_the_failure_and_fails() {
     let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
     sim.run().unwrap_err();
     let mut expected = String::from("name,value,unit\n");
-    for (name, value, unit) in expected_lines(&figures(&sim).expect("samples before the failure")) {
+    for (name, value, unit) in expected_lines(&sim.figures().expect("samples before the failure")) {
         expected.push_str(&format!("{name},{value},{unit}\n"));
     }
     assert_eq!(String::from_utf8_lossy(&out.stdout), expected);

@@ -95,7 +95,7 @@ fn the_peak_current_of_a_point_is_the_largest_stator_current_of_its_fit_window()
     let mut sim = imlab::sim::Simulation::new(&s, 1).unwrap();
     sim.run().unwrap();
     let rows = sim.recorder().rows();
-    let magnitude = |r: &imlab::sim::Row| (r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt();
+    let magnitude = |r: &imlab::record::Row| (r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt();
     let window = rows.iter().filter(|r| r.t >= 0.1 - 0.5 * s.ts);
     let peak = window.map(magnitude).fold(0.0, f64::max);
     assert_eq!(point.peak_current, peak);

@@ -1,8 +1,9 @@
 //! Traced runs keep checkpoints instead of rows and replay them for every read: each read must
 //! give, bit for bit, what a run that keeps every row gives, and the trace must stay small.
 
+use imlab::record::CHECKPOINT_EVERY;
 use imlab::scenario::{preset, Scenario, PRESETS};
-use imlab::sim::{self, Simulation, CHECKPOINT_EVERY};
+use imlab::sim::{self, Simulation};
 
 fn both(s: &Scenario) -> (Simulation, Simulation) {
     let mut rows = Simulation::new(s, 1).unwrap();
@@ -33,8 +34,8 @@ fn every_read_of_a_traced_run_equals_the_kept_rows_bit_for_bit() {
         assert_eq!(rows.len(), traced.len(), "{}", p.name);
         assert_eq!(rows.csv(), traced.csv(), "{}", p.name);
         assert_eq!(
-            format!("{:?}", sim::report(&rows)),
-            format!("{:?}", sim::report(&traced)),
+            format!("{:?}", rows.report()),
+            format!("{:?}", traced.report()),
             "{}",
             p.name
         );
@@ -200,8 +201,8 @@ fn a_failed_traced_run_reads_the_rows_before_its_failure() {
         assert_eq!(rows.len(), traced.len(), "{text}");
         assert_eq!(rows.csv(), traced.csv(), "{text}");
         assert_eq!(
-            format!("{:?}", sim::report(&rows)),
-            format!("{:?}", sim::report(&traced)),
+            format!("{:?}", rows.report()),
+            format!("{:?}", traced.report()),
             "{text}"
         );
     }

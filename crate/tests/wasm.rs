@@ -2,8 +2,9 @@
 //! byte for byte, and errors come back as the codec's readable messages.
 #![cfg(target_arch = "wasm32")]
 
+use imlab::record::COLUMNS;
 use imlab::scenario::Scenario;
-use imlab::sim::{self, COLUMNS};
+use imlab::sim;
 use imlab::wasm::{describe, Simulation};
 use wasm_bindgen_test::wasm_bindgen_test;
 
@@ -127,7 +128,7 @@ fn figures_and_transient_are_the_core_values() {
     }
     let report: Report = serde_wasm_bindgen::from_value(js.report().unwrap()).unwrap();
     let got = report.figures.unwrap();
-    let expected = sim::figures(&core).unwrap();
+    let expected = core.figures().unwrap();
     assert_eq!(got.len(), expected.len());
     for (g, e) in got.iter().zip(&expected) {
         assert_eq!(
@@ -142,7 +143,7 @@ fn figures_and_transient_are_the_core_values() {
         assert_eq!(g.value.to_bits(), e.value.to_bits(), "{}", e.name);
     }
     let got = report.transient;
-    let expected = sim::transient_end(&core);
+    let expected = core.transient_end();
     assert_eq!((got.t, got.reason), (expected.t, expected.reason));
     // Before any sample: no figures.
     let report: Report =

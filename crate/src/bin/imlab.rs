@@ -6,8 +6,9 @@ use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
 };
+use imlab::record::Figure;
 use imlab::scenario::{excerpt, Scenario, PRESETS};
-use imlab::sim::{report, Figure, Simulation};
+use imlab::sim::Simulation;
 use std::fmt;
 use std::fs::File;
 use std::io::{self, BufWriter, ErrorKind, Write};
@@ -382,7 +383,7 @@ fn run(s: &Scenario, every: usize, file: Option<&str>, out: &mut impl Write) -> 
 fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
     let mut sim = Simulation::traced(s).map_err(|e| e.to_string())?;
     let result = sim.run();
-    let report = report(&sim);
+    let report = sim.report();
     write_figures(report.figures.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
     let printed = if report.figures.is_some() {
         "figures printed of the samples before the failure"

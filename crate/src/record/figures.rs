@@ -4,26 +4,13 @@
 //! Everything here reads the recorded trace; `imlab metrics` prints the list and the page shows it
 //! as given.
 
-use super::trace::{TransientTally, CHECKPOINT_EVERY};
-use super::{first_not, is_saturated, Recording, Row, Simulation};
+use super::row::{is_saturated, Row};
+use super::samples::Samples;
+use super::text::{rounded, time_text};
+use super::transient::{transient, Transient};
 use crate::control::Reference;
-use crate::scenario::{ControllerKind, Scenario};
+use crate::scenario::Scenario;
 use serde::Serialize;
-use std::f64::consts::PI;
-
-/// Time constants of the slowest designed rate after which the controller's start-up is over:
-/// e^−5 < 1 % of the initial error remains.
-const CONTROLLER_TIME_CONSTANTS: f64 = 5.0;
-
-/// The innovation band counts as settled within this fraction of its value at the last sample.
-const BAND_SETTLED: f64 = 0.10;
-
-/// Window of the moving mean NIS that tells when the EKF's estimates have converged (s).
-const NIS_WINDOW: f64 = 2e-3;
-
-/// The estimates count as converged once the moving mean NIS stays within this factor of the
-/// mean NIS over the second half of the run.
-const NIS_SETTLED: f64 = 2.0;
 
 /// Settling band of the step response: 2 % of the step size.
 const SETTLING_BAND: f64 = 0.02;
@@ -146,53 +133,13 @@ impl<const N: usize> LineFit<N> {
     }
 }
 
-/// Where the start-up transient ends, and why there.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Transient {
-    /// End of the transient (s): a recorded sample time.
-    pub t: f64,
-    /// One line naming the controller's and the observer's start-up times.
-    pub reason: String,
-}
-
-/// The end of the start-up transient of `sim`: the first recorded sample time at or after the
-/// later of
-///
-/// - (a) the observer's start-up: the first recorded time from which the EKF innovation band
-///   `innov_band_a` (2·S_aa^½) stays within 10 % of its value at the last recorded sample (P0
-///   starts it near 0.4 A; on the presets it settles to about 4 mA within 0.5–1.4 ms), and
-/// - (b) the controller's start-up: five time constants of its slowest designed rate,
-///   5/min(k1, k2, k3, k4) for backstepping (4.17 ms at the paper's 1200/s), or
-///   5/(2π·current_bw) for the IFOC baseline (its current loops), and
-/// - (c) the EKF's estimates: the end of the first full 2 ms window whose mean NIS is within
-///   twice the mean NIS of the second half of the run (the estimates start 10 % off and take
-///   about 10 ms to converge; until then the NIS is far above its later level); left out when no
-///   window in the first half gets there (a noise-free run, whose NIS decays towards zero),
-///
-/// clamped to at most half the recorded run, so that a window of samples always remains after
-/// it. With nothing recorded yet, t = 0.
-pub fn transient_end(sim: &Simulation) -> Transient {
-    transient(sim.scenario(), sim).0
-}
-
-/// The figures of `sim` over the samples recorded so far (see [`Figure`]), in this order:
-/// `transient_end`, `tracking_rms`, `tracking_peak`, `settling_time` (step references only),
-/// `saturated_share`, `mean_nis`, `mean_nis_low`, `mean_nis_high`, `current_peak`,
-/// `current_rms`, `current_rated` (peak and RMS of |i_s| against the rating), `ripple_peak` and
-/// `ripple_rms` (with PWM only), `flux_error_final`, `speed_error_final`, `speed_estimate_error_final`. The window figures
-/// cover W = [transient end, last recorded sample]. A figure whose value is not finite is left
-/// out. None when nothing is recorded.
-pub fn figures(sim: &Simulation) -> Option<Vec<Figure>> {
-    report(sim).figures
-}
-
 /// The transient and the figures of a run, computed together (the figures start at the end of
-/// the transient).
+/// the transient): see [`report`].
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
-    /// See [`transient_end`].
+    /// See [`transient`].
     pub transient: Transient,
-    /// See [`figures`].
+    /// The figures after it (see [`Figure`]).
     pub figures: Option<Vec<Figure>>,
     /// What the figures must not be read without, in words (see [`Warning`]).
     pub warnings: Vec<Warning>,
@@ -219,220 +166,6 @@ const RUNAWAY_SPEED: f64 = 100.0;
 /// ... or its true flux modulus ends above this multiple of the flux target √ψ_d.
 const RUNAWAY_FLUX: f64 = 4.0;
 
-/// [`transient_end`] and [`figures`] of `sim` at once. A finished traced run is replayed once,
-/// for the window after the transient (and, for a step reference, from the step if that is
-/// earlier); what the transient reads from every row it tallied as it ran.
-pub fn report(sim: &Simulation) -> Report {
-    figures_of(sim.scenario(), sim)
-}
-
-/// Recorded rows, read in order: a run's (from memory or by replay) or a hand-made trace's.
-pub(super) trait Samples {
-    /// Number of rows.
-    fn count(&self) -> usize;
-    /// Time of row `i` (s).
-    fn time(&self, i: usize) -> f64;
-    /// Calls `f(i, row)` for rows `start..end` in order until it returns false.
-    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool);
-
-    /// What a traced run tallied for the transient as its rows came, if it did.
-    fn tally(&self) -> Option<&TransientTally> {
-        None
-    }
-
-    /// Row `i`.
-    fn row(&self, i: usize) -> Row {
-        let mut out = Row::default();
-        self.visit(i, i + 1, &mut |_, r| {
-            out = *r;
-            false
-        });
-        out
-    }
-
-    /// The first row at or after time `t` (the number of rows if none is).
-    fn first_at(&self, t: f64) -> usize {
-        first_not(self.count(), |i| self.time(i) < t)
-    }
-}
-
-impl Samples for Simulation {
-    fn count(&self) -> usize {
-        self.len()
-    }
-    fn time(&self, i: usize) -> f64 {
-        Simulation::time(self, i)
-    }
-    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
-        Simulation::visit(self, start, end, f);
-    }
-    fn tally(&self) -> Option<&TransientTally> {
-        match &self.recording {
-            Recording::Trace(t) => Some(&t.transient),
-            Recording::Rows(_) => None,
-        }
-    }
-}
-
-/// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
-/// form an interval of values (`settled` compares |band − final| with a bound, and rounding
-/// is monotonic), so an interval of rows whose least and greatest band are settled is settled
-/// throughout; only the last interval that is not is read again.
-fn last_unsettled(
-    tally: &TransientTally,
-    rows: &dyn Samples,
-    len: usize,
-    settled: &dyn Fn(f64) -> bool,
-) -> Option<usize> {
-    let b = tally
-        .band
-        .iter()
-        .rposition(|&(lo, hi)| !(settled(lo) && settled(hi)))?;
-    let mut last = None;
-    rows.visit(
-        b * CHECKPOINT_EVERY,
-        len.min((b + 1) * CHECKPOINT_EVERY),
-        &mut |i, r| {
-            if !settled(r.innov_band_a) {
-                last = Some(i);
-            }
-            true
-        },
-    );
-    last
-}
-
-/// Hand-made traces of the tests.
-#[cfg(test)]
-impl Samples for Vec<Row> {
-    fn count(&self) -> usize {
-        self.len()
-    }
-    fn time(&self, i: usize) -> f64 {
-        self[i].t
-    }
-    fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
-        for (i, row) in self.iter().enumerate().take(end).skip(start) {
-            if !f(i, row) {
-                return;
-            }
-        }
-    }
-}
-
-/// The transient (see [`transient_end`]) and the index of its first row in `rows`.
-fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
-    let len = rows.count();
-    if len == 0 {
-        return (
-            Transient {
-                t: 0.0,
-                reason: "nothing recorded yet".to_string(),
-            },
-            0,
-        );
-    }
-    let (first_t, last) = (rows.time(0), rows.row(len - 1));
-    let half = first_t + 0.5 * (last.t - first_t);
-    let half_index = rows.first_at(half).min(len - 1);
-    // (a) The last row outside the band settles nothing; the one after it starts the settled run.
-    // A NaN band counts as not settled. (c) needs the mean NIS of the rows from half on; one pass
-    // gives both.
-    let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
-    let (mut unsettled, mut late_sum) = (None, -0.0);
-    match rows
-        .tally()
-        .filter(|t| t.half_index == half_index && t.band.len() == len.div_ceil(CHECKPOINT_EVERY))
-    {
-        // A traced run's tally, when its second half is the one it summed.
-        Some(tally) => {
-            unsettled = last_unsettled(tally, rows, len, &settled);
-            late_sum = tally.late_sum;
-        }
-        None => rows.visit(0, len, &mut |i, r| {
-            if !settled(r.innov_band_a) {
-                unsettled = Some(i);
-            }
-            if i >= half_index {
-                late_sum += r.nis;
-            }
-            true
-        }),
-    }
-    let observer = unsettled.map_or(0, |i| (i + 1).min(len - 1));
-    let t_observer = rows.time(observer);
-    // (b)
-    let (t_controller, controller) = match s.controller {
-        ControllerKind::Backstepping => {
-            let g = &s.gains;
-            let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
-            let t = CONTROLLER_TIME_CONSTANTS / k;
-            (
-                t,
-                format!(
-                    "5 time constants of the slowest designed error rate (1/{k} s) = {}",
-                    time_text(t)
-                ),
-            )
-        }
-        ControllerKind::Ifoc => {
-            let bw = s.ifoc.current_bw;
-            let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
-            (
-                t,
-                format!(
-                    "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
-                    time_text(t)
-                ),
-            )
-        }
-    };
-    // (c) The moving window holds the (t, NIS) of rows start..=i.
-    let late_mean = late_sum / (len - half_index) as f64;
-    let mut window = std::collections::VecDeque::new();
-    let (mut sum, mut start, mut estimates) = (0.0, 0, None);
-    rows.visit(0, half_index, &mut |i, r| {
-        sum += r.nis;
-        window.push_back((r.t, r.nis));
-        while let Some(&(t, nis)) = window.front() {
-            if r.t - t < NIS_WINDOW {
-                break;
-            }
-            sum -= nis;
-            window.pop_front();
-            start += 1;
-        }
-        if start > 0 && sum / (i + 1 - start) as f64 <= NIS_SETTLED * late_mean {
-            estimates = Some(r.t);
-            return false;
-        }
-        true
-    });
-    let t_estimates = estimates.unwrap_or(first_t);
-    let later = t_controller.max(t_observer).max(t_estimates);
-    let target = later.min(half);
-    // The rows are in time order and the last one is at or after `half`.
-    let index = rows.first_at(target).min(len - 1);
-    let mut reason = format!(
-        "{controller}; EKF innovation covariance settled at {} (2σ band within 10 % of its final value); EKF estimates converged at {} (2 ms mean NIS within twice its level in the second half)",
-        time_text(t_observer),
-        estimates.map_or("never in the first half: not used".to_string(), time_text)
-    );
-    if later > half {
-        reason.push_str(&format!(
-            "; clamped to half the recorded run ({})",
-            time_text(half)
-        ));
-    }
-    (
-        Transient {
-            t: rows.time(index),
-            reason,
-        },
-        index,
-    )
-}
-
 /// Sums and peaks of the window figures, accumulated in row order (sums start at −0, as
 /// `Iterator::sum` does, so that they equal it bit for bit).
 struct Window {
@@ -448,8 +181,18 @@ struct Window {
     reference_peak: f64,
 }
 
-/// The figures of a trace `rows` recorded from scenario `s`.
-fn figures_of(s: &Scenario, rows: &dyn Samples) -> Report {
+/// The transient and the figures of the rows `rows` recorded from scenario `s`, computed together:
+/// [`transient`], then the figures over the rows recorded so far, in this order:
+/// `transient_end`, `tracking_rms`, `tracking_peak`, `settling_time` (step references only),
+/// `saturated_share`, `mean_nis`, `mean_nis_low`, `mean_nis_high`, `current_peak`,
+/// `current_rms`, `current_rated` (peak and RMS of |i_s| against the rating), `ripple_peak` and
+/// `ripple_rms` (with PWM only), `flux_error_final`, `speed_error_final`,
+/// `speed_estimate_error_final`. The window figures cover W = [transient end, last recorded
+/// sample]. A figure whose value is not finite is left out; None when nothing is recorded.
+/// A finished traced run is replayed once, for the window after the transient (and, for a step
+/// reference, from the step if that is earlier); what the transient reads from every row it
+/// tallied as it ran.
+pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     let (end, start) = transient(s, rows);
     let len = rows.count();
     if len == 0 {
@@ -801,72 +544,11 @@ fn mean_nis_band(samples: usize) -> (f64, f64) {
     (quantile(-Z_975), quantile(Z_975))
 }
 
-/// `v` rounded to `digits` significant digits, the integer part included (179361 → 179400 at 4).
-fn rounded(v: f64, digits: i32) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let scale = 10f64.powi(v.abs().log10().floor() as i32 + 1 - digits);
-    if scale >= 1.0 {
-        format!("{}", ((v / scale).round() * scale) as i64)
-    } else {
-        significant(v, digits)
-    }
-}
-
-/// `t` (s) with up to 4 significant digits: in ms below 1 s, in s from 1 s on.
-fn time_text(t: f64) -> String {
-    if t.abs() < 1.0 {
-        format!("{} ms", significant(t * 1e3, 4))
-    } else {
-        format!("{} s", significant(t, 4))
-    }
-}
-
-/// `v` rounded to `digits` significant digits (all digits before the point are kept), without
-/// trailing zeros.
-fn significant(v: f64, digits: i32) -> String {
-    if v == 0.0 || !v.is_finite() {
-        return format!("{v}");
-    }
-    let mut decimals = digits - 1;
-    let mut m = v.abs();
-    while m >= 10.0 && decimals > 0 {
-        m /= 10.0;
-        decimals -= 1;
-    }
-    while m < 1.0 {
-        m *= 10.0;
-        decimals += 1;
-    }
-    let text = format!("{v:.*}", decimals as usize);
-    if text.contains('.') {
-        text.trim_end_matches('0').trim_end_matches('.').to_string()
-    } else {
-        text
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::record::samples::testing::{trace, TS};
     use crate::scenario::preset;
-
-    /// Sample period of the hand-made traces (s).
-    const TS: f64 = 1e-3;
-
-    fn trace(n: usize, fill: impl Fn(usize, &mut Row)) -> Vec<Row> {
-        (0..n)
-            .map(|k| {
-                let mut r = Row {
-                    t: k as f64 * TS,
-                    ..Row::default()
-                };
-                fill(k, &mut r);
-                r
-            })
-            .collect()
-    }
 
     fn value(figures: &[Figure], name: &str) -> Option<f64> {
         figures.iter().find(|f| f.name == name).map(|f| f.value)
@@ -922,132 +604,6 @@ mod tests {
         assert_eq!(settling_time(&constant, TS, &rows), None);
     }
 
-    /// A band that starts at 0.4 A and settles to 4 mA at sample `settled`.
-    fn band(k: usize, settled: usize) -> f64 {
-        if k < settled {
-            0.4
-        } else {
-            0.004
-        }
-    }
-
-    /// Rows with a tally, as a traced run gives them.
-    struct Tallied(Vec<Row>, TransientTally);
-
-    impl Samples for Tallied {
-        fn count(&self) -> usize {
-            self.0.count()
-        }
-        fn time(&self, i: usize) -> f64 {
-            self.0.time(i)
-        }
-        fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
-            self.0.visit(start, end, f);
-        }
-        fn tally(&self) -> Option<&TransientTally> {
-            Some(&self.1)
-        }
-    }
-
-    fn tallied(rows: &[Row], steps: usize) -> Tallied {
-        let mut tally = TransientTally::new(steps, TS);
-        for (i, r) in rows.iter().enumerate() {
-            tally.push(i, r);
-        }
-        Tallied(rows.to_vec(), tally)
-    }
-
-    #[test]
-    fn a_tally_gives_the_transient_the_rows_give() {
-        let s = preset("step").unwrap();
-        // Odd, so that a run one row short has the same second half (the tally is used then too).
-        let n = 3 * CHECKPOINT_EVERY + 17;
-        assert_eq!(n % 2, 1);
-        // The final band is 0.01: 0.01099 and 0.00901 are within 10 % of it, 0.0111, 0.0089 and
-        // 0.5 are not. Unsettled rows up to `until` (in the first, second, third or last
-        // interval, or none), among settled ones; the NIS decays from 42, so where the estimates
-        // count as converged depends on its mean over the second half.
-        for until in [40, 2100, 5000, n - 3, 0] {
-            let rows = trace(n, |k, r| {
-                let off = k < until && k % 7 != 3;
-                r.innov_band_a = if k == n - 1 {
-                    0.01
-                } else if off {
-                    [0.0111, 0.0089, 0.5][k % 3]
-                } else {
-                    [0.01, 0.01099, 0.00901][k % 3]
-                };
-                r.nis = 2.0 + (k % 13) as f64 * 0.25 + 40.0 * (-(k as f64) / 200.0).exp();
-            });
-            for len in [n, n - 1, n - 1000] {
-                let rows = &rows[..len];
-                let with = tallied(rows, n);
-                let last = rows[len - 1].t;
-                let used = with.1.half_index == rows.to_vec().first_at(0.5 * last).min(len - 1);
-                // The tally is used for the whole run and for one a row short, not for one that
-                // ended 1,000 rows early.
-                assert_eq!(used, len != n - 1000, "until {until}, {len} rows");
-                let (expect, got) = (transient(&s, &rows.to_vec()), transient(&s, &with));
-                assert_eq!(got.1, expect.1, "until {until}, {len} rows");
-                assert_eq!(got.0.t, expect.0.t);
-                assert_eq!(got.0.reason, expect.0.reason);
-            }
-        }
-    }
-
-    #[test]
-    fn transient_ends_at_the_later_of_controller_and_observer_start_up() {
-        let mut s = preset("step").unwrap();
-        s.ts = TS;
-        s.gains.k1 = 1000.0; // 5/1000 s = 5 ms: the slowest of 1000, 1200, 1200, 1200
-                             // Observer settled at 2 ms: the controller's 5 ms decides.
-        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
-        let (t, i) = transient(&s, &rows);
-        assert_eq!((t.t, i), (rows[5].t, 5));
-        assert!(t.reason.contains("(1/1000 s) = 5 ms"), "{}", t.reason);
-        assert!(t.reason.contains("settled at 2 ms"), "{}", t.reason);
-        // Within 10 % counts as settled; 11 % off at 19 ms does not.
-        let rows = trace(100, |k, r| {
-            r.innov_band_a = match k {
-                19 => 0.00444,
-                30 => 0.0043,
-                _ => band(k, 2),
-            }
-        });
-        assert_eq!(transient(&s, &rows).1, 20);
-        // IFOC: 5/(2π·100 Hz) = 7.96 ms, so the first sample at or after it is 8 ms.
-        s.controller = ControllerKind::Ifoc;
-        s.ifoc.current_bw = 100.0;
-        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
-        let (t, _) = transient(&s, &rows);
-        assert_eq!(t.t, rows[8].t);
-        assert!(t.reason.contains("IFOC current loops"), "{}", t.reason);
-        // A run of 10 samples (0–9 ms) is clamped to its half, 4.5 ms: first sample 5 ms.
-        let rows = trace(10, |k, r| r.innov_band_a = band(k, 2));
-        let (t, i) = transient(&s, &rows);
-        assert_eq!(i, 5);
-        assert!(t.reason.contains("clamped to half"), "{}", t.reason);
-        // One sample: the window is that sample.
-        assert_eq!(transient(&s, &rows[..1].to_vec()).1, 0);
-        // The estimates: NIS 50 until 30 ms, then 2. The first full 2 ms window with a mean
-        // within 2 × 2 is [30, 31] ms (mean 2), later than the controller's 8 ms; whether
-        // 31 − 29 ms counts as a whole window is up to rounding, so 31 or 32 ms.
-        let rows = trace(100, |k, r| {
-            r.innov_band_a = band(k, 2);
-            r.nis = if k < 30 { 50.0 } else { 2.0 };
-        });
-        let (t, i) = transient(&s, &rows);
-        assert!((31..=32).contains(&i), "{}", t.reason);
-        let converged = format!("EKF estimates converged at {i} ms");
-        assert!(t.reason.contains(&converged), "{}", t.reason);
-        // A noise-free run whose NIS decays to zero: the estimates' part is not used.
-        let rows = trace(100, |k, r| {
-            r.innov_band_a = band(k, 2);
-            r.nis = 100.0 * 0.5f64.powi(k as i32);
-        });
-        assert!(transient(&s, &rows).0.reason.contains("not used"));
-    }
-
     #[test]
     fn window_figures_cover_only_the_samples_after_the_transient() {
         let mut s = preset("ramp").unwrap();
@@ -1076,7 +632,7 @@ mod tests {
             r.flux = 0.7;
             r.flux_ref = 0.5;
         });
-        let f = figures_of(&s, &rows).figures.unwrap();
+        let f = report(&s, &rows).figures.unwrap();
         let names: Vec<&str> = f.iter().map(|f| f.name).collect();
         assert_eq!(
             names,
@@ -1117,28 +673,11 @@ mod tests {
         // A value that is not finite is left out rather than shown as NaN.
         let mut bad = rows.clone();
         bad[10].nis = f64::INFINITY;
-        let f = figures_of(&s, &bad).figures.unwrap();
+        let f = report(&s, &bad).figures.unwrap();
         assert_eq!(value(&f, "mean_nis"), None);
         assert!(value(&f, "mean_nis_high").is_some());
         assert!(f.iter().all(|f| f.value.is_finite()));
         // Nothing recorded: no figures.
-        assert!(figures_of(&s, &Vec::new()).figures.is_none());
-    }
-
-    #[test]
-    fn times_read_with_up_to_4_significant_digits() {
-        for (t, text) in [
-            (0.0, "0 ms"),
-            (5.0 / 1200.0, "4.167 ms"),
-            (84.0 * 50e-6, "4.2 ms"),
-            (0.00045, "0.45 ms"),
-            (0.09995, "99.95 ms"),
-            (0.05, "50 ms"),
-            (0.6, "600 ms"),
-            (1.0, "1 s"),
-            (12.34567, "12.35 s"),
-        ] {
-            assert_eq!(time_text(t), text);
-        }
+        assert!(report(&s, &Vec::new()).figures.is_none());
     }
 }

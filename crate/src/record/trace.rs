@@ -3,21 +3,19 @@
 //! checks every row it computes (finite values only) and can feed an M4 overview of the whole
 //! run as it goes, so that the first plot needs no replay.
 
-use super::recorder::{finite, M4};
-use super::{first_not, LoopState, Row, Sink, StabilityTally, COLUMNS};
+use super::m4::M4;
+use super::row::{finite, Row, Sink, COLUMNS};
+use super::tally::{StabilityTally, TransientTally, CHECKPOINT_EVERY};
 use crate::scenario::Scenario;
-
-/// Samples between checkpoints: a replay starts at most this many samples before the first row
-/// it is asked for (about 0.1 s at 20 kHz, under a millisecond of computing).
-pub const CHECKPOINT_EVERY: usize = 2048;
 
 /// M4 envelopes of groups of columns over a window of rows, fed row by row: while the run goes
 /// (the overview of the whole run) or by a replay.
 #[derive(Clone, Debug)]
-pub(super) struct Overview {
+pub struct Overview {
     /// Column indices per group.
-    pub(super) groups: Vec<Vec<usize>>,
-    pub(super) buckets: usize,
+    pub groups: Vec<Vec<usize>>,
+    /// Buckets of the envelopes (at least 1).
+    pub buckets: usize,
     /// The distinct columns of the groups.
     columns: Vec<usize>,
     envelopes: M4,
@@ -27,7 +25,7 @@ pub(super) struct Overview {
 
 impl Overview {
     /// Column indices of `names`, or the first unknown name.
-    pub(super) fn indices(names: &[impl AsRef<str>]) -> Result<Vec<usize>, String> {
+    pub fn indices(names: &[impl AsRef<str>]) -> Result<Vec<usize>, String> {
         names
             .iter()
             .map(|n| {
@@ -40,7 +38,8 @@ impl Overview {
             .collect()
     }
 
-    pub(super) fn new(groups: Vec<Vec<usize>>, start: usize, n: usize, buckets: usize) -> Overview {
+    /// Envelopes of `groups` over rows `start..start + n`, in `buckets` buckets.
+    pub fn new(groups: Vec<Vec<usize>>, start: usize, n: usize, buckets: usize) -> Overview {
         let mut columns: Vec<usize> = groups.iter().flatten().copied().collect();
         columns.sort_unstable();
         columns.dedup();
@@ -63,7 +62,7 @@ impl Overview {
 
     /// Feeds row `i`.
     #[inline]
-    pub(super) fn push(&mut self, i: usize, row: &Row) {
+    pub fn push(&mut self, i: usize, row: &Row) {
         let all = row.values();
         self.values[0] = row.t;
         for (v, &c) in self.values[1..].iter_mut().zip(&self.columns) {
@@ -73,45 +72,48 @@ impl Overview {
     }
 
     /// The envelopes, per group [t, columns...].
-    pub(super) fn finish(self) -> Vec<Vec<Vec<f64>>> {
+    pub fn finish(self) -> Vec<Vec<Vec<f64>>> {
         self.envelopes.finish()
     }
 
     /// A copy of the envelopes so far.
-    pub(super) fn result(&self) -> Vec<Vec<Vec<f64>>> {
+    pub fn result(&self) -> Vec<Vec<Vec<f64>>> {
         self.envelopes.clone().finish()
     }
 }
 
-/// Checkpoints of a run, and the rows it has run.
+/// Checkpoints of a run (copies of its loop's state `S`, whatever that holds), and the rows it
+/// has run.
 #[derive(Clone, Debug)]
-pub(super) struct Trace {
+pub struct Trace<S> {
     /// The state before sample j·CHECKPOINT_EVERY, for each j reached.
-    pub(super) checkpoints: Vec<LoopState>,
+    pub checkpoints: Vec<S>,
     /// Rows computed and checked so far.
-    pub(super) len: usize,
+    pub len: usize,
     /// The whole run's envelope, when asked for before the run started.
-    pub(super) overview: Option<Box<Overview>>,
+    pub overview: Option<Box<Overview>>,
     /// The stability report and what the start-up transient needs, tallied as the rows come, so
     /// that neither replays the whole run.
-    pub(super) stability: StabilityTally,
-    pub(super) transient: TransientTally,
+    pub stability: StabilityTally,
+    /// See [`TransientTally`].
+    pub transient: TransientTally,
     /// One column of every row recorded, when asked for (the overlay of runs reads it instead of
     /// replaying them): filled by a replay of the rows so far, then as the run goes.
-    pub(super) column: Option<Column>,
+    pub column: Option<Column>,
 }
 
 /// The values of one column, row by row.
 #[derive(Clone, Debug)]
-pub(super) struct Column {
+pub struct Column {
     /// Its index in [`COLUMNS`].
-    pub(super) index: usize,
-    pub(super) values: Vec<f64>,
+    pub index: usize,
+    /// Its value at each row so far.
+    pub values: Vec<f64>,
 }
 
-impl Trace {
+impl<S: Clone> Trace<S> {
     /// A trace with room for the checkpoints of the `steps` samples of `scenario`.
-    pub(super) fn new(scenario: &Scenario, steps: usize) -> Trace {
+    pub fn new(scenario: &Scenario, steps: usize) -> Trace<S> {
         Trace {
             checkpoints: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
             len: 0,
@@ -122,19 +124,19 @@ impl Trace {
         }
     }
 
-    /// Keeps a copy of `st` when its next sample starts a checkpoint interval; returns the first
-    /// sample of the next interval.
-    pub(super) fn checkpoint(&mut self, st: &LoopState) -> usize {
-        let j = st.k / CHECKPOINT_EVERY;
-        if st.k % CHECKPOINT_EVERY == 0 && j == self.checkpoints.len() {
+    /// Keeps a copy of `st`, the state before sample `k`, when `k` starts a checkpoint interval;
+    /// returns the first sample of the next interval.
+    pub fn checkpoint(&mut self, k: usize, st: &S) -> usize {
+        let j = k / CHECKPOINT_EVERY;
+        if k % CHECKPOINT_EVERY == 0 && j == self.checkpoints.len() {
             self.checkpoints.push(st.clone());
         }
         (j + 1) * CHECKPOINT_EVERY
     }
 
     /// Bytes the trace holds.
-    pub(super) fn bytes(&self) -> usize {
-        self.checkpoints.capacity() * std::mem::size_of::<LoopState>()
+    pub fn bytes(&self) -> usize {
+        self.checkpoints.capacity() * std::mem::size_of::<S>()
             + self.transient.bytes()
             + self
                 .column
@@ -143,7 +145,7 @@ impl Trace {
     }
 }
 
-impl Sink for Trace {
+impl<S> Sink for Trace<S> {
     #[inline]
     fn wants(&mut self) -> bool {
         true
@@ -163,51 +165,5 @@ impl Sink for Trace {
         }
         self.len += 1;
         Ok(())
-    }
-}
-
-/// What the transient (`figures::transient`) reads from every row, gathered by a traced run as its rows come: per
-/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sum
-/// of the NIS over the second half of the run as planned (from −0, in row order, as the
-/// transient sums it). A run that ends early has another second half; the transient then
-/// reads the rows again.
-#[derive(Clone, Debug)]
-pub(super) struct TransientTally {
-    pub(super) band: Vec<(f64, f64)>,
-    pub(super) half_index: usize,
-    pub(super) late_sum: f64,
-}
-
-impl TransientTally {
-    /// For a run of `steps` samples of `ts` (row k at time k·ts).
-    pub(super) fn new(steps: usize, ts: f64) -> TransientTally {
-        let last = steps.saturating_sub(1);
-        // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
-        let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
-        TransientTally {
-            band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
-            half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
-            late_sum: -0.0,
-        }
-    }
-
-    /// Takes row `i`, the rows coming in order from 0.
-    #[inline]
-    pub(super) fn push(&mut self, i: usize, r: &Row) {
-        let band = r.innov_band_a;
-        if i % CHECKPOINT_EVERY == 0 {
-            self.band.push((band, band));
-        } else if let Some((lo, hi)) = self.band.last_mut() {
-            *lo = if band < *lo { band } else { *lo };
-            *hi = if band > *hi { band } else { *hi };
-        }
-        if i >= self.half_index {
-            self.late_sum += r.nis;
-        }
-    }
-
-    /// Bytes it holds.
-    pub(super) fn bytes(&self) -> usize {
-        self.band.capacity() * std::mem::size_of::<(f64, f64)>()
     }
 }

@@ -1,180 +1,9 @@
-//! The recorded trace: one column per signal, preallocated so the loop never allocates,
-//! plus CSV export and min/max-envelope decimation for plots.
+//! The rows of a run kept in memory: one `Row` per kept sample, preallocated so that the loop
+//! never allocates.
 
-use std::fmt::Write;
-
-macro_rules! define_row {
-    ($($(#[doc = $doc:literal])* $name:ident),* $(,)?) => {
-        /// One recorded sample; field names are the CSV column names.
-        #[derive(Clone, Copy, Debug, Default)]
-        pub struct Row {
-            $($(#[doc = $doc])* pub $name: f64,)*
-        }
-
-        /// Column names in CSV order.
-        pub const COLUMNS: &[&str] = &[$(stringify!($name)),*];
-
-        /// What each column is, with its unit, in CSV order (the field docs).
-        pub const COLUMN_DOCS: &[&str] = &[$(concat!($($doc),*).trim_ascii()),*];
-
-        /// Number of columns.
-        pub const NUM_COLUMNS: usize = COLUMNS.len();
-
-        impl Row {
-            /// The values in CSV order.
-            pub fn values(&self) -> [f64; NUM_COLUMNS] {
-                [$(self.$name),*]
-            }
-
-            /// The value of column `i` (in CSV order); panics past the last column.
-            #[inline]
-            pub fn get(&self, i: usize) -> f64 {
-                const FIELDS: &[fn(&Row) -> f64] = &[$(|r| r.$name),*];
-                FIELDS[i](self)
-            }
-
-            /// Whether every value is finite. Straight-line bit operations with no early exit:
-            /// an exponent of all ones (inf or NaN) plus one carries into the sign bit.
-            #[inline]
-            pub fn is_finite(&self) -> bool {
-                const EXPONENT: u64 = 0x7ff0_0000_0000_0000;
-                let mut carry = 0u64;
-                $(carry |= (self.$name.to_bits() & EXPONENT).wrapping_add(1 << 52);)*
-                carry >> 63 == 0
-            }
-        }
-    };
-}
-
-define_row! {
-    /// Time t_k (s).
-    t,
-    /// Speed reference ω_d (rad/s).
-    omega_ref,
-    /// True speed ω = x1 (rad/s).
-    omega,
-    /// Posterior speed estimate x̂1 (rad/s).
-    omega_hat,
-    /// True stator current i_sa (A).
-    i_sa,
-    /// True stator current i_sb (A).
-    i_sb,
-    /// Posterior estimate of i_sa (A).
-    i_sa_hat,
-    /// Posterior estimate of i_sb (A).
-    i_sb_hat,
-    /// True rotor flux φ_ra (Wb).
-    phi_ra,
-    /// True rotor flux φ_rb (Wb).
-    phi_rb,
-    /// Posterior estimate of φ_ra (Wb).
-    phi_ra_hat,
-    /// Posterior estimate of φ_rb (Wb).
-    phi_rb_hat,
-    /// Applied voltage u_sa after saturation (V).
-    u_a,
-    /// Applied voltage u_sb after saturation (V).
-    u_b,
-    /// Speed error z1 (rad/s).
-    z1,
-    /// Torque error z2 (rad/s²).
-    z2,
-    /// Flux error z3 (Wb²).
-    z3,
-    /// Flux-derivative error z4 (Wb²/s).
-    z4,
-    /// Measured current y_a (A).
-    y_a,
-    /// Measured current y_b (A).
-    y_b,
-    /// True rotor-flux modulus |φ_r| (Wb).
-    flux,
-    /// Estimated rotor-flux modulus (x̂4² + x̂5²)^½ (Wb).
-    flux_hat,
-    /// Target flux modulus ψ_d^½ (Wb).
-    flux_ref,
-    /// Speed tracking error ω − ω_d (rad/s).
-    omega_err,
-    /// Speed estimation error ω − ω̂ (rad/s).
-    omega_est_err,
-    /// Flux-modulus estimation error |φ_r| − |φ̂_r| (Wb).
-    flux_est_err,
-    /// Estimated flux modulus squared x̂4² + x̂5², regulated by step 3 (Wb²).
-    flux_sq_hat,
-    /// Estimated torque term a1(x3·x̂4 − x2·x̂5) (rad/s²).
-    torque_hat,
-    /// Virtual control v1 = v1a + v1s, eq (26): the torque term step 1 asks for (rad/s²).
-    v1,
-    /// Feedforward part v1a of v1, eq (27) (rad/s²).
-    v1a,
-    /// Feedback part v1s = −k1s1·z1 of v1, eq (28) (rad/s²).
-    v1s,
-    /// Input v2 = v2a + v2s of step 2, eq (34) (rad/s³).
-    v2,
-    /// Feedforward part v2a = −ψ2 − z1 of v2, eq (35) (rad/s³).
-    v2a,
-    /// Feedback part v2s = v2s1 + v2s2 of v2, eq (36) (rad/s³).
-    v2s,
-    /// Virtual control v3 = v3a + v3s of step 3, eq (45) (Wb²/s).
-    v3,
-    /// Feedforward part v3a = −ψ3 of v3 (Wb²/s).
-    v3a,
-    /// Feedback part v3s = −k3·z3 of v3 (Wb²/s).
-    v3s,
-    /// Input v4 = v4a + v4s of step 4, eq (49) (Wb²/s²).
-    v4,
-    /// Feedforward part v4a = −ψ4 − z3 of v4, eq (50) (Wb²/s²).
-    v4a,
-    /// Feedback part v4s = v4s1 + v4s2 of v4, eq (51) (Wb²/s²).
-    v4s,
-    /// Known part ψ2 of ż2, eq (33) (rad/s³).
-    psi2,
-    /// Known part ψ3 of ż3, eq (43) (Wb²/s).
-    psi3,
-    /// Known part ψ4 of ż4, eq (47) (Wb²/s²).
-    psi4,
-    /// Commanded u_sa before saturation (V).
-    u_a_cmd,
-    /// Commanded u_sb before saturation (V).
-    u_b_cmd,
-    /// Speed estimate the controller used: x̂1 (EKF) for backstepping, the MRAS estimate for IFOC (rad/s).
-    omega_used,
-    /// Lyapunov function V = ½ Σ z_i² (mixed units).
-    lyapunov,
-    /// Innovation ỹ_a (A).
-    innov_a,
-    /// Innovation ỹ_b (A).
-    innov_b,
-    /// 2σ band of the innovation ỹ_a: 2·S_aa^½ (A).
-    innov_band_a,
-    /// 2σ band of the innovation ỹ_b: 2·S_bb^½ (A).
-    innov_band_b,
-    /// Innovation covariance S_aa (A²).
-    s_aa,
-    /// Innovation covariance S_ab (A²).
-    s_ab,
-    /// Innovation covariance S_bb (A²).
-    s_bb,
-    /// Normalised innovation squared ỹᵀS⁻¹ỹ (dimensionless).
-    nis,
-    /// Posterior speed variance P_11 ((rad/s)²).
-    p_omega,
-    /// Estimated constant load torque â2·J (N m); the model's T0 when the load is not estimated.
-    load_hat,
-    /// Estimated rotor resistance R̂_r (Ω); the model's R_r when it is not estimated.
-    rr_hat,
-    /// True constant load torque T0 plus the unknown step (N m).
-    load,
-    /// 2σ band of the load-torque estimate from P (N m); 0 when the load is not estimated.
-    load_band,
-    /// True rotor resistance R_r of the plant (Ω).
-    rr,
-    /// 2σ band of the rotor-resistance estimate from P (Ω); 0 when it is not estimated.
-    rr_band,
-    /// PWM current ripple over [t_k, t_k + Ts): the largest distance of i_s at a switching
-    /// instant from the straight line between its values at t_k and t_k + Ts (A); 0 without PWM.
-    i_ripple,
-}
+#[cfg(test)]
+use super::m4::m4;
+use super::row::{finite, Row, Sink, COLUMNS};
 
 /// The recorded trace: one `Row` per kept sample, so that recording is a single copy; sample k
 /// of the run is kept when k is a multiple of `every`.
@@ -200,10 +29,9 @@ impl Recorder {
     }
 
     /// Records the next sample if it is kept (samples 0, every, 2·every, ...); `row` is only
-    /// evaluated then. See [`super::Sink`].
+    /// evaluated then. See [`Sink`].
     #[cfg(test)]
     pub fn record(&mut self, row: impl FnOnce() -> Row) -> Result<(), (&'static str, f64)> {
-        use super::Sink;
         if self.wants() {
             self.take(&row())
         } else {
@@ -263,53 +91,7 @@ impl Recorder {
     }
 }
 
-/// A visitor of rows in order: it returns false to stop.
-pub(super) type RowVisitor<'a> = dyn FnMut(&Row) -> bool + 'a;
-
-/// Writes the rows that `rows` gives (it calls its argument with each, in order, until that
-/// returns false) as CSV lines, preceded by the header when they start at row 0 (shortest
-/// round-trip number format).
-pub(super) fn write_csv(
-    out: &mut impl std::io::Write,
-    start: usize,
-    rows: &mut dyn FnMut(&mut RowVisitor<'_>),
-) -> std::io::Result<()> {
-    if start == 0 {
-        writeln!(out, "{}", COLUMNS.join(","))?;
-    }
-    let mut line = String::with_capacity(NUM_COLUMNS * 24);
-    let mut result = Ok(());
-    rows(&mut |row| {
-        line.clear();
-        for (i, v) in row.values().iter().enumerate() {
-            if i > 0 {
-                line.push(',');
-            }
-            write!(line, "{v}").expect("writing to a String");
-        }
-        line.push('\n');
-        result = out.write_all(line.as_bytes());
-        result.is_ok()
-    });
-    result
-}
-
-/// `Ok` when every value of `row` is finite; otherwise the first column that is not, and its
-/// value, so that a trace holds finite numbers only.
-#[inline]
-pub(super) fn finite(row: &Row) -> Result<(), (&'static str, f64)> {
-    if row.is_finite() {
-        return Ok(());
-    }
-    let values = row.values();
-    let i = values
-        .iter()
-        .position(|v| !v.is_finite())
-        .expect("one is not finite");
-    Err((COLUMNS[i], values[i]))
-}
-
-impl super::Sink for Recorder {
+impl Sink for Recorder {
     /// Samples 0, every, 2·every, ... are kept.
     #[inline]
     fn wants(&mut self) -> bool {
@@ -337,211 +119,6 @@ fn window(rows: &[Row], t0: f64, t1: f64) -> (usize, usize) {
     let start = rows.partition_point(|r| r.t < t0);
     let end = rows.partition_point(|r| r.t <= t1).max(start);
     (start, end)
-}
-
-/// Start of bucket `b` of `buckets` over `n` rows: b·n/buckets in 64 bits (on wasm32 the product
-/// of a large trace and a wide plot overflows usize).
-fn split(b: usize, n: usize, buckets: usize) -> usize {
-    (b as u64 * n as u64 / buckets as u64) as usize
-}
-
-/// Rows per bucket up to which a window is sent whole: M4 keeps up to four per bucket anyway.
-const M4_POINTS: usize = 4;
-
-/// M4 envelope of `series` (functions of the row index) over rows `start..start + n`, as
-/// [t, series...]: see [`M4`], which it feeds row by row.
-pub fn m4(
-    t: impl Fn(usize) -> f64,
-    series: &[&dyn Fn(usize) -> f64],
-    start: usize,
-    n: usize,
-    buckets: usize,
-) -> Vec<Vec<f64>> {
-    let mut m = M4::new(
-        vec![(0..series.len()).collect()],
-        series.len(),
-        start,
-        n,
-        buckets,
-    );
-    let mut values = vec![0.0; series.len() + 1];
-    for i in start..start + n {
-        values[0] = t(i);
-        for (v, f) in values[1..].iter_mut().zip(series) {
-            *v = f(i);
-        }
-        m.push(i, &values);
-    }
-    m.finish().pop().expect("one group")
-}
-
-/// M4 envelopes (Jugel et al., VLDB 2014) of groups of series over a window of rows
-/// `start..start + n`, fed in row order one row at a time, so that a window can be enveloped
-/// while it is computed (by the run itself, or by a replay) without holding its rows.
-///
-/// The rows are split into `buckets` equal buckets; for each group, each bucket keeps its first
-/// and last row and, for every series of the group, the row of its minimum and of its maximum
-/// (the first such row on ties), in row order and without repeats. Every series of a group is
-/// given at every row the group keeps, so each emitted (t, value) pair is a recorded sample, t
-/// never decreases, and each bucket keeps the extremes of every series at their own times.
-/// Windows of at most four rows per bucket are returned whole. Each series' extremes are found
-/// once, however many groups it is in. Allocates only in [`M4::new`].
-#[derive(Clone, Debug)]
-pub struct M4 {
-    start: usize,
-    n: usize,
-    buckets: usize,
-    whole: bool,
-    /// Values per row: t and the series.
-    width: usize,
-    /// Series indices (0-based) of each group.
-    groups: Vec<Vec<usize>>,
-    /// Current bucket and its rows lo..hi.
-    bucket: usize,
-    lo: usize,
-    hi: usize,
-    /// The current bucket's rows so far, one after the other: value c of the row at offset o in
-    /// the bucket is at o·width + c.
-    rows: Vec<f64>,
-    /// Per series, the offset in the bucket of its minimum and of its maximum (the first of
-    /// equal values), found when the bucket is complete.
-    min_at: Vec<usize>,
-    max_at: Vec<usize>,
-    kept: Vec<usize>,
-    /// Per group, [t, its series...].
-    out: Vec<Vec<Vec<f64>>>,
-}
-
-impl M4 {
-    /// Envelopes of `groups` (each a list of series indices below `series`) over rows
-    /// `start..start + n` in at most `buckets` buckets.
-    pub fn new(
-        groups: Vec<Vec<usize>>,
-        series: usize,
-        start: usize,
-        n: usize,
-        buckets: usize,
-    ) -> M4 {
-        let buckets = buckets.max(1);
-        let whole = n <= M4_POINTS.saturating_mul(buckets);
-        let per_bucket = n / buckets + 1;
-        let width = series + 1;
-        let out = groups
-            .iter()
-            .map(|g| {
-                let capacity = if whole {
-                    n
-                } else {
-                    buckets * (2 + 2 * g.len()).min(per_bucket)
-                };
-                // Each its own capacity (`vec![v; n]` clones, and a clone drops the capacity).
-                (0..=g.len())
-                    .map(|_| Vec::with_capacity(capacity))
-                    .collect()
-            })
-            .collect();
-        let widest = groups.iter().map(Vec::len).max().unwrap_or(0);
-        let mut m = M4 {
-            start,
-            n,
-            buckets,
-            whole,
-            width,
-            groups,
-            bucket: 0,
-            lo: start,
-            hi: start,
-            rows: if whole {
-                Vec::new()
-            } else {
-                vec![0.0; per_bucket * width]
-            },
-            min_at: vec![0; series],
-            max_at: vec![0; series],
-            kept: Vec::with_capacity(2 + 2 * widest),
-            out,
-        };
-        m.hi = m.bucket_end(0);
-        m
-    }
-
-    /// First row after bucket `b`.
-    fn bucket_end(&self, b: usize) -> usize {
-        self.start + split(b + 1, self.n, self.buckets)
-    }
-
-    /// Feeds row `i` (the rows of the window in order): `values` is [t, series...].
-    pub fn push(&mut self, i: usize, values: &[f64]) {
-        debug_assert_eq!(values.len(), self.width);
-        if self.whole {
-            for (g, out) in self.groups.iter().zip(&mut self.out) {
-                out[0].push(values[0]);
-                for (o, &s) in out[1..].iter_mut().zip(g) {
-                    o.push(values[s + 1]);
-                }
-            }
-            return;
-        }
-        let (width, offset) = (self.width, i - self.lo);
-        self.rows[offset * width..(offset + 1) * width].copy_from_slice(values);
-        if i + 1 == self.hi {
-            // The bucket is complete. Each series' extremes (the first of equal values), with
-            // selects rather than branches: which sample is an extreme is unpredictable.
-            let len = offset + 1;
-            // Four columns at a time: four independent chains of selects overlap (more spill
-            // the registers on x86-64).
-            const LANES: usize = 4;
-            let series = self.min_at.len();
-            let rows = &self.rows;
-            for first in (0..series).step_by(LANES) {
-                let lanes = LANES.min(series - first);
-                let at = |l: usize, j: usize| rows[j * width + 1 + first + l];
-                let (mut min, mut max) = ([0.0; LANES], [0.0; LANES]);
-                let (mut min_at, mut max_at) = ([0; LANES], [0; LANES]);
-                for l in 0..lanes {
-                    (min[l], max[l]) = (at(l, 0), at(l, 0));
-                }
-                for j in 1..len {
-                    for l in 0..lanes {
-                        let v = at(l, j);
-                        let (lower, higher) = (v < min[l], v > max[l]);
-                        min[l] = if lower { v } else { min[l] };
-                        min_at[l] = if lower { j } else { min_at[l] };
-                        max[l] = if higher { v } else { max[l] };
-                        max_at[l] = if higher { j } else { max_at[l] };
-                    }
-                }
-                self.min_at[first..first + lanes].copy_from_slice(&min_at[..lanes]);
-                self.max_at[first..first + lanes].copy_from_slice(&max_at[..lanes]);
-            }
-            // Per group, its kept rows in row order, each once.
-            for (g, out) in self.groups.iter().zip(&mut self.out) {
-                self.kept.clear();
-                self.kept.extend([0, offset]);
-                for &s in g {
-                    self.kept.extend([self.min_at[s], self.max_at[s]]);
-                }
-                self.kept.sort_unstable();
-                self.kept.dedup();
-                for &k in &self.kept {
-                    out[0].push(self.rows[k * width]);
-                    for (o, &s) in out[1..].iter_mut().zip(g) {
-                        o.push(self.rows[k * width + s + 1]);
-                    }
-                }
-            }
-            self.bucket += 1;
-            self.lo = self.hi;
-            if self.bucket < self.buckets {
-                self.hi = self.bucket_end(self.bucket);
-            }
-        }
-    }
-
-    /// The envelopes, per group [t, its series...]: rows not fed are missing from them.
-    pub fn finish(self) -> Vec<Vec<Vec<f64>>> {
-        self.out
-    }
 }
 
 #[cfg(test)]
@@ -578,6 +155,7 @@ impl Recorder {
 
 #[cfg(test)]
 mod tests {
+    use super::super::m4::{split, M4, M4_POINTS};
     use super::*;
 
     fn ramp_recorder(n: usize) -> Recorder {
@@ -657,7 +235,7 @@ mod tests {
     fn chunks_of_rows_concatenate_to_the_whole_csv() {
         // A run that keeps its rows, written through the one CSV writer.
         let s = crate::scenario::preset("decay").unwrap();
-        let mut sim = super::super::Simulation::new(&s, 1).unwrap();
+        let mut sim = crate::sim::Simulation::new(&s, 1).unwrap();
         sim.run().unwrap();
         assert_eq!(sim.len(), 400);
         let whole = sim.csv().into_bytes();

@@ -1,0 +1,31 @@
+//! What a run keeps of its samples, and the figures read from them.
+//!
+//! The loop hands each sample's [`Row`] to a [`Sink`], and reads its rows back through
+//! [`Samples`]; nothing here knows how the loop computes a row. A run keeps its rows in memory
+//! ([`Recorder`]) or keeps checkpoints of the loop's state and replays any window from them
+//! ([`Trace`]), tallying as the rows come what its figures need of every row ([`StabilityTally`],
+//! [`TransientTally`]). The
+//! figures ([`report`], [`metrics`]) and the plots' envelopes ([`M4`]) read rows in order.
+
+mod figures;
+mod m4;
+mod metrics;
+mod recorder;
+mod row;
+mod samples;
+mod tally;
+mod text;
+mod trace;
+mod transient;
+
+pub use figures::{report, Figure, Report, Trend, Warning};
+pub use m4::{m4, M4};
+pub use metrics::{metrics, Metrics};
+pub use recorder::Recorder;
+pub use row::{
+    first_not, is_saturated, write_csv, Row, RowVisitor, Sink, COLUMNS, COLUMN_DOCS, NUM_COLUMNS,
+};
+pub use samples::Samples;
+pub use tally::{Stability, StabilityTally, TransientTally, CHECKPOINT_EVERY};
+pub use trace::{Column, Overview, Trace};
+pub use transient::{transient, Transient};

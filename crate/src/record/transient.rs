@@ -1,0 +1,322 @@
+//! The end of a run's start-up transient: where the controller's and the observer's start-up are
+//! over, so that the figures after it describe the run and not its start.
+
+use super::samples::Samples;
+use super::tally::{TransientTally, CHECKPOINT_EVERY};
+use super::text::time_text;
+use crate::scenario::{ControllerKind, Scenario};
+use serde::Serialize;
+use std::f64::consts::PI;
+
+/// Time constants of the slowest designed rate after which the controller's start-up is over:
+/// e^−5 < 1 % of the initial error remains.
+const CONTROLLER_TIME_CONSTANTS: f64 = 5.0;
+
+/// The innovation band counts as settled within this fraction of its value at the last sample.
+const BAND_SETTLED: f64 = 0.10;
+
+/// Window of the moving mean NIS that tells when the EKF's estimates have converged (s).
+const NIS_WINDOW: f64 = 2e-3;
+
+/// The estimates count as converged once the moving mean NIS stays within this factor of the
+/// mean NIS over the second half of the run.
+const NIS_SETTLED: f64 = 2.0;
+
+/// Where the start-up transient ends, and why there.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Transient {
+    /// End of the transient (s): a recorded sample time.
+    pub t: f64,
+    /// One line naming the controller's and the observer's start-up times.
+    pub reason: String,
+}
+
+/// The end of the start-up transient of a run: the first recorded sample time at or after the
+/// later of
+///
+/// - (a) the observer's start-up: the first recorded time from which the EKF innovation band
+///   `innov_band_a` (2·S_aa^½) stays within 10 % of its value at the last recorded sample (P0
+///   starts it near 0.4 A; on the presets it settles to about 4 mA within 0.5–1.4 ms), and
+/// - (b) the controller's start-up: five time constants of its slowest designed rate,
+///   5/min(k1, k2, k3, k4) for backstepping (4.17 ms at the paper's 1200/s), or
+///   5/(2π·current_bw) for the IFOC baseline (its current loops), and
+/// - (c) the EKF's estimates: the end of the first full 2 ms window whose mean NIS is within
+///   twice the mean NIS of the second half of the run (the estimates start 10 % off and take
+///   about 10 ms to converge; until then the NIS is far above its later level); left out when no
+///   window in the first half gets there (a noise-free run, whose NIS decays towards zero),
+///
+/// clamped to at most half the recorded run, so that a window of samples always remains after
+/// it. With nothing recorded yet, t = 0. Also returns the index of its first row in `rows`.
+pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
+    let len = rows.count();
+    if len == 0 {
+        return (
+            Transient {
+                t: 0.0,
+                reason: "nothing recorded yet".to_string(),
+            },
+            0,
+        );
+    }
+    let (first_t, last) = (rows.time(0), rows.row(len - 1));
+    let half = first_t + 0.5 * (last.t - first_t);
+    let half_index = rows.first_at(half).min(len - 1);
+    // (a) The last row outside the band settles nothing; the one after it starts the settled run.
+    // A NaN band counts as not settled. (c) needs the mean NIS of the rows from half on; one pass
+    // gives both.
+    let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
+    let (mut unsettled, mut late_sum) = (None, -0.0);
+    match rows
+        .tally()
+        .filter(|t| t.half_index == half_index && t.band.len() == len.div_ceil(CHECKPOINT_EVERY))
+    {
+        // A traced run's tally, when its second half is the one it summed.
+        Some(tally) => {
+            unsettled = last_unsettled(tally, rows, len, &settled);
+            late_sum = tally.late_sum;
+        }
+        None => rows.visit(0, len, &mut |i, r| {
+            if !settled(r.innov_band_a) {
+                unsettled = Some(i);
+            }
+            if i >= half_index {
+                late_sum += r.nis;
+            }
+            true
+        }),
+    }
+    let observer = unsettled.map_or(0, |i| (i + 1).min(len - 1));
+    let t_observer = rows.time(observer);
+    // (b)
+    let (t_controller, controller) = match s.controller {
+        ControllerKind::Backstepping => {
+            let g = &s.gains;
+            let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
+            let t = CONTROLLER_TIME_CONSTANTS / k;
+            (
+                t,
+                format!(
+                    "5 time constants of the slowest designed error rate (1/{k} s) = {}",
+                    time_text(t)
+                ),
+            )
+        }
+        ControllerKind::Ifoc => {
+            let bw = s.ifoc.current_bw;
+            let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
+            (
+                t,
+                format!(
+                    "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
+                    time_text(t)
+                ),
+            )
+        }
+    };
+    // (c) The moving window holds the (t, NIS) of rows start..=i.
+    let late_mean = late_sum / (len - half_index) as f64;
+    let mut window = std::collections::VecDeque::new();
+    let (mut sum, mut start, mut estimates) = (0.0, 0, None);
+    rows.visit(0, half_index, &mut |i, r| {
+        sum += r.nis;
+        window.push_back((r.t, r.nis));
+        while let Some(&(t, nis)) = window.front() {
+            if r.t - t < NIS_WINDOW {
+                break;
+            }
+            sum -= nis;
+            window.pop_front();
+            start += 1;
+        }
+        if start > 0 && sum / (i + 1 - start) as f64 <= NIS_SETTLED * late_mean {
+            estimates = Some(r.t);
+            return false;
+        }
+        true
+    });
+    let t_estimates = estimates.unwrap_or(first_t);
+    let later = t_controller.max(t_observer).max(t_estimates);
+    let target = later.min(half);
+    // The rows are in time order and the last one is at or after `half`.
+    let index = rows.first_at(target).min(len - 1);
+    let mut reason = format!(
+        "{controller}; EKF innovation covariance settled at {} (2σ band within 10 % of its final value); EKF estimates converged at {} (2 ms mean NIS within twice its level in the second half)",
+        time_text(t_observer),
+        estimates.map_or("never in the first half: not used".to_string(), time_text)
+    );
+    if later > half {
+        reason.push_str(&format!(
+            "; clamped to half the recorded run ({})",
+            time_text(half)
+        ));
+    }
+    (
+        Transient {
+            t: rows.time(index),
+            reason,
+        },
+        index,
+    )
+}
+
+/// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
+/// form an interval of values (`settled` compares |band − final| with a bound, and rounding
+/// is monotonic), so an interval of rows whose least and greatest band are settled is settled
+/// throughout; only the last interval that is not is read again.
+fn last_unsettled(
+    tally: &TransientTally,
+    rows: &dyn Samples,
+    len: usize,
+    settled: &dyn Fn(f64) -> bool,
+) -> Option<usize> {
+    let b = tally
+        .band
+        .iter()
+        .rposition(|&(lo, hi)| !(settled(lo) && settled(hi)))?;
+    let mut last = None;
+    rows.visit(
+        b * CHECKPOINT_EVERY,
+        len.min((b + 1) * CHECKPOINT_EVERY),
+        &mut |i, r| {
+            if !settled(r.innov_band_a) {
+                last = Some(i);
+            }
+            true
+        },
+    );
+    last
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::record::samples::testing::{trace, TS};
+    use crate::record::Row;
+    use crate::scenario::preset;
+
+    /// A band that starts at 0.4 A and settles to 4 mA at sample `settled`.
+    fn band(k: usize, settled: usize) -> f64 {
+        if k < settled {
+            0.4
+        } else {
+            0.004
+        }
+    }
+
+    /// Rows with a tally, as a traced run gives them.
+    struct Tallied(Vec<Row>, TransientTally);
+
+    impl Samples for Tallied {
+        fn count(&self) -> usize {
+            self.0.count()
+        }
+        fn time(&self, i: usize) -> f64 {
+            self.0.time(i)
+        }
+        fn visit(&self, start: usize, end: usize, f: &mut dyn FnMut(usize, &Row) -> bool) {
+            self.0.visit(start, end, f);
+        }
+        fn tally(&self) -> Option<&TransientTally> {
+            Some(&self.1)
+        }
+    }
+
+    fn tallied(rows: &[Row], steps: usize) -> Tallied {
+        let mut tally = TransientTally::new(steps, TS);
+        for (i, r) in rows.iter().enumerate() {
+            tally.push(i, r);
+        }
+        Tallied(rows.to_vec(), tally)
+    }
+
+    #[test]
+    fn a_tally_gives_the_transient_the_rows_give() {
+        let s = preset("step").unwrap();
+        // Odd, so that a run one row short has the same second half (the tally is used then too).
+        let n = 3 * CHECKPOINT_EVERY + 17;
+        assert_eq!(n % 2, 1);
+        // The final band is 0.01: 0.01099 and 0.00901 are within 10 % of it, 0.0111, 0.0089 and
+        // 0.5 are not. Unsettled rows up to `until` (in the first, second, third or last
+        // interval, or none), among settled ones; the NIS decays from 42, so where the estimates
+        // count as converged depends on its mean over the second half.
+        for until in [40, 2100, 5000, n - 3, 0] {
+            let rows = trace(n, |k, r| {
+                let off = k < until && k % 7 != 3;
+                r.innov_band_a = if k == n - 1 {
+                    0.01
+                } else if off {
+                    [0.0111, 0.0089, 0.5][k % 3]
+                } else {
+                    [0.01, 0.01099, 0.00901][k % 3]
+                };
+                r.nis = 2.0 + (k % 13) as f64 * 0.25 + 40.0 * (-(k as f64) / 200.0).exp();
+            });
+            for len in [n, n - 1, n - 1000] {
+                let rows = &rows[..len];
+                let with = tallied(rows, n);
+                let last = rows[len - 1].t;
+                let used = with.1.half_index == rows.to_vec().first_at(0.5 * last).min(len - 1);
+                // The tally is used for the whole run and for one a row short, not for one that
+                // ended 1,000 rows early.
+                assert_eq!(used, len != n - 1000, "until {until}, {len} rows");
+                let (expect, got) = (transient(&s, &rows.to_vec()), transient(&s, &with));
+                assert_eq!(got.1, expect.1, "until {until}, {len} rows");
+                assert_eq!(got.0.t, expect.0.t);
+                assert_eq!(got.0.reason, expect.0.reason);
+            }
+        }
+    }
+
+    #[test]
+    fn transient_ends_at_the_later_of_controller_and_observer_start_up() {
+        let mut s = preset("step").unwrap();
+        s.ts = TS;
+        s.gains.k1 = 1000.0; // 5/1000 s = 5 ms: the slowest of 1000, 1200, 1200, 1200
+                             // Observer settled at 2 ms: the controller's 5 ms decides.
+        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
+        let (t, i) = transient(&s, &rows);
+        assert_eq!((t.t, i), (rows[5].t, 5));
+        assert!(t.reason.contains("(1/1000 s) = 5 ms"), "{}", t.reason);
+        assert!(t.reason.contains("settled at 2 ms"), "{}", t.reason);
+        // Within 10 % counts as settled; 11 % off at 19 ms does not.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = match k {
+                19 => 0.00444,
+                30 => 0.0043,
+                _ => band(k, 2),
+            }
+        });
+        assert_eq!(transient(&s, &rows).1, 20);
+        // IFOC: 5/(2π·100 Hz) = 7.96 ms, so the first sample at or after it is 8 ms.
+        s.controller = ControllerKind::Ifoc;
+        s.ifoc.current_bw = 100.0;
+        let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
+        let (t, _) = transient(&s, &rows);
+        assert_eq!(t.t, rows[8].t);
+        assert!(t.reason.contains("IFOC current loops"), "{}", t.reason);
+        // A run of 10 samples (0–9 ms) is clamped to its half, 4.5 ms: first sample 5 ms.
+        let rows = trace(10, |k, r| r.innov_band_a = band(k, 2));
+        let (t, i) = transient(&s, &rows);
+        assert_eq!(i, 5);
+        assert!(t.reason.contains("clamped to half"), "{}", t.reason);
+        // One sample: the window is that sample.
+        assert_eq!(transient(&s, &rows[..1].to_vec()).1, 0);
+        // The estimates: NIS 50 until 30 ms, then 2. The first full 2 ms window with a mean
+        // within 2 × 2 is [30, 31] ms (mean 2), later than the controller's 8 ms; whether
+        // 31 − 29 ms counts as a whole window is up to rounding, so 31 or 32 ms.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = band(k, 2);
+            r.nis = if k < 30 { 50.0 } else { 2.0 };
+        });
+        let (t, i) = transient(&s, &rows);
+        assert!((31..=32).contains(&i), "{}", t.reason);
+        let converged = format!("EKF estimates converged at {i} ms");
+        assert!(t.reason.contains(&converged), "{}", t.reason);
+        // A noise-free run whose NIS decays to zero: the estimates' part is not used.
+        let rows = trace(100, |k, r| {
+            r.innov_band_a = band(k, 2);
+            r.nis = 100.0 * 0.5f64.powi(k as i32);
+        });
+        assert!(transient(&s, &rows).0.reason.contains("not used"));
+    }
+}
