@@ -49,6 +49,16 @@ export function excerpt(text, max = 40) {
 }
 
 /**
+ * The first few `items` joined by `sep`, and how many more there are: a message quotes a bounded
+ * number of parts of an address, however many it holds.
+ */
+export function listed(items, sep = ', ') {
+  const shown = items.slice(0, LISTED).join(sep);
+  return items.length > LISTED ? `${shown} … and ${(items.length - LISTED).toLocaleString()} more` : shown;
+}
+const LISTED = 5;
+
+/**
  * The pinned scenarios of a `pins` fragment value (`a|b|...`, each URI-encoded), and the parts
  * that do not decode, which are left out.
  */

@@ -1,0 +1,108 @@
+// Downloads: the run's CSV, which the worker sends in chunks of rows, and a PNG of the plots in
+// the open tab.
+import { say, ui } from './page.js';
+import { png } from './png.js';
+import { presetNamed } from './url.js';
+
+// The browser reads a blob: URL while it saves the download, which for a CSV of a gigabyte
+// takes seconds; revoking the URL earlier would fail the download.
+const REVOKE_AFTER_MS = 120_000;
+
+/** Saves `blob` as a download named `name`. */
+export function download(blob, name) {
+  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: name });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), REVOKE_AFTER_MS);
+}
+
+/** The export buttons; the CSV export under way is `state.export`: {serial, parts: [Blob]}. */
+export function createExport({ client, state, plots, walkthrough }) {
+  let exportSerial = 0;
+
+  /** Asks the worker for the run's CSV, which arrives in chunks of rows (handlers.csv). */
+  function startExport() {
+    const serial = ++exportSerial;
+    state.export = { serial, parts: [] };
+    ui.csv.disabled = true;
+    ui.cancel.disabled = false;
+    ui.progress.value = 0;
+    ui.status.textContent = 'Exporting CSV…';
+    document.body.dataset.export = 'running';
+    client.post({ type: 'csv', id: state.runId, serial });
+  }
+
+  function cancelExport(status) {
+    client.post({ type: 'csv-cancel', serial: state.export.serial });
+    endExport('cancelled', status);
+  }
+
+  /** Ends the export under way: `outcome` is done, cancelled or failed, `status` the status line. */
+  function endExport(outcome, status) {
+    state.export = null;
+    ui.csv.disabled = false;
+    ui.cancel.disabled = !state.running;
+    ui.status.textContent = status;
+    document.body.dataset.export = outcome;
+  }
+
+  function fileStem() {
+    return `imlab-${presetNamed(state.info.encoded)}-${state.runId}`;
+  }
+
+  /** The lines the PNG export carries above the plots: the scenario and the run's figures. */
+  function pngHeader() {
+    const figures = state.figures.filter((f) => !f.name.startsWith('mean_nis_'))
+      .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`);
+    const lines = [`IM Lab · ${state.info.encoded}`];
+    for (let i = 0; i < figures.length; i += 3) lines.push(figures.slice(i, i + 3).join(' · '));
+    return lines;
+  }
+
+  ui.csv.addEventListener('click', startExport);
+  ui.png.addEventListener('click', async () => {
+    const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
+    const set = tab === 'walkthrough' ? walkthrough.plots : plots;
+    if (set.charts.length === 0 || (tab === 'walkthrough' && !walkthrough.drawn())) {
+      say('These plots are still being drawn; export them in a moment.', 'info');
+      return;
+    }
+    download(await png(set.figures(), pngHeader()), `${fileStem()}.png`);
+  });
+
+  const handlers = {
+    async csv({ serial, bytes, rows, total }) {
+      const job = state.export;
+      if (job?.serial !== serial) return; // cancelled
+      // Each chunk becomes a Blob at once: the browser keeps blob data out of the page's heap.
+      const part = new Blob([bytes]);
+      // Reading its last byte waits until the browser has stored the chunk, and fails if it refused
+      // it (Chromium keeps at most 2 GiB of blobs where it cannot spill them to disk).
+      try {
+        await part.slice(-1).arrayBuffer();
+      } catch (e) {
+        if (state.export !== job) return;
+        const stored = job.parts.reduce((sum, p) => sum + p.size, 0);
+        endExport('failed', 'CSV export failed');
+        say(`The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${e.name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`);
+        return;
+      }
+      if (state.export !== job) return; // cancelled meanwhile
+      job.parts.push(part);
+      ui.progress.value = total ? rows / total : 1;
+      if (rows < total) {
+        ui.status.textContent = `Exporting CSV: ${rows.toLocaleString()} of ${total.toLocaleString()} rows`;
+        client.post({ type: 'csv-next', serial });
+        return;
+      }
+      download(new Blob(job.parts, { type: 'text/csv' }), `${fileStem()}.csv`);
+      endExport('done', `CSV exported: ${total.toLocaleString()} rows`);
+    },
+    'csv-failed'({ serial, message }) {
+      if (state.export?.serial !== serial) return;
+      endExport('failed', 'CSV export failed');
+      say(`The CSV export failed: ${message}.`);
+    },
+  };
+
+  return { cancel: cancelExport, end: endExport, handlers };
+}

@@ -1,0 +1,77 @@
+// How the page is laid out for an audience: presentation mode (larger text and plots, kept in
+// the link as `#present=1`), the settings drawer it and small screens use, and an embed
+// (`#embed=PLOT,PLOT...`) that shows a few plots in a frame of any size.
+import { say, ui } from './page.js';
+import { PLOTS } from './plots.js';
+import { excerpt, fragment, setFragment } from './url.js';
+
+const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
+// The least height of an embedded plot, however small its frame (px).
+const EMBED_MIN_HEIGHT = 120;
+const EMBED_MARGIN = 8;
+// Presentation mode draws plot text and lines this much larger: 14 px ticks become 21 px.
+const PRESENT_SCALE = 1.5;
+
+/** Sets up the layout the link asks for; `fitEmbed()` sizes an embed's plots to its frame. */
+export function createPresentation({ state, plots, walkthrough }) {
+  let fitEmbed = null; // sizes the embedded plots to the frame, in an embed
+
+  /** Presentation mode: larger text and plots, settings in the drawer; kept in the URL fragment. */
+  function present(on) {
+    document.body.classList.toggle('present', on);
+    ui.present.setAttribute('aria-pressed', on);
+    setFragment('present', on ? '1' : null);
+    const [main, small] = PLOT_HEIGHT[on ? 'present' : 'normal'];
+    const scale = on ? PRESENT_SCALE : 1;
+    plots.rescale(scale, main);
+    walkthrough.plots.rescale(scale, small);
+    openSettings(false);
+  }
+  ui.present.addEventListener('click', () => present(!document.body.classList.contains('present')));
+
+  /** Opens or closes the settings drawer (presentation mode and small screens). */
+  function openSettings(open) {
+    document.body.classList.toggle('settings-open', open);
+    ui.settingsToggle.setAttribute('aria-expanded', open);
+  }
+  ui.settingsToggle.addEventListener('click', () => openSettings(!document.body.classList.contains('settings-open')));
+
+  /**
+   * Height of each of `n` embedded plots: together they fill the frame under the run row. What is
+   * not plot (the run row, the key figures, titles and legends) is measured from the page as laid
+   * out, down to the last plot's bottom and a margin.
+   */
+  function embedHeight(n) {
+    const shown = [...ui.plots.querySelectorAll('.plot.embedded')];
+    if (shown.length === 0) return plots.height;
+    const bottom = Math.max(...shown.map((p) => p.getBoundingClientRect().bottom)) + scrollY + EMBED_MARGIN;
+    return Math.max(EMBED_MIN_HEIGHT, Math.floor(plots.height + (innerHeight - bottom) / n));
+  }
+
+  // An embed (`#embed=PLOT,PLOT...`) shows those plots of the Trajectories tab with Run and the key
+  // figures, the plots sharing the frame's height, so that the frame holds them at any size.
+  const embedded = fragment('embed');
+  if (embedded !== null) {
+    const asked = embedded.split(',').slice(0, PLOTS.length);
+    const ids = asked.filter((id) => PLOTS.some((p) => p.id === id));
+    const unknown = asked.filter((id) => !ids.includes(id));
+    if (ids.length === 0) ids.push('speed');
+    document.body.classList.add('embed');
+    document.body.dataset.embed = ids.join(',');
+    plots.embedded = ids;
+    for (const div of ui.plots.querySelectorAll('.plot[data-plot]')) div.classList.toggle('embedded', ids.includes(div.dataset.plot));
+    // Kept until the user acts: a load's message would otherwise clear it.
+    if (unknown.length) state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
+    say(state.notice ?? '', 'info');
+    fitEmbed = () => plots.resize(embedHeight(ids.length));
+    window.addEventListener('resize', fitEmbed);
+  }
+  if (fragment('present') === '1') {
+    document.body.classList.add('present');
+    ui.present.setAttribute('aria-pressed', true);
+    plots.scale = walkthrough.plots.scale = PRESENT_SCALE;
+    [plots.height, walkthrough.plots.height] = PLOT_HEIGHT.present;
+  }
+
+  return { openSettings, fitEmbed: () => fitEmbed?.() };
+}

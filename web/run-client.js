@@ -1,0 +1,75 @@
+// The run client: the simulation worker, which owns the core, and the page's messages with it.
+// Describe requests are answered as promises; every other message goes to the page's handler of
+// its type. A worker that fails is replaced.
+
+/** A request the worker could not answer because it failed; the page has said so already. */
+export class WorkerFailed extends Error {}
+
+export class RunClient {
+  /**
+   * `onFailed(reason, restarting)` tells the page that the worker failed; `restarting` is false
+   * when it never started, which a restart would only repeat.
+   */
+  constructor(onFailed) {
+    this.onFailed = onFailed;
+    this.handlers = {}; // the page's handlers of the worker's messages, by type
+    this.worker = null;
+    this.ready = false; // whether the current worker has loaded the core
+    this.req = 0;
+    this.pending = new Map(); // describe requests: req → {resolve, reject}
+  }
+
+  start() {
+    this.ready = false;
+    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    this.worker.onmessage = ({ data }) => this.receive(data);
+    this.worker.onerror = (e) => {
+      e.preventDefault();
+      this.fail(e.message || 'unknown error');
+    };
+    this.worker.onmessageerror = () => this.fail('a message from it could not be read');
+  }
+
+  post(message) {
+    this.worker.postMessage(message);
+  }
+
+  /** Asks the core to validate and describe a scenario string ('recover' keeps its good fields). */
+  describe(scenario, type = 'describe') {
+    const req = ++this.req;
+    return new Promise((resolve, reject) => {
+      this.pending.set(req, { resolve, reject });
+      this.worker.postMessage({ type, req, scenario });
+    });
+  }
+
+  receive(data) {
+    const { type, req } = data;
+    if (type === 'described') {
+      this.pending.get(req)?.resolve(data.info);
+      this.pending.delete(req);
+    } else if (type === 'invalid' && req !== undefined) {
+      this.pending.get(req)?.reject(new Error(data.message));
+      this.pending.delete(req);
+    } else if (type === 'crashed') {
+      this.fail(data.message);
+    } else {
+      if (type === 'ready') this.ready = true;
+      this.handlers[type](data);
+    }
+  }
+
+  /**
+   * The worker crashed (a trap in the core, or an uncaught error): it and everything it held (the
+   * run, the pins) are gone. Ends what waited on it and starts a fresh one, unless it never
+   * started, which a restart would only repeat.
+   */
+  fail(reason) {
+    this.worker.terminate();
+    for (const { reject } of this.pending.values()) reject(new WorkerFailed(reason));
+    this.pending.clear();
+    const restarting = this.ready;
+    this.onFailed(reason, restarting);
+    if (restarting) this.start();
+  }
+}

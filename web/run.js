@@ -1,0 +1,165 @@
+// The run of the scenario in the form: starting it, its progress and status line, how it ended,
+// and the plots, figures and walkthrough it fills when it is done.
+import { $, say, ui } from './page.js';
+import { fieldValue } from './controls.js';
+import { excerpt, markRun } from './url.js';
+
+/**
+ * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a
+ * second at most).
+ */
+const painted = () => new Promise((resolve) => {
+  if (document.hidden) {
+    resolve(); // a hidden page paints nothing
+    return;
+  }
+  requestAnimationFrame(() => setTimeout(resolve, 0));
+  setTimeout(resolve, 1000);
+});
+
+/**
+ * The run, started with `start()` and followed through the worker's messages (`handlers`).
+ * `figuresView` shows the run's figures, `exporter` is the CSV export a new run ends, `fitEmbed()`
+ * sizes an embed's plots, and `afterRun()` follows up a run that is done and drawn.
+ */
+export function createRun({ client, state, plots, walkthrough, views, figuresView, exporter, fitEmbed, afterRun }) {
+  let started = 0; // when the run started (performance.now())
+  let fromRun = false; // whether it was started from Run, where focus returns
+
+  function setBusy(busy) {
+    // Run is disabled while a run goes on, which drops its focus: give it back at the end, unless
+    // the user has moved on to another control.
+    const refocus = !busy && state.running && fromRun && [document.body, ui.run, null].includes(document.activeElement);
+    state.running = busy;
+    ui.run.disabled = busy || state.info === null;
+    ui.cancel.disabled = !busy && state.export === null;
+    // The worker holds one run: the one being computed, whose CSV is not whole yet.
+    if (busy) ui.csv.disabled = true;
+    document.body.dataset.state = busy ? 'running' : 'idle';
+    if (refocus && !ui.run.disabled) ui.run.focus({ preventScroll: true });
+  }
+
+  /** Marks the settings as changed and not yet run (or not), beside Run. */
+  function markUnrun(unrun) {
+    ui.unrun.hidden = !unrun;
+    if (unrun) document.body.dataset.unrun = '1';
+    else delete document.body.dataset.unrun;
+  }
+
+  function start() {
+    if (!state.info) return;
+    markUnrun(false);
+    // The first run is the link's own; a later one is the user's act, which ends the link's notice.
+    if (state.runId > 0) state.notice = null;
+    if (state.running) client.post({ type: 'cancel', id: state.runId });
+    if (document.body.dataset.state === 'crashed') say(''); // the crash was told; this is the retry
+    // The new run replaces the one being exported in the worker.
+    if (state.export) {
+      exporter.cancel('CSV export cancelled');
+      say('The CSV export was cancelled: a new run started.', 'info');
+    }
+    const id = ++state.runId;
+    state.ranScenario = state.info.encoded;
+    markRun(state.info.encoded);
+    fromRun = document.activeElement === ui.run; // started from Run: focus returns there
+    document.body.dataset.scenario = state.info.encoded;
+    document.body.dataset.started = id; // runs started: tests wait on it, not on a time
+    started = performance.now();
+    ui.progress.value = 0;
+    ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
+    walkthrough.closeInspect();
+    setBusy(true);
+    // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
+    // opened (until then they ask for theirs when it is, and a run does not pay for them).
+    const groups = { ...plots.groups(), ...(walkthrough.opened ? walkthrough.plots.groups() : {}) };
+    // With runs pinned, the run keeps the overlay's column as it goes.
+    const overlay = state.pins.length ? $('overlay-column').value : null;
+    client.post({ type: 'run', id, scenario: state.info.encoded, groups, buckets: views.buckets(), overlay });
+  }
+
+  /** The worker failed (RunClient): the run and its export are gone with it; says so. */
+  function workerFailed(reason, restarting) {
+    if (state.export) exporter.end('failed', 'CSV export stopped');
+    const wasRunning = state.running;
+    state.pinning = false;
+    setBusy(false);
+    ui.csv.disabled = true;
+    document.body.dataset.state = 'crashed';
+    if (wasRunning) ui.status.textContent = 'Stopped: the simulation worker failed';
+    if (!restarting) {
+      say(`The simulation worker could not start (${reason}). Reload the page to try again.`);
+      return;
+    }
+    const dropped = state.pins.length ? ` The pinned runs were dropped: ${state.pins.map((p) => excerpt(p)).join('; ')}.` : '';
+    say(`The simulation worker failed (${reason}). It was restarted; press Run to try again.${dropped}`);
+  }
+
+  const handlers = {
+    invalid({ id, message }) {
+      if (id === state.runId) {
+        setBusy(false);
+        say(message);
+      }
+    },
+    progress({ id, done, total }) {
+      if (id !== state.runId) return;
+      ui.progress.value = done / total;
+      ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
+    },
+    async done({ id, rows, failure, view, computeMs, stability, figures, transient, warnings }) {
+      if (id !== state.runId) return;
+      setBusy(false);
+      ui.progress.value = 1;
+      const arrived = performance.now();
+      state.transient = transient;
+      state.figures = figures;
+      ui.fitLabel.textContent = transient
+        ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
+        : 'Fit y-axes after the start-up transient';
+      ui.fitLabel.title = transient?.reason ?? '';
+      $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
+      figuresView.show(figures, warnings);
+      if (view) {
+        state.shownRun = id;
+        walkthrough.show(stability, state.nisBand);
+        // The walkthrough's plots are in the view once it has been opened.
+        if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
+        plots.show(view, { ifoc: fieldValue(state.info, 'controller') === 'ifoc' });
+        fitEmbed();
+        // "Plotted" is when the browser has painted them: the canvases are rasterised then.
+        await painted();
+        // A newer run, or a worker crash while the plots were drawn, owns the page now.
+        if (id !== state.runId || document.body.dataset.state === 'crashed') return;
+        views.walkthroughView();
+      }
+      const ms = performance.now() - started;
+      Object.assign(document.body.dataset, {
+        plotMs: (performance.now() - arrived).toFixed(1), runMs: ms.toFixed(1), rows, computeMs: computeMs.toFixed(2), run: id,
+      });
+      ui.csv.disabled = ui.png.disabled = rows === 0;
+      const ranAway = warnings.find((w) => w.kind === 'runaway');
+      if (failure) {
+        say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
+        ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
+        document.body.dataset.state = 'failed';
+      } else if (ranAway) {
+        // The simulation completed, but as a control run it failed: say so before any figure.
+        say(`${ranAway.text} The plots show what the motor did.`);
+        ui.status.textContent = `Ran away: ${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+        document.body.dataset.state = 'failed';
+      } else {
+        ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+        document.body.dataset.state = 'done';
+      }
+      afterRun();
+    },
+    cancelled({ id }) {
+      if (id !== state.runId) return;
+      setBusy(false);
+      ui.status.textContent = `Cancelled at ${(ui.progress.value * 100).toFixed(0)} %`;
+      document.body.dataset.state = 'cancelled';
+    },
+  };
+
+  return { start, setBusy, markUnrun, workerFailed, handlers };
+}

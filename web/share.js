@@ -1,0 +1,42 @@
+// The links the page hands out: the address of this run, and an embed code for the plots in view.
+import { say, ui } from './page.js';
+import { presetNamed } from './url.js';
+
+/** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
+function plotsInView() {
+  if (ui.plots.offsetParent === null) return ['speed'];
+  const inView = [...ui.plots.querySelectorAll('.plot[data-plot]')].filter((p) => {
+    const box = p.getBoundingClientRect();
+    const shown = Math.min(box.bottom, innerHeight) - Math.max(box.top, 0);
+    return box.height > 0 && shown >= box.height / 2;
+  }).map((p) => p.dataset.plot);
+  return inView.length ? inView : ['speed'];
+}
+
+/** Wires Copy link and Copy embed code. */
+export function wireShare({ state }) {
+  ui.copy.addEventListener('click', async () => {
+    try {
+      await navigator.clipboard.writeText(location.href);
+      say('Link copied: it reproduces this run bit for bit.', 'info');
+    } catch {
+      say(`Copy this link: ${location.href}`, 'info');
+    }
+  });
+
+  ui.embed.addEventListener('click', async () => {
+    const ids = plotsInView();
+    const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=${ids.join(',')}`;
+    const title = `IM Lab: ${presetNamed(state.info.encoded)}, ${ids.join(', ')}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
+    // The plots share whatever height the frame has; this one gives each about 300 px.
+    const height = 140 + 300 * ids.length;
+    const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="100%" height="${height}" style="border:0;max-width:960px" loading="lazy"></iframe>`;
+    const what = `the ${ids.join(', ')} plot${ids.length > 1 ? 's' : ''} of this run (the Trajectories plots in view)`;
+    try {
+      await navigator.clipboard.writeText(code);
+      say(`Embed code copied: ${what}. Paste it into a slide or a course page.`, 'info');
+    } catch {
+      say(`Copy this embed code for ${what}: ${code}`, 'info');
+    }
+  });
+}

@@ -1,0 +1,46 @@
+// The tabs (Trajectories, Design walkthrough, Lessons, Analysis): which panel is shown, chosen by
+// a click or by the arrow keys, Home and End.
+import { $ } from './page.js';
+
+/** `walkthroughView()` asks for the last run's walkthrough view if it lacks one. */
+export function createTabs({ plots, walkthrough, walkthroughView }) {
+  const TABS = [...document.querySelectorAll('[role=tab]')];
+
+  /** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
+  function showTab(name, { fetch = true } = {}) {
+    for (const tab of TABS) {
+      const selected = tab.dataset.tab === name;
+      tab.setAttribute('aria-selected', selected);
+      tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
+      const panel = $(`panel-${tab.dataset.tab}`);
+      panel.hidden = !selected;
+      // The style keeps a hidden panel laid out (skipped, see style.css): out of the accessibility
+      // tree as the `hidden` attribute alone would put it.
+      if (selected) panel.removeAttribute('aria-hidden');
+      else panel.setAttribute('aria-hidden', 'true');
+    }
+    // A hidden panel keeps its layout (style.css), so its plots keep their size; the shown ones
+    // are sized in case the window changed meanwhile (a chart of the right size is left alone).
+    if (name === 'plots') plots.resize();
+    if (name === 'walkthrough') {
+      walkthrough.shown();
+      if (fetch) walkthroughView();
+      walkthrough.plots.resize();
+    }
+    walkthrough.closeInspect();
+  }
+
+  for (const tab of TABS) tab.addEventListener('click', () => showTab(tab.dataset.tab));
+  // Arrow keys, Home and End move between tabs and select them.
+  document.querySelector('[role=tablist]').addEventListener('keydown', (e) => {
+    const i = TABS.indexOf(document.activeElement);
+    const to = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: TABS.length - 1 }[e.key];
+    if (i < 0 || to === undefined) return;
+    e.preventDefault();
+    const tab = TABS[(to + TABS.length) % TABS.length];
+    showTab(tab.dataset.tab);
+    tab.focus();
+  });
+
+  return { showTab };
+}

@@ -1,0 +1,79 @@
+// What the plots ask the worker about the last run: a zoom window, the whole run again, the
+// state at one time (inspect), and the walkthrough's own view and predictor comparison.
+import { $ } from './page.js';
+import { fieldValue } from './controls.js';
+
+export function createViews({ client, state, plots, walkthrough }) {
+  const plotSets = [plots, walkthrough.plots];
+  let walkthroughAsked = 0; // the run whose whole-run walkthrough view was asked for
+
+  // One bucket a pixel column of the widest plot.
+  const buckets = () => Math.max(200, Math.round(plots.width()));
+
+  /** Whether the worker holds the run the plots show (not a later one that was cancelled, refused or recorded nothing). */
+  const showingLastRun = () => !state.running && plots.full !== null && state.shownRun === state.runId;
+
+  function requestWindow(t0, t1) {
+    if (!showingLastRun()) return;
+    // uPlot reports each new chart's initial scale, the whole run, as a zoom; the charts already
+    // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
+    if (t0 <= plots.full[0] && t1 >= plots.full[1]) return;
+    for (const set of plotSets) set.window = [t0, t1];
+    requestViews(t0, t1);
+  }
+
+  /** Returns every plot to the whole run. */
+  function fullRun() {
+    if (!showingLastRun()) return;
+    for (const set of plotSets) set.unzoom();
+    requestViews(0, Number.MAX_VALUE);
+  }
+
+  /** Asks for a window of the main plots, and of the walkthrough's once they show this run. */
+  function requestViews(t0, t1) {
+    requestView('plots', t0, t1);
+    if (walkthrough.drawn()) requestView('walkthrough', t0, t1);
+  }
+
+  function requestView(set, t0, t1) {
+    const groups = (set === 'walkthrough' ? walkthrough.plots : plots).groups();
+    client.post({ type: 'view', id: state.runId, set, groups, t0, t1, buckets: buckets() });
+  }
+
+  /** Asks for the walkthrough's view of the whole run when it is on screen and does not have it yet. */
+  function walkthroughView() {
+    if (!showingLastRun() || !walkthrough.stale || !walkthrough.visible()) return;
+    if (walkthroughAsked === state.runId) return; // asked already
+    walkthroughAsked = state.runId;
+    requestView('walkthrough', 0, Number.MAX_VALUE);
+  }
+
+  function requestInspect(t) {
+    if (!state.running && plots.full) client.post({ type: 'inspect', id: state.runId, t });
+  }
+
+  function compare() {
+    $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
+    client.post({ type: 'compare', id: state.runId });
+  }
+
+  const handlers = {
+    view({ id, set, view }) {
+      if (id !== state.runId) return;
+      if (set === 'walkthrough') {
+        walkthrough.receive(view);
+      } else {
+        plots.refine(view);
+        document.body.dataset.view = `${view.t0},${view.t1}`;
+      }
+    },
+    inspected({ id, t, snapshot }) {
+      if (id === state.runId) walkthrough.inspect(snapshot, t, Number(fieldValue(state.info, 'ts')));
+    },
+    compared({ id, results }) {
+      if (id === state.runId) walkthrough.showComparison(results);
+    },
+  };
+
+  return { buckets, requestWindow, fullRun, walkthroughView, requestInspect, compare, handlers };
+}
