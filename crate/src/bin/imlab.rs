@@ -126,7 +126,7 @@ enum Command {
         #[arg(long, value_name = "SEED", allow_hyphen_values = true)]
         first: Option<String>,
     },
-    /// Print a challenge's canonical link and its brief (or, with --list, the built-in ones)
+    /// Print a challenge's canonical link and brief; --list names the built-in ones
     Challenge {
         /// A built-in challenge's name or a challenge link
         #[arg(required_unless_present = "list")]
@@ -135,8 +135,11 @@ enum Command {
         #[arg(long, conflicts_with = "challenge")]
         list: bool,
     },
-    /// Grade submission links (one a line of FILE, `-` for stdin) and print CSV:
-    /// line,link,status,<criterion>,<criterion>_pass,...,pass
+    /// Grade a file of submission links and print one CSV row each
+    ///
+    /// Each link (one a line of FILE; blank lines and # comments skipped) is re-run, nominal and
+    /// variants, on all cores. The CSV is line,link,status,<criterion>,<criterion>_pass,...,pass
+    /// where status is ok, malformed: …, refused: …, another challenge or run failed: ….
     Grade {
         /// A built-in challenge's name or a challenge link
         challenge: String,
@@ -609,7 +612,10 @@ fn grade(challenge: &str, file: &str, out: &mut impl Write) -> Result<(), Stop> 
                 results.lock().expect("no panic holds it").push((i, graded));
                 let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 if lines.len() > 4 {
-                    to_stderr(format_args!("\rimlab grade: graded {n} of {}   ", lines.len()));
+                    to_stderr(format_args!(
+                        "\rimlab grade: graded {n} of {}   ",
+                        lines.len()
+                    ));
                 }
             });
         }

@@ -18,7 +18,10 @@ impl Challenge {
         let _ = writeln!(out, "{title}");
         let _ = writeln!(out, "\nStart from the scenario {}", self.base);
         if self.allow.is_empty() {
-            let _ = writeln!(out, "\nNothing may be changed: the base is judged as it is.");
+            let _ = writeln!(
+                out,
+                "\nNothing may be changed: the base is judged as it is."
+            );
         } else {
             let _ = writeln!(out, "\nYou may change only:");
         }
@@ -34,11 +37,7 @@ impl Challenge {
                 Allowed::Choice { options } => format!("one of {}", options.join(", ")),
             };
             let now = info.value.unwrap_or_else(|| "–".to_string());
-            let _ = writeln!(
-                out,
-                "  {:<14} {range} (now {now}) — {}",
-                a.field, info.doc
-            );
+            let _ = writeln!(out, "  {:<14} {range} (now {now}) — {}", a.field, info.doc);
         }
         let _ = writeln!(out, "\nYour design must meet:");
         for (i, c) in self.need.iter().enumerate() {

@@ -38,8 +38,16 @@ pub const FIGURES: &[FigureInfo] = &[
     fig("transient_end", "start-up transient ends", "s"),
     fig("tracking_rms", "RMS of ω − ω_d", "rad/s"),
     fig("tracking_peak", "peak |ω − ω_d|", "rad/s"),
-    fig("settling_time", "2 % settling time of ω after the step", "s"),
-    fig("saturated_share", "share of samples at the voltage limit", ""),
+    fig(
+        "settling_time",
+        "2 % settling time of ω after the step",
+        "s",
+    ),
+    fig(
+        "saturated_share",
+        "share of samples at the voltage limit",
+        "",
+    ),
     fig("mean_nis", "mean NIS", ""),
     fig("current_peak", "peak stator current |i_s|", "A"),
     fig("current_rms", "RMS stator current |i_s|", "A"),
@@ -56,11 +64,7 @@ pub const FIGURES: &[FigureInfo] = &[
         "final speed-estimate error ω − ω̂",
         "rad/s",
     ),
-    fig(
-        LOAD_RECOVERY,
-        "load recovery time after the load step",
-        "s",
-    ),
+    fig(LOAD_RECOVERY, "load recovery time after the load step", "s"),
 ];
 
 const fn fig(name: &'static str, label: &'static str, unit: &'static str) -> FigureInfo {
@@ -228,14 +232,22 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
                 return fail("not measured: no NIS band on this run".to_string());
             };
             let (lo, hi) = (lo.value, hi.value);
-            let side = if v < lo { "below the band" } else { "above the band" };
+            let side = if v < lo {
+                "below the band"
+            } else {
+                "above the band"
+            };
             ((lo..=hi).contains(&v), (lo - v).max(v - hi), side)
         }
     };
     let mut out = Check {
         value: Some(v),
         pass,
-        reason: if pass { String::new() } else { side.to_string() },
+        reason: if pass {
+            String::new()
+        } else {
+            side.to_string()
+        },
         badness,
     };
     if v.is_infinite() && figure == LOAD_RECOVERY {

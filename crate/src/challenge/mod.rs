@@ -197,7 +197,9 @@ impl Variants {
     /// Each variant's override string, e.g. `seed=2` or `model.j=0.016`.
     pub fn overrides(&self) -> Vec<String> {
         match self {
-            Variants::Seeds { first, last } => (*first..=*last).map(|s| format!("seed={s}")).collect(),
+            Variants::Seeds { first, last } => {
+                (*first..=*last).map(|s| format!("seed={s}")).collect()
+            }
             Variants::List { overrides } => overrides.clone(),
         }
     }
@@ -434,7 +436,10 @@ impl Submission {
     }
 
     /// The tries checked against the challenge: allowed, well-formed, in range.
-    fn check(challenge: Challenge, tries: &[(String, String)]) -> Result<Submission, ChallengeError> {
+    fn check(
+        challenge: Challenge,
+        tries: &[(String, String)],
+    ) -> Result<Submission, ChallengeError> {
         let base = challenge.base_scenario();
         let mut out = Vec::new();
         for (field, value) in tries {
@@ -526,7 +531,11 @@ fn parse_parts(text: &str) -> Result<(Challenge, Vec<(String, String)>), Challen
             ChallengeError::malformed(format!(
                 "'{}' is neither a challenge link nor a built-in challenge ({})",
                 excerpt(trimmed),
-                BUILTINS.iter().map(|b| b.name).collect::<Vec<_>>().join(", ")
+                BUILTINS
+                    .iter()
+                    .map(|b| b.name)
+                    .collect::<Vec<_>>()
+                    .join(", ")
             ))
         })?;
         return Ok((b.challenge(), Vec::new()));
@@ -682,7 +691,11 @@ fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, C
             "field '{}': '{}' is not a figure ({})",
             excerpt(&key),
             excerpt(figure),
-            FIGURES.iter().map(|f| f.name).collect::<Vec<_>>().join(", ")
+            FIGURES
+                .iter()
+                .map(|f| f.name)
+                .collect::<Vec<_>>()
+                .join(", ")
         )));
     }
     let op = if value == "band" {
@@ -766,9 +779,7 @@ fn parse_vary(base: &Scenario, value: &str) -> Result<Variants, ChallengeError> 
             pairs.push((k.to_string(), v.to_string()));
         }
         if pairs.is_empty() {
-            return Err(ChallengeError::malformed(format!(
-                "{what} is empty"
-            )));
+            return Err(ChallengeError::malformed(format!("{what} is empty")));
         }
         pairs.sort_by_key(|(k, _)| field_order(base, k));
         let canonical = pairs
@@ -807,7 +818,10 @@ mod tests {
     fn percent_coding_round_trips() {
         let text = "v=1&preset=step&k1=2000 ü|%";
         assert_eq!(pct_decode("x", &pct_encode(text)).unwrap(), text);
-        assert!(pct_decode("title", "%ZZ").unwrap_err().message.contains("'title'"));
+        assert!(pct_decode("title", "%ZZ")
+            .unwrap_err()
+            .message
+            .contains("'title'"));
         assert!(pct_decode("title", "%FF").is_err());
         assert_eq!(pct_decode("t", "a+b").unwrap(), "a b");
     }
