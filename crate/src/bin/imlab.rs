@@ -511,7 +511,7 @@ fn list_challenges(out: &mut impl Write) -> io::Result<()> {
 /// Writes the challenge's canonical link, then its brief.
 fn show_challenge(text: &str, out: &mut impl Write) -> Result<(), Stop> {
     let c = Challenge::parse(text).map_err(|e| format!("challenge: {e}"))?;
-    writeln!(out, "{}\n\n{}", c.encode(), c.brief()).map_err(stdout_stop)
+    writeln!(out, "{}\n\n{}", c.encode(), c.brief().trim_end()).map_err(stdout_stop)
 }
 
 /// One graded line: its number, the link, and the status with the verdict (None unless the
