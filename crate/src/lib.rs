@@ -9,6 +9,7 @@
 //! user input.
 
 pub mod analysis;
+pub mod challenge;
 pub mod control;
 pub mod inverter;
 pub mod model;

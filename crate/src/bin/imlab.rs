@@ -6,6 +6,7 @@ use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
 };
+use imlab::challenge::{judge, measure, Challenge, Measures, Verdict, BUILTINS};
 use imlab::record::Figure;
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
@@ -125,6 +126,26 @@ enum Command {
         /// scenario's seed]
         #[arg(long, value_name = "SEED", allow_hyphen_values = true)]
         first: Option<String>,
+    },
+    /// Print a challenge's canonical link and brief; --list names the built-in ones
+    Challenge {
+        /// A built-in challenge's name or a challenge link
+        #[arg(required_unless_present = "list")]
+        challenge: Option<String>,
+        /// Name the built-in challenges, one line each
+        #[arg(long, conflicts_with = "challenge")]
+        list: bool,
+    },
+    /// Grade a file of submission links and print one CSV row each
+    ///
+    /// Each link (one a line of FILE; blank lines and # comments skipped) is re-run, nominal and
+    /// variants, on all cores. The CSV is line,link,status,<criterion>,<criterion>_pass,...,pass
+    /// where status is ok, malformed: …, refused: …, another challenge or run failed: ….
+    Grade {
+        /// A built-in challenge's name or a challenge link
+        challenge: String,
+        /// File of submission links, one a line (blank lines and # comments skipped); - for stdin
+        file: String,
     },
 }
 
@@ -272,6 +293,11 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             let range = seed_range(first, n).map_err(|e| format!("--first, --n: {e}"))?;
             seeds(&s, range, out)
         }
+        Command::Challenge { challenge, list } => match challenge {
+            Some(text) if !list => show_challenge(&text, out),
+            _ => list_challenges(out).map_err(stdout_stop),
+        },
+        Command::Grade { challenge, file } => grade(&challenge, &file, out),
     }
 }
 
@@ -472,4 +498,156 @@ fn seeds(
     let results = results.map_err(|e| e.to_string())?;
     out.write_all(seeds_csv(&results).as_bytes())
         .map_err(stdout_stop)
+}
+
+/// Writes the built-in challenges, one `name  summary` line each.
+fn list_challenges(out: &mut impl Write) -> io::Result<()> {
+    let width = BUILTINS.iter().map(|b| b.name.len()).max().unwrap_or(0);
+    for b in BUILTINS {
+        writeln!(out, "{:width$}  {}", b.name, b.summary)?;
+    }
+    Ok(())
+}
+
+/// Writes the challenge's canonical link, then its brief.
+fn show_challenge(text: &str, out: &mut impl Write) -> Result<(), Stop> {
+    let c = Challenge::parse(text).map_err(|e| format!("challenge: {e}"))?;
+    writeln!(out, "{}\n\n{}", c.encode(), c.brief().trim_end()).map_err(stdout_stop)
+}
+
+/// One graded line: its number, the link, and the status with the verdict (None unless the
+/// runs were judged).
+struct Graded {
+    line: usize,
+    link: String,
+    status: String,
+    verdict: Option<Verdict>,
+}
+
+/// Reads, re-runs and judges one submission link.
+fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
+    let mut graded = Graded {
+        line,
+        link: link.to_string(),
+        status: "ok".to_string(),
+        verdict: None,
+    };
+    let scenarios = match c.submission(link).and_then(|s| s.scenarios()) {
+        Ok(s) => s,
+        Err(e) => {
+            graded.status = e.status();
+            return graded;
+        }
+    };
+    let mut runs: Vec<Measures> = Vec::new();
+    for s in &scenarios {
+        let m = match Simulation::traced(s) {
+            Ok(mut sim) => {
+                let _ = sim.run();
+                measure(&sim)
+            }
+            Err(e) => Measures {
+                figures: Vec::new(),
+                failure: Some(e.to_string()),
+            },
+        };
+        if let Some(f) = &m.failure {
+            graded.status = format!("run failed: {f}");
+            return graded;
+        }
+        runs.push(m);
+    }
+    match judge(c, &runs) {
+        Ok(v) => graded.verdict = Some(v),
+        Err(e) => graded.status = format!("run failed: {e}"),
+    }
+    graded
+}
+
+/// `text` as one CSV field: quoted (with inner quotes doubled) when it holds a comma, a quote
+/// or a line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// Grades each submission link of `file` against the challenge, in parallel, and writes one CSV
+/// row per link in input order; progress on stderr.
+fn grade(challenge: &str, file: &str, out: &mut impl Write) -> Result<(), Stop> {
+    let c = Challenge::parse(challenge).map_err(|e| format!("challenge: {e}"))?;
+    let text = if file == "-" {
+        io::read_to_string(io::stdin()).map_err(|e| format!("stdin: {e}"))?
+    } else {
+        std::fs::read_to_string(file).map_err(|e| format!("'{}': {e}", excerpt(file)))?
+    };
+    let lines: Vec<(usize, String)> = text
+        .lines()
+        .enumerate()
+        .map(|(i, l)| (i + 1, l.trim().to_string()))
+        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
+        .collect();
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(lines.len().max(1));
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let results = std::sync::Mutex::new(Vec::with_capacity(lines.len()));
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some((line, link)) = lines.get(i) else {
+                    break;
+                };
+                // A panic in one run is that line's failure, not the end of the grading.
+                let graded = std::panic::catch_unwind(|| grade_one(&c, *line, link))
+                    .unwrap_or_else(|_| Graded {
+                        line: *line,
+                        link: link.clone(),
+                        status: "run failed: internal error".to_string(),
+                        verdict: None,
+                    });
+                results.lock().expect("no panic holds it").push((i, graded));
+                let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                if lines.len() > 4 {
+                    to_stderr(format_args!(
+                        "\rimlab grade: graded {n} of {}   ",
+                        lines.len()
+                    ));
+                }
+            });
+        }
+    });
+    if lines.len() > 4 {
+        to_stderr(format_args!("\n"));
+    }
+    let mut results = results.into_inner().expect("no panic holds it");
+    results.sort_by_key(|(i, _)| *i);
+    let mut header = "line,link,status".to_string();
+    for n in &c.need {
+        header.push_str(&format!(",{0},{0}_pass", n.figure));
+    }
+    header.push_str(",pass");
+    writeln!(out, "{header}").map_err(stdout_stop)?;
+    for (_, g) in results {
+        let mut row = format!("{},{},{}", g.line, csv_field(&g.link), csv_field(&g.status));
+        match &g.verdict {
+            Some(v) => {
+                for cv in &v.criteria {
+                    let value = cv.value.map_or(String::new(), |x| format!("{x}"));
+                    row.push_str(&format!(",{value},{}", u8::from(cv.pass)));
+                }
+                row.push_str(&format!(",{}", u8::from(v.pass)));
+            }
+            None => {
+                row.push_str(&",,0".repeat(c.need.len()));
+                row.push_str(",0");
+            }
+        }
+        writeln!(out, "{row}").map_err(stdout_stop)?;
+    }
+    Ok(())
 }

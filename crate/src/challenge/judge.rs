@@ -1,0 +1,328 @@
+//! Measuring a run for a challenge and judging the criteria on the measures of its runs.
+//!
+//! [`measure`] reads a finished [`Simulation`] through its public API: the figures of
+//! [`crate::sim::report`] and one measure of its own, [`LOAD_RECOVERY`]. [`judge`] needs only
+//! the measures, so runs can be measured wherever they ran (a worker each, in the page).
+
+use super::{Challenge, Op};
+use crate::sim::Simulation;
+use serde::{Deserialize, Serialize};
+
+/// The load-recovery measure: seconds from `load.time` until |ω − ω_d| stays within
+/// [`recovery_band`] to the end of the run. 0 when it never leaves the band after the step;
+/// infinite ("not recovered") when it is outside the band at the last sample. The same rule as
+/// the lessons' `recovery(run, from, band)` in `tests/claims.mjs`: the time of the first sample
+/// after the last one outside the band, less `load.time`.
+pub const LOAD_RECOVERY: &str = "load_recovery_time";
+
+/// The band of [`LOAD_RECOVERY`] (rad/s): 1 % of |ω_d| at the load step or 0.5 rad/s, whichever
+/// is larger (0.5 rad/s at the load presets' 50 rad/s, as the lessons read it).
+pub fn recovery_band(reference_at_step: f64) -> f64 {
+    (0.01 * reference_at_step.abs()).max(0.5)
+}
+
+/// A figure a criterion may name: its machine name, words and unit.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct FigureInfo {
+    /// Machine name, as `imlab metrics` prints it.
+    pub name: &'static str,
+    /// In words, as `imlab metrics` and the page label it.
+    pub label: &'static str,
+    /// Unit ("" for ratios).
+    pub unit: &'static str,
+}
+
+/// The figures criteria may name: those of [`crate::sim::report`] (with its labels and units;
+/// a test checks they agree) and [`LOAD_RECOVERY`].
+pub const FIGURES: &[FigureInfo] = &[
+    fig("transient_end", "start-up transient ends", "s"),
+    fig("tracking_rms", "RMS of ω − ω_d", "rad/s"),
+    fig("tracking_peak", "peak |ω − ω_d|", "rad/s"),
+    fig(
+        "settling_time",
+        "2 % settling time of ω after the step",
+        "s",
+    ),
+    fig(
+        "saturated_share",
+        "share of samples at the voltage limit",
+        "",
+    ),
+    fig("mean_nis", "mean NIS", ""),
+    fig("current_peak", "peak stator current |i_s|", "A"),
+    fig("current_rms", "RMS stator current |i_s|", "A"),
+    fig("ripple_peak", "peak PWM current ripple", "A"),
+    fig(
+        "ripple_rms",
+        "RMS over the periods of the peak PWM current ripple",
+        "A",
+    ),
+    fig("flux_error_final", "final flux error |φ_r| − √ψ_d", "Wb"),
+    fig("speed_error_final", "final speed error ω − ω_d", "rad/s"),
+    fig(
+        "speed_estimate_error_final",
+        "final speed-estimate error ω − ω̂",
+        "rad/s",
+    ),
+    fig(LOAD_RECOVERY, "load recovery time after the load step", "s"),
+];
+
+const fn fig(name: &'static str, label: &'static str, unit: &'static str) -> FigureInfo {
+    FigureInfo { name, label, unit }
+}
+
+/// The figure named `name`, if criteria may name it.
+pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
+    FIGURES.iter().find(|f| f.name == name)
+}
+
+/// One measured value of a run.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Measure {
+    /// Figure name.
+    pub name: String,
+    /// Value in `unit`; may be infinite (a load never recovered from).
+    pub value: f64,
+    /// Unit.
+    pub unit: String,
+    /// For a value read at the last sample: whether it had settled.
+    pub settled: Option<bool>,
+}
+
+/// What [`measure`] read from one run.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct Measures {
+    /// The figures (those the report could compute), then the load recovery time when the
+    /// scenario has a load step.
+    pub figures: Vec<Measure>,
+    /// Why the run does not count, if it does not: the simulation failed, or it ran away.
+    pub failure: Option<String>,
+}
+
+impl Measures {
+    /// The measure named `name`.
+    pub fn get(&self, name: &str) -> Option<&Measure> {
+        self.figures.iter().find(|m| m.name == name)
+    }
+}
+
+/// The measures of a finished run: every figure of its report (the `*_final` ones with whether
+/// they settled), and [`LOAD_RECOVERY`] when its scenario has a load step.
+pub fn measure(sim: &Simulation) -> Measures {
+    let r = sim.report();
+    let mut figures: Vec<Measure> = r
+        .figures
+        .iter()
+        .flatten()
+        .map(|f| Measure {
+            name: f.name.to_string(),
+            value: f.value,
+            unit: f.unit.to_string(),
+            settled: f.trend.map(|t| t.settled),
+        })
+        .collect();
+    let s = sim.scenario();
+    if s.load_step.torque != 0.0 && !sim.is_empty() {
+        if let Some(value) = load_recovery(sim) {
+            figures.push(Measure {
+                name: LOAD_RECOVERY.to_string(),
+                value,
+                unit: "s".to_string(),
+                settled: None,
+            });
+        }
+    }
+    let failure = if let Some(e) = sim.failure() {
+        Some(format!("{e}"))
+    } else if !sim.is_finished() {
+        Some("the run did not finish".to_string())
+    } else {
+        r.warnings
+            .iter()
+            .find(|w| w.kind == "runaway")
+            .map(|w| w.text.clone())
+    };
+    Measures { figures, failure }
+}
+
+/// [`LOAD_RECOVERY`] of a run; None when the run ended before the load step.
+fn load_recovery(sim: &Simulation) -> Option<f64> {
+    let from = sim.scenario().load_step.time;
+    let len = sim.len();
+    let start = (0..len).find(|&i| sim.time(i) >= from)?;
+    let band = recovery_band(sim.row(start)?.omega_ref);
+    let mut last_out = None;
+    sim.visit(start, len, &mut |i, r| {
+        if r.omega_err.abs() > band || !r.omega_err.is_finite() {
+            last_out = Some(i);
+        }
+        true
+    });
+    Some(match last_out {
+        None => 0.0,
+        Some(i) if i + 1 >= len => f64::INFINITY,
+        Some(i) => sim.time(i + 1) - from,
+    })
+}
+
+/// The verdict on one criterion.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CriterionVerdict {
+    /// Figure name.
+    pub figure: String,
+    /// The figure in words.
+    pub label: String,
+    /// The bound in words, e.g. "≤ 0.004 s" or "inside its 95 % band".
+    pub bound: String,
+    /// The value judged (the worst over the runs of a robust criterion); None when a run did
+    /// not measure it.
+    pub value: Option<f64>,
+    /// Unit of `value`.
+    pub unit: String,
+    /// The run the value comes from: "nominal" or a variant's overrides.
+    pub run: String,
+    /// Whether the criterion holds.
+    pub pass: bool,
+    /// Why it fails ("" when it holds): "above the bound", "still changing", …
+    pub reason: String,
+}
+
+/// The verdict on a submission.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Verdict {
+    /// One verdict per criterion, in the challenge's order.
+    pub criteria: Vec<CriterionVerdict>,
+    /// Whether every criterion holds.
+    pub pass: bool,
+}
+
+/// How one run meets one criterion: its value, whether it holds, why not, and how far it is
+/// from holding (for picking the worst run; failures without a value are the worst).
+struct Check {
+    value: Option<f64>,
+    pass: bool,
+    reason: String,
+    badness: f64,
+}
+
+fn check(op: &Op, figure: &str, m: &Measures) -> Check {
+    let fail = |reason: String| Check {
+        value: None,
+        pass: false,
+        reason,
+        badness: f64::INFINITY,
+    };
+    if let Some(f) = &m.failure {
+        return fail(format!("run failed: {f}"));
+    }
+    let Some(x) = m.get(figure) else {
+        return fail(if figure == LOAD_RECOVERY {
+            "not measured: the run ends before the load step".to_string()
+        } else {
+            "not measured on this run (e.g. a step that never settles within 2 %)".to_string()
+        });
+    };
+    let v = x.value;
+    let (pass, badness, side) = match *op {
+        Op::Max(b) => (v <= b, v - b, "above the bound"),
+        Op::Min(b) => (v >= b, b - v, "below the bound"),
+        Op::Abs(b) => (v.abs() <= b, v.abs() - b, "beyond the bound"),
+        Op::Band => {
+            let (Some(lo), Some(hi)) = (m.get("mean_nis_low"), m.get("mean_nis_high")) else {
+                return fail("not measured: no NIS band on this run".to_string());
+            };
+            let (lo, hi) = (lo.value, hi.value);
+            let side = if v < lo {
+                "below the band"
+            } else {
+                "above the band"
+            };
+            ((lo..=hi).contains(&v), (lo - v).max(v - hi), side)
+        }
+    };
+    let mut out = Check {
+        value: Some(v),
+        pass,
+        reason: if pass {
+            String::new()
+        } else {
+            side.to_string()
+        },
+        badness,
+    };
+    if v.is_infinite() && figure == LOAD_RECOVERY {
+        out.reason = "not recovered by the end of the run".to_string();
+    }
+    // A final value that is still moving is not a final value.
+    if x.settled == Some(false) {
+        out.pass = false;
+        out.reason = "still changing".to_string();
+        out.badness = f64::INFINITY;
+    }
+    out
+}
+
+/// The bound of `op` in words, with `unit`.
+fn bound_text(op: &Op, unit: &str) -> String {
+    let u = if unit.is_empty() {
+        String::new()
+    } else {
+        format!(" {unit}")
+    };
+    match op {
+        Op::Max(b) => format!("≤ {b}{u}"),
+        Op::Min(b) => format!("≥ {b}{u}"),
+        Op::Abs(b) => format!("|·| ≤ {b}{u}"),
+        Op::Band => "inside its 95 % band".to_string(),
+    }
+}
+
+/// Judges `challenge` on the measures of its runs: `runs[0]` the nominal run, then one per
+/// variant in order. A robust criterion reports its worst run; the others the nominal run.
+pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, String> {
+    let labels = challenge.run_labels();
+    if runs.len() != labels.len() {
+        return Err(format!(
+            "the challenge has {} runs (nominal and {} variants), {} measured",
+            labels.len(),
+            labels.len() - 1,
+            runs.len()
+        ));
+    }
+    let mut criteria = Vec::new();
+    for c in &challenge.need {
+        let info = super::judge::figure_info(&c.figure).expect("checked when parsed");
+        let count = if challenge.is_robust(&c.figure) {
+            runs.len()
+        } else {
+            1
+        };
+        let mut worst: Option<(usize, Check)> = None;
+        for (i, m) in runs.iter().enumerate().take(count) {
+            let k = check(&c.op, &c.figure, m);
+            let worse = match &worst {
+                None => true,
+                Some((_, w)) => (w.pass && !k.pass) || (w.pass == k.pass && k.badness > w.badness),
+            };
+            if worse {
+                worst = Some((i, k));
+            }
+        }
+        let (i, k) = worst.expect("at least the nominal run");
+        let unit = runs[i]
+            .get(&c.figure)
+            .map_or(info.unit.to_string(), |m| m.unit.clone());
+        criteria.push(CriterionVerdict {
+            figure: c.figure.clone(),
+            label: info.label.to_string(),
+            bound: bound_text(&c.op, info.unit),
+            value: k.value,
+            unit,
+            run: labels[i].clone(),
+            pass: k.pass,
+            reason: k.reason,
+        });
+    }
+    let pass = criteria.iter().all(|c| c.pass);
+    Ok(Verdict { criteria, pass })
+}
