@@ -4,16 +4,15 @@
 //! Everything here reads the recorded trace; `imlab metrics` prints the list and the page shows it
 //! as given.
 
-use super::row::{is_saturated, Row};
+use super::row::Row;
 use super::samples::Samples;
 use super::text::{rounded, time_text};
 use super::transient::{transient, Transient};
+use super::window::{trend_start, LineFit, Settling, Summand, Window};
+#[cfg(test)]
 use crate::control::Reference;
 use crate::scenario::Scenario;
 use serde::Serialize;
-
-/// Settling band of the step response: 2 % of the step size.
-const SETTLING_BAND: f64 = 0.02;
 
 /// Standard-normal quantile of 97.5 %: the 95 % two-sided band.
 const Z_975: f64 = 1.959963984540054;
@@ -59,9 +58,6 @@ pub struct Trend {
     pub settled: bool,
 }
 
-/// Fraction of the recorded run, at its end, over which a final value's trend is fitted.
-const TREND_SHARE: f64 = 0.1;
-
 /// A final speed error has settled when it changes by at most this over the trend's window, or
 /// by at most [`TREND_RELATIVE`] of its value if that is larger (rad/s): 0.01 rad/s is below
 /// what any lesson reads, and a 200 Hz ripple of the presets' size fits a line of nearly zero
@@ -78,60 +74,6 @@ const TREND_RELATIVE: f64 = 0.02;
 /// A change within twice the samples' scatter about the line cannot be told from the ripple of
 /// a periodic reference or from noise: it is not called a trend.
 const TREND_SCATTER: f64 = 2.0;
-
-/// Sums for a least-squares line through (t − t0, y) of several signals at once.
-#[derive(Clone, Copy)]
-struct LineFit<const N: usize> {
-    t0: f64,
-    n: f64,
-    st: f64,
-    stt: f64,
-    sy: [f64; N],
-    syy: [f64; N],
-    sty: [f64; N],
-}
-
-impl<const N: usize> LineFit<N> {
-    fn new(t0: f64) -> Self {
-        LineFit {
-            t0,
-            n: 0.0,
-            st: 0.0,
-            stt: 0.0,
-            sy: [0.0; N],
-            syy: [0.0; N],
-            sty: [0.0; N],
-        }
-    }
-
-    fn push(&mut self, t: f64, y: [f64; N]) {
-        let dt = t - self.t0;
-        self.n += 1.0;
-        self.st += dt;
-        self.stt += dt * dt;
-        for k in 0..N {
-            self.sy[k] += y[k];
-            self.syy[k] += y[k] * y[k];
-            self.sty[k] += dt * y[k];
-        }
-    }
-
-    /// The slope of signal `k` (per second); None with fewer than two distinct times.
-    fn slope(&self, k: usize) -> Option<f64> {
-        let d = self.n * self.stt - self.st * self.st;
-        (self.n >= 2.0 && d > 0.0).then(|| (self.n * self.sty[k] - self.st * self.sy[k]) / d)
-    }
-
-    /// The standard deviation of signal `k` about its line (0 with fewer than three samples).
-    fn scatter(&self, k: usize, slope: f64) -> f64 {
-        if self.n < 3.0 {
-            return 0.0;
-        }
-        let syy = self.syy[k] - self.sy[k] * self.sy[k] / self.n;
-        let sty = self.sty[k] - self.st * self.sy[k] / self.n;
-        ((syy - slope * sty) / (self.n - 2.0)).max(0.0).sqrt()
-    }
-}
 
 /// The transient and the figures of a run, computed together (the figures start at the end of
 /// the transient): see [`report`].
@@ -166,21 +108,6 @@ const RUNAWAY_SPEED: f64 = 100.0;
 /// ... or its true flux modulus ends above this multiple of the flux target √ψ_d.
 const RUNAWAY_FLUX: f64 = 4.0;
 
-/// Sums and peaks of the window figures, accumulated in row order (sums start at −0, as
-/// `Iterator::sum` does, so that they equal it bit for bit).
-struct Window {
-    n: usize,
-    tracking_sq: f64,
-    tracking_peak: f64,
-    saturated: usize,
-    nis: f64,
-    current_peak: f64,
-    current_sq: f64,
-    ripple_peak: f64,
-    ripple_sq: f64,
-    reference_peak: f64,
-}
-
 /// The transient and the figures of the rows `rows` recorded from scenario `s`, computed together:
 /// [`transient`], then the figures over the rows recorded so far, in this order:
 /// `transient_end`, `tracking_rms`, `tracking_peak`, `settling_time` (step references only),
@@ -204,56 +131,44 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     }
     let last = rows.row(len - 1);
     let limit = s.limit();
-    let mut w = Window {
-        n: 0,
-        tracking_sq: -0.0,
-        tracking_peak: f64::NEG_INFINITY,
-        saturated: 0,
-        nis: -0.0,
-        current_peak: f64::NEG_INFINITY,
-        current_sq: -0.0,
-        ripple_peak: f64::NEG_INFINITY,
-        ripple_sq: -0.0,
-        reference_peak: 0.0,
-    };
-    // One pass over the window, from the step on for a step reference that comes earlier.
-    let mut settling = Settling::of(&s.reference, s.ts, rows, &last);
-    let first = settling.as_ref().map_or(start, |st| st.from.min(start));
-    // The final values' trend: their line over the last tenth (inside the window, which starts
-    // at most half-way).
-    let t_first = rows.time(0);
-    let trend_from = rows.first_at(last.t - TREND_SHARE * (last.t - t_first));
-    let trend_t0 = rows.time(trend_from.min(len - 1));
-    let mut trend = LineFit::<3>::new(trend_t0);
-    rows.visit(first, len, &mut |i, r| {
+    // The step's settling, for a step reference whose step the run reached and which ends inside
+    // the band.
+    let mut settling = Settling::step(&s.reference, s.ts, |t| rows.first_at(t))
+        .filter(|st| last.t >= st.time && !st.outside(&last));
+    let tallied = rows.window_tally().and_then(|t| t.window(start, len));
+    let (w, trend) = if let Some((w, trend, last_out)) = tallied {
         if let Some(st) = &mut settling {
-            st.push(i, r);
+            st.last_out = last_out;
         }
-        if i < start {
-            return true;
-        }
-        if i >= trend_from {
-            trend.push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
-        }
-        w.n += 1;
-        w.tracking_sq += r.omega_err * r.omega_err;
-        w.tracking_peak = w.tracking_peak.max(r.omega_err.abs());
-        w.saturated += usize::from(is_saturated(r, &limit));
-        w.nis += r.nis;
-        w.current_peak = w
-            .current_peak
-            .max((r.i_sa * r.i_sa + r.i_sb * r.i_sb).sqrt());
-        w.current_sq += r.i_sa * r.i_sa + r.i_sb * r.i_sb;
-        w.ripple_peak = w.ripple_peak.max(r.i_ripple);
-        w.reference_peak = w.reference_peak.max(r.omega_ref.abs());
-        w.ripple_sq += r.i_ripple * r.i_ripple;
-        true
-    });
+        (w, trend)
+    } else {
+        // One pass over the window, from the step on for a step reference that comes earlier.
+        let first = settling.as_ref().map_or(start, |st| st.from.min(start));
+        // The final values' trend: their line over the last tenth (inside the window, which
+        // starts at most half-way).
+        let trend_from = trend_start(len, |i| rows.time(i));
+        let mut trend = LineFit::<3>::new(rows.time(trend_from.min(len - 1)));
+        let mut w = Window::new();
+        rows.visit(first, len, &mut |i, r| {
+            if let Some(st) = &mut settling {
+                st.push(i, r);
+            }
+            if i < start {
+                return true;
+            }
+            if i >= trend_from {
+                trend.push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
+            }
+            w.push(&Summand::of(r, &limit));
+            true
+        });
+        (w, trend)
+    };
     let n = w.n as f64;
     let in_w = format!("t ≥ {}", time_text(end.t));
     let at_last = format!("last sample, t = {}", time_text(last.t));
     let mut out = Vec::new();
-    let over = last.t - trend_t0;
+    let over = last.t - trend.t0;
     let trend_of = |k: usize, value: f64, tol: f64| {
         let rate = trend.slope(k)?;
         let tolerance = tol.max(TREND_RELATIVE * value.abs());
@@ -471,59 +386,13 @@ fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> V
 fn settling_time(reference: &Reference, ts: f64, rows: &dyn Samples) -> Option<(f64, f64)> {
     let len = rows.count();
     let last = rows.row(len.checked_sub(1)?);
-    let mut settling = Settling::of(reference, ts, rows, &last)?;
+    let mut settling = Settling::step(reference, ts, |t| rows.first_at(t))
+        .filter(|st| last.t >= st.time && !st.outside(&last))?;
     rows.visit(settling.from, len, &mut |i, r| {
         settling.push(i, r);
         true
     });
     Some(settling.result())
-}
-
-/// [`settling_time`] as a pass over the rows takes it: the step of a step reference and its 2 %
-/// band, when the run has reached the step and ends inside the band.
-struct Settling {
-    /// Step time (s) and its first row.
-    time: f64,
-    from: usize,
-    target: f64,
-    band: f64,
-    /// The last time ω was outside the band, from the step on.
-    last_out: Option<f64>,
-}
-
-impl Settling {
-    fn of(reference: &Reference, ts: f64, rows: &dyn Samples, last: &Row) -> Option<Settling> {
-        let Reference::Step { size, time, .. } = *reference else {
-            return None;
-        };
-        if last.t < time {
-            return None;
-        }
-        let settling = Settling {
-            time,
-            from: rows.first_at(time),
-            target: reference.sample(time - ts).value + size,
-            band: SETTLING_BAND * size.abs(),
-            last_out: None,
-        };
-        (!settling.outside(last)).then_some(settling)
-    }
-
-    fn outside(&self, r: &Row) -> bool {
-        (r.omega - self.target).abs() > self.band
-    }
-
-    /// Takes row `i` (rows in order; those before the step are ignored).
-    fn push(&mut self, i: usize, r: &Row) {
-        if i >= self.from && self.outside(r) {
-            self.last_out = Some(r.t);
-        }
-    }
-
-    /// The settling time after the step and the step time (s).
-    fn result(&self) -> (f64, f64) {
-        (self.last_out.map_or(0.0, |t| t - self.time), self.time)
-    }
 }
 
 /// The 95 % band (low, high) of the mean NIS of a consistent filter over `samples` samples.

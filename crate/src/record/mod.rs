@@ -17,6 +17,7 @@ mod tally;
 mod text;
 mod trace;
 mod transient;
+mod window;
 
 pub use figures::{report, Figure, Report, Trend, Warning};
 pub use m4::{m4, M4};
@@ -29,3 +30,4 @@ pub use samples::Samples;
 pub use tally::{Stability, StabilityTally, TransientTally, CHECKPOINT_EVERY};
 pub use trace::{Column, Overview, Trace};
 pub use transient::{transient, Transient};
+pub use window::WindowTally;

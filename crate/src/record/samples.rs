@@ -2,6 +2,7 @@
 
 use super::row::{first_not, Row};
 use super::tally::TransientTally;
+use super::window::WindowTally;
 
 /// Recorded rows, read in order: a run's (from memory or by replay) or a hand-made trace's.
 pub trait Samples {
@@ -14,6 +15,11 @@ pub trait Samples {
 
     /// What a traced run tallied for the transient as its rows came, if it did.
     fn tally(&self) -> Option<&TransientTally> {
+        None
+    }
+
+    /// What a traced run kept of every row for the window figures as its rows came, if it did.
+    fn window_tally(&self) -> Option<&WindowTally> {
         None
     }
 

@@ -6,6 +6,7 @@
 use super::m4::M4;
 use super::row::{finite, Row, Sink, COLUMNS};
 use super::tally::{StabilityTally, TransientTally, CHECKPOINT_EVERY};
+use super::window::WindowTally;
 use crate::scenario::Scenario;
 
 /// M4 envelopes of groups of columns over a window of rows, fed row by row: while the run goes
@@ -97,6 +98,8 @@ pub struct Trace<S> {
     pub stability: StabilityTally,
     /// See [`TransientTally`].
     pub transient: TransientTally,
+    /// See [`WindowTally`]: none for a run longer than it keeps.
+    pub window: Option<WindowTally>,
     /// One column of every row recorded, when asked for (the overlay of runs reads it instead of
     /// replaying them): filled by a replay of the rows so far, then as the run goes.
     pub column: Option<Column>,
@@ -120,6 +123,7 @@ impl<S: Clone> Trace<S> {
             overview: None,
             stability: StabilityTally::new(scenario.gains, scenario.limit()),
             transient: TransientTally::new(steps, scenario.ts),
+            window: WindowTally::new(scenario, steps),
             column: None,
         }
     }
@@ -138,6 +142,7 @@ impl<S: Clone> Trace<S> {
     pub fn bytes(&self) -> usize {
         self.checkpoints.capacity() * std::mem::size_of::<S>()
             + self.transient.bytes()
+            + self.window.as_ref().map_or(0, WindowTally::bytes)
             + self
                 .column
                 .as_ref()
@@ -159,6 +164,9 @@ impl<S> Sink for Trace<S> {
         }
         self.stability.push(row);
         self.transient.push(self.len, row);
+        if let Some(w) = &mut self.window {
+            w.push(self.len, row);
+        }
         if let Some(c) = &mut self.column {
             // Within the capacity reserved for the whole run: no allocation.
             c.values.push(row.get(c.index));

@@ -5,7 +5,8 @@
 use super::closed_loop::{Loop, LoopState};
 use super::{Recording, Simulation};
 use crate::record::{
-    first_not, Column, Overview, Row, Samples, Sink, Trace, TransientTally, CHECKPOINT_EVERY, M4,
+    first_not, Column, Overview, Row, Samples, Sink, Trace, TransientTally, WindowTally,
+    CHECKPOINT_EVERY, M4,
 };
 
 impl Simulation {
@@ -255,6 +256,12 @@ impl Samples for Simulation {
     fn tally(&self) -> Option<&TransientTally> {
         match &self.recording {
             Recording::Trace(t) => Some(&t.transient),
+            Recording::Rows(_) => None,
+        }
+    }
+    fn window_tally(&self) -> Option<&WindowTally> {
+        match &self.recording {
+            Recording::Trace(t) => t.window.as_ref(),
             Recording::Rows(_) => None,
         }
     }

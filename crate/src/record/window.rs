@@ -1,0 +1,284 @@
+//! The window figures' sums and peaks, accumulated in row order, and what a traced run keeps of
+//! every row for them as it goes ([`WindowTally`]), so that its figures need no replay of the
+//! run: the same sums, in the same order, from the same values, bit for bit.
+
+use super::row::{first_not, is_saturated, Row};
+use crate::control::Reference;
+use crate::inverter::Limit;
+use crate::scenario::Scenario;
+
+/// Settling band of the step response: 2 % of the step size.
+pub(super) const SETTLING_BAND: f64 = 0.02;
+
+/// Fraction of the recorded run, at its end, over which a final value's trend is fitted.
+pub(super) const TREND_SHARE: f64 = 0.1;
+
+/// Rows up to which a traced run keeps its window tally (about 50 s at 20 kHz, 40 MiB); a longer
+/// run's figures replay its window instead.
+const MAX_TALLY_ROWS: usize = 1 << 20;
+
+/// Sums for a least-squares line through (t − t0, y) of several signals at once.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct LineFit<const N: usize> {
+    /// The time the line's t is measured from (s).
+    pub(super) t0: f64,
+    n: f64,
+    st: f64,
+    stt: f64,
+    sy: [f64; N],
+    syy: [f64; N],
+    sty: [f64; N],
+}
+
+impl<const N: usize> LineFit<N> {
+    pub(super) fn new(t0: f64) -> Self {
+        LineFit {
+            t0,
+            n: 0.0,
+            st: 0.0,
+            stt: 0.0,
+            sy: [0.0; N],
+            syy: [0.0; N],
+            sty: [0.0; N],
+        }
+    }
+
+    pub(super) fn push(&mut self, t: f64, y: [f64; N]) {
+        let dt = t - self.t0;
+        self.n += 1.0;
+        self.st += dt;
+        self.stt += dt * dt;
+        for k in 0..N {
+            self.sy[k] += y[k];
+            self.syy[k] += y[k] * y[k];
+            self.sty[k] += dt * y[k];
+        }
+    }
+
+    /// The slope of signal `k` (per second); None with fewer than two distinct times.
+    pub(super) fn slope(&self, k: usize) -> Option<f64> {
+        let d = self.n * self.stt - self.st * self.st;
+        (self.n >= 2.0 && d > 0.0).then(|| (self.n * self.sty[k] - self.st * self.sy[k]) / d)
+    }
+
+    /// The standard deviation of signal `k` about its line (0 with fewer than three samples).
+    pub(super) fn scatter(&self, k: usize, slope: f64) -> f64 {
+        if self.n < 3.0 {
+            return 0.0;
+        }
+        let syy = self.syy[k] - self.sy[k] * self.sy[k] / self.n;
+        let sty = self.sty[k] - self.st * self.sy[k] / self.n;
+        ((syy - slope * sty) / (self.n - 2.0)).max(0.0).sqrt()
+    }
+}
+
+/// What the window figures read of one row.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Summand {
+    omega_err: f64,
+    nis: f64,
+    /// |i_s|² (A²).
+    current_sq: f64,
+    ripple: f64,
+    reference: f64,
+    saturated: bool,
+}
+
+impl Summand {
+    /// Of `r`, under the inverter's `limit`.
+    #[inline]
+    pub(super) fn of(r: &Row, limit: &Limit) -> Summand {
+        Summand {
+            omega_err: r.omega_err,
+            nis: r.nis,
+            current_sq: r.i_sa * r.i_sa + r.i_sb * r.i_sb,
+            ripple: r.i_ripple,
+            reference: r.omega_ref,
+            saturated: is_saturated(r, limit),
+        }
+    }
+}
+
+/// Sums and peaks of the window figures, accumulated in row order (sums start at −0, as
+/// `Iterator::sum` does, so that they equal it bit for bit).
+pub(super) struct Window {
+    pub(super) n: usize,
+    pub(super) tracking_sq: f64,
+    pub(super) tracking_peak: f64,
+    pub(super) saturated: usize,
+    pub(super) nis: f64,
+    pub(super) current_peak: f64,
+    pub(super) current_sq: f64,
+    pub(super) ripple_peak: f64,
+    pub(super) ripple_sq: f64,
+    pub(super) reference_peak: f64,
+}
+
+impl Window {
+    pub(super) fn new() -> Window {
+        Window {
+            n: 0,
+            tracking_sq: -0.0,
+            tracking_peak: f64::NEG_INFINITY,
+            saturated: 0,
+            nis: -0.0,
+            current_peak: f64::NEG_INFINITY,
+            current_sq: -0.0,
+            ripple_peak: f64::NEG_INFINITY,
+            ripple_sq: -0.0,
+            reference_peak: 0.0,
+        }
+    }
+
+    /// Takes the next row of the window.
+    #[inline]
+    pub(super) fn push(&mut self, x: &Summand) {
+        self.n += 1;
+        self.tracking_sq += x.omega_err * x.omega_err;
+        self.tracking_peak = self.tracking_peak.max(x.omega_err.abs());
+        self.saturated += usize::from(x.saturated);
+        self.nis += x.nis;
+        self.current_peak = self.current_peak.max(x.current_sq.sqrt());
+        self.current_sq += x.current_sq;
+        self.ripple_peak = self.ripple_peak.max(x.ripple);
+        self.reference_peak = self.reference_peak.max(x.reference.abs());
+        self.ripple_sq += x.ripple * x.ripple;
+    }
+}
+
+/// The settling of ω after the step of a step reference: its first row, target and 2 % band,
+/// and the last time ω was outside the band, from the step on.
+#[derive(Clone, Debug)]
+pub(super) struct Settling {
+    /// Step time (s) and its first row.
+    pub(super) time: f64,
+    pub(super) from: usize,
+    target: f64,
+    band: f64,
+    /// The last time ω was outside the band, from the step on.
+    pub(super) last_out: Option<f64>,
+}
+
+impl Settling {
+    /// For a step reference sampled every `ts`, whose step time is first reached at row `from`.
+    pub(super) fn step(
+        reference: &Reference,
+        ts: f64,
+        from: impl FnOnce(f64) -> usize,
+    ) -> Option<Settling> {
+        let Reference::Step { size, time, .. } = *reference else {
+            return None;
+        };
+        Some(Settling {
+            time,
+            from: from(time),
+            target: reference.sample(time - ts).value + size,
+            band: SETTLING_BAND * size.abs(),
+            last_out: None,
+        })
+    }
+
+    pub(super) fn outside(&self, r: &Row) -> bool {
+        (r.omega - self.target).abs() > self.band
+    }
+
+    /// Takes row `i` (rows in order; those before the step are ignored).
+    #[inline]
+    pub(super) fn push(&mut self, i: usize, r: &Row) {
+        if i >= self.from && self.outside(r) {
+            self.last_out = Some(r.t);
+        }
+    }
+
+    /// The settling time after the step and the step time (s).
+    pub(super) fn result(&self) -> (f64, f64) {
+        (self.last_out.map_or(0.0, |t| t - self.time), self.time)
+    }
+}
+
+/// The first row of the final values' trend in a run of rows `0..len` at times `time(i)`: the
+/// last tenth of the recorded run.
+pub(super) fn trend_start(len: usize, time: impl Fn(usize) -> f64) -> usize {
+    let (first, last) = (time(0), time(len - 1));
+    let cut = last - TREND_SHARE * (last - first);
+    first_not(len, |i| time(i) < cut)
+}
+
+/// What the window figures read of every row of a traced run, kept as its rows come (row k at
+/// time k·Ts), with the trend of the final values and the step's settling tallied over the rows
+/// they will cover if the run reaches its last sample. A run that ends early, or one longer
+/// than the rows a tally keeps, has its window replayed instead.
+#[derive(Clone, Debug)]
+pub struct WindowTally {
+    limit: Limit,
+    steps: usize,
+    summands: Vec<Summand>,
+    /// The trend's first row and its sums as planned.
+    trend_from: usize,
+    trend: LineFit<3>,
+    settling: Option<Settling>,
+}
+
+impl WindowTally {
+    /// For a traced run of `scenario` of `steps` samples; None when it is longer than a tally
+    /// keeps.
+    pub fn new(scenario: &Scenario, steps: usize) -> Option<WindowTally> {
+        if steps == 0 || steps > MAX_TALLY_ROWS {
+            return None;
+        }
+        let ts = scenario.ts;
+        let time = |k: usize| k as f64 * ts;
+        let trend_from = trend_start(steps, time);
+        Some(WindowTally {
+            limit: scenario.limit(),
+            steps,
+            summands: Vec::with_capacity(steps),
+            trend_from,
+            trend: LineFit::new(time(trend_from.min(steps - 1))),
+            settling: Settling::step(&scenario.reference, ts, |t| {
+                first_not(steps, |k| time(k) < t)
+            }),
+        })
+    }
+
+    /// Takes row `i`, the rows coming in order from 0.
+    #[inline]
+    pub fn push(&mut self, i: usize, r: &Row) {
+        // Within the capacity reserved for the whole run: no allocation.
+        self.summands.push(Summand::of(r, &self.limit));
+        if i >= self.trend_from {
+            self.trend
+                .push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
+        }
+        if let Some(s) = &mut self.settling {
+            s.push(i, r);
+        }
+    }
+
+    /// The window sums over rows `start..len`, the trend and the step's last time outside its
+    /// band, when the tally covers them: the run reached its last sample (`len` rows) and the
+    /// trend lies inside the window.
+    pub(super) fn window(
+        &self,
+        start: usize,
+        len: usize,
+    ) -> Option<(Window, LineFit<3>, Option<f64>)> {
+        if len != self.steps || self.summands.len() != len || self.trend_from < start {
+            return None;
+        }
+        let mut w = Window::new();
+        for x in &self.summands[start..] {
+            w.push(x);
+        }
+        Some((
+            w,
+            self.trend,
+            self.settling.as_ref().and_then(|s| s.last_out),
+        ))
+    }
+
+    /// Bytes it holds.
+    pub fn bytes(&self) -> usize {
+        self.summands.capacity() * std::mem::size_of::<Summand>()
+    }
+}
