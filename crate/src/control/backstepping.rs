@@ -153,6 +153,9 @@ impl Backstepping {
     }
 
     /// Computes every term and the voltage (54) for one sample, with the model's parameters.
+    // Inlined into the loop, so that the terms only a recorded row reads are computed only for
+    // the rows that are recorded.
+    #[inline(always)]
     pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
         self.law(&self.model, None, input)
     }
@@ -160,6 +163,7 @@ impl Backstepping {
     /// As [`Backstepping::control`], with the parameters the observer estimates (Section 3.1's
     /// remedies). The lumped parameters follow the estimates each sample; their own rates
     /// (dR̂_r/dt through a5, a7, a8, a10) are neglected in the derivatives.
+    #[inline(always)]
     pub fn control_adapted(
         &self,
         input: &ControlInput,
