@@ -41,5 +41,6 @@ test: dist
 bench: dist
 	cargo bench --bench closed_loop --bench codec -- $(BENCH_ARGS)
 	node tests/bench/floor.mjs
+	node tests/bench/baseline.mjs
 	node tests/bench/node.mjs
 	node tests/bench/browser.mjs

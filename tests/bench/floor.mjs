@@ -7,7 +7,8 @@
 //   metrics   imlab metrics 'v=1&preset=ramp&duration=20'                 (the run and its figures)
 // and prints each path's speed as a fraction of the floor's (floor CPU / path CPU), the median
 // (min–max) of BENCH_REPS repetitions (default 7).
-import { execFileSync, spawnSync } from 'node:child_process';
+import { execFileSync } from 'node:child_process';
+import { cpu } from './cpu.mjs';
 
 const root = new URL('../../', import.meta.url).pathname;
 const floorDir = new URL('../../../shared/bench/rustfloor/', import.meta.url).pathname;
@@ -17,14 +18,6 @@ const run = 'v=1&preset=ramp&duration=20';
 execFileSync('cargo', ['build', '--release', '-q', '--manifest-path', `${floorDir}Cargo.toml`, '--target-dir', `${root}target/floor`], { stdio: 'inherit' });
 const floor = `${root}target/floor/release/rustfloor`;
 const imlab = `${root}target/release/imlab`;
-
-/** CPU seconds (user + system) of `argv` run as a whole process, its output discarded. */
-function cpu(argv) {
-  const quoted = argv.map((a) => `'${a.replaceAll("'", "'\\''")}'`).join(' ');
-  const out = spawnSync('bash', ['-c', `${quoted} > /dev/null 2>&1; times`], { encoding: 'utf8' }).stdout.trim().split('\n');
-  // `times`: the shell's own line, then its children's: "0m1.234s 0m0.010s".
-  return out[1].split(' ').map((t) => { const [, m, s] = /(\d+)m([\d.]+)s/.exec(t); return 60 * Number(m) + Number(s); }).reduce((a, b) => a + b, 0);
-}
 
 const paths = {
   loop: [imlab, 'run', '--every', '100000000', run],
