@@ -34,7 +34,9 @@ test: dist
 	node --test --test-concurrency=1 tests/*.test.mjs
 
 # Criterion benchmarks (about 2 minutes after the build), the speed against the floor
-# (../shared/bench/rustfloor, built by the bench), then the Node and browser figures.
+# (../shared/bench/rustfloor, built by the bench), the five-state path against the build
+# before the EKF's extra states (commit f3ff4f2, built by the bench), then the Node and browser
+# figures.
 # BENCH_ARGS goes to criterion: `make bench BENCH_ARGS=--quick` for a short pass,
 # `BENCH_ARGS=long` for one group. BENCH_REPS=n sets the repetitions of the Node and browser
 # figures (default 5; each prints the median).
