@@ -142,8 +142,7 @@ export function createCompose({ client, state }) {
     op.addEventListener('change', syncBound);
     syncBound();
     row.append(
-      el('input', { type: 'checkbox', id, name: 'use' }),
-      el('label', { htmlFor: id, textContent: `${fig.label} (${fig.name})${now}` }),
+      el('label', { className: 'need-label' }, [el('input', { type: 'checkbox', id, name: 'use' }), ` ${fig.label} (${fig.name})${now}`]),
       el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: `${fig.name}: how it is bounded` }), op,
       el('label', { htmlFor: `${id}-bound`, className: 'sr-only', textContent: `${fig.name}: bound${unit}` }), bound,
       el('span', { className: 'range', textContent: unit.trim() }),
