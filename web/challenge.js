@@ -67,6 +67,17 @@ export function createChallenge({ client, state, relayout }) {
    */
   async function open() {
     if (!link) return scenarioFromUrl();
+    try {
+      return await openLink();
+    } catch (e) {
+      fail(`The challenge could not be opened: ${e.message}. The page shows the default scenario instead.`);
+      body.challenge = 'failed';
+      desc = null;
+      return scenarioFromUrl();
+    }
+  }
+
+  async function openLink() {
     document.body.classList.add('with-challenge');
     panel.hidden = false;
     body.challenge = 'loading';
@@ -225,6 +236,7 @@ export function createChallenge({ client, state, relayout }) {
       const result = await client.job('challenge-judge', { text: desc.encoded, runs: held ? [held, ...measured] : measured });
       if (me !== grading) return;
       show(result, sub);
+      if (!held) verdict.append(' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.');
       holdAddress(sub.encoded);
       copy.disabled = false;
       body.challenge = result.pass ? 'pass' : 'fail';
