@@ -46,7 +46,7 @@ for (const viewport of [[390, 844], [1440, 900]]) {
   test(`axe-core finds no violations at ${viewport.join('×')}: every tab, inspect open, presentation mode`, () =>
     withPage('?v=1&preset=step', viewport, async (page) => {
       const found = {};
-      for (const tab of ['walkthrough', 'lessons', 'analysis', 'plots']) {
+      for (const tab of ['walkthrough', 'lessons', 'analysis', 'challenge', 'plots']) {
         await page.click(`[role=tab][data-tab=${tab}]`);
         found[tab] = await violations(page);
       }
@@ -95,14 +95,14 @@ test('a preset is chosen and run from the keyboard; arrow keys on the picker sta
 test('the tabs follow the WAI-ARIA pattern: one tab stop, arrow keys, panels labelled', () =>
   withPage('?v=1&preset=step', [1280, 800], async (page) => {
     const tabs = await page.$$eval('[role=tablist] > *', (list) => list.map((t) => [t.getAttribute('role'), t.tabIndex, t.getAttribute('aria-controls')]));
-    assert.deepEqual(tabs.map((t) => t[0]), ['tab', 'tab', 'tab', 'tab'], 'only tabs inside the tablist');
-    assert.deepEqual(tabs.map((t) => t[1]), [0, -1, -1, -1]);
+    assert.deepEqual(tabs.map((t) => t[0]), ['tab', 'tab', 'tab', 'tab', 'tab'], 'only tabs inside the tablist');
+    assert.deepEqual(tabs.map((t) => t[1]), [0, -1, -1, -1, -1]);
     await page.focus('#tab-plots');
     await page.keyboard.press('ArrowRight');
     assert.equal(await page.evaluate(() => document.activeElement.id), 'tab-walkthrough');
     assert.equal(await page.isVisible('#panel-walkthrough'), true);
     await page.keyboard.press('End');
-    assert.equal(await page.evaluate(() => document.activeElement.id), 'tab-analysis');
+    assert.equal(await page.evaluate(() => document.activeElement.id), 'tab-challenge');
     await page.keyboard.press('ArrowRight');
     assert.equal(await page.evaluate(() => document.activeElement.id), 'tab-plots');
     assert.equal(await page.getAttribute('#panel-plots', 'aria-labelledby'), 'tab-plots');

@@ -19,6 +19,8 @@ import { createTabs } from './tabs.js';
 import { createPresentation } from './presentation.js';
 import { wireShare } from './share.js';
 import { createSweeps } from './sweeps.js';
+import { createChallenge } from './challenge.js';
+import { createCompose } from './challenge-compose.js';
 
 // What the page's parts share; in brackets, the parts that write each field.
 const state = {
@@ -89,16 +91,22 @@ const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
 const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
+const challenge = createChallenge({
+  client, state, relayout: () => plotSets.forEach((p) => p.resize()),
+});
+createCompose({ client, state });
 const run = createRun({
   client, state, plots, walkthrough, views, figuresView, exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
     pins.afterRun();
     sweeps.afterRun();
+    challenge.check();
   },
 });
 const settings = createSettings({
   client, state, walkthrough, startRun: run.start, markUnrun: run.markUnrun, openSettings: presentation.openSettings,
+  first: challenge.open, described: challenge.described,
 });
 new LessonPanel({
   panel: $('lesson-panel'),
@@ -133,7 +141,8 @@ ui.cancel.addEventListener('click', () => {
   else if (state.export) exporter.cancel('CSV export cancelled');
   else client.post({ type: 'cancel', id: state.runId });
 });
-window.addEventListener('popstate', () => settings.load(scenarioFromUrl()));
+// An open challenge holds the address (url.js): its entries are not scenarios to go back to.
+window.addEventListener('popstate', () => challenge.active() || settings.load(scenarioFromUrl()));
 window.addEventListener('resize', () => {
   plots.resize();
   walkthrough.plots.resize();
@@ -144,6 +153,7 @@ window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
+challenge.listBuiltins($('challenges'));
 // While the worker loads the core, the main plots are laid out, empty, and their drawing code is
 // compiled.
 plots.prepare();

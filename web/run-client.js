@@ -1,5 +1,5 @@
 // The run client: the simulation worker, which owns the core, and the page's messages with it.
-// Describe requests are answered as promises; every other message goes to the page's handler of
+// Describe requests, jobs and challenge measures are answered as promises; every other message goes to the page's handler of
 // its type. A worker that fails is replaced.
 
 /** A request the worker could not answer because it failed; the page has said so already. */
@@ -16,7 +16,7 @@ export class RunClient {
     this.worker = null;
     this.ready = false; // whether the current worker has loaded the core
     this.req = 0;
-    this.pending = new Map(); // describe requests: req → {resolve, reject}
+    this.pending = new Map(); // requests awaiting their answer: req → {resolve, reject}
   }
 
   start() {
@@ -43,9 +43,40 @@ export class RunClient {
     });
   }
 
+  /** Sends `message` and resolves with the answer that carries `key` (see receive). */
+  ask(key, message) {
+    return new Promise((resolve, reject) => {
+      this.pending.set(key, { resolve, reject });
+      this.worker.postMessage(message);
+    });
+  }
+
+  /** Runs a stateless job of the worker (its JOBS table); resolves with its result. */
+  job(kind, data = {}) {
+    const job = ++this.req;
+    return this.ask(`job ${job}`, { type: 'job', job, kind, ...data });
+  }
+
+  /** The challenge measures of run `id`, if the worker still holds it (else null). */
+  measure(id) {
+    return this.ask(`measure ${id}`, { type: 'challenge-measure', id });
+  }
+
+  /** Settles the request `key` with `data`'s result or error. */
+  answer(key, error, result) {
+    const p = this.pending.get(key);
+    this.pending.delete(key);
+    if (error) p?.reject(new Error(error));
+    else p?.resolve(result);
+  }
+
   receive(data) {
     const { type, req } = data;
-    if (type === 'described') {
+    if (type === 'job') {
+      this.answer(`job ${data.job}`, data.error, data.result);
+    } else if (type === 'challenge-measured') {
+      this.answer(`measure ${data.id}`, data.error, data.measures);
+    } else if (type === 'described') {
       this.pending.get(req)?.resolve(data.info);
       this.pending.delete(req);
     } else if (type === 'invalid' && req !== undefined) {

@@ -18,11 +18,15 @@ function syncControl(control, value) {
 /**
  * The settings; `startRun()` and `markUnrun(unrun)` are the run's, `openSettings(open)` opens the
  * settings drawer. The worker's `ready` message (`handlers`) lists the presets and loads the
- * address's scenario.
+ * scenario `first()` resolves with (the address's, unless a challenge gives it). `described(info)`
+ * follows every description the form takes.
  */
-export function createSettings({ client, state, walkthrough, startRun, markUnrun, openSettings }) {
+export function createSettings({
+  client, state, walkthrough, startRun, markUnrun, openSettings, first = scenarioFromUrl, described = () => {},
+}) {
   let presets = []; // the core's presets: {name, description}
   let composed = null; // the scenario the form held when last checked
+  let checking = Promise.resolve(true); // that check: whether the core accepted it
   let knobTimer = null; // a pause in typing in a knob, after which it is checked
   const knobIds = new Map(); // walkthrough knobs given out per field, for unique ids
   let presetPending = false; // the picker moved by keyboard, not yet committed
@@ -58,6 +62,7 @@ export function createSettings({ client, state, walkthrough, startRun, markUnrun
     ui.presetDoc.textContent = changed.length ? `${description}. This run changes: ${changed.join(', ')}.` : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
+    described(info);
   }
 
   /** Loads a scenario string (from the URL, a preset or history); a bad one keeps its valid fields. */
@@ -95,9 +100,14 @@ export function createSettings({ client, state, walkthrough, startRun, markUnrun
     }
   }
 
-  /** Checks the form's scenario with the core; returns whether it is valid. An invalid value is
-   * marked at its field, and at the walkthrough knob when a knob was edited. */
-  async function formChanged() {
+  /** Checks the form's scenario with the core; resolves with whether it is valid. An invalid value
+   * is marked at its field, and at the walkthrough knob when a knob was edited. */
+  function formChanged() {
+    checking = checkForm();
+    return checking;
+  }
+
+  async function checkForm() {
     const text = composeScenario(ui.form, ui.preset.value);
     composed = text;
     try {
@@ -131,7 +141,8 @@ export function createSettings({ client, state, walkthrough, startRun, markUnrun
 
   // An edit still being checked by the core must land before the run starts.
   async function runForm() {
-    if (composeScenario(ui.form, ui.preset.value) !== composed && !(await formChanged())) return;
+    const fresh = composeScenario(ui.form, ui.preset.value) !== composed;
+    if (!(await (fresh ? formChanged() : checking))) return;
     if (!ui.run.disabled) startRun();
   }
 
@@ -187,7 +198,7 @@ export function createSettings({ client, state, walkthrough, startRun, markUnrun
         state.nisBand = nisBand;
         for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
       }
-      if (state.info === null) load(scenarioFromUrl());
+      if (state.info === null) Promise.resolve(first()).then((text) => load(text));
     },
   };
 

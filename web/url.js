@@ -7,7 +7,31 @@ export const DEFAULT_SCENARIO = 'v=1&preset=sine200';
 /** The scenario text in the address bar, or the default when there is none. */
 export function scenarioFromUrl() {
   const text = location.search.replace(/^\?/, '');
-  return text === '' ? DEFAULT_SCENARIO : text;
+  return text === '' || challengeFromUrl() ? DEFAULT_SCENARIO : text;
+}
+
+/**
+ * The challenge in the address bar, or null: `?c=1&…` is a challenge link (with `&try.FIELD=…`
+ * a submission), `?challenge=NAME` a built-in. Returns {challenge, submission}: the challenge's
+ * text (its `try.` parts left out, or the built-in's name) and the whole submission text.
+ */
+export function challengeFromUrl() {
+  const text = location.search.replace(/^\?/, '');
+  const name = /^challenge=([A-Za-z0-9_-]+)$/.exec(text);
+  if (name) return { challenge: name[1], submission: null };
+  if (!/^c=/.test(text)) return null;
+  const challenge = text.split('&').filter((p) => !p.startsWith('try.')).join('&');
+  return { challenge, submission: text };
+}
+
+// While a challenge is open the address holds its link (then the student's submission link),
+// not the scenario: edits and runs leave it alone.
+let heldQuery = null;
+
+/** Holds `query` (a challenge or submission link) in the address bar, in place of the scenario. */
+export function holdAddress(query) {
+  heldQuery = query;
+  history.replaceState(history.state, '', `${location.pathname}?${query}${location.hash}`);
 }
 
 /** The preset named in a (possibly invalid) scenario string, for falling back. */
@@ -84,6 +108,7 @@ export function setFragment(key, value) {
 
 /** Puts `scenario` in the address bar as an edit of the current entry. */
 export function showScenario(scenario) {
+  if (heldQuery !== null) return;
   const state = history.state;
   if (state && state.scenario === scenario) return;
   if (state && state.ran) history.pushState({ scenario, ran: false }, '', urlFor(scenario));
@@ -92,6 +117,7 @@ export function showScenario(scenario) {
 
 /** Marks the current entry as run (pushing it first if the address bar holds another scenario). */
 export function markRun(scenario) {
+  if (heldQuery !== null) return;
   const state = history.state;
   if (state && state.scenario !== scenario && state.ran) {
     history.pushState({ scenario, ran: true }, '', urlFor(scenario));

@@ -33,7 +33,10 @@
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
 //     'grid' {lo, hi, n}, 'seed-range' {first, n}, 'bands' {runs}, 'summary' {points},
 //     'sweep-csv' {points}, 'seeds-csv' {results}
-//     (stateless, so any worker of a pool can take any job)
+//     (stateless, so any worker of a pool can take any job), and the challenge jobs of
+//     challenge-jobs.js
+//   {type: 'challenge-measure', id}         → {type: 'challenge-measured', id, measures}: run `id`'s
+//     measures for judging a challenge (when the run is no longer held, measures is null)
 // Unprompted: {type: 'ready', presets, nisBand} once the core is loaded, and {type: 'crashed', message}
 // when the core trapped (a panic or running out of memory) or the worker hit an uncaught error:
 // the WASM instance may be unusable then, so the worker never calls it again and the page
@@ -43,8 +46,9 @@
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
+import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
 // A slice of work between two looks at the message queue (ms of the worker's clock, read by the
 // core): Cancel is honoured within it, and optimised code compiled in the background is picked
@@ -337,6 +341,7 @@ const JOBS = {
   summary: (d) => sweep_summary(d.points),
   'sweep-csv': (d) => sweep_csv(d.points),
   'seeds-csv': (d) => seeds_csv(d.results),
+  ...CHALLENGE_JOBS,
 };
 
 function pinsMessage(rejected = []) {
@@ -422,6 +427,14 @@ self.onmessage = async ({ data }) => {
         post({ type: 'job', job: data.job, result: JOBS[data.kind](data) });
       } catch (e) {
         if (!trapped(e)) post({ type: 'job', job: data.job, error: String(e) });
+      }
+      break;
+    case 'challenge-measure':
+      try {
+        const held = current && current.id === data.id;
+        post({ type: 'challenge-measured', id: data.id, measures: held ? challenge_measure(current.sim) : null });
+      } catch (e) {
+        if (!trapped(e)) post({ type: 'challenge-measured', id: data.id, measures: null, error: String(e) });
       }
       break;
     case 'csv':

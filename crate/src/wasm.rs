@@ -747,3 +747,9 @@ pub fn challenge_builtins() -> Result<JsValue, JsValue> {
         .collect();
     to_js(&list)
 }
+
+/// The figures a challenge's criteria may name: `[{name, label, unit}]`.
+#[wasm_bindgen]
+pub fn challenge_figures() -> Result<JsValue, JsValue> {
+    to_js(&crate::challenge::FIGURES)
+}

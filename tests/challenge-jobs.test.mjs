@@ -1,0 +1,50 @@
+// The worker's challenge jobs (web/challenge-jobs.js) in Node, on the core the page ships: each
+// built-in's known solution passes on every run and its untouched base fails; a submission
+// outside the challenge is refused naming the field; a bad challenge throws the core's message.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { initSync } from '../dist/pkg/imlab.js';
+import { CHALLENGE_JOBS as jobs } from '../dist/web/challenge-jobs.js';
+
+initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
+
+/** The verdict on `submission` of challenge `text`, every run measured by the 'challenge-run' job. */
+function grade(text, submission) {
+  const sub = jobs['challenge-submission']({ text, submission });
+  assert.equal(sub.kind, 'ok', sub.message);
+  const runs = sub.scenarios.map((scenario) => jobs['challenge-run']({ scenario }));
+  return jobs['challenge-judge']({ text, runs });
+}
+
+test('each built-in passes with its solution and fails untouched', () => {
+  const builtins = jobs['challenge-builtins']({});
+  assert.deepEqual(builtins.map((b) => b.name), ['step-tune', 'load-observer', 'ifoc-load']);
+  for (const b of builtins) {
+    const desc = jobs.challenge({ text: b.name });
+    assert.equal(desc.encoded, b.text);
+    const solved = `${b.text}${b.solution.split('&').map((p) => `&try.${p}`).join('')}`;
+    assert.equal(grade(b.text, solved).pass, true, `${b.name} solved`);
+    assert.equal(grade(b.text, b.text).pass, false, `${b.name} untouched`);
+  }
+});
+
+test('a refused submission names the field; a bad challenge throws the message', () => {
+  const text = jobs.challenge({ text: 'step-tune' }).encoded;
+  const sub = jobs['challenge-submission']({ text, submission: `${text}&try.ekf=rk4` });
+  assert.equal(sub.kind, 'refused');
+  assert.match(sub.message, /field 'ekf' is not allowed/);
+  assert.deepEqual(sub.scenarios, []);
+  assert.throws(() => jobs.challenge({ text: 'c=1&title=x&base=v%3D1%26preset%3Dstep&need.nothing=max:1' }), /nothing/);
+});
+
+test('a run that runs away fails every criterion, with the reason, however lenient the bound', () => {
+  const base = encodeURIComponent('v=1&preset=step&model.rr=20&duration=0.2');
+  const text = jobs.challenge({ text: `c=1&title=x&base=${base}&allow.k1=300..5000&need.current_peak=max:1000` }).encoded;
+  const verdict = grade(text, text);
+  assert.equal(verdict.pass, false);
+  assert.equal(verdict.criteria[0].pass, false);
+  assert.match(verdict.criteria[0].reason, /ran away/);
+  const figures = jobs['challenge-figures']({});
+  assert.ok(figures.some((f) => f.name === 'load_recovery_time'));
+});

@@ -1,0 +1,190 @@
+// Challenges in the page: a lecturer composes one from a preset in the Challenge tab, a student
+// opens its link, fails, changes an allowed knob and passes; the submission link replays the same
+// values; a tampered submission is refused naming the field; the built-ins open from the Lessons
+// tab; axe-core finds nothing on the challenge panel or the compose form. The core's figures are
+// the CLI's: the page's checklist shows what `imlab grade` prints for the same link.
+import { after, before, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { launch, serve, settled } from './browser.mjs';
+
+const AXE = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.meta.url), 'utf8');
+let server;
+let browser;
+before(async () => {
+  server = await serve();
+  browser = await launch();
+});
+after(async () => {
+  await browser?.close();
+  server?.close();
+});
+
+/** Opens `path` in a fresh context (clipboard allowed, CSP bypassed for axe); runs `body(page)`. */
+async function withPage(path, body, viewport = { width: 1400, height: 1000 }) {
+  const errors = [];
+  const context = await browser.newContext({ viewport, bypassCSP: true });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url });
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  try {
+    await page.goto(`${server.url}${path}`);
+    await body(page);
+  } finally {
+    await context.close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+}
+
+const GRADED = ['pass', 'fail', 'refused', 'failed', 'cancelled', 'malformed'];
+
+/** Waits until the checklist is graded after run number `after` (or later); returns the outcome. */
+async function graded(page, after = 0) {
+  await page.waitForFunction(([n, states]) => Number(document.body.dataset.challengeChecked ?? 0) > n && states.includes(document.body.dataset.challenge), [after, GRADED], { timeout: 60_000 });
+  return page.evaluate(() => document.body.dataset.challenge);
+}
+
+/** Each criterion of the checklist as [figure, pass, text]. */
+const checklist = (page) => page.$$eval('#challenge-checklist li', (list) => list.map((li) => [li.dataset.figure, li.dataset.pass, li.textContent]));
+
+async function violations(page) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
+  return page.evaluate(async () => (await window.axe.run(document)).violations
+    .map((v) => `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`));
+}
+
+/** Runs with the panel's knobs set to `values` and waits for the check; returns the outcome. */
+async function tryValues(page, values) {
+  const before = Number(await page.evaluate(() => document.body.dataset.challengeChecked ?? 0));
+  for (const [field, value] of Object.entries(values)) await page.fill(`#challenge-${field}`, value);
+  await page.click('#challenge-run');
+  return graded(page, before);
+}
+
+test('a lecturer composes a challenge from a preset; a student fails it, passes it and submits; the submission replays', async () => {
+  let link;
+  await withPage('?v=1&preset=step&step.wn=10000', async (page) => {
+    await settled(page);
+    await page.click('#tab-challenge');
+    await page.waitForFunction(() => document.body.dataset.compose === 'filled');
+    for (const k of ['k1', 'k2', 'k3', 'k4']) {
+      await page.selectOption('#compose-field', k);
+      await page.click('#compose-add');
+    }
+    // Prefilled around the current value (1200).
+    assert.equal(await page.inputValue('#compose-allow-k1-lo'), '600');
+    assert.equal(await page.inputValue('#compose-allow-k1-hi'), '2400');
+    for (const k of ['k1', 'k2', 'k3', 'k4']) await page.fill(`#compose-allow-${k}-hi`, '5000');
+    await page.fill('#compose-title', 'Fast step');
+    for (const [figure, bound] of [['settling_time', '0.004'], ['current_peak', '4']]) {
+      await page.check(`#compose-need-${figure}`);
+      await page.fill(`#compose-need-${figure}-bound`, bound);
+      await page.check(`#compose-need-${figure}-robust`);
+    }
+    // A bad range: the core's message is shown beside the form, naming the field, and its row is marked.
+    await page.fill('#compose-allow-k2-lo', 'fast');
+    await page.click('#compose-make');
+    await page.waitForFunction(() => document.body.dataset.compose === 'invalid');
+    assert.match(await page.textContent('#compose-error'), /k2/);
+    assert.equal(await page.$eval('.compose-row.invalid', (r) => r.dataset.key), 'allow.k2');
+    await page.fill('#compose-allow-k2-lo', '300');
+    await page.fill('#compose-vary', 'seeds:2..3');
+    await page.click('#compose-make');
+    await page.waitForFunction(() => document.body.dataset.compose === 'made');
+    link = await page.inputValue('#compose-link');
+    assert.match(link, /^http.*\?c=1&title=Fast%20step&base=v%3D1%26preset%3Dstep%26step\.wn%3D10000&allow\.k1=600\.\.5000&/);
+    assert.match(link, /&need\.settling_time=max:0\.004&need\.current_peak=max:4&vary=seeds:2\.\.3&robust=settling_time,current_peak$/);
+    assert.match(await page.inputValue('#compose-brief'), /You may change only:\n\s+k1\s+600 to 5000/);
+    await page.click('#compose-copy-link');
+    assert.equal(await page.evaluate(() => navigator.clipboard.readText()), link);
+    assert.deepEqual(await violations(page), [], 'compose form');
+  });
+
+  let submission;
+  let values;
+  await withPage(link.slice(link.indexOf('?')), async (page) => {
+    assert.equal(await graded(page), 'fail');
+    assert.equal(await page.textContent('#challenge-panel h2'), 'Fast step');
+    // Only the allowed knobs can be changed.
+    assert.equal(await page.isDisabled('#field-k1'), false);
+    assert.equal(await page.isDisabled('#field-psi_d'), true);
+    assert.equal(await page.isDisabled('#preset'), true);
+    const failing = await checklist(page);
+    assert.deepEqual(failing.map((c) => c.slice(0, 2)), [['settling_time', '0'], ['current_peak', '0']]);
+    assert.match(failing[0][2], /✗ fail/);
+    assert.match(await page.textContent('#challenge-verdict'), /✗ Not passed: 0 of 2 criteria met \(the nominal run and 2 variants\)/);
+
+    assert.equal(await tryValues(page, { k1: '2000', k2: '2000', k3: '1500', k4: '1500' }), 'pass');
+    values = await checklist(page);
+    assert.deepEqual(values.map((c) => c.slice(0, 2)), [['settling_time', '1'], ['current_peak', '1']]);
+    assert.match(values[0][2], /✓ pass 2 % settling time of ω after the step: 0\.00345 s, needs ≤ 0\.004 s/);
+    // The nominal run is the one on screen: measured where it ran, not run again.
+    assert.equal(await page.evaluate(() => document.body.dataset.challengeNominal), 'page');
+    await page.click('#challenge-copy');
+    submission = await page.evaluate(() => navigator.clipboard.readText());
+    assert.match(submission, /&try\.k1=2000&try\.k2=2000&try\.k3=1500&try\.k4=1500$/);
+    assert.equal(submission, page.url());
+    assert.deepEqual(await violations(page), [], 'challenge panel');
+  });
+
+  // The submission link replays the runs bit for bit: the same checklist.
+  await withPage(submission.slice(submission.indexOf('?')), async (page) => {
+    assert.equal(await graded(page), 'pass');
+    assert.deepEqual(await checklist(page), values);
+    assert.equal(await page.inputValue('#challenge-k3'), '1500');
+  });
+});
+
+for (const [tamper, refusal] of [['&try.k1=6000', /k1=6000 is outside 300\.\.5000/], ['&try.ekf=rk4', /field 'ekf' is not allowed/]]) {
+  test(`a tampered submission (${tamper}) is refused, naming the field, and not graded`, async () => {
+    await withPage('?challenge=step-tune', async (page) => {
+      assert.equal(await graded(page), 'fail');
+      const url = `${page.url()}${tamper}`;
+      await page.goto(url);
+      assert.equal(await graded(page), 'refused');
+      assert.match(await page.textContent('#challenge-error'), refusal);
+      assert.match(await page.textContent('#challenge-verdict'), /Not graded/);
+      assert.deepEqual(await page.$$('#challenge-checklist li.pass'), []);
+      // The student's own run after that is graded.
+      assert.equal(await tryValues(page, { k1: '1200' }), 'fail');
+      assert.equal(await page.isHidden('#challenge-error'), true);
+    });
+  });
+}
+
+test('a value outside the allowed range is refused at the check, never passed', () =>
+  withPage('?challenge=step-tune', async (page) => {
+    await graded(page);
+    assert.equal(await tryValues(page, { k1: '6000' }), 'refused');
+    assert.match(await page.textContent('#challenge-error'), /k1=6000 is outside 300\.\.5000/);
+    assert.equal(await page.isDisabled('#challenge-copy'), true);
+  }));
+
+test('a malformed challenge link says so and the page falls back to the default scenario', () =>
+  withPage('?c=1&title=x&base=v%3D1%26preset%3Dstep&allow.k1=1..2&need.nothing=max:1', async (page) => {
+    await page.waitForFunction(() => document.body.dataset.challenge === 'malformed');
+    assert.match(await page.textContent('#challenge-error'), /nothing/);
+    await settled(page);
+  }));
+
+test('the built-in challenges open from the Lessons tab', () =>
+  withPage('', async (page) => {
+    await settled(page);
+    await page.click('#tab-lessons');
+    const links = await page.$$eval('#challenges a', (list) => list.map((a) => a.getAttribute('href')));
+    assert.deepEqual(links, ['?challenge=step-tune', '?challenge=load-observer', '?challenge=ifoc-load']);
+    await page.click('#challenges a[href="?challenge=ifoc-load"]');
+    assert.equal(await graded(page), 'fail');
+    assert.equal(await page.textContent('#challenge-panel h2'), 'IFOC load rejection');
+    // No variants: the nominal run alone, measured where it ran.
+    assert.match(await page.textContent('#challenge-verdict'), /criteria met\.$/);
+  }));
+
+test('a published scenario link opens no challenge', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    assert.equal(await page.isHidden('#challenge-panel'), true);
+    assert.equal(await page.evaluate(() => document.body.dataset.challenge), undefined);
+    assert.match(page.url(), /\?v=1&preset=step$/);
+  }));

@@ -1,0 +1,52 @@
+// The worker's challenge jobs: each parses the challenge text it is given (the core's Challenge),
+// so any worker of a pool can take any of them. Every check and figure comes from the core.
+//
+//   'challenge'            {text}             → describe(): {title, base, encoded, allow, need, variants, brief}
+//   'challenge-submission' {text, submission} → {kind, status, message, encoded, tries, scenarios}
+//   'challenge-judge'      {text, runs}       → {criteria: [...], pass}
+//   'challenge-run'        {scenario}         → the measures of the scenario run to its end
+//   'challenge-builtins'   {}                 → [{name, summary, text, solution}]
+//   'challenge-figures'    {}                 → [{name, label, unit}]: what criteria may name
+// A bad challenge throws the core's message, which the worker returns as the job's error.
+import { Challenge, challenge_builtins, challenge_figures, challenge_measure, Simulation } from '../pkg/imlab.js';
+
+/** `f(challenge)` on the challenge parsed from `text`, freed afterwards. */
+function withChallenge(text, f) {
+  const challenge = new Challenge(text);
+  try {
+    return f(challenge);
+  } finally {
+    challenge.free();
+  }
+}
+
+/**
+ * Runs `scenario` to its end in one call and measures it; a run that stops early is measured
+ * as far as it went, and the measures say why it failed.
+ */
+export function measureRun(scenario) {
+  const sim = new Simulation(scenario);
+  try {
+    let stopped = null;
+    try {
+      while (!sim.finished) sim.step_for(1e9);
+    } catch (e) {
+      if (e instanceof WebAssembly.RuntimeError) throw e;
+      stopped = String(e);
+    }
+    const measures = challenge_measure(sim);
+    if (stopped && !measures.failure) measures.failure = stopped;
+    return measures;
+  } finally {
+    sim.free();
+  }
+}
+
+export const CHALLENGE_JOBS = {
+  challenge: (d) => withChallenge(d.text, (c) => c.describe()),
+  'challenge-submission': (d) => withChallenge(d.text, (c) => c.submission(d.submission)),
+  'challenge-judge': (d) => withChallenge(d.text, (c) => c.judge(d.runs)),
+  'challenge-run': (d) => measureRun(d.scenario),
+  'challenge-builtins': () => challenge_builtins(),
+  'challenge-figures': () => challenge_figures(),
+};
