@@ -10,10 +10,16 @@ wasm: setup
 	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
 	rm -f dist/pkg/.gitignore
 
+# The modules the page imports (web/main.js's graph, the worker's excepted): dist/index.html gets
+# a <link rel="modulepreload"> for each, so that a load asks for them all at once with the page,
+# not level by level as main.js and then its imports arrive.
+PRELOAD = $(filter-out web/main.js web/worker.js,$(sort $(wildcard web/*.js))) vendor/uPlot.esm.js vendor/katex/katex.mjs
+
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
 dist: wasm
 	mkdir -p dist/web dist/vendor/katex/fonts
 	cp static/*.html static/*.css static/*.js dist/
+	sed -i -e 's|^\(  <script type="module" src="web/main.js"></script>\)$$|\1$(foreach m,$(PRELOAD),\n  <link rel="modulepreload" href="$(m)">)|' -e 's/"> \n/">\n/g' dist/index.html
 	cp web/*.js dist/web/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/

@@ -135,7 +135,7 @@ if (process.env.IMLAB_BENCH_CHILD) {
     if (native) {
       console.log(`  ${' '.repeat(label.length)}       native ${show(spread(natives.map((x) => x[label])))} M steps/s   [per process: ${per(natives, label)}]`);
       const ratio = spread(reps.map((x, i) => x[label] / natives[i][label]));
-      console.log(`  ${' '.repeat(label.length)}       Node/native ${show(ratio, (v) => v.toFixed(2))} (median of the ${REPS} neighbouring pairs; 1/${(1 / ratio[0]).toFixed(2)})`);
+      console.log(`  ${' '.repeat(label.length)}       Node/native ${show(ratio, (v) => v.toFixed(2))} (median of the ${REPS} neighbouring pairs; 1/${(1 / ratio[0]).toFixed(2)})   [target ≥ 1/1.25 = 0.80]`);
     }
   }
   const compile = spread(reps.map((x) => x.compileMs));
