@@ -3,10 +3,8 @@
 // alone; an embed shows one plot that runs, in an iframe too. Each test fails on any console error.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { inspectAt, launch, serve, settled } from './browser.mjs';
+import { inspectAt, launch, serve, settled, violations } from './browser.mjs';
 
-const AXE = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.meta.url), 'utf8');
 let server;
 let browser;
 before(async () => {
@@ -35,12 +33,6 @@ async function withPage(path, [width, height], body) {
   assert.deepEqual(errors, [], 'console errors');
 }
 
-/** axe-core's violations on the page as `rule(impact)×nodes: targets`. */
-async function violations(page) {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
-  return page.evaluate(async () => (await window.axe.run(document)).violations
-    .map((v) => `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`));
-}
 
 for (const viewport of [[390, 844], [1440, 900]]) {
   test(`axe-core finds no violations at ${viewport.join('×')}: every tab, inspect open, presentation mode`, () =>

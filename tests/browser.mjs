@@ -2,6 +2,7 @@
 // on loopback and headless Debian Chromium through playwright-core.
 import { execFileSync, spawn } from 'node:child_process';
 import { once } from 'node:events';
+import { readFileSync } from 'node:fs';
 import net from 'node:net';
 import { after, before } from 'node:test';
 import assert from 'node:assert/strict';
@@ -123,4 +124,14 @@ export async function inspectAt(page, fraction) {
   const box = await over.boundingBox();
   await page.mouse.click(box.x + box.width * fraction, box.y + box.height / 2);
   await page.waitForSelector('#inspect:not([hidden]) tr[data-column]');
+}
+
+const AXE = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.meta.url), 'utf8');
+
+/** axe-core's violations on the page as `rule(impact)×nodes: targets` (its context must bypass
+ * the page's CSP to inject axe). */
+export async function violations(page) {
+  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
+  return page.evaluate(async () => (await window.axe.run(document)).violations
+    .map((v) => `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`));
 }

@@ -5,10 +5,8 @@
 // the CLI's: the page's checklist shows what `imlab grade` prints for the same link.
 import { after, before, test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
-import { launch, serve, settled } from './browser.mjs';
+import { launch, serve, settled, violations } from './browser.mjs';
 
-const AXE = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.meta.url), 'utf8');
 let server;
 let browser;
 before(async () => {
@@ -48,11 +46,6 @@ async function graded(page, after = 0) {
 /** Each criterion of the checklist as [figure, pass, text]. */
 const checklist = (page) => page.$$eval('#challenge-checklist li', (list) => list.map((li) => [li.dataset.figure, li.dataset.pass, li.textContent]));
 
-async function violations(page) {
-  if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
-  return page.evaluate(async () => (await window.axe.run(document)).violations
-    .map((v) => `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`));
-}
 
 /** Runs with the panel's knobs set to `values` and waits for the check; returns the outcome. */
 async function tryValues(page, values) {

@@ -335,16 +335,22 @@ fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
     Ok(out)
 }
 
+/// The key and value of one `key=value` piece of an override string; `what` names the override
+/// in the error.
+fn key_value<'a>(piece: &'a str, what: &str) -> Result<(&'a str, &'a str), ChallengeError> {
+    piece.split_once('=').ok_or_else(|| {
+        ChallengeError::malformed(format!(
+            "{what}: '{}' is not of the form key=value",
+            excerpt(piece)
+        ))
+    })
+}
+
 /// A scenario override string (`key=value&…`) applied to `s`, each field checked; `what`
 /// names the override in errors.
 fn apply_overrides(s: &mut Scenario, text: &str, what: &str) -> Result<(), ChallengeError> {
     for piece in text.split('&').filter(|p| !p.is_empty()) {
-        let (k, v) = piece.split_once('=').ok_or_else(|| {
-            ChallengeError::malformed(format!(
-                "{what}: '{}' is not of the form key=value",
-                excerpt(piece)
-            ))
-        })?;
+        let (k, v) = key_value(piece, what)?;
         s.set(k, v)
             .map_err(|e| ChallengeError::malformed(format!("{what}: {e}")))?;
     }
@@ -764,12 +770,7 @@ fn parse_vary(base: &Scenario, value: &str) -> Result<Variants, ChallengeError> 
         let what = format!("field 'vary', variant {}", i + 1);
         let mut pairs: Vec<(String, String)> = Vec::new();
         for piece in text.split('&').filter(|p| !p.is_empty()) {
-            let (k, v) = piece.split_once('=').ok_or_else(|| {
-                ChallengeError::malformed(format!(
-                    "{what}: '{}' is not of the form key=value",
-                    excerpt(piece)
-                ))
-            })?;
+            let (k, v) = key_value(piece, &what)?;
             if pairs.iter().any(|(x, _)| x == k) {
                 return Err(ChallengeError::malformed(format!(
                     "{what}: field '{}' is given more than once",
