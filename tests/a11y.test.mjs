@@ -33,7 +33,6 @@ async function withPage(path, [width, height], body) {
   assert.deepEqual(errors, [], 'console errors');
 }
 
-
 for (const viewport of [[390, 844], [1440, 900]]) {
   test(`axe-core finds no violations at ${viewport.join('×')}: every tab, inspect open, presentation mode`, () =>
     withPage('?v=1&preset=step', viewport, async (page) => {
