@@ -600,7 +600,7 @@ impl Challenge {
     /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
     /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief}`.
     pub fn describe(&self) -> Result<JsValue, JsValue> {
-        use crate::challenge::{Allowed, Op, FIGURES};
+        use crate::challenge::{figure_info, Allowed, Op};
         let c = &self.inner;
         let fields = c.base_scenario().describe();
         let allow = c
@@ -628,10 +628,7 @@ impl Challenge {
             .need
             .iter()
             .map(|n| {
-                let f = FIGURES
-                    .iter()
-                    .find(|f| f.name == n.figure)
-                    .expect("checked");
+                let f = figure_info(&n.figure).expect("checked");
                 let (op, bound) = match n.op {
                     Op::Max(b) => ("max", Some(b)),
                     Op::Min(b) => ("min", Some(b)),
@@ -751,5 +748,5 @@ pub fn challenge_builtins() -> Result<JsValue, JsValue> {
 /// The figures a challenge's criteria may name: `[{name, label, unit}]`.
 #[wasm_bindgen]
 pub fn challenge_figures() -> Result<JsValue, JsValue> {
-    to_js(&crate::challenge::FIGURES)
+    to_js(&crate::challenge::figures().collect::<Vec<_>>())
 }

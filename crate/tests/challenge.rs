@@ -5,8 +5,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{
-    judge, measure, Challenge, ErrorKind, Measure, Measures, Submission, Verdict, BUILTINS,
-    FIGURES, LOAD_RECOVERY,
+    figure_info, judge, measure, Challenge, ErrorKind, Measure, Measures, Submission, Verdict,
+    BUILTINS, LOAD_RECOVERY,
 };
 use imlab::sim::Simulation;
 use std::process::{Command, Stdio};
@@ -259,7 +259,7 @@ fn the_figures_criteria_name_are_the_reports() {
             if matches!(f.name, "mean_nis_low" | "mean_nis_high" | "current_rated") {
                 continue;
             }
-            let info = FIGURES.iter().find(|i| i.name == f.name).expect(f.name);
+            let info = figure_info(f.name).expect(f.name);
             assert_eq!((info.label, info.unit), (f.label, f.unit), "{}", f.name);
         }
     }

@@ -1,10 +1,11 @@
 //! Measuring a run for a challenge and judging the criteria on the measures of its runs.
 //!
 //! [`measure`] reads a finished [`Simulation`] through its public API: the figures of
-//! [`crate::sim::report`] and one measure of its own, [`LOAD_RECOVERY`]. [`judge`] needs only
+//! [`crate::record::report`] and one measure of its own, [`LOAD_RECOVERY`]. [`judge`] needs only
 //! the measures, so runs can be measured wherever they ran (a worker each, in the page).
 
 use super::{Challenge, Op};
+use crate::record::{FigureInfo, FIGURE_INFO};
 use crate::sim::Simulation;
 use serde::{Deserialize, Serialize};
 
@@ -21,59 +22,29 @@ pub fn recovery_band(reference_at_step: f64) -> f64 {
     (0.01 * reference_at_step.abs()).max(0.5)
 }
 
-/// A figure a criterion may name: its machine name, words and unit.
-#[derive(Clone, Copy, Debug, Serialize)]
-pub struct FigureInfo {
-    /// Machine name, as `imlab metrics` prints it.
-    pub name: &'static str,
-    /// In words, as `imlab metrics` and the page label it.
-    pub label: &'static str,
-    /// Unit ("" for ratios).
-    pub unit: &'static str,
-}
+/// The report's figures a criterion may not name: the ends of the NIS band (a criterion asks
+/// for the band with `band`) and the rating itself.
+const NOT_CRITERIA: [&str; 3] = ["mean_nis_low", "mean_nis_high", "current_rated"];
 
-/// The figures criteria may name: those of [`crate::sim::report`] (with its labels and units;
-/// a test checks they agree) and [`LOAD_RECOVERY`].
-pub const FIGURES: &[FigureInfo] = &[
-    fig("transient_end", "start-up transient ends", "s"),
-    fig("tracking_rms", "RMS of ω − ω_d", "rad/s"),
-    fig("tracking_peak", "peak |ω − ω_d|", "rad/s"),
-    fig(
-        "settling_time",
-        "2 % settling time of ω after the step",
-        "s",
-    ),
-    fig(
-        "saturated_share",
-        "share of samples at the voltage limit",
-        "",
-    ),
-    fig("mean_nis", "mean NIS", ""),
-    fig("current_peak", "peak stator current |i_s|", "A"),
-    fig("current_rms", "RMS stator current |i_s|", "A"),
-    fig("ripple_peak", "peak PWM current ripple", "A"),
-    fig(
-        "ripple_rms",
-        "RMS over the periods of the peak PWM current ripple",
-        "A",
-    ),
-    fig("flux_error_final", "final flux error |φ_r| − √ψ_d", "Wb"),
-    fig("speed_error_final", "final speed error ω − ω_d", "rad/s"),
-    fig(
-        "speed_estimate_error_final",
-        "final speed-estimate error ω − ω̂",
-        "rad/s",
-    ),
-    fig(LOAD_RECOVERY, "load recovery time after the load step", "s"),
-];
+/// [`LOAD_RECOVERY`], in words.
+const LOAD_RECOVERY_INFO: FigureInfo = FigureInfo {
+    name: LOAD_RECOVERY,
+    label: "load recovery time after the load step",
+    unit: "s",
+};
 
-const fn fig(name: &'static str, label: &'static str, unit: &'static str) -> FigureInfo {
-    FigureInfo { name, label, unit }
+/// The figures criteria may name: those of [`crate::record::report`] (its table, with its labels
+/// and units) but the band's ends and the rating, then [`LOAD_RECOVERY`].
+pub fn figures() -> impl Iterator<Item = &'static FigureInfo> {
+    FIGURE_INFO
+        .iter()
+        .filter(|f| !NOT_CRITERIA.contains(&f.name))
+        .chain(std::iter::once(&LOAD_RECOVERY_INFO))
 }
 
 /// The figure named `name`, if criteria may name it.
 pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
-    FIGURES.iter().find(|f| f.name == name)
+    figures().find(|f| f.name == name)
 }
 
 /// One measured value of a run.

@@ -14,7 +14,7 @@
 //!   may set.
 //! - `need.FIGURE=OP`, in the order written: `max:B` (value ≤ B), `min:B` (≥ B), `abs:B`
 //!   (|value| ≤ B), `band` (mean NIS inside its 95 % band). The figures are those of
-//!   [`crate::sim::report`] and [`judge::LOAD_RECOVERY`].
+//!   [`crate::record::report`] and [`judge::LOAD_RECOVERY`].
 //! - `vary`: robustness variants, `|`-separated override strings (applied after the student's
 //!   fields), or `seeds:A..B`; `robust`: the criteria that must also hold on every variant.
 //!
@@ -28,8 +28,8 @@ mod judge;
 
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use judge::{
-    judge, measure, recovery_band, CriterionVerdict, Measure, Measures, Verdict, FIGURES,
-    LOAD_RECOVERY,
+    figure_info, figures, judge, measure, recovery_band, CriterionVerdict, Measure, Measures,
+    Verdict, LOAD_RECOVERY,
 };
 
 use crate::quote::excerpt;
@@ -692,16 +692,12 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
 /// `need.FIGURE=OP`.
 fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, ChallengeError> {
     let key = format!("need.{figure}");
-    if !FIGURES.iter().any(|f| f.name == figure) {
+    if figure_info(figure).is_none() {
         return Err(ChallengeError::malformed(format!(
             "field '{}': '{}' is not a figure ({})",
             excerpt(&key),
             excerpt(figure),
-            FIGURES
-                .iter()
-                .map(|f| f.name)
-                .collect::<Vec<_>>()
-                .join(", ")
+            figures().map(|f| f.name).collect::<Vec<_>>().join(", ")
         )));
     }
     let op = if value == "band" {

@@ -75,6 +75,70 @@ const TREND_RELATIVE: f64 = 0.02;
 /// a periodic reference or from noise: it is not called a trend.
 const TREND_SCATTER: f64 = 2.0;
 
+/// A figure's machine name, its words and its unit: one entry for each figure [`report`] gives.
+#[derive(Clone, Copy, Debug, Serialize)]
+pub struct FigureInfo {
+    /// Machine name, as `imlab metrics` prints it.
+    pub name: &'static str,
+    /// In words, as `imlab metrics` and the page label it.
+    pub label: &'static str,
+    /// Unit ("" for ratios).
+    pub unit: &'static str,
+}
+
+const fn fig(name: &'static str, label: &'static str, unit: &'static str) -> FigureInfo {
+    FigureInfo { name, label, unit }
+}
+
+/// Every figure [`report`] can give, in its order.
+pub const FIGURE_INFO: &[FigureInfo] = &[
+    fig("transient_end", "start-up transient ends", "s"),
+    fig("tracking_rms", "RMS of ω − ω_d", "rad/s"),
+    fig("tracking_peak", "peak |ω − ω_d|", "rad/s"),
+    fig(
+        "settling_time",
+        "2 % settling time of ω after the step",
+        "s",
+    ),
+    fig(
+        "saturated_share",
+        "share of samples at the voltage limit",
+        "",
+    ),
+    fig("mean_nis", "mean NIS", ""),
+    fig(
+        "mean_nis_low",
+        "mean NIS, low end of a consistent filter's 95 % band",
+        "",
+    ),
+    fig(
+        "mean_nis_high",
+        "mean NIS, high end of a consistent filter's 95 % band",
+        "",
+    ),
+    fig("current_peak", "peak stator current |i_s|", "A"),
+    fig("current_rms", "RMS stator current |i_s|", "A"),
+    fig("current_rated", "rated current |i_s| (i_rated)", "A"),
+    fig("ripple_peak", "peak PWM current ripple", "A"),
+    fig(
+        "ripple_rms",
+        "RMS over the periods of the peak PWM current ripple",
+        "A",
+    ),
+    fig("flux_error_final", "final flux error |φ_r| − √ψ_d", "Wb"),
+    fig("speed_error_final", "final speed error ω − ω_d", "rad/s"),
+    fig(
+        "speed_estimate_error_final",
+        "final speed-estimate error ω − ω̂",
+        "rad/s",
+    ),
+];
+
+/// The entry of the figure named `name`, if [`report`] gives one.
+pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
+    FIGURE_INFO.iter().find(|f| f.name == name)
+}
+
 /// The transient and the figures of a run, computed together (the figures start at the end of
 /// the transient): see [`report`].
 #[derive(Clone, Debug, Serialize)]
@@ -190,137 +254,62 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
             settled: state == "settled",
         })
     };
-    let mut with_trend = |name, label, value: f64, unit, window: &String, trend| {
+    let mut with_trend = |name, value: f64, window: &String, trend| {
+        let info = figure_info(name).expect("a figure of the table");
         if value.is_finite() {
             out.push(Figure {
                 name,
-                label,
+                label: info.label,
                 value,
-                unit,
+                unit: info.unit,
                 window: window.clone(),
                 trend,
             });
         }
     };
-    let mut push = |name, label, value: f64, unit, window: &String| {
-        with_trend(name, label, value, unit, window, None);
+    let mut push = |name, value: f64, window: &String| {
+        with_trend(name, value, window, None);
     };
     push(
         "transient_end",
-        "start-up transient ends",
         end.t,
-        "s",
         &format!("start-up, t < {}", time_text(end.t)),
     );
-    push(
-        "tracking_rms",
-        "RMS of ω − ω_d",
-        (w.tracking_sq / n).sqrt(),
-        "rad/s",
-        &in_w,
-    );
-    push(
-        "tracking_peak",
-        "peak |ω − ω_d|",
-        w.tracking_peak,
-        "rad/s",
-        &in_w,
-    );
+    push("tracking_rms", (w.tracking_sq / n).sqrt(), &in_w);
+    push("tracking_peak", w.tracking_peak, &in_w);
     if let Some((value, time)) = settling.map(|st| st.result()) {
         push(
             "settling_time",
-            "2 % settling time of ω after the step",
             value,
-            "s",
             &format!("from the step at {}", time_text(time)),
         );
     }
-    push(
-        "saturated_share",
-        "share of samples at the voltage limit",
-        w.saturated as f64 / n,
-        "",
-        &in_w,
-    );
+    push("saturated_share", w.saturated as f64 / n, &in_w);
     let (low, high) = mean_nis_band(w.n);
-    push("mean_nis", "mean NIS", w.nis / n, "", &in_w);
-    push(
-        "mean_nis_low",
-        "mean NIS, low end of a consistent filter's 95 % band",
-        low,
-        "",
-        &in_w,
-    );
-    push(
-        "mean_nis_high",
-        "mean NIS, high end of a consistent filter's 95 % band",
-        high,
-        "",
-        &in_w,
-    );
-    push(
-        "current_peak",
-        "peak stator current |i_s|",
-        w.current_peak,
-        "A",
-        &in_w,
-    );
+    push("mean_nis", w.nis / n, &in_w);
+    push("mean_nis_low", low, &in_w);
+    push("mean_nis_high", high, &in_w);
+    push("current_peak", w.current_peak, &in_w);
     let current_rms = (w.current_sq / n).sqrt();
-    push(
-        "current_rms",
-        "RMS stator current |i_s|",
-        current_rms,
-        "A",
-        &in_w,
-    );
+    push("current_rms", current_rms, &in_w);
     push(
         "current_rated",
-        "rated current |i_s| (i_rated)",
         s.i_rated,
-        "A",
         &"the motor's rating".to_string(),
     );
     if s.drive.pwm {
-        push(
-            "ripple_peak",
-            "peak PWM current ripple",
-            w.ripple_peak,
-            "A",
-            &in_w,
-        );
-        push(
-            "ripple_rms",
-            "RMS over the periods of the peak PWM current ripple",
-            (w.ripple_sq / n).sqrt(),
-            "A",
-            &in_w,
-        );
+        push("ripple_peak", w.ripple_peak, &in_w);
+        push("ripple_rms", (w.ripple_sq / n).sqrt(), &in_w);
     }
     let flux_final = last.flux - last.flux_ref;
     let flux_trend = trend_of(0, flux_final, FLUX_TREND_TOL);
     let speed_trend = trend_of(1, last.omega_err, SPEED_TREND_TOL);
     let estimate_trend = trend_of(2, last.omega_est_err, SPEED_TREND_TOL);
-    with_trend(
-        "flux_error_final",
-        "final flux error |φ_r| − √ψ_d",
-        flux_final,
-        "Wb",
-        &at_last,
-        flux_trend,
-    );
-    with_trend(
-        "speed_error_final",
-        "final speed error ω − ω_d",
-        last.omega_err,
-        "rad/s",
-        &at_last,
-        speed_trend,
-    );
+    with_trend("flux_error_final", flux_final, &at_last, flux_trend);
+    with_trend("speed_error_final", last.omega_err, &at_last, speed_trend);
     with_trend(
         "speed_estimate_error_final",
-        "final speed-estimate error ω − ω̂",
         last.omega_est_err,
-        "rad/s",
         &at_last,
         estimate_trend,
     );
