@@ -10,10 +10,10 @@ wasm: setup
 	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
 	rm -f dist/pkg/.gitignore
 
-# The modules the page imports (web/main.js's graph, the worker's excepted): dist/index.html gets
+# The modules the page imports (web/main.js's graph; not the worker's, nor the classic boot.js): dist/index.html gets
 # a <link rel="modulepreload"> for each, so that a load asks for them all at once with the page,
 # not level by level as main.js and then its imports arrive.
-PRELOAD = $(filter-out web/main.js web/worker.js,$(sort $(wildcard web/*.js))) vendor/uPlot.esm.js vendor/katex/katex.mjs
+PRELOAD = $(filter-out web/boot.js web/main.js web/worker.js,$(sort $(wildcard web/*.js))) vendor/uPlot.esm.js vendor/katex/katex.mjs
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
 dist: wasm

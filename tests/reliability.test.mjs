@@ -9,7 +9,7 @@ import { createReadStream, statSync, unlinkSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { promisify } from 'node:util';
-import { browserSuite, runAgain, settled, startRun } from './browser.mjs';
+import { browserSuite, newPage, runAgain, settled, startRun } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -53,6 +53,25 @@ function trapOnNextStep(worker) {
 async function assertDrawn(page) {
   assert.equal(await page.locator('#plots .plot canvas').count(), 8);
   assert.ok(await page.locator('#figures .figure').count() > 0);
+}
+
+// The worker starts with the page (boot.js), before the page's modules run: a failure then is told
+// as soon as the page is wired, whichever part of the worker could not load.
+for (const blocked of ['web/worker.js', 'pkg/imlab_bg.wasm']) {
+  test(`a worker that cannot load (${blocked} unreachable) is reported as not started`, async () => {
+    const errors = [];
+    const page = await newPage(suite.browser, errors);
+    try {
+      await page.context().route(`**/${blocked}`, (route) => route.abort());
+      await page.goto(suite.server.url);
+      await page.waitForFunction(() => document.body.dataset.state === 'crashed');
+      assert.match(await page.locator('#message').innerText(), /^The simulation worker could not start \(.+\)\. Reload the page to try again\.$/);
+    } finally {
+      await page.context().close();
+    }
+    // The browser reports the blocked request itself; nothing else may fail.
+    assert.deepEqual(errors.filter((e) => !/Failed to load resource/.test(e)), []);
+  });
 }
 
 test('a trap in the worker is reported, the worker is replaced, and the next run works', () =>

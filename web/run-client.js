@@ -19,9 +19,30 @@ export class RunClient {
     this.pending = new Map(); // requests awaiting their answer: req → {resolve, reject}
   }
 
+  /** Starts the worker: the first time, the one boot.js started with the page, if there is one. */
   start() {
     this.ready = false;
-    this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+    const boot = globalThis.imlabBoot;
+    globalThis.imlabBoot = null;
+    if (!boot) {
+      this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+      this.listen();
+      return;
+    }
+    // Until the page is wired (the rest of this task), boot.js keeps what the worker says; then
+    // it is taken in order, and the worker's failure meanwhile last.
+    this.worker = boot.worker;
+    setTimeout(() => {
+      this.listen();
+      for (const data of boot.early) {
+        if (this.worker !== boot.worker) return; // failed and replaced: the rest was its
+        this.receive(data);
+      }
+      if (boot.failure && this.worker === boot.worker) this.fail(boot.failure);
+    }, 0);
+  }
+
+  listen() {
     this.worker.onmessage = ({ data }) => this.receive(data);
     this.worker.onerror = (e) => {
       e.preventDefault();

@@ -1,0 +1,16 @@
+// Starts the simulation worker as soon as the page begins to load, before the page's modules are
+// fetched and run: a browser starts a worker only when the page's thread is free, and the page's
+// modules keep it busy for a few hundred milliseconds. The run client adopts this worker, with
+// what it said and any failure meanwhile. A classic script, so that it runs at once.
+{
+  const boot = { worker: new Worker('web/worker.js', { type: 'module' }), early: [], failure: null };
+  boot.worker.onmessage = ({ data }) => boot.early.push(data);
+  boot.worker.onerror = (e) => {
+    e.preventDefault();
+    boot.failure ??= e.message || 'unknown error';
+  };
+  boot.worker.onmessageerror = () => {
+    boot.failure ??= 'a message from it could not be read';
+  };
+  globalThis.imlabBoot = boot;
+}
