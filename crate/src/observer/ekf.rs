@@ -153,38 +153,42 @@ const EULER5_ZERO: [[bool; 5]; 5] = {
     z
 };
 
-/// Φ·P·Φᵀ + Q for the five states and the Euler predictor's Φ, as the general product computes
-/// it (each sum over k in increasing order, from the first term) with the products by Φ's exact
-/// zeros left out: adding a zero product changes no sum that is not itself zero, so the result
-/// is the general one, bit for bit, for less work.
+/// Φ·P·Φᵀ + Q for the five states and the Euler predictor's Φ (row-major), with P and the result
+/// as columns (`p[j][k]` = P_kj): each sum over k in increasing order, from the first term, as the
+/// general product computes it, with the products by Φ's exact zeros left out. Adding a zero
+/// product changes no sum that is not itself zero, so the result is the general one, bit for bit,
+/// for less work.
 #[inline(always)]
-fn euler5_propagate<const N: usize>(
-    phi: &SMatrix<f64, N, N>,
-    p: &SMatrix<f64, N, N>,
-    q: &SMatrix<f64, N, N>,
-) -> SMatrix<f64, N, N> {
+fn euler5_propagate(phi: &[[f64; 5]; 5], p: &[[f64; 5]; 5], q: &[f64; 5]) -> [[f64; 5]; 5] {
     let mut n = [[0.0; 5]; 5];
     for i in 0..5 {
         for j in 0..5 {
             // Column 0 of every row is nonzero.
-            let mut s = phi[(i, 0)] * p[(0, j)];
+            let mut s = phi[i][0] * p[j][0];
             for k in 1..5 {
                 if !EULER5_ZERO[i][k] {
-                    s += phi[(i, k)] * p[(k, j)];
+                    s += phi[i][k] * p[j][k];
                 }
             }
             n[i][j] = s;
         }
     }
-    symmetric_from_upper(|i, j| {
-        let mut s = n[i][0] * phi[(j, 0)];
-        for k in 1..5 {
-            if !EULER5_ZERO[j][k] {
-                s += n[i][k] * phi[(j, k)];
+    let mut out = [[0.0; 5]; 5];
+    for i in 0..5 {
+        for j in i..5 {
+            let mut s = n[i][0] * phi[j][0];
+            for k in 1..5 {
+                if !EULER5_ZERO[j][k] {
+                    s += n[i][k] * phi[j][k];
+                }
             }
+            // Q is diagonal: adding its zeros keeps the general sum's bits (a zero sum becomes +0).
+            let v = s + if i == j { q[i] } else { 0.0 };
+            out[i][j] = v;
+            out[j][i] = v;
         }
-        s + q[(i, j)]
-    })
+    }
+    out
 }
 
 fn five<const N: usize>(v: &SVector<f64, N>) -> State {
@@ -305,6 +309,10 @@ impl<const N: usize> Filter<N> {
 
     /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample.
     pub fn predict(&mut self, u: &Input) {
+        if N == 5 && self.predictor == Predictor::Euler {
+            self.predict_euler5(u);
+            return;
+        }
         let (x_next, phi) = match self.predictor {
             Predictor::Euler => (
                 self.euler_state(u),
@@ -314,16 +322,35 @@ impl<const N: usize> Filter<N> {
         };
         self.x = x_next;
         let p = &self.p;
-        if N == 5 && self.predictor == Predictor::Euler {
-            self.p = euler5_propagate(&phi, p, &self.q);
-            return;
-        }
         let n = SMatrix::<f64, N, N>::from_fn(|i, j| {
             (0..N).map(|k| phi[(i, k)] * p[(k, j)]).sum::<f64>()
         });
         self.p = symmetric_from_upper(|i, j| {
             (0..N).map(|k| n[(i, k)] * phi[(j, k)]).sum::<f64>() + self.q[(i, j)]
         });
+    }
+
+    /// [`Filter::predict`] of the paper's filter (N = 5, Euler) on plain arrays: the same
+    /// operations in the same order as the general step, bit for bit.
+    #[inline(always)]
+    fn predict_euler5(&mut self, u: &Input) {
+        let x = five(&self.x);
+        let a = model::jacobian(&self.model, &x);
+        let dx = model::f(&self.model, &x, u, 0.0);
+        let ts = self.ts;
+        for i in 0..5 {
+            self.x[i] += ts * dx[i];
+        }
+        let phi: [[f64; 5]; 5] = std::array::from_fn(|i| {
+            std::array::from_fn(|j| (if i == j { 1.0 } else { 0.0 }) + a[i][j] * ts)
+        });
+        let cols = self.p.as_mut_slice();
+        let p: [[f64; 5]; 5] = std::array::from_fn(|c| std::array::from_fn(|r| cols[5 * c + r]));
+        let q: [f64; 5] = std::array::from_fn(|i| self.q.as_slice()[6 * i]);
+        let next = euler5_propagate(&phi, &p, &q);
+        for c in 0..5 {
+            cols[5 * c..5 * c + 5].copy_from_slice(&next[c]);
+        }
     }
 
     /// The five states one sample ahead, x̂_{k+1|k}, under the input `u` held over the sample, by
