@@ -45,7 +45,8 @@ test: dist
 # figures.
 # BENCH_ARGS goes to criterion: `make bench BENCH_ARGS=--quick` for a short pass,
 # `BENCH_ARGS=long` for one group. BENCH_REPS=n sets the repetitions of the Node and browser
-# figures (default 5; each prints the median).
+# figures (default 5; each prints the median). BENCH_VS_DIST=DIR adds the cold load against another
+# build's dist/ folder, side by side (see tests/bench/browser.mjs).
 bench: dist
 	cargo bench --bench closed_loop --bench codec -- $(BENCH_ARGS)
 	node tests/bench/floor.mjs

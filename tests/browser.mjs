@@ -22,10 +22,10 @@ async function freePort() {
   return port;
 }
 
-/** Serves dist/ on a free loopback port; returns {url, close}. */
-export async function serve() {
+/** Serves `root` (dist/ unless given) on a free loopback port; returns {url, close}. */
+export async function serve(root = ROOT) {
   const port = await freePort();
-  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], { cwd: ROOT, stdio: 'ignore' });
+  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], { cwd: root, stdio: 'ignore' });
   const url = `http://127.0.0.1:${port}/`;
   for (let i = 0; i < 100; i++) {
     try {

@@ -55,8 +55,15 @@ async function assertDrawn(page) {
   assert.ok(await page.locator('#figures .figure').count() > 0);
 }
 
-// The worker starts with the page (boot.js), before the page's modules run: a failure then is told
-// as soon as the page is wired, whichever part of the worker could not load.
+// The worker starts with the page (boot.js), before the page's modules run, and the page adopts
+// it: one simulation worker, and a failure told as soon as the page is wired, whichever part of
+// the worker could not load.
+test('the page runs its first run on the one worker started with it', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(page.workers().length, 1);
+  }));
+
 for (const blocked of ['web/worker.js', 'pkg/imlab_bg.wasm']) {
   test(`a worker that cannot load (${blocked} unreachable) is reported as not started`, async () => {
     const errors = [];

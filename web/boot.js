@@ -1,8 +1,11 @@
 // Starts the simulation worker as soon as the page begins to load, before the page's modules are
 // fetched and run: a browser starts a worker only when the page's thread is free, and the page's
 // modules keep it busy for a few hundred milliseconds. The run client adopts this worker, with
-// what it said and any failure meanwhile. A classic script, so that it runs at once.
-{
+// what it said and any failure meanwhile. A classic script loaded async, so that it runs as soon
+// as it arrives, waiting neither for the stylesheets nor for the page to be parsed; should the
+// page's modules start first (they cannot in practice), the run client has started the worker
+// and left `imlabBoot` null, and nothing is done here.
+if (globalThis.imlabBoot === undefined) {
   const boot = { worker: new Worker('web/worker.js', { type: 'module' }), early: [], failure: null };
   boot.worker.onmessage = ({ data }) => boot.early.push(data);
   boot.worker.onerror = (e) => {

@@ -17,29 +17,36 @@ export class RunClient {
     this.ready = false; // whether the current worker has loaded the core
     this.req = 0;
     this.pending = new Map(); // requests awaiting their answer: req → {resolve, reject}
+    this.failures = 0; // workers failed so far
   }
 
   /** Starts the worker: the first time, the one boot.js started with the page, if there is one. */
   start() {
     this.ready = false;
     const boot = globalThis.imlabBoot;
-    globalThis.imlabBoot = null;
+    globalThis.imlabBoot = null; // boot.js, if it comes later, starts none
     if (!boot) {
       this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
       this.listen();
       return;
     }
-    // Until the page is wired (the rest of this task), boot.js keeps what the worker says; then
-    // it is taken in order, and the worker's failure meanwhile last.
+    // Until the page is wired (the rest of main.js), boot.js keeps what the worker says; then it
+    // is taken in order, each message on its own, and the worker's failure meanwhile last. A
+    // failure while it is taken ends the worker, and what it said after that is dropped.
     this.worker = boot.worker;
-    setTimeout(() => {
+    queueMicrotask(() => {
       this.listen();
+      const failures = this.failures;
       for (const data of boot.early) {
-        if (this.worker !== boot.worker) return; // failed and replaced: the rest was its
-        this.receive(data);
+        if (this.failures !== failures) return;
+        try {
+          this.receive(data);
+        } catch (e) {
+          reportError(e);
+        }
       }
-      if (boot.failure && this.worker === boot.worker) this.fail(boot.failure);
-    }, 0);
+      if (boot.failure && this.failures === failures) this.fail(boot.failure);
+    });
   }
 
   listen() {
@@ -117,6 +124,7 @@ export class RunClient {
    * started, which a restart would only repeat.
    */
   fail(reason) {
+    this.failures++;
     this.worker.terminate();
     for (const { reject } of this.pending.values()) reject(new WorkerFailed(reason));
     this.pending.clear();

@@ -25,7 +25,7 @@ const best = (runs) => runs.reduce((a, b) => (rate(b) > rate(a) ? b : a));
  * data-state once they are), opening the page without a query in a fresh context: nothing
  * cached, no service worker, the WASM module fetched and compiled anew.
  */
-async function coldLoad() {
+async function coldLoad(url = server.url) {
   const page = await newPage(browser, errors);
   await page.addInitScript(() => {
     new MutationObserver((_, observer) => {
@@ -34,7 +34,7 @@ async function coldLoad() {
       observer.disconnect();
     }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-state'] });
   });
-  await page.goto(server.url);
+  await page.goto(url);
   await page.waitForFunction(() => window.firstPlottedMs !== undefined, null, { timeout: 30_000 });
   const ms = await page.evaluate(() => window.firstPlottedMs);
   await page.context().close();
@@ -163,6 +163,25 @@ await page.click('#sweep-run');
 await page.waitForFunction((ms) => document.body.dataset.sweep === 'done' && Number(document.body.dataset.sweepMs) !== ms, sweepFirst, { timeout: 60_000 });
 const sweepAgain = await page.evaluate(() => Number(document.body.dataset.sweepMs));
 console.log(`  20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`);
+
+// With BENCH_VS_DIST, the dist/ folder of another build (for example an older commit's: `git
+// worktree add /tmp/old COMMIT`, link node_modules into it, `make -C /tmp/old dist`), the cold load
+// of this build against that one, side by side: BENCH_PAIRS (default 15) pairs, alternating, each
+// load in a fresh context; the ratio is taken pair by pair, as the machine's speed drifts.
+if (process.env.BENCH_VS_DIST) {
+  const pairs = Number(process.env.BENCH_PAIRS ?? 15);
+  if (!Number.isInteger(pairs) || pairs < 1) throw new Error(`BENCH_PAIRS must be a positive integer, not ${process.env.BENCH_PAIRS}`);
+  const other = await serve(process.env.BENCH_VS_DIST);
+  const mine = [], theirs = [], ratios = [];
+  for (let i = 0; i < pairs; i++) {
+    theirs.push(await coldLoad(other.url));
+    mine.push(await coldLoad());
+    ratios.push(mine.at(-1) / theirs.at(-1));
+  }
+  other.close();
+  const med = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
+  console.log(`  cold load against ${process.env.BENCH_VS_DIST}, ${pairs} alternating pairs: ${med(mine).toFixed(0)} ms against ${med(theirs).toFixed(0)} ms (medians); paired ratio ${med(ratios).toFixed(2)} (${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`);
+}
 
 const wasm = statSync(new URL('../../dist/pkg/imlab_bg.wasm', import.meta.url)).size;
 console.log(`WASM binary: ${(wasm / 1000).toFixed(1)} KB (${wasm} bytes, uncompressed), ${(wasm / 300e3).toFixed(2)} of the 300 KB target`);
