@@ -1,30 +1,22 @@
 // Keyboard, screen-reader and embed access: axe-core finds nothing on any tab, with the inspect
 // panel open, in presentation mode, on a phone and on a desktop; the page works from the keyboard
 // alone; an embed shows one plot that runs, in an iframe too. Each test fails on any console error.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { inspectAt, launch, serve, settled, violations } from './browser.mjs';
+import { browserSuite, inspectAt, settled, violations } from './browser.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+// The server and the browser of this file; pages here need contexts of their own.
+const suite = browserSuite();
 
 /** Opens `path` at `width`×`height` (axe is injected, so the context bypasses the CSP); runs `body`. */
 async function withPage(path, [width, height], body) {
   const errors = [];
-  const context = await browser.newContext({ viewport: { width, height }, bypassCSP: true });
+  const context = await suite.browser.newContext({ viewport: { width, height }, bypassCSP: true });
   const page = await context.newPage();
   page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
   try {
-    await page.goto(`${server.url}${path}`);
+    await page.goto(`${suite.server.url}${path}`);
     await settled(page);
     await body(page);
   } finally {

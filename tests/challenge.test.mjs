@@ -3,31 +3,23 @@
 // values; a tampered submission is refused naming the field; the built-ins open from the Lessons
 // tab; axe-core finds nothing on the challenge panel or the compose form. The core's figures are
 // the CLI's: the page's checklist shows what `imlab grade` prints for the same link.
-import { after, before, test } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { launch, serve, settled, violations } from './browser.mjs';
+import { browserSuite, settled, violations } from './browser.mjs';
 
-let server;
-let browser;
-before(async () => {
-  server = await serve();
-  browser = await launch();
-});
-after(async () => {
-  await browser?.close();
-  server?.close();
-});
+// The server and the browser of this file; pages here need contexts of their own.
+const suite = browserSuite();
 
 /** Opens `path` in a fresh context (clipboard allowed, CSP bypassed for axe); runs `body(page)`. */
 async function withPage(path, body, viewport = { width: 1400, height: 1000 }) {
   const errors = [];
-  const context = await browser.newContext({ viewport, bypassCSP: true });
-  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: server.url });
+  const context = await suite.browser.newContext({ viewport, bypassCSP: true });
+  await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: suite.server.url });
   const page = await context.newPage();
   page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
   try {
-    await page.goto(`${server.url}${path}`);
+    await page.goto(`${suite.server.url}${path}`);
     await body(page);
   } finally {
     await context.close();
