@@ -283,16 +283,9 @@ fn pct_encode(text: &str) -> String {
     out
 }
 
-/// A plain decimal number (no `inf`, `nan` or `+`), finite.
+/// A plain decimal number (the scenario codec's: no `inf`, `nan` or `+`), finite.
 fn number(text: &str) -> Option<f64> {
-    let ok = !text.is_empty()
-        && text
-            .bytes()
-            .all(|c| c.is_ascii_digit() || matches!(c, b'.' | b'-' | b'e' | b'E'))
-        && text.bytes().any(|c| c.is_ascii_digit());
-    ok.then(|| text.parse::<f64>().ok())
-        .flatten()
-        .filter(|v| v.is_finite())
+    crate::scenario::parse_number(text).filter(|v| v.is_finite())
 }
 
 /// The scenario field `key`, described on `base`.

@@ -510,7 +510,7 @@ impl Field {
 }
 
 /// Parses a plain decimal number; refuses Rust's extras ("inf", "nan", "+") that a URL should not carry.
-fn parse_number(text: &str) -> Option<f64> {
+pub(crate) fn parse_number(text: &str) -> Option<f64> {
     let ok = !text.is_empty()
         && text
             .bytes()

@@ -11,6 +11,7 @@ mod presets;
 
 pub use error::ScenarioError;
 
+pub(crate) use fields::parse_number;
 pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
 pub use presets::{preset, Preset, PRESETS};
 // The codec's errors quote input with these.
