@@ -1,6 +1,6 @@
 // The run client: the simulation worker, which owns the core, and the page's messages with it.
-// Describe requests, jobs and challenge measures are answered as promises; every other message goes to the page's handler of
-// its type. A worker that fails is replaced.
+// Describe requests, jobs and challenge measures are answered as promises; every other message
+// goes to the page's handler of its type. A worker that fails is replaced.
 
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
@@ -16,7 +16,7 @@ export class RunClient {
     this.worker = null;
     this.ready = false; // whether the current worker has loaded the core
     this.req = 0;
-    this.pending = new Map(); // requests awaiting their answer: req → {resolve, reject}
+    this.pending = new Map(); // requests awaiting their answer: key → {resolve, reject}
     this.failures = 0; // workers failed so far
   }
 
@@ -65,10 +65,7 @@ export class RunClient {
   /** Asks the core to validate and describe a scenario string ('recover' keeps its good fields). */
   describe(scenario, type = 'describe') {
     const req = ++this.req;
-    return new Promise((resolve, reject) => {
-      this.pending.set(req, { resolve, reject });
-      this.worker.postMessage({ type, req, scenario });
-    });
+    return this.ask(`describe ${req}`, { type, req, scenario });
   }
 
   /** Sends `message` and resolves with the answer that carries `key` (see receive). */
@@ -90,11 +87,11 @@ export class RunClient {
     return this.ask(`measure ${id}`, { type: 'challenge-measure', id });
   }
 
-  /** Settles the request `key` with `data`'s result or error. */
+  /** Settles the request `key`: rejects it with `error` when there is one, else resolves it with `result`. */
   answer(key, error, result) {
     const p = this.pending.get(key);
     this.pending.delete(key);
-    if (error) p?.reject(new Error(error));
+    if (error != null) p?.reject(new Error(error));
     else p?.resolve(result);
   }
 
@@ -105,11 +102,9 @@ export class RunClient {
     } else if (type === 'challenge-measured') {
       this.answer(`measure ${data.id}`, data.error, data.measures);
     } else if (type === 'described') {
-      this.pending.get(req)?.resolve(data.info);
-      this.pending.delete(req);
+      this.answer(`describe ${req}`, null, data.info);
     } else if (type === 'invalid' && req !== undefined) {
-      this.pending.get(req)?.reject(new Error(data.message));
-      this.pending.delete(req);
+      this.answer(`describe ${req}`, data.message);
     } else if (type === 'crashed') {
       this.fail(data.message);
     } else {
