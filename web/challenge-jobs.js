@@ -24,7 +24,7 @@ function withChallenge(text, f) {
  * Runs `scenario` to its end in one call and measures it; a run that stops early is measured
  * as far as it went, and the measures say why it failed.
  */
-export function measureRun(scenario) {
+function measureRun(scenario) {
   const sim = new Simulation(scenario);
   try {
     let stopped = null;

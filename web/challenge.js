@@ -15,7 +15,7 @@ const el = (tag, props = {}, children = []) => {
 };
 
 /** A measured value as the checklist writes it. */
-export function formatValue(value, unit) {
+function formatValue(value, unit) {
   if (value === null || value === undefined) return 'not measured';
   if (value === Infinity) return 'never (∞)';
   const u = unit ? ` ${unit}` : '';

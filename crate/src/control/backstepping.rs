@@ -153,8 +153,8 @@ impl Backstepping {
     }
 
     /// Computes every term and the voltage (54) for one sample, with the model's parameters.
-    // Inlined into the loop, so that the terms only a recorded row reads are computed only for
-    // the rows that are recorded.
+    // Inlined into the 20 kHz loop: its terms are not copied out through memory each sample, and
+    // the one only a recorded row reads (V) is left out of the samples not recorded.
     #[inline(always)]
     pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
         self.law(&self.model, None, input)

@@ -346,7 +346,7 @@ impl<const N: usize> Filter<N> {
         });
         let cols = self.p.as_mut_slice();
         let p: [[f64; 5]; 5] = std::array::from_fn(|c| std::array::from_fn(|r| cols[5 * c + r]));
-        let q: [f64; 5] = std::array::from_fn(|i| self.q.as_slice()[6 * i]);
+        let q: [f64; 5] = std::array::from_fn(|i| self.q[(i, i)]);
         let next = euler5_propagate(&phi, &p, &q);
         for c in 0..5 {
             cols[5 * c..5 * c + 5].copy_from_slice(&next[c]);
