@@ -1,9 +1,13 @@
 //! A small, portable, seeded random-number generator (xoshiro256++ seeded by SplitMix64).
 //!
-//! Only integer arithmetic, IEEE-exact `sqrt` and `libm::log` are used, so the same seed gives the
-//! same bits on every target (native and wasm32).
+//! Only integer arithmetic, IEEE-exact `sqrt` and `libm`'s `log` and `exp` are used, so the same
+//! seed gives the same bits on every target (native and wasm32).
 
-/// xoshiro256++ generator with a Gaussian sampler (Marsaglia polar method).
+use std::sync::OnceLock;
+
+/// xoshiro256++ generator with two Gaussian samplers: the Marsaglia polar method (scenario
+/// version 1) and a 256-layer ziggurat (version 2), which draws one 64-bit number for nearly
+/// every sample and needs no logarithm there.
 #[derive(Clone, Debug)]
 pub struct Rng {
     s: [u64; 4],
@@ -46,7 +50,8 @@ impl Rng {
         (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
     }
 
-    /// Standard normal sample.
+    /// Standard normal sample by the Marsaglia polar method: pairs of uniforms inside the unit
+    /// disc, one logarithm and one square root for two samples.
     pub fn normal(&mut self) -> f64 {
         if let Some(z) = self.spare.take() {
             return z;
@@ -62,6 +67,74 @@ impl Rng {
             }
         }
     }
+
+    /// Standard normal sample by the ziggurat method (Marsaglia and Tsang, 2000) with 256 layers
+    /// of equal area under exp(−x²/2). One 64-bit number gives the layer (its low 8 bits) and a
+    /// signed uniform (its high 53 bits); the sample is accepted at once when it falls inside the
+    /// layer's inner rectangle, about 99 % of the time. Otherwise it is tested against the curve
+    /// (one `exp`), or, in the base layer, drawn from the tail beyond R by Marsaglia's method.
+    pub fn ziggurat_normal(&mut self) -> f64 {
+        let z = ziggurat();
+        loop {
+            let bits = self.next_u64();
+            let i = (bits & 0xff) as usize;
+            let u = 2.0 * ((bits >> 11) as f64 * (1.0 / (1u64 << 53) as f64)) - 1.0;
+            let x = u * z.x[i];
+            if x.abs() < z.x[i + 1] {
+                return x;
+            }
+            if i == 0 {
+                let tail = self.normal_tail();
+                return if u < 0.0 { -tail } else { tail };
+            }
+            if z.f[i + 1] + self.uniform() * (z.f[i] - z.f[i + 1]) < libm::exp(-0.5 * x * x) {
+                return x;
+            }
+        }
+    }
+
+    /// A sample of the standard normal's tail beyond R, by Marsaglia's (1964) method.
+    fn normal_tail(&mut self) -> f64 {
+        loop {
+            let a = -libm::log(self.uniform_open()) / ZIGGURAT_R;
+            let b = -libm::log(self.uniform_open());
+            if 2.0 * b > a * a {
+                return ZIGGURAT_R + a;
+            }
+        }
+    }
+
+    /// Uniform sample in (0, 1): never 0, so its logarithm is finite.
+    fn uniform_open(&mut self) -> f64 {
+        ((self.next_u64() >> 11) as f64 + 0.5) * (1.0 / (1u64 << 53) as f64)
+    }
+}
+
+/// Where the base layer's tail starts, for 256 layers.
+const ZIGGURAT_R: f64 = 3.654_152_885_361_008_8;
+/// The area of each layer under exp(−x²/2), tail included in the base layer's.
+const ZIGGURAT_V: f64 = 0.004_928_673_233_992_336;
+
+/// The layers' right edges x_i (x_0 the base layer's equivalent width V/f(R), x_1 = R, down to
+/// x_256 = 0) and the curve f(x) = exp(−x²/2) at each.
+struct Ziggurat {
+    x: [f64; 257],
+    f: [f64; 257],
+}
+
+/// The layers, computed once with `libm` (so the same bits on every target).
+fn ziggurat() -> &'static Ziggurat {
+    static LAYERS: OnceLock<Ziggurat> = OnceLock::new();
+    LAYERS.get_or_init(|| {
+        let f = |x: f64| libm::exp(-0.5 * x * x);
+        let mut x = [0.0; 257];
+        x[0] = ZIGGURAT_V / f(ZIGGURAT_R);
+        x[1] = ZIGGURAT_R;
+        for i in 1..255 {
+            x[i + 1] = (-2.0 * libm::log(ZIGGURAT_V / x[i] + f(x[i]))).sqrt();
+        }
+        Ziggurat { x, f: x.map(f) }
+    })
 }
 
 #[cfg(test)]

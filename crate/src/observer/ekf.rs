@@ -17,6 +17,17 @@ pub enum Predictor {
     Rk4,
 }
 
+/// How the update step forms the posterior covariance P_{k|k}.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CovarianceUpdate {
+    /// Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ: positive semi-definite in floating point for any
+    /// gain (scenario version 1).
+    Joseph,
+    /// The paper's eq (19), P − K·C·P: equal to the Joseph form for the optimal gain this filter
+    /// uses, in about a third of the operations (scenario version 2).
+    Paper,
+}
+
 /// Tuning of the EKF.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EkfConfig {
@@ -409,10 +420,11 @@ impl<const N: usize> Filter<N> {
 
     /// Update step, eqs (15)–(19), with the measured currents y_k.
     ///
-    /// The covariance uses the Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ instead of (19): it is
-    /// algebraically equal for the optimal K and keeps P symmetric positive semi-definite in
-    /// floating point.
-    pub fn update(&mut self, y: &[f64; 2]) {
+    /// The covariance by `form`: the Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ or the paper's (19),
+    /// algebraically equal for the optimal K. Both compute the upper triangle only, so P stays
+    /// exactly symmetric.
+    #[inline(always)]
+    pub fn update(&mut self, y: &[f64; 2], form: CovarianceUpdate) {
         // C selects x2 and x3, so C·P·Cᵀ is the 2×2 block P[1..3, 1..3] and P·Cᵀ is P[:, 1..3].
         let p = self.p;
         let r2 = self.r2;
@@ -434,26 +446,34 @@ impl<const N: usize> Filter<N> {
         });
         self.gain = k;
         self.x += k * self.innovation;
-        // Joseph form with C's structure: A = (I − KC)·P = P − K·(C·P), then
-        // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ. Only the upper triangle is
-        // computed, so P stays exactly symmetric.
-        let a = SMatrix::<f64, N, N>::from_fn(|i, j| {
-            p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
-        });
-        self.p = symmetric_from_upper(|i, j| {
-            a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
-                + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
-        });
+        // C's structure: C·P is rows 1 and 2 of P, so K·(C·P) = K·P[1..3, :].
+        self.p = match form {
+            // (19): P⁺ = P − K·(C·P).
+            CovarianceUpdate::Paper => symmetric_from_upper(|i, j| {
+                p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
+            }),
+            // A = (I − KC)·P = P − K·(C·P), then
+            // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ.
+            CovarianceUpdate::Joseph => {
+                let a = SMatrix::<f64, N, N>::from_fn(|i, j| {
+                    p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
+                });
+                symmetric_from_upper(|i, j| {
+                    a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
+                        + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
+                })
+            }
+        };
     }
 
-    /// One sample: predict with u_{k−1} (none before the first sample), update with y_k, and
-    /// return what the loop uses of the posterior.
+    /// One sample: predict with u_{k−1} (none before the first sample), update with y_k (the
+    /// covariance by `form`), and return what the loop uses of the posterior.
     #[inline]
-    pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2]) -> Estimate {
+    pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2], form: CovarianceUpdate) -> Estimate {
         if let Some(u) = u {
             self.predict(u);
         }
-        self.update(y);
+        self.update(y, form);
         Estimate {
             x_hat: self.state(),
             gain: self.gain(),
