@@ -110,10 +110,9 @@ impl Rng {
     }
 }
 
-/// Where the base layer's tail starts, for 256 layers.
-const ZIGGURAT_R: f64 = 3.654_152_885_361_008_8;
-/// The area of each layer under exp(−x²/2), tail included in the base layer's.
-const ZIGGURAT_V: f64 = 0.004_928_673_233_992_336;
+/// Where the base layer's tail starts: the R for which 256 layers of equal area close at the
+/// curve's peak (Marsaglia and Tsang's value).
+const ZIGGURAT_R: f64 = 3.654_152_885_361_009;
 
 /// The layers' right edges x_i (x_0 the base layer's equivalent width V/f(R), x_1 = R, down to
 /// x_256 = 0) and the curve f(x) = exp(−x²/2) at each.
@@ -122,16 +121,25 @@ struct Ziggurat {
     f: [f64; 257],
 }
 
+/// The area V of each layer under f(x) = exp(−x²/2): the base layer's rectangle [0, R] × [0,
+/// f(R)] and the tail beyond R, ∫_R^∞ f = √(π/2)·erfc(R/√2).
+fn layer_area() -> f64 {
+    let r = ZIGGURAT_R;
+    r * libm::exp(-0.5 * r * r)
+        + (std::f64::consts::PI / 2.0).sqrt() * libm::erfc(r / std::f64::consts::SQRT_2)
+}
+
 /// The layers, computed once with `libm` (so the same bits on every target).
 fn ziggurat() -> &'static Ziggurat {
     static LAYERS: OnceLock<Ziggurat> = OnceLock::new();
     LAYERS.get_or_init(|| {
         let f = |x: f64| libm::exp(-0.5 * x * x);
+        let v = layer_area();
         let mut x = [0.0; 257];
-        x[0] = ZIGGURAT_V / f(ZIGGURAT_R);
+        x[0] = v / f(ZIGGURAT_R);
         x[1] = ZIGGURAT_R;
         for i in 1..255 {
-            x[i + 1] = (-2.0 * libm::log(ZIGGURAT_V / x[i] + f(x[i]))).sqrt();
+            x[i + 1] = (-2.0 * libm::log(v / x[i] + f(x[i]))).sqrt();
         }
         Ziggurat { x, f: x.map(f) }
     })
@@ -159,6 +167,80 @@ mod tests {
         assert!(
             (var - 1.0).abs() < 5.0 * (2.0 / n as f64).sqrt(),
             "variance {var}"
+        );
+    }
+
+    /// The standard normal CDF.
+    fn phi(x: f64) -> f64 {
+        0.5 * libm::erfc(-x / std::f64::consts::SQRT_2)
+    }
+
+    #[test]
+    fn ziggurat_layers_have_equal_areas() {
+        // Layer i ≥ 1 is the rectangle [0, x_i] × [f(x_i), f(x_{i+1})]. The table is built so that
+        // layers 1 to 254 hold V; the last one, up to the peak f(0) = 1, holds V only for the
+        // right R, and the base layer's equivalent rectangle x_0 × f(R) holds it by construction.
+        let z = ziggurat();
+        let v = layer_area();
+        assert_eq!(z.x[256], 0.0);
+        for i in 1..256 {
+            assert!(z.x[i + 1] < z.x[i], "layer {i}");
+            let area = z.x[i] * (z.f[i + 1] - z.f[i]);
+            assert!((area / v - 1.0).abs() < 1e-12, "layer {i}: {area}");
+        }
+        assert!((z.x[0] * z.f[1] / v - 1.0).abs() < 1e-15);
+    }
+
+    #[test]
+    fn ziggurat_samples_follow_the_normal_distribution() {
+        // 10⁶ samples: the fraction below each x is within 5 standard errors of Φ(x), which holds
+        // the body, each layer's edge region and, beyond R ≈ 3.65, the tail sampler; the moments
+        // up to the fourth (3 for the normal) hold too.
+        let n = 1_000_000;
+        let mut rng = Rng::new(7);
+        let points = [
+            -4.0,
+            -ZIGGURAT_R,
+            -3.0,
+            -2.0,
+            -1.0,
+            -0.3,
+            0.0,
+            0.3,
+            1.0,
+            2.0,
+            3.0,
+            ZIGGURAT_R,
+            4.0,
+        ];
+        let mut below = [0usize; 13];
+        let (mut m1, mut m2, mut m4) = (0.0, 0.0, 0.0);
+        for _ in 0..n {
+            let z = rng.ziggurat_normal();
+            for (count, &x) in below.iter_mut().zip(&points) {
+                *count += usize::from(z < x);
+            }
+            m1 += z;
+            m2 += z * z;
+            m4 += z * z * z * z;
+        }
+        let nf = n as f64;
+        for (&count, &x) in below.iter().zip(&points) {
+            let p = phi(x);
+            let se = (p * (1.0 - p) / nf).sqrt();
+            let seen = count as f64 / nf;
+            assert!((seen - p).abs() < 5.0 * se, "P(z < {x}) = {seen}, Φ = {p}");
+        }
+        let (mean, var, kurt) = (m1 / nf, m2 / nf, m4 / nf);
+        assert!(mean.abs() < 5.0 / nf.sqrt(), "mean {mean}");
+        assert!(
+            (var - 1.0).abs() < 5.0 * (2.0 / nf).sqrt(),
+            "variance {var}"
+        );
+        // The fourth moment's standard error is √(105 − 9)/√n ≈ 9.8/√n.
+        assert!(
+            (kurt - 3.0).abs() < 5.0 * 96f64.sqrt() / nf.sqrt(),
+            "fourth moment {kurt}"
         );
     }
 
