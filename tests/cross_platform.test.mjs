@@ -3,8 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { describe, initSync, presets, Simulation } from '../dist/pkg/imlab.js';
-import { NEW_VERSION } from '../web/url.js';
+import { initSync, presets, Simulation } from '../dist/pkg/imlab.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
@@ -19,11 +18,8 @@ function wasmCsv(scenario) {
   return Buffer.concat(parts).toString();
 }
 
-// Every preset at every version (a bare name is version 1), and variants through the options.
 const scenarios = [
   ...presets().map((p) => p.name),
-  ...presets().map((p) => `v=2&preset=${p.name}`),
-  'v=2&preset=rr-mismatch&ekf.load=1&ekf.rr=1&noise=0.05&seed=99&duration=0.5',
   'v=1&preset=step&ekf=rk4&seed=123456789&noise=0.01&substeps=3',
   'v=1&preset=ramp&plant.rr=5.5&load.torque=1&load.time=0.2&robust=1&h2=5&h4=5',
   'v=1&preset=sine200-1rad&duration=0.05&vlimit=circle&vdc=600&delay=1&delay.comp=1&ekf.load=1',
@@ -37,8 +33,3 @@ for (const s of scenarios) {
     assert.equal(wasmCsv(s), native);
   });
 }
-
-test('the page makes new scenarios at the core\'s newest version', () => {
-  assert.equal(describe(`v=${NEW_VERSION}&preset=step`).version, NEW_VERSION);
-  assert.throws(() => describe(`v=${NEW_VERSION + 1}&preset=step`), new RegExp(`unsupported version, allowed: (\\d+, )*${NEW_VERSION}$`));
-});

@@ -23,12 +23,10 @@ const scenarioInUrl = (page) => new URL(page.url()).search.slice(1);
 test('the page loads and the default preset draws its plots', () =>
   withPage('', async (page) => {
     assert.equal(await settled(page), 'done');
-    // A new scenario is at the newest version, and its description has nothing to say of it.
-    assert.equal(scenarioInUrl(page), 'v=2&preset=sine200');
+    assert.equal(scenarioInUrl(page), 'v=1&preset=sine200');
     assert.equal(await page.locator('#plots .plot canvas').count(), 8);
     assert.equal(await page.evaluate(() => document.body.dataset.rows), '5000');
     assert.match(await page.textContent('#preset-doc'), /Fig 2/);
-    assert.doesNotMatch(await page.textContent('#preset-doc'), /version/);
     assert.equal(await page.textContent('#message'), '');
   }));
 
@@ -42,7 +40,7 @@ test('each preset runs from the picker', () =>
       await page.selectOption('#preset', name);
       await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
       assert.equal(await page.evaluate(() => document.body.dataset.state), 'done', name);
-      assert.equal(scenarioInUrl(page), `v=2&preset=${name}`);
+      assert.equal(scenarioInUrl(page), `v=1&preset=${name}`);
     }
   }));
 
@@ -91,7 +89,7 @@ test('a broken URL shows which field is wrong and the app still runs', async () 
     assert.equal(await settled(page), 'done');
     assert.equal(await page.locator('#message img').count(), 0);
     assert.match(await page.textContent('#message'), /preset/);
-    assert.equal(scenarioInUrl(page), 'v=2&preset=sine200');
+    assert.equal(scenarioInUrl(page), 'v=1&preset=sine200');
   });
 });
 
@@ -100,7 +98,7 @@ test('a diverging run is reported, nothing non-finite is plotted, and the next r
     assert.equal(await settled(page), 'failed');
     assert.match(await page.textContent('#message'), /diverged/);
     await page.selectOption('#preset', 'step');
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=2&preset=step' && document.body.dataset.state === 'done');
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=step' && document.body.dataset.state === 'done');
   }));
 
 test('an invalid edit names the field and blocks Run until fixed', () =>
@@ -144,7 +142,7 @@ test('the main thread is never blocked for long while a 5 s simulation runs: the
         .observe({ type: 'longtask' });
     });
     await page.selectOption('#preset', 'ramp');
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=2&preset=ramp');
+    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=ramp');
     await page.click('details[data-group=limits] > summary');
     await page.fill('#field-duration', '5');
     await page.press('#field-duration', 'Tab');
@@ -181,8 +179,6 @@ test('a loaded app reloads and runs offline', () =>
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>
   withPage('v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');
-    // A link at an older version says so, and its edits keep its version (below).
-    assert.match(await page.textContent('#preset-doc'), /runs version 1 of the numerics, as its link names \(v=1\)/);
     const shown = () => page.evaluate(() => ({ url: location.search.slice(1), ran: document.body.dataset.scenario, unrun: document.body.dataset.unrun === '1' }));
     // An edit not yet run: the address keeps the run on screen, and the page says so.
     await page.fill('#field-k1', '600');

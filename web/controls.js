@@ -80,9 +80,9 @@ export function fieldControl(f, prefix) {
   ]);
 }
 
-/** The scenario string the form describes: the version and preset plus every field shown. */
-export function composeScenario(form, version, preset) {
-  const parts = [`v=${version}`, `preset=${preset}`];
+/** The scenario string the form describes: the preset plus every field shown. */
+export function composeScenario(form, preset) {
+  const parts = ['v=1', `preset=${preset}`];
   for (const control of form.querySelectorAll('input, select')) {
     const value = control.type === 'checkbox' ? (control.checked ? '1' : '0') : control.value.trim();
     parts.push(`${control.name}=${encodeURIComponent(value)}`);

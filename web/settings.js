@@ -4,7 +4,7 @@
 import { $, say, ui } from './page.js';
 import { composeScenario, fieldControl, forwardKnob, markInvalid, renderFields } from './controls.js';
 import { WorkerFailed } from './run-client.js';
-import { DEFAULT_SCENARIO, listed, NEW_VERSION, newScenario, presetNamed, scenarioFromUrl, showScenario } from './url.js';
+import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from './url.js';
 
 // Keys that move through the preset list without choosing; Enter (also from the open list) chooses.
 const BROWSE = new Set(['ArrowUp', 'ArrowDown', 'ArrowLeft', 'ArrowRight', 'Home', 'End', 'PageUp', 'PageDown']);
@@ -59,15 +59,7 @@ export function createSettings({
     // speed or length than the preset says).
     const changed = info.encoded.split('&').slice(2).map((part) => part.split('=')[0]);
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
-    ui.presetDoc.textContent = changed.length ? `${description}. This run changes: ${changed.join(', ')}.` : `${description}.`;
-    // A link at an older version says so, since its numbers are that version's (not shown on a
-    // projector or in an embed, where the room is the plots').
-    if (info.version !== NEW_VERSION) {
-      const note = document.createElement('span');
-      note.className = 'version-note';
-      note.textContent = `It runs version ${info.version} of the numerics, as its link names (v=${info.version}); a new scenario uses version ${NEW_VERSION}, the same model with a faster noise generator.`;
-      ui.presetDoc.append(' ', note);
-    }
+    ui.presetDoc.textContent = changed.length ? `${description}. This run changes: ${changed.join(', ')}.` : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
     described(info);
@@ -116,7 +108,7 @@ export function createSettings({
   }
 
   async function checkForm() {
-    const text = composeScenario(ui.form, state.info.version, ui.preset.value);
+    const text = composeScenario(ui.form, ui.preset.value);
     composed = text;
     try {
       const info = await client.describe(text);
@@ -149,14 +141,14 @@ export function createSettings({
 
   // An edit still being checked by the core must land before the run starts.
   async function runForm() {
-    const fresh = composeScenario(ui.form, state.info.version, ui.preset.value) !== composed;
+    const fresh = composeScenario(ui.form, ui.preset.value) !== composed;
     if (!(await (fresh ? formChanged() : checking))) return;
     if (!ui.run.disabled) startRun();
   }
 
   function commitPreset() {
     presetPending = false;
-    load(newScenario(ui.preset.value));
+    load(`v=1&preset=${ui.preset.value}`);
   }
 
   ui.preset.addEventListener('keydown', (e) => {

@@ -1,14 +1,8 @@
-// The address bar holds the current scenario in the core's compact codec (`?v=2&preset=...`).
+// The address bar holds the current scenario in the core's compact codec (`?v=1&preset=...`).
 // History entries carry {scenario, ran}: an edit replaces an entry that has not been run yet and
 // pushes a new one after a run, so Back and Forward move between scenarios that were run.
 
-/** The scenario version new scenarios use: the core's newest (a link keeps the version it names). */
-export const NEW_VERSION = 2;
-
-/** A new scenario: preset `name` at the newest version. */
-export const newScenario = (name) => `v=${NEW_VERSION}&preset=${name}`;
-
-export const DEFAULT_SCENARIO = newScenario('sine200');
+export const DEFAULT_SCENARIO = 'v=1&preset=sine200';
 
 /** The scenario text in the address bar, or the default when there is none. */
 export function scenarioFromUrl() {

@@ -49,7 +49,6 @@ import init, {
   challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
-import { newScenario } from './url.js';
 
 // A slice of work between two looks at the message queue (ms of the worker's clock, read by the
 // core): Cancel is honoured within it, and optimised code compiled in the background is picked
@@ -267,7 +266,7 @@ async function compare({ id }) {
 // optimises functions that have run often. A short run in small chunks at start-up, read back as
 // a finished run is (overview, view, stability, report), gets that done before the first real run.
 function warmUp() {
-  const sim = new Simulation(newScenario('decay'));
+  const sim = new Simulation('v=1&preset=decay');
   sim.keep_overview([['omega']], 100);
   while (!sim.finished) sim.step_for(0);
   sim.view([['omega']], 0, Number.MAX_VALUE, 100);

@@ -17,8 +17,8 @@ use std::time::Instant;
 
 /// The scenarios of node.mjs, with their labels there.
 const SCENARIOS: [(&str, &str); 2] = [
-    ("1 s", "v=2&preset=ramp&duration=1"),
-    ("5 s", "v=2&preset=ramp&duration=5"),
+    ("1 s", "v=1&preset=ramp&duration=1"),
+    ("5 s", "v=1&preset=ramp&duration=5"),
 ];
 
 /// A positive whole number from the environment variable `name`, or `fallback`.

@@ -239,8 +239,6 @@ fn to_js(value: &impl Serialize) -> Result<JsValue, JsValue> {
 #[derive(Serialize)]
 struct Description {
     encoded: String,
-    /// The scenario's version (its string's `v`).
-    version: u32,
     steps: usize,
     fields: Vec<crate::scenario::FieldInfo>,
     plant: Lumped,
@@ -255,7 +253,6 @@ pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
     let lumped = |p: &crate::params::MotorParams| p.lumped().map_err(js_error);
     to_js(&Description {
         encoded: s.encode(),
-        version: s.version.number(),
         steps: s.steps(),
         fields: s.describe(),
         plant: lumped(&s.plant)?,

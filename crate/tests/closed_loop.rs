@@ -1,7 +1,6 @@
 //! Closed-loop figures the paper and the design fix: decay rates, settling, tracking, EKF health.
 
-use imlab::record::COLUMNS;
-use imlab::scenario::{preset, Scenario, Version, PRESETS};
+use imlab::scenario::{preset, Scenario, PRESETS};
 use imlab::sim::{SimError, Simulation};
 use nalgebra::SymmetricEigen;
 
@@ -135,16 +134,9 @@ const SATURATING: &[&str] = &["sine200-1rad", "high-gain"];
 
 #[test]
 fn ekf_converges_on_every_unsaturated_preset_and_p_stays_psd() {
-    for version in Version::ALL {
-        ekf_converges_and_p_stays_psd(version);
-    }
-}
-
-fn ekf_converges_and_p_stays_psd(version: Version) {
     let mut saturated = Vec::new();
     for p in PRESETS {
         let mut s = preset(p.name).unwrap();
-        s.version = version;
         // Mismatch presets exist to show an observer whose model is wrong; here the model is right.
         s.plant = s.model;
         s.load_step.torque = 0.0;
@@ -156,7 +148,7 @@ fn ekf_converges_and_p_stays_psd(version: Version) {
             let min_eig = SymmetricEigen::new(cov.clone()).eigenvalues.min();
             assert!(
                 min_eig >= -1e-12 * cov.trace(),
-                "{} {version:?}: P has eigenvalue {min_eig}",
+                "{}: P has eigenvalue {min_eig}",
                 p.name
             );
         }
@@ -184,51 +176,19 @@ fn ekf_converges_and_p_stays_psd(version: Version) {
         let speed_tol = SPEED_EST_TOL.0 * max_ref + SPEED_EST_TOL.1;
         assert!(
             speed < speed_tol,
-            "{} {version:?}: speed estimate RMS error {speed} ≥ {speed_tol}",
+            "{}: speed estimate RMS error {speed} ≥ {speed_tol}",
             p.name
         );
         assert!(
             flux < FLUX_EST_TOL,
-            "{} {version:?}: flux estimate RMS error {flux} ≥ {FLUX_EST_TOL}",
+            "{}: flux estimate RMS error {flux} ≥ {FLUX_EST_TOL}",
             p.name
         );
     }
     assert_eq!(
         saturated, SATURATING,
-        "{version:?}: presets whose voltage saturates at the end"
+        "presets whose voltage saturates at the end"
     );
-}
-
-/// Version 2 draws the noise otherwise and rounds the covariance update otherwise; nothing else
-/// changes. Without noise, every preset's every column at version 2 is version 1's up to that
-/// rounding, grown by the loop (most on the marginal `rr-mismatch`, about 1e-6 of the column's
-/// largest value), and the two are not the same bits.
-#[test]
-fn without_noise_version_2_is_version_1_up_to_rounding() {
-    for p in PRESETS {
-        let [one, two] = [1, 2].map(|v| run(&format!("v={v}&preset={}&noise=0", p.name)));
-        assert_eq!(one.recorder().len(), two.recorder().len(), "{}", p.name);
-        let mut any_differs = false;
-        for name in COLUMNS {
-            let (a, b) = (col(&one, name), col(&two, name));
-            let scale = a.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-            let worst = a
-                .iter()
-                .zip(&b)
-                .fold(0.0f64, |m, (x, y)| m.max((x - y).abs()));
-            assert!(
-                worst <= 1e-5 * scale,
-                "{} {name}: {worst} against {scale}",
-                p.name
-            );
-            any_differs |= worst > 0.0;
-        }
-        assert!(
-            any_differs,
-            "{}: version 2 ran version 1's arithmetic",
-            p.name
-        );
-    }
 }
 
 #[test]

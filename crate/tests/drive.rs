@@ -2,7 +2,7 @@
 //! and the IFOC's torque feedforward, each checked against what it must do by construction.
 
 use imlab::inverter::Shape;
-use imlab::observer::{CovarianceUpdate, Filter};
+use imlab::observer::Filter;
 use imlab::scenario::Scenario;
 use imlab::sim::Simulation;
 
@@ -73,9 +73,7 @@ fn delay_applies_each_command_one_sample_later_and_the_ekf_sees_what_was_applied
     .map(|c| col(&sim, c));
     for k in 0..ya.len() {
         let applied = (k > 0).then(|| [ua[k - 1], ub[k - 1]]);
-        let x_hat = ekf
-            .sample(applied.as_ref(), &[ya[k], yb[k]], CovarianceUpdate::Joseph)
-            .x_hat;
+        let x_hat = ekf.sample(applied.as_ref(), &[ya[k], yb[k]]).x_hat;
         for i in 0..5 {
             assert_eq!(
                 x_hat[i].to_bits(),

@@ -50,14 +50,14 @@ async function repetition() {
     await settled(page);
     return page.evaluate(() => ({ ...document.body.dataset }));
   }
-  const first = await run('v=2&preset=sine200');
+  const first = await run('v=1&preset=sine200');
   out.sineFirst = Number(first.runMs);
   out.sineCompute = Number(first.computeMs);
   out.sinePlot = Number(first.plotMs);
   const warm = [];
   for (let i = 0; i < 5; i++) warm.push(Number((await runAgain(page)).runMs));
   out.sineWarm = warm.sort((a, b) => a - b)[2];
-  const long = await run('v=2&preset=ramp&duration=5');
+  const long = await run('v=1&preset=ramp&duration=5');
   out.longFirst = rate(long);
   out.longFirstRunMs = Number(long.runMs);
   const runs = [];
@@ -66,11 +66,11 @@ async function repetition() {
   out.firstOverWarm = out.longFirst / out.long;
   out.longRunMs = Number(best(runs).runMs);
   // Same length as the Node benchmark (tests/bench/node.mjs): 1 s runs of `ramp`.
-  await run('v=2&preset=ramp&duration=1');
+  await run('v=1&preset=ramp&duration=1');
   const short = [];
   for (let i = 0; i < 10; i++) short.push(await runAgain(page));
   out.short = rate(best(short));
-  await run('v=2&preset=ramp&duration=5');
+  await run('v=1&preset=ramp&duration=5');
   // View requests on a 5 s run, from the request to the next painted frame after the plots took
   // the answer: a zoom to 1 s (a replay of that window), the whole run again (the overview
   // the run kept), and the walkthrough opened after a run on the plots tab: the first time (its

@@ -45,8 +45,8 @@ const RUNS = env('BENCH_RUNS', 10);
 const CHUNK = 5000;
 const NATIVE = process.env.BENCH_NATIVE !== '0';
 const SCENARIOS = [
-  ['1 s', 'v=2&preset=ramp&duration=1'],
-  ['5 s', 'v=2&preset=ramp&duration=5'],
+  ['1 s', 'v=1&preset=ramp&duration=1'],
+  ['5 s', 'v=1&preset=ramp&duration=5'],
 ];
 
 /** Steps per second of one whole run of `scenario`. */

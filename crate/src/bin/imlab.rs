@@ -22,7 +22,7 @@ use std::process::ExitCode;
     // A repeated option overrides the earlier one, as in most command lines.
     args_override_self = true,
     after_help = "SCENARIO is a preset name or a query string such as \
-                  'v=2&preset=step&step.size=0.3'; `imlab list` names the presets."
+                  'v=1&preset=step&step.size=0.3'; `imlab list` names the presets."
 )]
 struct Cli {
     /// What to do.
@@ -33,7 +33,7 @@ struct Cli {
 /// The scenario argument every subcommand but `list` takes.
 #[derive(Args)]
 struct ScenarioArg {
-    /// Preset name or query string such as 'v=2&preset=step&step.size=0.3'
+    /// Preset name or query string such as 'v=1&preset=step&step.size=0.3'
     /// (`imlab list` names the presets)
     scenario: String,
 }

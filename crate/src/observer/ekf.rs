@@ -17,17 +17,6 @@ pub enum Predictor {
     Rk4,
 }
 
-/// How the update step forms the posterior covariance P_{k|k}.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum CovarianceUpdate {
-    /// Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ: positive semi-definite in floating point for any
-    /// gain (scenario version 1).
-    Joseph,
-    /// The paper's eq (19), P − K·C·P: equal to the Joseph form for the optimal gain this filter
-    /// uses, in about a third of the operations (scenario version 2).
-    Paper,
-}
-
 /// Tuning of the EKF.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EkfConfig {
@@ -420,11 +409,10 @@ impl<const N: usize> Filter<N> {
 
     /// Update step, eqs (15)–(19), with the measured currents y_k.
     ///
-    /// The covariance by `form`: the Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ or the paper's (19),
-    /// algebraically equal for the optimal K. Both compute the upper triangle only, so P stays
-    /// exactly symmetric.
-    #[inline(always)]
-    pub fn update(&mut self, y: &[f64; 2], form: CovarianceUpdate) {
+    /// The covariance uses the Joseph form (I−KC)P(I−KC)ᵀ + KRKᵀ instead of (19): it is
+    /// algebraically equal for the optimal K and keeps P symmetric positive semi-definite in
+    /// floating point.
+    pub fn update(&mut self, y: &[f64; 2]) {
         // C selects x2 and x3, so C·P·Cᵀ is the 2×2 block P[1..3, 1..3] and P·Cᵀ is P[:, 1..3].
         let p = self.p;
         let r2 = self.r2;
@@ -446,34 +434,26 @@ impl<const N: usize> Filter<N> {
         });
         self.gain = k;
         self.x += k * self.innovation;
-        // C's structure: C·P is rows 1 and 2 of P, so K·(C·P) = K·P[1..3, :].
-        self.p = match form {
-            // (19): P⁺ = P − K·(C·P).
-            CovarianceUpdate::Paper => symmetric_from_upper(|i, j| {
-                p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
-            }),
-            // A = (I − KC)·P = P − K·(C·P), then
-            // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ.
-            CovarianceUpdate::Joseph => {
-                let a = SMatrix::<f64, N, N>::from_fn(|i, j| {
-                    p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
-                });
-                symmetric_from_upper(|i, j| {
-                    a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
-                        + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
-                })
-            }
-        };
+        // Joseph form with C's structure: A = (I − KC)·P = P − K·(C·P), then
+        // P⁺ = A·(I − KC)ᵀ + K·R·Kᵀ = A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ. Only the upper triangle is
+        // computed, so P stays exactly symmetric.
+        let a = SMatrix::<f64, N, N>::from_fn(|i, j| {
+            p[(i, j)] - k[(i, 0)] * p[(1, j)] - k[(i, 1)] * p[(2, j)]
+        });
+        self.p = symmetric_from_upper(|i, j| {
+            a[(i, j)] - a[(i, 1)] * k[(j, 0)] - a[(i, 2)] * k[(j, 1)]
+                + r2 * (k[(i, 0)] * k[(j, 0)] + k[(i, 1)] * k[(j, 1)])
+        });
     }
 
-    /// One sample: predict with u_{k−1} (none before the first sample), update with y_k (the
-    /// covariance by `form`), and return what the loop uses of the posterior.
+    /// One sample: predict with u_{k−1} (none before the first sample), update with y_k, and
+    /// return what the loop uses of the posterior.
     #[inline]
-    pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2], form: CovarianceUpdate) -> Estimate {
+    pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2]) -> Estimate {
         if let Some(u) = u {
             self.predict(u);
         }
-        self.update(y, form);
+        self.update(y);
         Estimate {
             x_hat: self.state(),
             gain: self.gain(),
@@ -639,49 +619,6 @@ mod tests {
             // The prediction moves the state: a stale copy of x̂ would not pass.
             assert_ne!(ahead.0, x0);
         }
-    }
-
-    /// Both covariance updates from the same start, over 4,000 samples of a spinning machine
-    /// measured with noise: the paper's (19) equals the Joseph form for the optimal gain, so the
-    /// two filters differ by rounding alone, and each keeps P exactly symmetric.
-    fn covariance_updates_agree<const N: usize>(load: bool, rr: bool) {
-        let params = MotorParams::PAPER;
-        let cfg = EkfConfig {
-            predictor: Predictor::Euler,
-            ..config(load, rr)
-        };
-        let x0 = [30.0, 3.0, -2.0, 0.6, -0.4];
-        let make = || -> Filter<N> {
-            Filter::new(&params, params.lumped().unwrap(), 5e-5, &cfg, x0, [0.1; 5])
-        };
-        let (mut joseph, mut paper) = (make(), make());
-        let mut rng = crate::rng::Rng::new(3);
-        for k in 0..4000 {
-            let angle = 2.0 * std::f64::consts::PI * 50.0 * k as f64 * 5e-5;
-            let u = [150.0 * angle.cos(), 150.0 * angle.sin()];
-            let y = [
-                3.0 * angle.sin() + 0.002 * rng.normal(),
-                -3.0 * angle.cos() + 0.002 * rng.normal(),
-            ];
-            joseph.sample(Some(&u), &y, CovarianceUpdate::Joseph);
-            paper.sample(Some(&u), &y, CovarianceUpdate::Paper);
-        }
-        for f in [&joseph, &paper] {
-            assert_eq!(f.p, f.p.transpose(), "N = {N}");
-        }
-        let scale = joseph.p.abs().max();
-        let dp = (joseph.p - paper.p).abs().max();
-        assert!(dp < 1e-12 * scale, "N = {N}: |ΔP| = {dp} against {scale}");
-        let dx = (joseph.x - paper.x).abs().max();
-        assert!(dx < 1e-12 * joseph.x.abs().max(), "N = {N}: |Δx| = {dx}");
-        // The two are different computations: bit-equal results would mean one form is unused.
-        assert_ne!(joseph.p, paper.p, "N = {N}");
-    }
-
-    #[test]
-    fn the_papers_covariance_update_equals_the_joseph_form() {
-        covariance_updates_agree::<5>(false, false);
-        covariance_updates_agree::<7>(true, true);
     }
 
     #[test]

@@ -4,5 +4,5 @@
 mod ekf;
 mod mras;
 
-pub use ekf::{nis_band, CovarianceUpdate, Ekf, EkfConfig, Estimate, Filter, Predictor};
+pub use ekf::{nis_band, Ekf, EkfConfig, Estimate, Filter, Predictor};
 pub use mras::Mras;

@@ -1,6 +1,6 @@
 //! Why a scenario string or value was refused, in words that name the field.
 
-use super::{excerpt, short, Version, MAX_SCENARIO_BYTES, PRESETS};
+use super::{excerpt, short, CODEC_VERSION, MAX_SCENARIO_BYTES, PRESETS};
 use crate::params::ParamError;
 use std::fmt;
 
@@ -89,14 +89,12 @@ impl fmt::Display for ScenarioError {
         match self {
             Missing { key } => write!(
                 f,
-                "field '{key}' is missing (a scenario starts with v={}&preset=NAME)",
-                Version::LATEST.number()
+                "field '{key}' is missing (a scenario starts with v={CODEC_VERSION}&preset=NAME)"
             ),
             UnsupportedVersion { value } => write!(
                 f,
-                "field 'v' = '{}': unsupported version, allowed: {}",
-                q(value),
-                Version::ALL.map(|v| v.number().to_string()).join(", ")
+                "field 'v' = '{}': unsupported codec version, allowed: {CODEC_VERSION}",
+                q(value)
             ),
             UnknownPreset { name } => write!(
                 f,

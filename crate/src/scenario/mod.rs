@@ -1,11 +1,9 @@
 //! One scenario type holding every setting, the presets, and the compact query-string codec
 //! shared by the CLI, the browser URL and the tests.
 //!
-//! A scenario string is `v=N&preset=NAME` followed by only the fields that differ from the
-//! preset, e.g. `v=2&preset=step&step.size=0.3&noise=0.004`. Numbers are written in Rust's
-//! shortest round-trip form, so decode(encode(s)) == s bit for bit. `v` names the numerics the
-//! run uses ([`Version`]): every version keeps its bits, so a link replays as it did when it was
-//! made.
+//! A scenario string is `v=1&preset=NAME` followed by only the fields that differ from the
+//! preset, e.g. `v=1&preset=step&step.size=0.3&noise=0.004`. Numbers are written in Rust's
+//! shortest round-trip form, so decode(encode(s)) == s bit for bit.
 
 mod error;
 mod fields;
@@ -28,41 +26,8 @@ use presets::default_reference;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
 
-/// The numerics a scenario runs with, named by its string's `v`. The model, the controllers and
-/// every setting mean the same in each version; what differs is how the simulation computes, and
-/// so the bits of its results. A run's bits never change within a version.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
-pub enum Version {
-    /// Measurement noise by the Marsaglia polar method; the EKF's covariance update in Joseph
-    /// form. A bare preset name runs at this version.
-    V1,
-    /// Measurement noise by a 256-layer ziggurat ([`crate::rng::Rng::ziggurat_normal`]); the
-    /// EKF's covariance update by the paper's eq (19), P − K·C·P, on the upper triangle
-    /// (the Joseph form's value for the optimal gain, in about a third of the operations).
-    /// About a quarter faster per sample than version 1; new scenarios on the page use it.
-    V2,
-}
-
-impl Version {
-    /// Every version, oldest first.
-    pub const ALL: [Version; 2] = [Version::V1, Version::V2];
-    /// The newest version, which new scenarios use.
-    pub const LATEST: Version = Version::V2;
-
-    /// The version's number in a scenario string.
-    pub fn number(self) -> u32 {
-        match self {
-            Version::V1 => 1,
-            Version::V2 => 2,
-        }
-    }
-
-    fn parse(text: &str) -> Option<Version> {
-        Version::ALL
-            .into_iter()
-            .find(|v| v.number().to_string() == text)
-    }
-}
+/// Version of the query-string codec.
+pub const CODEC_VERSION: u32 = 1;
 /// Longest scenario string accepted (bytes): every field written out at full precision takes
 /// about 2 KiB, so 16 KiB leaves room without letting a pasted megabyte block the parser.
 pub const MAX_SCENARIO_BYTES: usize = 16 * 1024;
@@ -128,8 +93,6 @@ pub enum ControllerKind {
 /// Every setting of one simulation run.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Scenario {
-    /// The numerics this scenario runs with (its string's `v`).
-    pub version: Version,
     /// Name of the preset this scenario starts from.
     pub preset: String,
     /// Speed reference ω_d(t).
@@ -240,17 +203,18 @@ impl Scenario {
                 })?,
             }
         }
-        let written = *pairs.get("v").ok_or(ScenarioError::Missing { key: "v" })?;
-        let version = Version::parse(written).ok_or_else(|| ScenarioError::UnsupportedVersion {
-            value: written.to_string(),
-        })?;
+        let version = *pairs.get("v").ok_or(ScenarioError::Missing { key: "v" })?;
+        if version != CODEC_VERSION.to_string() {
+            return Err(ScenarioError::UnsupportedVersion {
+                value: version.to_string(),
+            });
+        }
         let name = *pairs
             .get("preset")
             .ok_or(ScenarioError::Missing { key: "preset" })?;
         let mut s = preset(name).ok_or_else(|| ScenarioError::UnknownPreset {
             name: name.to_string(),
         })?;
-        s.version = version;
         // Unknown keys in the order they were written, so the first one is the one reported.
         let mut unknown = std::collections::HashSet::new();
         for piece in text.split('&') {
@@ -288,7 +252,7 @@ impl Scenario {
         if base.reference.kind() != self.reference.kind() {
             base.reference = default_reference(self.reference.kind()).expect("known kind");
         }
-        let mut out = format!("v={}&preset={}", self.version.number(), self.preset);
+        let mut out = format!("v={CODEC_VERSION}&preset={}", self.preset);
         for field in fields() {
             let theirs = field.get(if field.key == "ref" { &original } else { &base });
             if let Some(mine) = field.get(self).filter(|m| Some(m) != theirs.as_ref()) {
@@ -489,19 +453,6 @@ mod tests {
     }
 
     #[test]
-    fn the_version_is_kept_through_the_codec() {
-        for version in Version::ALL {
-            let text = format!("v={}&preset=step&noise=0.004", version.number());
-            let s = Scenario::parse(&text).unwrap();
-            assert_eq!(s.version, version);
-            assert_eq!(s.encode(), text);
-        }
-        assert_eq!(Scenario::parse("step").unwrap().version, Version::V1);
-        let err = Scenario::parse("v=3&preset=step").unwrap_err().to_string();
-        assert!(err.ends_with("allowed: 1, 2"), "{err}");
-    }
-
-    #[test]
     fn rejects_malformed_input_with_the_field_named() {
         let cases: &[(&str, &str)] = &[
             ("v=1&preset=step&k1=-5", "'k1'"),
@@ -511,8 +462,7 @@ mod tests {
             ("v=1&preset=step&k1=", "'k1'"),
             ("v=1&preset=step&k1=1&k1=2", "'k1'"),
             ("v=1&preset=step&kk=1", "'kk'"),
-            ("v=3&preset=step", "'v'"),
-            ("v=2.0&preset=step", "'v'"),
+            ("v=2&preset=step", "'v'"),
             ("preset=step", "'v'"),
             ("v=1&k1=5", "'preset'"),
             ("v=1&preset=nope", "'preset'"),

@@ -1,6 +1,6 @@
 //! The presets: the paper's figures and the scenarios the lessons use, each a [`Scenario`].
 
-use super::{ControllerKind, Drive, LoadStep, Scenario, Version};
+use super::{ControllerKind, Drive, LoadStep, Scenario};
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::Shape;
 use crate::observer::{EkfConfig, Predictor};
@@ -55,7 +55,6 @@ pub(super) const I_RATED: f64 = 4.0;
 
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
     Scenario {
-        version: Version::V1,
         preset: name.to_string(),
         reference,
         psi_d: 0.5,

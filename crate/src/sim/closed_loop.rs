@@ -7,11 +7,11 @@
 use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, RefSample, Terms};
 use crate::inverter::{self, Limit};
 use crate::model::{self, Input, State};
-use crate::observer::{CovarianceUpdate, Estimate, Filter};
+use crate::observer::{Estimate, Filter};
 use crate::params::Lumped;
 use crate::record::{Row, Sink};
 use crate::rng::Rng;
-use crate::scenario::{ControllerKind, Scenario, ScenarioError, Version};
+use crate::scenario::{ControllerKind, Scenario, ScenarioError};
 use std::fmt;
 
 /// Bounds past which the plant or the estimate is declared diverged.
@@ -70,38 +70,6 @@ impl fmt::Display for SimError {
 }
 
 impl std::error::Error for SimError {}
-
-/// What a scenario [`Version`] fixes in the loop's arithmetic. The loop is compiled once for each
-/// version and [`Loop::run`] picks one per call: choosing per sample instead cost the loop about
-/// an eighth of its time (measured natively).
-trait Numerics {
-    /// How the EKF forms the posterior covariance.
-    const UPDATE: CovarianceUpdate;
-    /// One standard normal sample of the measurement noise.
-    fn normal(rng: &mut Rng) -> f64;
-}
-
-/// Version 1: the polar method and the Joseph form.
-enum V1 {}
-
-impl Numerics for V1 {
-    const UPDATE: CovarianceUpdate = CovarianceUpdate::Joseph;
-    #[inline(always)]
-    fn normal(rng: &mut Rng) -> f64 {
-        rng.normal()
-    }
-}
-
-/// Version 2: the ziggurat and the paper's eq (19).
-enum V2 {}
-
-impl Numerics for V2 {
-    const UPDATE: CovarianceUpdate = CovarianceUpdate::Paper;
-    #[inline(always)]
-    fn normal(rng: &mut Rng) -> f64 {
-        rng.ziggurat_normal()
-    }
-}
 
 /// The EKF, sized by the parameters it estimates besides the five states.
 // One per simulation, so its size does not matter; inline, the loop reaches it without a pointer.
@@ -276,20 +244,8 @@ impl Loop {
         end: usize,
         sink: &mut dyn Sink,
     ) -> Result<(), SimError> {
-        match self.scenario.version {
-            Version::V1 => self.run_as::<V1>(st, end, sink),
-            Version::V2 => self.run_as::<V2>(st, end, sink),
-        }
-    }
-
-    fn run_as<V: Numerics>(
-        &self,
-        st: &mut LoopState,
-        end: usize,
-        sink: &mut dyn Sink,
-    ) -> Result<(), SimError> {
         while st.k < end {
-            self.step::<V>(st, sink)?;
+            self.step(st, sink)?;
             st.k += 1;
         }
         Ok(())
@@ -297,10 +253,10 @@ impl Loop {
 
     /// One sample k: measure, estimate, control, limit, apply (one sample later with the
     /// computation delay), then record.
-    fn step<V: Numerics>(&self, st: &mut LoopState, sink: &mut dyn Sink) -> Result<(), SimError> {
+    pub(super) fn step(&self, st: &mut LoopState, sink: &mut dyn Sink) -> Result<(), SimError> {
         let t = st.k as f64 * self.scenario.ts;
-        let y = self.measure::<V>(st);
-        let observed = self.estimate::<V>(st, &y, t)?;
+        let y = self.measure(st);
+        let observed = self.estimate(st, &y, t)?;
         let speed_ref = self.scenario.reference.sample(t);
         let commanded = self.control(st, &observed, &y, &speed_ref, t)?;
         self.limit(st, &commanded.u_cmd);
@@ -320,26 +276,21 @@ impl Loop {
 
     /// Measure (step 1): the true currents with the sensors' noise.
     #[inline(always)]
-    fn measure<V: Numerics>(&self, st: &mut LoopState) -> [f64; 2] {
+    fn measure(&self, st: &mut LoopState) -> [f64; 2] {
         let noise = self.scenario.noise;
         [
-            st.x[1] + noise * V::normal(&mut st.rng),
-            st.x[2] + noise * V::normal(&mut st.rng),
+            st.x[1] + noise * st.rng.normal(),
+            st.x[2] + noise * st.rng.normal(),
         ]
     }
 
     /// Estimate (steps 2–3): the EKF predicts with u_{k−1} (none before the first sample), then updates
     /// with y_k.
     #[inline(always)]
-    fn estimate<V: Numerics>(
-        &self,
-        st: &mut LoopState,
-        y: &[f64; 2],
-        t: f64,
-    ) -> Result<Observed, SimError> {
+    fn estimate(&self, st: &mut LoopState, y: &[f64; 2], t: f64) -> Result<Observed, SimError> {
         let u = st.u;
         let previous = (st.k > 0).then_some(&u);
-        let estimate = with_filter!(&mut st.ekf, f => f.sample(previous, y, V::UPDATE));
+        let estimate = with_filter!(&mut st.ekf, f => f.sample(previous, y));
         check_state(t, &estimate.x_hat, ESTIMATE_NAMES)?;
         let x_hat = estimate.x_hat;
         let residual = [y[0] - x_hat[1], y[1] - x_hat[2]];

@@ -237,9 +237,8 @@ impl Cursor<'_> {
             want: true,
             row: None,
         };
-        let k = self.state.k;
-        let _ = self.lp.run(&mut self.state, k + 1, &mut capture);
-        self.state.k = k + 1;
+        let _ = self.lp.step(&mut self.state, &mut capture);
+        self.state.k += 1;
         capture.row.expect("a replay of a recorded row")
     }
 }
