@@ -10,19 +10,17 @@ wasm: setup
 	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
 	rm -f dist/pkg/.gitignore
 
-# The modules the page imports (web/main.js's graph; not the worker's, nor the classic boot.js): dist/index.html gets
-# a <link rel="modulepreload"> for each, so that a load asks for them all at once with the page,
-# not level by level as main.js and then its imports arrive.
-PRELOAD = $(filter-out web/boot.js web/main.js web/worker.js,$(sort $(wildcard web/*.js))) vendor/uPlot.esm.js vendor/katex/katex.mjs
-
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
+# The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one module,
+# dist/web/main.js: a load asks for one file, not thirty found level by level. The worker's
+# modules stay apart (the core's glue finds the WASM module beside itself).
 dist: wasm
 	mkdir -p dist/web dist/vendor/katex/fonts
 	cp static/*.html static/*.css static/*.js dist/
-	sed -i -e 's|^\(  <script type="module" src="web/main.js"></script>\)$$|\1$(foreach m,$(PRELOAD),\n  <link rel="modulepreload" href="$(m)">)|' -e 's/"> \n/">\n/g' dist/index.html
 	cp web/*.js dist/web/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
+	node_modules/.bin/esbuild dist/web/main.js --bundle --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js
 	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
 	scripts/docs_html.py dist/docs
 

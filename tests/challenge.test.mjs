@@ -157,6 +157,7 @@ test('the built-in challenges open from the Lessons tab', () =>
   withPage('', async (page) => {
     await settled(page);
     await page.click('#tab-lessons');
+    await page.waitForSelector('#challenges a');
     const links = await page.$$eval('#challenges a', (list) => list.map((a) => a.getAttribute('href')));
     assert.deepEqual(links, ['?challenge=step-tune', '?challenge=load-observer', '?challenge=ifoc-load']);
     await page.click('#challenges a[href="?challenge=ifoc-load"]');

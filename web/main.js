@@ -89,7 +89,7 @@ const presentation = createPresentation({ state, plots, walkthrough });
 const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
-const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
+const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView, lessonsShown: listChallenges });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
 const challenge = createChallenge({
   client, state, relayout: () => plotSets.forEach((p) => p.resize()),
@@ -102,6 +102,7 @@ const run = createRun({
     pins.afterRun();
     sweeps.afterRun();
     challenge.check();
+    listChallenges();
   },
 });
 const settings = createSettings({
@@ -148,12 +149,20 @@ window.addEventListener('resize', () => {
   walkthrough.plots.resize();
 });
 
+// The built-in challenges are listed once the first run is drawn, or when the Lessons tab is
+// shown before: listing them has the worker parse each one, which would hold up the first run.
+let challengesListed = false;
+function listChallenges() {
+  if (challengesListed) return;
+  challengesListed = true;
+  challenge.listBuiltins($('challenges'));
+}
+
 // The page's plot sets, for the browser tests and the console.
 window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
-challenge.listBuiltins($('challenges'));
 // While the worker loads the core, the main plots are laid out, empty, and their drawing code is
 // compiled.
 plots.prepare();

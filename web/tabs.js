@@ -2,8 +2,9 @@
 // a click or by the arrow keys, Home and End.
 import { $ } from './page.js';
 
-/** `walkthroughView()` asks for the last run's walkthrough view if it lacks one. */
-export function createTabs({ plots, walkthrough, walkthroughView }) {
+/** `walkthroughView()` asks for the last run's walkthrough view if it lacks one; `lessonsShown()`
+ * is told each time the Lessons tab is shown. */
+export function createTabs({ plots, walkthrough, walkthroughView, lessonsShown }) {
   const TABS = [...document.querySelectorAll('[role=tab]')];
 
   /** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
@@ -27,6 +28,7 @@ export function createTabs({ plots, walkthrough, walkthroughView }) {
       if (fetch) walkthroughView();
       walkthrough.plots.resize();
     }
+    if (name === 'lessons') lessonsShown();
     walkthrough.closeInspect();
   }
 

@@ -22,42 +22,22 @@
 //! `cargo bench --bench closed_loop -- long` (the argument is a regex on the benchmark id, e.g.
 //! `preset/ramp` or `view/envelope`); a short pass with `-- --quick`.
 
+mod page;
+
 use criterion::{BatchSize, BenchmarkId, Criterion, SamplingMode, Throughput};
 use imlab::scenario::{preset, Scenario, PRESETS};
 use imlab::sim::Simulation;
+use page::{page_groups, BUCKETS};
 use std::hint::black_box;
 use std::path::PathBuf;
 use std::time::{Duration, SystemTime};
 
 /// Lengths of the long `ramp` runs (s).
 const LONG_DURATIONS: [u32; 2] = [5, 20];
-/// Plot width the view benchmarks ask for (buckets, about the pixels of a plot).
-const BUCKETS: usize = 1000;
 /// Rows in the CSV chunk benchmark.
 const CSV_ROWS: usize = 20_000;
-/// The plots of the page, one envelope each, as `PLOTS` in web/plots.js lists their columns
-/// (keep in step): one view request of the worker computes all of them.
-const PAGE_PLOTS: &[&[&str]] = &[
-    &["omega_ref", "omega_hat", "omega"],
-    &["omega_err"],
-    &["flux_ref", "flux_hat", "flux"],
-    &["i_sa_hat", "i_sb_hat", "i_sa", "i_sb"],
-    &["u_a", "u_b"],
-    &["z1", "z3"],
-    &["z2", "z4"],
-    &["omega_est_err", "flux_est_err"],
-];
-
 fn scenario(text: &str) -> Scenario {
     Scenario::parse(text).unwrap_or_else(|e| panic!("{text}: {e}"))
-}
-
-/// The page's plots as owned groups of column names.
-fn page_groups() -> Vec<Vec<String>> {
-    PAGE_PLOTS
-        .iter()
-        .map(|g| g.iter().map(|n| n.to_string()).collect())
-        .collect()
 }
 
 /// How a benchmarked run keeps its samples.

@@ -32,6 +32,7 @@
 import { spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
+import { benchExecutable } from './cargo.mjs';
 
 const env = (name, fallback) => {
   const v = Number(process.env[name] ?? fallback);
@@ -83,22 +84,13 @@ function spread(values) {
 
 const M = (v) => (v / 1e6).toFixed(2);
 
-/** Path of the native twin's executable, built by cargo in the bench profile. */
+/** Path of the native twin's executable (crate/benches/native_speed.rs). */
 function nativeBinary() {
-  const root = fileURLToPath(new URL('../../', import.meta.url));
-  const p = spawnSync('cargo', ['bench', '--bench', 'native_speed', '--no-run', '--message-format=json-render-diagnostics'], {
-    cwd: root,
-    encoding: 'utf8',
-    stdio: ['ignore', 'pipe', 'pipe'],
-    maxBuffer: 1 << 26,
-  });
-  if (p.status !== 0) throw new Error(`building the native twin (crate/benches/native_speed.rs) failed; BENCH_NATIVE=0 skips it\n${p.stderr}`);
-  const artifact = p.stdout
-    .split('\n')
-    .filter((line) => line.startsWith('{'))
-    .map((line) => JSON.parse(line))
-    .find((m) => m.reason === 'compiler-artifact' && m.target.name === 'native_speed' && m.executable);
-  return artifact.executable;
+  try {
+    return benchExecutable('native_speed');
+  } catch (e) {
+    throw new Error(`${e.message}\nBENCH_NATIVE=0 skips the native twin`);
+  }
 }
 
 /** Runs `command` and returns its last stdout line as JSON. */
