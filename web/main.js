@@ -102,7 +102,7 @@ const run = createRun({
     pins.afterRun();
     sweeps.afterRun();
     challenge.check();
-    listChallenges();
+    afterFirstRun();
   },
 });
 const settings = createSettings({
@@ -149,13 +149,21 @@ window.addEventListener('resize', () => {
   walkthrough.plots.resize();
 });
 
-// The built-in challenges are listed once the first run is drawn, or when the Lessons tab is
-// shown before: listing them has the worker parse each one, which would hold up the first run.
+// Once the first run is drawn, the built-in challenges are listed (or before, when the Lessons
+// tab is shown: listing them has the worker parse each one, which would hold up the first run)
+// and the walkthrough's equations are typeset while the page is idle.
 let challengesListed = false;
 function listChallenges() {
   if (challengesListed) return;
   challengesListed = true;
   challenge.listBuiltins($('challenges'));
+}
+let firstRunDrawn = false;
+function afterFirstRun() {
+  if (firstRunDrawn) return;
+  firstRunDrawn = true;
+  listChallenges();
+  walkthrough.typesetWhenIdle();
 }
 
 // The page's plot sets, for the browser tests and the console.

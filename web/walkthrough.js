@@ -29,12 +29,19 @@ function typeset(span, source, displayMode) {
   katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
 }
 
-/** A display equation typeset when the walkthrough is first shown (see `Walkthrough.shown`):
- * typesetting all of them takes KaTeX longer than anything else at page load. */
+/** A display equation typeset later, while the page is idle or when the walkthrough is first
+ * shown (see `Walkthrough.typesetWhenIdle` and `Walkthrough.shown`): typesetting all of them
+ * takes KaTeX longer than anything else at page load. */
 function laterTex(source) {
   const span = el('span', { className: 'equation' });
   span.dataset.tex = source;
   return span;
+}
+
+/** Typesets an equation made by `laterTex`. */
+function typesetWaiting(span) {
+  typeset(span, span.dataset.tex, true);
+  delete span.dataset.tex;
 }
 
 /** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */
@@ -222,6 +229,22 @@ export class Walkthrough {
     return rendered(this.container);
   }
 
+  /** Typesets the equations still waiting a few at a time while the page is idle, so that the
+   * walkthrough's first showing need not typeset them all at once; `shown` does what is left. */
+  typesetWhenIdle() {
+    const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(() => f({ timeRemaining: () => 10 }), 50));
+    const some = (deadline) => {
+      for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
+        if (deadline.timeRemaining() <= 0) {
+          idle(some);
+          return;
+        }
+        typesetWaiting(span);
+      }
+    };
+    idle(some);
+  }
+
   /** Whether its plots show the last run (they can take a zoom window then). */
   drawn() {
     return !this.stale && this.pending === null;
@@ -231,10 +254,7 @@ export class Walkthrough {
    * whether they scroll, and a waiting view is drawn. */
   shown() {
     this.opened = true;
-    for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
-      typeset(span, span.dataset.tex, true);
-      delete span.dataset.tex;
-    }
+    for (const span of this.container.querySelectorAll('.equation[data-tex]')) typesetWaiting(span);
     markScrollable([...this.container.querySelectorAll('.scroll-box')]);
     if (this.pending) {
       this.plots.show(this.pending, { ifoc: this.ifoc });
