@@ -48,7 +48,9 @@ fn axpy(x: &State, h: f64, k: &State) -> State {
 }
 
 /// One classical RK4 step of length `h` with the input held constant.
-#[inline]
+// Always inlined: the 20 kHz loop calls it once a sample, and a call there costs the saving and
+// reloading of the loop's live registers around it.
+#[inline(always)]
 pub fn rk4(p: &Lumped, x: &State, u: &Input, extra_load: f64, h: f64) -> State {
     let k1 = f(p, x, u, extra_load);
     let k2 = f(p, &axpy(x, 0.5 * h, &k1), u, extra_load);

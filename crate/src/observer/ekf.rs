@@ -123,8 +123,21 @@ pub struct Estimate {
     pub innovation: [f64; 2],
     /// Innovation covariance [s11, s12, s22] (A²).
     pub innovation_cov: [f64; 3],
-    /// Normalised innovation squared.
-    pub nis: f64,
+}
+
+impl Estimate {
+    /// Normalised innovation squared, as [`Filter::nis`]; computed when asked for (the loop needs
+    /// it for the samples it records only).
+    pub fn nis(&self) -> f64 {
+        nis(&self.innovation, &self.innovation_cov)
+    }
+}
+
+/// Normalised innovation squared ỹᵀ S⁻¹ ỹ of the innovation `e` and S = [s11, s12, s22].
+#[inline]
+fn nis(e: &[f64; 2], s: &[f64; 3]) -> f64 {
+    let ([e1, e2], [s11, s12, s22]) = (*e, *s);
+    (s22 * e1 * e1 - 2.0 * s12 * e1 * e2 + s11 * e2 * e2) / (s11 * s22 - s12 * s12)
 }
 
 /// A symmetric matrix from a function evaluated on the upper triangle only.
@@ -158,16 +171,20 @@ const EULER5_ZERO: [[bool; 5]; 5] = {
 /// general product computes it, with the products by Φ's exact zeros left out. Adding a zero
 /// product changes no sum that is not itself zero, so the result is the general one, bit for bit,
 /// for less work.
+///
+/// Φ·P takes P_kj from `p[k][j]` (= P_jk) rather than `p[j][k]`: P is exactly symmetric (P0 is
+/// diagonal and every step writes both triangles from one value), so it is the same number, read
+/// where row k of P lies contiguous in memory, which the compiler turns into paired loads.
 #[inline(always)]
 fn euler5_propagate(phi: &[[f64; 5]; 5], p: &[[f64; 5]; 5], q: &[f64; 5]) -> [[f64; 5]; 5] {
     let mut n = [[0.0; 5]; 5];
     for i in 0..5 {
         for j in 0..5 {
             // Column 0 of every row is nonzero.
-            let mut s = phi[i][0] * p[j][0];
+            let mut s = phi[i][0] * p[0][j];
             for k in 1..5 {
                 if !EULER5_ZERO[i][k] {
-                    s += phi[i][k] * p[j][k];
+                    s += phi[i][k] * p[k][j];
                 }
             }
             n[i][j] = s;
@@ -189,6 +206,88 @@ fn euler5_propagate(phi: &[[f64; 5]; 5], p: &[[f64; 5]; 5], q: &[f64; 5]) -> [[f
         }
     }
     out
+}
+
+/// [`Filter::predict`] of the paper's filter (N = 5, Euler) on plain arrays, x and P (as columns,
+/// `p[5j + i]` = P_ij): x += Ts·f(x, u) and P = Φ·P·Φᵀ + Q with Φ = I + Ts·A, the same operations
+/// in the same order as the general step, bit for bit.
+#[inline(always)]
+fn euler5_predict(
+    m: &Lumped,
+    ts: f64,
+    q: &[f64; 5],
+    u: &Input,
+    x: &mut [f64; 5],
+    p: &mut [f64; 25],
+) {
+    let a = model::jacobian(m, x);
+    let dx = model::f(m, x, u, 0.0);
+    for i in 0..5 {
+        x[i] += ts * dx[i];
+    }
+    let phi = arr5(|i| arr5(|j| (if i == j { 1.0 } else { 0.0 }) + a[i][j] * ts));
+    let cols = arr5(|c| arr5(|r| p[5 * c + r]));
+    let next = euler5_propagate(&phi, &cols, q);
+    for c in 0..5 {
+        p[5 * c..5 * c + 5].copy_from_slice(&next[c]);
+    }
+}
+
+/// What [`update5`] leaves besides x and P, in nalgebra's column-major layouts.
+struct Update5 {
+    /// K: `gain[5c + i]` = K_ic.
+    gain: [f64; 10],
+    /// ỹ.
+    innovation: [f64; 2],
+    /// S: [s11, s21, s12, s22].
+    s: [f64; 4],
+}
+
+/// [`Filter::update`] of the paper's filter (N = 5) on plain arrays, x and P (as columns,
+/// `p[5j + i]` = P_ij): the operations of the general step in the same order, bit for bit. Each
+/// entry is read from the element the general step reads; only the matrices are plain arrays and
+/// no value is computed differently.
+#[inline(always)]
+fn update5(r2: f64, y: &[f64; 2], x: &mut [f64; 5], p: &mut [f64; 25]) -> Update5 {
+    let col = |j: usize| arr5(|i| p[5 * j + i]);
+    let e = [y[0] - x[1], y[1] - x[2]];
+    // S = [[s11, s12], [s21, s22]] and its determinant as nalgebra's: s11·s22 − s21·s12.
+    let (s11, s12, s21, s22) = (p[6] + r2, p[11], p[7], p[12] + r2);
+    let inv_det = 1.0 / (s11 * s22 - s21 * s12);
+    let (i11, i12, i22) = (s22 * inv_det, -s12 * inv_det, s11 * inv_det);
+    // K by columns: k0[i] = K_i0 = P_i1·i11 + P_i2·i12, k1[i] = K_i1 = P_i1·i12 + P_i2·i22.
+    let (c1, c2) = (col(1), col(2));
+    let k0 = arr5(|i| c1[i] * i11 + c2[i] * i12);
+    let k1 = arr5(|i| c1[i] * i12 + c2[i] * i22);
+    // x += K·ỹ: nalgebra's product is K_i0·ỹ0 (times an exact 1), then K_i1·ỹ1 + that.
+    for i in 0..5 {
+        x[i] += k0[i] * e[0] + k1[i] * e[1];
+    }
+    // Joseph form as the general step: A = P − K·(C·P), row-major, A_ij = P_ij − K_i0·P_1j −
+    // K_i1·P_2j; then the upper triangle of A − (A·Cᵀ)·Kᵀ + r²·K·Kᵀ, mirrored.
+    let a = arr5(|i| arr5(|j| p[5 * j + i] - k0[i] * p[5 * j + 1] - k1[i] * p[5 * j + 2]));
+    for i in 0..5 {
+        for j in i..5 {
+            let v =
+                a[i][j] - a[i][1] * k0[j] - a[i][2] * k1[j] + r2 * (k0[i] * k0[j] + k1[i] * k1[j]);
+            p[5 * j + i] = v;
+            p[5 * i + j] = v;
+        }
+    }
+    let mut gain = [0.0; 10];
+    gain[..5].copy_from_slice(&k0);
+    gain[5..].copy_from_slice(&k1);
+    Update5 {
+        gain,
+        innovation: e,
+        s: [s11, s21, s12, s22],
+    }
+}
+
+/// [f(0), …, f(4)], evaluated in that order (unlike `std::array::from_fn`, always inlined).
+#[inline(always)]
+fn arr5<T>(f: impl Fn(usize) -> T) -> [T; 5] {
+    [f(0), f(1), f(2), f(3), f(4)]
 }
 
 fn five<const N: usize>(v: &SVector<f64, N>) -> State {
@@ -310,9 +409,17 @@ impl<const N: usize> Filter<N> {
     /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample.
     pub fn predict(&mut self, u: &Input) {
         if N == 5 && self.predictor == Predictor::Euler {
-            self.predict_euler5(u);
-            return;
+            let q: [f64; 5] = std::array::from_fn(|i| self.q[(i, i)]);
+            let (m, ts) = (self.model, self.ts);
+            let (x, p) = self.plain5();
+            euler5_predict(&m, ts, &q, u, x, p);
+        } else {
+            self.predict_general(u);
         }
+    }
+
+    /// [`Filter::predict`] for any N and predictor, on nalgebra matrices.
+    fn predict_general(&mut self, u: &Input) {
         let (x_next, phi) = match self.predictor {
             Predictor::Euler => (
                 self.euler_state(u),
@@ -330,27 +437,28 @@ impl<const N: usize> Filter<N> {
         });
     }
 
-    /// [`Filter::predict`] of the paper's filter (N = 5, Euler) on plain arrays: the same
-    /// operations in the same order as the general step, bit for bit.
-    #[inline(always)]
-    fn predict_euler5(&mut self, u: &Input) {
-        let x = five(&self.x);
-        let a = model::jacobian(&self.model, &x);
-        let dx = model::f(&self.model, &x, u, 0.0);
-        let ts = self.ts;
-        for i in 0..5 {
-            self.x[i] += ts * dx[i];
-        }
-        let phi: [[f64; 5]; 5] = std::array::from_fn(|i| {
-            std::array::from_fn(|j| (if i == j { 1.0 } else { 0.0 }) + a[i][j] * ts)
-        });
-        let cols = self.p.as_mut_slice();
-        let p: [[f64; 5]; 5] = std::array::from_fn(|c| std::array::from_fn(|r| cols[5 * c + r]));
+    /// x and P of the five-state filter as plain arrays (P as columns, `p[5j + i]` = P_ij).
+    fn plain5(&mut self) -> (&mut [f64; 5], &mut [f64; 25]) {
+        (
+            self.x.as_mut_slice().try_into().expect("five states"),
+            self.p.as_mut_slice().try_into().expect("five states"),
+        )
+    }
+
+    /// The five-state filter's sample on plain arrays: the Euler prediction (when `u` is given,
+    /// the caller having checked the predictor) and the update, in one piece so that P passes from
+    /// one to the other without a round trip through the filter.
+    fn sample5(&mut self, u: Option<&Input>, y: &[f64; 2]) {
         let q: [f64; 5] = std::array::from_fn(|i| self.q[(i, i)]);
-        let next = euler5_propagate(&phi, &p, &q);
-        for c in 0..5 {
-            cols[5 * c..5 * c + 5].copy_from_slice(&next[c]);
+        let (m, ts, r2) = (self.model, self.ts, self.r2);
+        let (x, p) = self.plain5();
+        if let Some(u) = u {
+            euler5_predict(&m, ts, &q, u, x, p);
         }
+        let out = update5(r2, y, x, p);
+        self.gain.as_mut_slice().copy_from_slice(&out.gain);
+        self.innovation = Vector2::from(out.innovation);
+        self.s.as_mut_slice().copy_from_slice(&out.s);
     }
 
     /// The five states one sample ahead, x̂_{k+1|k}, under the input `u` held over the sample, by
@@ -413,6 +521,15 @@ impl<const N: usize> Filter<N> {
     /// algebraically equal for the optimal K and keeps P symmetric positive semi-definite in
     /// floating point.
     pub fn update(&mut self, y: &[f64; 2]) {
+        if N == 5 {
+            self.sample5(None, y);
+        } else {
+            self.update_general(y);
+        }
+    }
+
+    /// [`Filter::update`] for any N, on nalgebra matrices.
+    fn update_general(&mut self, y: &[f64; 2]) {
         // C selects x2 and x3, so C·P·Cᵀ is the 2×2 block P[1..3, 1..3] and P·Cᵀ is P[:, 1..3].
         let p = self.p;
         let r2 = self.r2;
@@ -450,10 +567,14 @@ impl<const N: usize> Filter<N> {
     /// return what the loop uses of the posterior.
     #[inline]
     pub fn sample(&mut self, u: Option<&Input>, y: &[f64; 2]) -> Estimate {
-        if let Some(u) = u {
-            self.predict(u);
+        if N == 5 && self.predictor == Predictor::Euler {
+            self.sample5(u, y);
+        } else {
+            if let Some(u) = u {
+                self.predict(u);
+            }
+            self.update(y);
         }
-        self.update(y);
         Estimate {
             x_hat: self.state(),
             gain: self.gain(),
@@ -463,7 +584,6 @@ impl<const N: usize> Filter<N> {
             p_omega: self.p[(0, 0)],
             innovation: self.innovation(),
             innovation_cov: self.innovation_cov(),
-            nis: self.nis(),
         }
     }
 
@@ -516,9 +636,7 @@ impl<const N: usize> Filter<N> {
 
     /// Normalised innovation squared ỹᵀ S⁻¹ ỹ (χ² with 2 degrees of freedom when consistent).
     pub fn nis(&self) -> f64 {
-        let [s11, s12, s22] = self.innovation_cov();
-        let [e1, e2] = self.innovation();
-        (s22 * e1 * e1 - 2.0 * s12 * e1 * e2 + s11 * e2 * e2) / (s11 * s22 - s12 * s12)
+        nis(&self.innovation(), &self.innovation_cov())
     }
 }
 
@@ -618,6 +736,59 @@ mod tests {
             assert_eq!(ahead, (plain.state(), both.state()), "{predictor:?}");
             // The prediction moves the state: a stale copy of x̂ would not pass.
             assert_ne!(ahead.0, x0);
+        }
+    }
+
+    /// The five-state filter's plain-array steps (the fused sample, `predict`, `update`) against
+    /// the general steps on nalgebra matrices: the same bits, sample after sample, and P exactly
+    /// symmetric (which the plain prediction's Φ·P relies on).
+    #[test]
+    fn five_state_steps_match_the_general_steps() {
+        let params = MotorParams::PAPER;
+        let lumped = params.lumped().unwrap();
+        let bits = |f: &Filter<5>| -> Vec<u64> {
+            let (x, p, k) = (f.x.iter(), f.p.iter(), f.gain.iter());
+            let rest = f.innovation.iter().chain(f.s.iter());
+            x.chain(p)
+                .chain(k)
+                .chain(rest)
+                .map(|v| v.to_bits())
+                .collect()
+        };
+        for predictor in [Predictor::Euler, Predictor::Rk4] {
+            let cfg = EkfConfig {
+                predictor,
+                q_speed: 50.0,
+                ..config(false, false)
+            };
+            let x0 = [30.0, 3.0, -2.0, 0.6, -0.4];
+            let new = || -> Filter<5> { Filter::new(&params, lumped, 5e-5, &cfg, x0, [3.0; 5]) };
+            let (mut fused, mut split, mut general) = (new(), new(), new());
+            let mut rng = crate::rng::Rng::new(7);
+            for k in 0..4000 {
+                let t = k as f64 * 5e-5;
+                let u = [300.0 * (60.0 * t).cos(), 300.0 * (60.0 * t).sin()];
+                let y = [
+                    general.x[1] + 0.05 * rng.normal(),
+                    general.x[2] + 0.05 * rng.normal(),
+                ];
+                let u = (k > 0).then_some(&u);
+                fused.sample(u, &y);
+                if let Some(u) = u {
+                    split.predict(u);
+                    general.predict_general(u);
+                }
+                split.update(&y);
+                general.update_general(&y);
+                assert_eq!(bits(&fused), bits(&general), "{predictor:?}, sample {k}");
+                assert_eq!(bits(&split), bits(&general), "{predictor:?}, sample {k}");
+            }
+            let p = general.covariance();
+            for i in 0..5 {
+                for j in 0..5 {
+                    assert_eq!(p[(i, j)].to_bits(), p[(j, i)].to_bits(), "P[{i},{j}]");
+                }
+            }
         }
     }
 

@@ -150,13 +150,15 @@ struct Commanded {
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
     let bounds = [MAX_SPEED, MAX_CURRENT, MAX_CURRENT, MAX_FLUX, MAX_FLUX];
     for i in 0..5 {
-        if x[i].is_nan() || x[i].abs() > bounds[i] {
-            return Err(SimError::Diverged {
-                t,
-                signal: what[i],
-                value: x[i],
-            });
+        // One comparison: false for NaN as for a value past its bound.
+        if x[i].abs() <= bounds[i] {
+            continue;
         }
+        return Err(SimError::Diverged {
+            t,
+            signal: what[i],
+            value: x[i],
+        });
     }
     Ok(())
 }
@@ -547,7 +549,7 @@ impl Loop {
             s_aa,
             s_ab,
             s_bb,
-            nis: e.nis,
+            nis: e.nis(),
             p_omega: e.p_omega,
             load_hat: e.load.map_or(s.model.t0, |(a2, _, _)| a2 * j_model),
             rr_hat: e.rotor_resistance.map_or(s.model.rr, |(rr, _)| rr),
