@@ -89,7 +89,7 @@ const presentation = createPresentation({ state, plots, walkthrough });
 const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
-const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView, lessonsShown: listChallenges });
+const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
 const challenge = createChallenge({
   client, state, relayout: () => plotSets.forEach((p) => p.resize()),
@@ -102,7 +102,8 @@ const run = createRun({
     pins.afterRun();
     sweeps.afterRun();
     challenge.check();
-    afterFirstRun();
+    // Typesets the walkthrough's waiting equations while the page is idle.
+    walkthrough.typesetWhenIdle();
   },
 });
 const settings = createSettings({
@@ -149,28 +150,12 @@ window.addEventListener('resize', () => {
   walkthrough.plots.resize();
 });
 
-// Once the first run is drawn, the built-in challenges are listed (or before, when the Lessons
-// tab is shown: listing them has the worker parse each one, which would hold up the first run)
-// and the walkthrough's equations are typeset while the page is idle.
-let challengesListed = false;
-function listChallenges() {
-  if (challengesListed) return;
-  challengesListed = true;
-  challenge.listBuiltins($('challenges'));
-}
-let firstRunDrawn = false;
-function afterFirstRun() {
-  if (firstRunDrawn) return;
-  firstRunDrawn = true;
-  listChallenges();
-  walkthrough.typesetWhenIdle();
-}
-
 // The page's plot sets, for the browser tests and the console.
 window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
+challenge.listBuiltins($('challenges'));
 // While the worker loads the core, the main plots are laid out, empty, and their drawing code is
 // compiled.
 plots.prepare();

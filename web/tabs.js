@@ -2,9 +2,8 @@
 // a click or by the arrow keys, Home and End.
 import { $ } from './page.js';
 
-/** `walkthroughView()` asks for the last run's walkthrough view if it lacks one; `lessonsShown()`
- * is told each time the Lessons tab is shown. */
-export function createTabs({ plots, walkthrough, walkthroughView, lessonsShown }) {
+/** `walkthroughView()` asks for the last run's walkthrough view if it lacks one. */
+export function createTabs({ plots, walkthrough, walkthroughView }) {
   const TABS = [...document.querySelectorAll('[role=tab]')];
 
   /** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
@@ -28,7 +27,6 @@ export function createTabs({ plots, walkthrough, walkthroughView, lessonsShown }
       if (fetch) walkthroughView();
       walkthrough.plots.resize();
     }
-    if (name === 'lessons') lessonsShown();
     walkthrough.closeInspect();
   }
 
