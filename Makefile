@@ -12,7 +12,7 @@ wasm: setup
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
 # The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one module,
-# dist/web/main.js: a load asks for one file, not thirty found level by level. The worker's
+# dist/web/main.js: a load asks for one file, not one per module found level by level. The worker's
 # modules stay apart (the core's glue finds the WASM module beside itself).
 dist: wasm
 	mkdir -p dist/web dist/vendor/katex/fonts
