@@ -102,8 +102,9 @@ const run = createRun({
     pins.afterRun();
     sweeps.afterRun();
     challenge.check();
-    // Typesets the walkthrough's waiting equations while the page is idle.
-    walkthrough.typesetWhenIdle();
+    // So that the walkthrough's first showing need not typeset every equation at once (an embed
+    // never shows it).
+    if (!document.body.classList.contains('embed')) walkthrough.typesetWhenIdle();
   },
 });
 const settings = createSettings({

@@ -143,6 +143,7 @@ export class Walkthrough {
     this.stale = false; // the plots wait for the view of the last run
     this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
     this.opened = false; // whether the walkthrough has been shown
+    this.typesetting = false; // whether equations are being typeset while the page is idle
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
       onWindow, onFull, onPick, framing, height: 220,
@@ -232,6 +233,7 @@ export class Walkthrough {
   /** Typesets the equations still waiting a few at a time while the page is idle, so that the
    * walkthrough's first showing need not typeset them all at once; `shown` does what is left. */
   typesetWhenIdle() {
+    if (this.typesetting) return;
     // Where the browser lacks idle callbacks: 10 ms slices 50 ms apart.
     const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(() => {
       const end = performance.now() + 10;
@@ -245,7 +247,9 @@ export class Walkthrough {
         }
         typesetWaiting(span);
       }
+      this.typesetting = false;
     };
+    this.typesetting = true;
     idle(some);
   }
 

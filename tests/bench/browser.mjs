@@ -73,9 +73,9 @@ async function repetition() {
   await run('v=1&preset=ramp&duration=5');
   // View requests on a 5 s run, from the request to the next painted frame after the plots took
   // the answer: a zoom to 1 s (a replay of that window), the whole run again (the overview
-  // the run kept), and the walkthrough opened after a run on the plots tab: the first time (its
-  // equations typeset, and a replay of the whole run for its plots), and after another run (whose
-  // view of the walkthrough's plots came with the run).
+  // the run kept), and the walkthrough opened after a run on the plots tab: the first time (the
+  // equations the page has not typeset while idle typeset now, and a replay of the whole run for
+  // its plots), and after another run (whose view of the walkthrough's plots came with the run).
   const viewMs = (request) => page.evaluate((request) => new Promise((resolve) => {
     const start = performance.now();
     const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
@@ -151,7 +151,7 @@ console.log(`  closed loop, ramp 5 s, first run after load: ${steps('longFirst')
 console.log(`  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`);
 console.log(`  first run after load / warm (5 s ramp, each load's own pair): ${spread('firstOverWarm', 2)}   [target ≥ 0.70]`);
 console.log(`  closed loop, ramp 1 s, best of 10 runs: ${steps('short')}`);
-console.log(`  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with its equations typeset, ${spread('walkFirstMs', 0)} ms), and back to the plots ${spread('backMs', 0)} ms`);
+console.log(`  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with a replay for its plots, ${spread('walkFirstMs', 0)} ms), and back to the plots ${spread('backMs', 0)} ms`);
 console.log(`  overlay of a 5 s run and a pin of it: a column the runs keep ${spread('overlayKeptMs', 0)} ms; another column (one replay of each) ${spread('overlayNewMs', 0)} ms`);
 
 const page = await newPage(browser, errors);

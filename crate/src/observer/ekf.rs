@@ -126,18 +126,12 @@ pub struct Estimate {
 }
 
 impl Estimate {
-    /// Normalised innovation squared, as [`Filter::nis`]; computed when asked for (the loop needs
-    /// it for the samples it records only).
+    /// Normalised innovation squared ỹᵀ S⁻¹ ỹ (χ² with 2 degrees of freedom when consistent),
+    /// computed when asked for: the loop needs it for the samples it records only.
     pub fn nis(&self) -> f64 {
-        nis(&self.innovation, &self.innovation_cov)
+        let ([e1, e2], [s11, s12, s22]) = (self.innovation, self.innovation_cov);
+        (s22 * e1 * e1 - 2.0 * s12 * e1 * e2 + s11 * e2 * e2) / (s11 * s22 - s12 * s12)
     }
-}
-
-/// Normalised innovation squared ỹᵀ S⁻¹ ỹ of the innovation `e` and S = [s11, s12, s22].
-#[inline]
-fn nis(e: &[f64; 2], s: &[f64; 3]) -> f64 {
-    let ([e1, e2], [s11, s12, s22]) = (*e, *s);
-    (s22 * e1 * e1 - 2.0 * s12 * e1 * e2 + s11 * e2 * e2) / (s11 * s22 - s12 * s12)
 }
 
 /// A symmetric matrix from a function evaluated on the upper triangle only.
@@ -406,20 +400,10 @@ impl<const N: usize> Filter<N> {
         m
     }
 
-    /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample.
+    /// Predict step, eqs (13)–(14), with the input u_{k−1} held over the sample, on nalgebra
+    /// matrices. [`Filter::sample`] runs the paper's filter (N = 5, Euler) on plain arrays
+    /// instead, with the same bits.
     pub fn predict(&mut self, u: &Input) {
-        if N == 5 && self.predictor == Predictor::Euler {
-            let q: [f64; 5] = std::array::from_fn(|i| self.q[(i, i)]);
-            let (m, ts) = (self.model, self.ts);
-            let (x, p) = self.plain5();
-            euler5_predict(&m, ts, &q, u, x, p);
-        } else {
-            self.predict_general(u);
-        }
-    }
-
-    /// [`Filter::predict`] for any N and predictor, on nalgebra matrices.
-    fn predict_general(&mut self, u: &Input) {
         let (x_next, phi) = match self.predictor {
             Predictor::Euler => (
                 self.euler_state(u),
@@ -633,11 +617,6 @@ impl<const N: usize> Filter<N> {
     pub fn innovation_cov(&self) -> [f64; 3] {
         [self.s[(0, 0)], self.s[(0, 1)], self.s[(1, 1)]]
     }
-
-    /// Normalised innovation squared ỹᵀ S⁻¹ ỹ (χ² with 2 degrees of freedom when consistent).
-    pub fn nis(&self) -> f64 {
-        nis(&self.innovation(), &self.innovation_cov())
-    }
 }
 
 /// Two-sided `confidence` interval of one sample's NIS when the filter is consistent: χ² with
@@ -739,9 +718,9 @@ mod tests {
         }
     }
 
-    /// The five-state filter's plain-array steps (the fused sample, `predict`, `update`) against
-    /// the general steps on nalgebra matrices: the same bits, sample after sample, and P exactly
-    /// symmetric (which the plain prediction's Φ·P relies on).
+    /// The five-state filter's plain-array steps (the fused sample, and `update` after the general
+    /// prediction) against the general steps on nalgebra matrices: the same bits, sample after
+    /// sample, and P exactly symmetric (which the plain prediction's Φ·P relies on).
     #[test]
     fn five_state_steps_match_the_general_steps() {
         let params = MotorParams::PAPER;
@@ -776,7 +755,7 @@ mod tests {
                 fused.sample(u, &y);
                 if let Some(u) = u {
                     split.predict(u);
-                    general.predict_general(u);
+                    general.predict(u);
                 }
                 split.update(&y);
                 general.update_general(&y);
