@@ -119,9 +119,21 @@ test('an invalid edit names the field and blocks Run until fixed', () =>
 test('Cancel stops a long run', () =>
   withPage('v=1&preset=step', async (page) => {
     await settled(page);
-    await page.goto(`${suite.server.url}?v=1&preset=ramp&duration=20`);
-    await page.waitForFunction(() => document.body.dataset.state === 'running' && document.getElementById('progress').value > 0);
-    await page.click('#cancel');
+    // The longest run a link can ask for (about a million samples), cancelled by the page as soon
+    // as its first progress shows: the run cannot end first, however fast or busy the machine.
+    await page.goto(`${suite.server.url}?v=1&preset=step&duration=20&ts=0.00001878`);
+    await page.evaluate(() => new Promise((resolve) => {
+      // Each progress message rewrites the status line, which the observer sees.
+      const cancelOnProgress = () => {
+        if (document.body.dataset.state !== 'running' || !(document.getElementById('progress').value > 0)) return;
+        observer.disconnect();
+        document.getElementById('cancel').click();
+        resolve();
+      };
+      const observer = new MutationObserver(cancelOnProgress);
+      observer.observe(document.body, { attributes: true, subtree: true, characterData: true, childList: true });
+      cancelOnProgress();
+    }));
     assert.equal(await settled(page), 'cancelled');
     const progress = await page.evaluate(() => document.getElementById('progress').value);
     assert.ok(progress < 1, `progress ${progress}`);
