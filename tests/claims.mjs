@@ -160,25 +160,129 @@ export class Core {
   }
 }
 
+/** The seeds a statement that the noise moves is checked over. */
+export const SEEDS = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10];
+
+/** `run` with noise seed `seed`. */
+export const withSeed = (run, seed) => `${run}&seed=${seed}`;
+
+// Words that make a sentence causal: each occurrence must lie inside the phrase of a 'cause'
+// check, which removes the named cause and shows the effect go (or stay, for "not because").
+const CAUSAL = /\b(?:because|set by|comes? from|caused by|due to|is why|that is why)\b/gu;
+
+/** A phrase's text as it stands in the text (brackets removed) and its bracketed numbers. */
+function parsePhrase(phrase) {
+  const measured = [...phrase.matchAll(/\[([^\]]*)\]/g)].map((m) => m[1]);
+  return { plain: phrase.replace(/\[([^\]]*)\]/g, '$1'), measured };
+}
+
+/** Every index at which `needle` starts in `text`. */
+function occurrences(text, needle) {
+  const out = [];
+  for (let i = text.indexOf(needle); i >= 0; i = text.indexOf(needle, i + 1)) out.push(i);
+  return out;
+}
+
+// Each check's measured result, computed once: the swap test reads a text many times.
+const measuredOf = new WeakMap();
+
+/** What check `check` measures: a value, a [least, largest] pair over seeds, or a boolean. */
+function measure(check, core) {
+  if (!measuredOf.has(check)) {
+    const [, kind, fn] = check;
+    let result;
+    if (typeof kind === 'object' && kind.seeds) {
+      const values = kind.seeds.map((seed) => fn(core, seed));
+      result = kind.range !== undefined ? [Math.min(...values), Math.max(...values)] : values;
+    } else {
+      result = fn(core);
+    }
+    measuredOf.set(check, result);
+  }
+  return measuredOf.get(check);
+}
+
 /**
- * What is wrong with `text` against `spec` ({givens, checks}): every number of the text must be
- * a given (a setting of a run, written in `givens`) or the text of a check; every given and check
- * must be in the text; every check [written, tolerance, measure] must measure within tolerance of
- * the number written, and every [label, 'claim', test] must hold. Returns the problems, [] if none.
+ * What is wrong with `text` against `spec` ({givens, checks}). Returns the problems, [] if none.
+ *
+ * Every phrase is written as it stands in the text, so that a check is tied to its neighbouring
+ * words: moving its number to another place fails. A given is a setting of a run ('at 0.3 s');
+ * a check is [phrase, kind, measure] with the numbers it measures in brackets
+ * ('[5.0] rad/s low at 0.3 s'), and kind one of
+ * - a number: the tolerance of the one bracketed number against measure(core);
+ * - {tol, seeds}: the same on every seed of `seeds` (a figure the noise does not move),
+ *   measure(core, seed);
+ * - {range: tol, seeds}: two bracketed numbers, the least and the largest of measure(core, seed)
+ *   over the seeds (a figure the noise moves, stated as its range), in either order;
+ * - 'claim': measure(core) must be true;
+ * - 'cause': a claim that removes the cause the phrase names (and shows the effect go, or stay
+ *   for "not because"); every causal word of the text must be inside such a phrase.
+ * Every phrase must be in the text, and every number of the text inside a given or a check.
  */
 export function checkText(text, spec, core) {
   const problems = [];
-  const inText = new Set(numbersIn(text));
-  const claimed = new Set([...spec.givens, ...spec.checks.map((c) => c[0])].flatMap(numbersIn));
-  for (const n of inText) if (!claimed.has(n)) problems.push(`${n}: in the text, but neither a given nor checked`);
-  for (const n of claimed) if (!inText.has(n)) problems.push(`${n}: checked or given, but not in the text`);
-  for (const [written, tolerance, measure] of spec.checks) {
-    if (tolerance === 'claim') {
-      if (!measure(core)) problems.push(`claim "${written}" does not hold`);
-      continue;
+  const covered = new Array(text.length).fill(false);
+  const cover = (plain, what) => {
+    const at = occurrences(text, plain);
+    if (!at.length) problems.push(`${what} "${plain}": not in the text`);
+    for (const i of at) covered.fill(true, i, i + plain.length);
+    return at;
+  };
+  for (const given of spec.givens) cover(given, 'given');
+  const causal = new Array(text.length).fill(false);
+  for (const check of spec.checks) {
+    const [phrase, kind] = check;
+    const { plain, measured } = parsePhrase(phrase);
+    const at = cover(plain, 'check');
+    if (kind === 'cause') for (const i of at) causal.fill(true, i, i + plain.length);
+    if (!at.length) continue;
+    const result = measure(check, core);
+    if (kind === 'claim' || kind === 'cause') {
+      if (!result) problems.push(`${kind} "${plain}" does not hold`);
+    } else if (typeof kind === 'number') {
+      if (measured.length !== 1) problems.push(`"${phrase}": a value check brackets one number`);
+      else if (!(Math.abs(result - valueOf(measured[0])) <= kind)) problems.push(`${measured[0]} in "${plain}": the run gives ${result} (tolerance ${kind})`);
+    } else if (kind.range !== undefined) {
+      const [lo, hi] = measured.map(valueOf).sort((a, b) => a - b);
+      if (measured.length !== 2) problems.push(`"${phrase}": a range brackets two numbers`);
+      else if (!(Math.abs(result[0] - lo) <= kind.range && Math.abs(result[1] - hi) <= kind.range)) {
+        problems.push(`${measured.join(' to ')} in "${plain}": seeds ${kind.seeds[0]}–${kind.seeds.at(-1)} give ${result[0]} to ${result[1]} (tolerance ${kind.range})`);
+      }
+    } else {
+      if (measured.length !== 1) problems.push(`"${phrase}": a value check brackets one number`);
+      const bad = kind.seeds.filter((_, i) => !(Math.abs(result[i] - valueOf(measured[0])) <= kind.tol));
+      if (bad.length) problems.push(`${measured[0]} in "${plain}": not within ${kind.tol} on seeds ${bad.join(', ')} (${result.map((v) => v.toPrecision(4)).join(', ')})`);
     }
-    const value = measure(core);
-    if (!(Math.abs(value - valueOf(written)) <= tolerance)) problems.push(`${written}: the run gives ${value} (tolerance ${tolerance})`);
+  }
+  for (const m of text.matchAll(NUMBER)) {
+    if (!covered.slice(m.index, m.index + m[0].length).every(Boolean)) problems.push(`${m[0]} at "${context(text, m.index)}": in the text, but neither a given nor checked`);
+  }
+  for (const m of text.matchAll(CAUSAL)) {
+    if (!causal[m.index]) problems.push(`"${m[0]}" at "${context(text, m.index)}": a causal sentence with no check that removes its cause`);
   }
   return problems;
+}
+
+/** A few words of `text` around index `i`. */
+function context(text, i) {
+  return text.slice(Math.max(0, i - 30), i + 30).replace(/\s+/g, ' ');
+}
+
+/**
+ * The swaps of two numbers of `text` (different as written) that `checkText` does not notice:
+ * each is [first, second, the context of the first]. A text whose checks are tied to their
+ * places gives none.
+ */
+export function unnoticedSwaps(text, spec, core) {
+  const found = [...text.matchAll(NUMBER)];
+  const out = [];
+  for (let a = 0; a < found.length; a++) {
+    for (let b = a + 1; b < found.length; b++) {
+      const [x, y] = [found[a], found[b]];
+      if (x[0] === y[0]) continue;
+      const swapped = text.slice(0, x.index) + y[0] + text.slice(x.index + x[0].length, y.index) + x[0] + text.slice(y.index + y[0].length);
+      if (!checkText(swapped, spec, core).length) out.push([x[0], y[0], context(text, x.index)]);
+    }
+  }
+  return out;
 }
