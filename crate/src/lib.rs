@@ -5,7 +5,8 @@
 //! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`record`] (what a run keeps,
 //! and the figures read from it) → [`sim`] (the 20 kHz loop, advanced in chunks). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
-//! runs many simulations (frequency responses, seed sweeps); [`quote`] is how every message quotes
+//! runs many simulations (frequency responses, seed sweeps); [`robust`] maps a run over model
+//! errors and seeds; [`quote`] is how every message quotes
 //! user input.
 
 pub mod analysis;
@@ -18,6 +19,7 @@ pub mod params;
 pub mod quote;
 pub mod record;
 pub mod rng;
+pub mod robust;
 pub mod scenario;
 pub mod sim;
 

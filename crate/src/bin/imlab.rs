@@ -8,6 +8,7 @@ use imlab::analysis::{
 };
 use imlab::challenge::{judge, measure, Challenge, Measures, Verdict, BUILTINS};
 use imlab::record::Figure;
+use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::fmt;
@@ -126,6 +127,39 @@ enum Command {
         /// scenario's seed]
         #[arg(long, value_name = "SEED", allow_hyphen_values = true)]
         first: Option<String>,
+    },
+    /// Run the scenario over a grid of motor or model parameters and seeds: a model-error map
+    ///
+    /// Each grid point (cell) runs once per seed, on all cores. The CSV has one row a cell, in
+    /// order (the last --vary fastest), written as soon as the cell and every cell before it are
+    /// done: the axis values and their errors against the other side (in %), the number of runs,
+    /// of runs that ran away (the runaway warning, or a diverged simulation) and of runs whose
+    /// EKF was inconsistent, then the minimum, median and maximum over the completed runs of
+    /// tracking_rms, tracking_peak, speed_error_final, speed_estimate_error_final,
+    /// flux_error_final, current_peak, saturated_share and mean_nis, then the cell's scenario.
+    Robust {
+        #[command(flatten)]
+        target: ScenarioArg,
+        /// A parameter and its values, KEY=LO..HI:N: N evenly spaced values (1 ≤ N ≤ 101) of a
+        /// plant.* or model.* key; LO and HI are values, or both relative errors in per cent
+        /// against the other side's value (plant.rr=-10%..+10%:11: the motor's R_r from 10 %
+        /// below to 10 % above the model's). Once or twice
+        #[arg(
+            long,
+            value_name = "KEY=LO..HI:N",
+            required = true,
+            allow_hyphen_values = true,
+            action = clap::ArgAction::Append
+        )]
+        vary: Vec<String>,
+        /// Seeds run at every point, A..B (at most 1000)
+        #[arg(
+            long,
+            value_name = "A..B",
+            default_value = "1..10",
+            allow_hyphen_values = true
+        )]
+        seeds: String,
     },
     /// Print a challenge's canonical link and brief; --list names the built-in ones
     Challenge {
@@ -292,6 +326,20 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             };
             let range = seed_range(first, n).map_err(|e| format!("--first, --n: {e}"))?;
             seeds(&s, range, out)
+        }
+        Command::Robust {
+            target,
+            vary,
+            seeds,
+        } => {
+            let s = target.parse()?;
+            let axes = vary
+                .iter()
+                .map(|a| Axis::parse(&s, a).map_err(|e| format!("--vary: {e}")))
+                .collect::<Result<Vec<_>, _>>()?;
+            let seeds = robust::parse_seeds(&seeds).map_err(|e| format!("--seeds: {e}"))?;
+            let map = Map::plan(&s, axes, seeds)?;
+            robust_map(&map, out)
         }
         Command::Challenge { challenge, list } => match challenge {
             Some(text) if !list => show_challenge(&text, out),
@@ -498,6 +546,72 @@ fn seeds(
     let results = results.map_err(|e| e.to_string())?;
     out.write_all(seeds_csv(&results).as_bytes())
         .map_err(stdout_stop)
+}
+
+/// Runs every cell of `map` once per seed on all cores, with progress on stderr, and writes each
+/// cell's row as soon as it and every cell before it are done (flushed, so that an interrupted
+/// map keeps the rows it finished).
+fn robust_map(map: &Map, out: &mut impl Write) -> Result<(), Stop> {
+    let per_cell = map.seeds.len();
+    let total = map.cells.len() * per_cell;
+    let threads = std::thread::available_parallelism()
+        .map_or(1, |n| n.get())
+        .min(total);
+    out.write_all(csv_preamble(map).as_bytes())
+        .and_then(|()| out.flush())
+        .map_err(stdout_stop)?;
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    let stop = std::sync::atomic::AtomicBool::new(false);
+    let (send, receive) = std::sync::mpsc::channel::<(usize, Result<MapRun, String>)>();
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            let send = send.clone();
+            let (next, stop) = (&next, &stop);
+            scope.spawn(move || loop {
+                let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                if i >= total || stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    break;
+                }
+                let (cell, seed) = (&map.cells[i / per_cell], map.seeds[i % per_cell]);
+                if send.send((i, map_run(&cell.scenario, seed))).is_err() {
+                    break;
+                }
+            });
+        }
+        drop(send);
+        let mut runs: Vec<Option<MapRun>> = vec![None; total];
+        let (mut written, mut done) = (0, 0);
+        let result = (|| {
+            for (i, run) in receive.iter() {
+                runs[i] =
+                    Some(run.map_err(|e| format!("{}: {e}", map.cells[i / per_cell].scenario))?);
+                done += 1;
+                to_stderr(format_args!("\rimlab robust: {done}/{total} runs   "));
+                while written < map.cells.len()
+                    && runs[written * per_cell..(written + 1) * per_cell]
+                        .iter()
+                        .all(Option::is_some)
+                {
+                    let cell_runs: Vec<MapRun> = runs[written * per_cell..(written + 1) * per_cell]
+                        .iter_mut()
+                        .map(|r| r.take().expect("checked"))
+                        .collect();
+                    let row = csv_row(map, &robust::summarise(&map.cells[written], &cell_runs));
+                    out.write_all(row.as_bytes())
+                        .and_then(|()| out.flush())
+                        .map_err(stdout_stop)?;
+                    written += 1;
+                }
+            }
+            Ok(())
+        })();
+        if result.is_err() {
+            stop.store(true, std::sync::atomic::Ordering::Relaxed);
+        }
+        // Ends the progress line, so that an error message starts a line of its own.
+        to_stderr(format_args!("\n"));
+        result
+    })
 }
 
 /// Writes the built-in challenges, one `name  summary` line each.

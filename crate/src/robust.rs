@@ -1,0 +1,595 @@
+//! Model-error maps: a scenario run over a grid of one or two motor or model parameters, times
+//! the noise seeds, to show how far a result holds when the model the EKF and controller use is
+//! not the motor. The CLI (`imlab robust`), the page's workers and the tests share these
+//! functions: [`Map::plan`] checks and bounds the grid before any run, [`map_run`] is one run of
+//! one cell, [`summarise`] turns a cell's runs into its row and [`map_csv`] writes the rows.
+
+use crate::quote::excerpt;
+use crate::scenario::{short, Scenario, MAX_SEED};
+use crate::sim::Simulation;
+use serde::{Deserialize, Serialize};
+
+/// The figures a map keeps of each run, by their `imlab metrics` names.
+pub const MAP_FIGURES: &[&str] = &[
+    "tracking_rms",
+    "tracking_peak",
+    "speed_error_final",
+    "speed_estimate_error_final",
+    "flux_error_final",
+    "current_peak",
+    "saturated_share",
+    "mean_nis",
+];
+
+/// Most points on one axis.
+pub const MAX_POINTS: usize = 101;
+
+/// Most seeds a map runs at each cell.
+pub const MAX_MAP_SEEDS: u64 = 1000;
+
+/// Most plant steps (samples × RK4 substeps) a whole map may take: 40 of the longest single runs
+/// the codec accepts, a few minutes on each of two cores.
+pub const MAX_MAP_WORK: u64 = 400_000_000;
+
+/// One axis of a map: a motor (`plant.*`) or model (`model.*`) parameter and its values.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Axis {
+    /// The scenario key, e.g. `plant.rr`.
+    pub key: String,
+    /// The axis as written, `KEY=LO..HI:N`, for the map's text.
+    pub text: String,
+    /// The key's values, in order.
+    pub values: Vec<f64>,
+    /// Each value's relative error against the other side's value in the base scenario (the
+    /// model's for a `plant.*` key, the motor's for a `model.*` key): value / theirs − 1.
+    pub errors: Vec<f64>,
+}
+
+/// One cell of a map: its values on each axis and the scenario that runs there.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct CellPlan {
+    /// The cell's value on each axis.
+    pub values: Vec<f64>,
+    /// The base scenario with those values, as the codec writes it (its seed is replaced by
+    /// each of the map's seeds).
+    pub scenario: String,
+}
+
+/// A checked map: its axes, its cells (the first axis varying slowest) and its seeds.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Map {
+    /// The base scenario, as the codec writes it.
+    pub scenario: String,
+    /// One or two axes.
+    pub axes: Vec<Axis>,
+    /// The cells, the last axis varying fastest.
+    pub cells: Vec<CellPlan>,
+    /// The noise seeds run at every cell, in order.
+    pub seeds: Vec<u64>,
+    /// Plant steps the whole map takes.
+    pub work: u64,
+}
+
+/// One run of one cell: the figures of [`MAP_FIGURES`] (NaN where the run has none) and what
+/// went wrong.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct MapRun {
+    /// The noise seed.
+    pub seed: u64,
+    /// The figures, in the order of [`MAP_FIGURES`].
+    pub figures: Vec<f64>,
+    /// The run ran away: it ended with the "runaway" warning, or the simulation stopped because
+    /// a state diverged.
+    pub ran_away: bool,
+    /// The EKF's mean NIS was far outside a consistent filter's band (the "inconsistent"
+    /// warning).
+    pub inconsistent: bool,
+    /// Why the simulation stopped early, if it did.
+    pub failure: Option<String>,
+}
+
+/// A cell's row: how many runs ran away or were inconsistent, and each figure's minimum,
+/// median and maximum over the runs that completed.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Cell {
+    /// The cell's value on each axis.
+    pub values: Vec<f64>,
+    /// The cell's scenario (see [`CellPlan::scenario`]).
+    pub scenario: String,
+    /// Runs (one a seed).
+    pub runs: usize,
+    /// Runs that ran away (see [`MapRun::ran_away`]).
+    pub ran_away: usize,
+    /// Runs whose filter was inconsistent.
+    pub inconsistent: usize,
+    /// Per figure of [`MAP_FIGURES`]: [minimum, median, maximum] over the runs that completed
+    /// (the simulation did not stop early) and have the figure; NaN when none has.
+    pub stats: Vec<[f64; 3]>,
+}
+
+/// The other side of a motor or model key (`plant.rr` ↔ `model.rr`), or None for other keys.
+fn counterpart(key: &str) -> Option<String> {
+    if let Some(name) = key.strip_prefix("plant.") {
+        Some(format!("model.{name}"))
+    } else {
+        key.strip_prefix("model.")
+            .map(|name| format!("plant.{name}"))
+    }
+}
+
+/// The value of numeric field `key` of `s`.
+fn value_of(s: &Scenario, key: &str) -> Option<f64> {
+    s.describe()
+        .into_iter()
+        .find(|f| f.key == key)
+        .and_then(|f| f.value)
+        .and_then(|v| v.parse().ok())
+}
+
+/// One end of an axis: a number, or a relative error in per cent (`-10%`, `+5%`).
+fn end(text: &str, what: &str) -> Result<(f64, bool), String> {
+    let t = text.trim();
+    let (number, relative) = match t.strip_suffix('%') {
+        Some(n) => (n, true),
+        None => (t, false),
+    };
+    let v: f64 = number
+        .strip_prefix('+')
+        .unwrap_or(number)
+        .parse()
+        .ok()
+        .filter(|v: &f64| v.is_finite())
+        .ok_or_else(|| {
+            format!(
+                "{what} '{}': expected a number or a percentage such as -10%",
+                excerpt(text)
+            )
+        })?;
+    Ok((if relative { v / 100.0 } else { v }, relative))
+}
+
+impl Axis {
+    /// Parses `KEY=LO..HI:N` against the base scenario `base`: N values evenly spaced from LO to
+    /// HI. LO and HI are both values of KEY or both relative errors in per cent against the
+    /// other side's value in `base` (`plant.rr=-10%..+10%:11`: the motor's R_r from 10 % below
+    /// to 10 % above the model's). N = 1 takes LO alone.
+    pub fn parse(base: &Scenario, text: &str) -> Result<Axis, String> {
+        let form = "expected KEY=LO..HI:N, e.g. plant.rr=-10%..+10%:11";
+        let (key, rest) = text
+            .split_once('=')
+            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
+        let key = key.trim();
+        let other = counterpart(key).ok_or_else(|| {
+            format!(
+                "axis '{}': {} is not a motor or model parameter (plant.* or model.*)",
+                excerpt(text),
+                excerpt(key)
+            )
+        })?;
+        let theirs = value_of(base, &other)
+            .ok_or_else(|| format!("axis '{}': no parameter {}", excerpt(text), excerpt(key)))?;
+        if key.ends_with(".np") {
+            return Err(format!(
+                "axis '{}': the pole pairs are whole numbers; map a continuous parameter",
+                excerpt(text)
+            ));
+        }
+        let (range, count) = rest
+            .rsplit_once(':')
+            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
+        let (lo, hi) = range
+            .split_once("..")
+            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
+        let (lo_text, hi_text) = (lo.trim(), hi.trim());
+        let (lo, lo_rel) = end(lo_text, &format!("axis {key}: LO"))?;
+        let (hi, hi_rel) = end(hi_text, &format!("axis {key}: HI"))?;
+        if lo_rel != hi_rel {
+            return Err(format!(
+                "axis '{}': LO and HI must both be values or both percentages",
+                excerpt(text)
+            ));
+        }
+        let n: usize = count
+            .trim()
+            .parse()
+            .ok()
+            .filter(|n| (1..=MAX_POINTS).contains(n))
+            .ok_or_else(|| {
+                format!(
+                    "axis {key}: N '{}': expected a whole number from 1 to {MAX_POINTS}",
+                    excerpt(count)
+                )
+            })?;
+        if lo > hi {
+            return Err(format!(
+                "axis {key}: LO ({}) is above HI ({})",
+                excerpt(lo_text),
+                excerpt(hi_text)
+            ));
+        }
+        let at = |i: usize| {
+            if n == 1 {
+                lo
+            } else {
+                lo + (hi - lo) * i as f64 / (n - 1) as f64
+            }
+        };
+        // A relative point's value is written as a user would type it (5.1975, not
+        // 5.197500000000001), so a cell's scenario is the one its link names.
+        let values: Vec<f64> = (0..n)
+            .map(|i| {
+                if lo_rel {
+                    rounded(theirs * (1.0 + at(i)))
+                } else {
+                    at(i)
+                }
+            })
+            .collect();
+        let errors = values.iter().map(|v| rounded(v / theirs - 1.0)).collect();
+        Ok(Axis {
+            key: key.to_string(),
+            text: format!("{key}={lo_text}..{hi_text}:{n}"),
+            values,
+            errors,
+        })
+    }
+}
+
+/// `v` to 12 significant digits: the rounding of a product such as 4.95 × 1.05 removed.
+fn rounded(v: f64) -> f64 {
+    format!("{v:.11e}").parse().unwrap_or(v)
+}
+
+/// Parses `A..B` (seeds A to B) or a single seed.
+pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
+    let whole = |t: &str| {
+        t.trim()
+            .parse::<u64>()
+            .ok()
+            .filter(|s| *s <= MAX_SEED)
+            .ok_or_else(|| {
+                format!(
+                    "seeds '{}': expected A..B, whole numbers from 0 to 2^53 − 1",
+                    excerpt(text)
+                )
+            })
+    };
+    let (a, b) = match text.split_once("..") {
+        Some((a, b)) => (whole(a)?, whole(b)?),
+        None => {
+            let s = whole(text)?;
+            (s, s)
+        }
+    };
+    if a > b {
+        return Err(format!(
+            "seeds '{}': the first seed is above the last",
+            excerpt(text)
+        ));
+    }
+    if b - a + 1 > MAX_MAP_SEEDS {
+        return Err(format!(
+            "seeds '{}': {} seeds, more than the {MAX_MAP_SEEDS} a map runs",
+            excerpt(text),
+            b - a + 1
+        ));
+    }
+    Ok((a..=b).collect())
+}
+
+impl Map {
+    /// Checks a map of `base` over `axes` (one or two, of different keys) and `seeds`: every
+    /// cell's scenario must be valid, and the whole map's work within [`MAX_MAP_WORK`]; refused
+    /// before any run, with the number it would need.
+    pub fn plan(base: &Scenario, axes: Vec<Axis>, seeds: Vec<u64>) -> Result<Map, String> {
+        if axes.is_empty() || axes.len() > 2 {
+            return Err(format!("{} axes: a map has one or two", axes.len()));
+        }
+        if axes.len() == 2 && axes[0].key == axes[1].key {
+            return Err(format!("both axes vary {}: choose two keys", axes[0].key));
+        }
+        if seeds.is_empty() {
+            return Err("no seeds: a map runs at least one".to_string());
+        }
+        let shape: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
+        let count: usize = shape.iter().product();
+        let mut cells = Vec::with_capacity(count);
+        let mut work: u64 = 0;
+        for index in 0..count {
+            let mut s = base.clone();
+            let mut rest = index;
+            let mut values = vec![0.0; axes.len()];
+            for (k, axis) in axes.iter().enumerate().rev() {
+                let i = rest % shape[k];
+                rest /= shape[k];
+                values[k] = axis.values[i];
+                s.set(&axis.key, &axis.values[i].to_string())
+                    .map_err(|e| format!("{}={}: {e}", axis.key, short(axis.values[i])))?;
+            }
+            work = work.saturating_add(
+                (s.steps() as u64)
+                    .saturating_mul(s.plant_steps_per_sample())
+                    .saturating_mul(seeds.len() as u64),
+            );
+            cells.push(CellPlan {
+                values,
+                scenario: s.encode(),
+            });
+        }
+        if work > MAX_MAP_WORK {
+            return Err(format!(
+                "the map needs {work} plant steps ({count} cells × {} seeds × the steps of a run), \
+                 more than the {MAX_MAP_WORK} allowed; use fewer points or seeds, or a shorter \
+                 'duration'",
+                seeds.len()
+            ));
+        }
+        Ok(Map {
+            scenario: base.encode(),
+            axes,
+            cells,
+            seeds,
+            work,
+        })
+    }
+
+    /// Parses the map's text `AXIS[;AXIS][;seeds=A..B]` (AXIS as in [`Axis::parse`]; seeds 1..10
+    /// when not given) against `base`, then checks it (see [`Map::plan`]).
+    pub fn parse(base: &Scenario, text: &str) -> Result<Map, String> {
+        let mut axes = Vec::new();
+        let mut seeds = None;
+        for part in text.split(';').filter(|p| !p.trim().is_empty()) {
+            match part.trim().strip_prefix("seeds=") {
+                Some(range) => seeds = Some(parse_seeds(range)?),
+                None => axes.push(Axis::parse(base, part)?),
+            }
+        }
+        Map::plan(base, axes, seeds.unwrap_or_else(|| (1..=10).collect()))
+    }
+
+    /// The map's text, as [`Map::parse`] reads it.
+    pub fn text(&self) -> String {
+        let mut parts: Vec<String> = self.axes.iter().map(|a| a.text.clone()).collect();
+        parts.push(format!(
+            "seeds={}..{}",
+            self.seeds[0],
+            self.seeds[self.seeds.len() - 1]
+        ));
+        parts.join(";")
+    }
+}
+
+/// Runs cell scenario `scenario` (as the codec writes it) with noise seed `seed`.
+pub fn map_run(scenario: &str, seed: u64) -> Result<MapRun, String> {
+    let mut s = Scenario::parse(scenario).map_err(|e| e.to_string())?;
+    s.seed = seed;
+    let mut sim = Simulation::traced(&s).map_err(|e| e.to_string())?;
+    let failure = sim.run().err().map(|e| e.to_string());
+    let report = sim.report();
+    let list = report.figures.unwrap_or_default();
+    let figures = MAP_FIGURES
+        .iter()
+        .map(|name| {
+            list.iter()
+                .find(|f| f.name == *name)
+                .map_or(f64::NAN, |f| f.value)
+        })
+        .collect();
+    let warned = |kind: &str| report.warnings.iter().any(|w| w.kind == kind);
+    Ok(MapRun {
+        seed,
+        figures,
+        ran_away: failure.is_some() || warned("runaway"),
+        inconsistent: warned("inconsistent"),
+        failure,
+    })
+}
+
+/// Minimum, median and maximum of `values` (NaN for none).
+fn stats(mut values: Vec<f64>) -> [f64; 3] {
+    if values.is_empty() {
+        return [f64::NAN; 3];
+    }
+    values.sort_by(f64::total_cmp);
+    let n = values.len();
+    let median = if n % 2 == 1 {
+        values[n / 2]
+    } else {
+        0.5 * (values[n / 2 - 1] + values[n / 2])
+    };
+    [values[0], median, values[n - 1]]
+}
+
+/// The row of `cell` from its runs (one a seed; their order does not matter).
+pub fn summarise(cell: &CellPlan, runs: &[MapRun]) -> Cell {
+    let done: Vec<&MapRun> = runs.iter().filter(|r| r.failure.is_none()).collect();
+    Cell {
+        values: cell.values.clone(),
+        scenario: cell.scenario.clone(),
+        runs: runs.len(),
+        ran_away: runs.iter().filter(|r| r.ran_away).count(),
+        inconsistent: runs.iter().filter(|r| r.inconsistent).count(),
+        stats: (0..MAP_FIGURES.len())
+            .map(|k| {
+                stats(
+                    done.iter()
+                        .map(|r| r.figures[k])
+                        .filter(|v| v.is_finite())
+                        .collect(),
+                )
+            })
+            .collect(),
+    }
+}
+
+/// The header of a map's CSV.
+pub fn csv_header(map: &Map) -> String {
+    let mut cols: Vec<String> = Vec::new();
+    for a in &map.axes {
+        let other = if a.key.starts_with("plant.") {
+            "model"
+        } else {
+            "plant"
+        };
+        cols.push(a.key.clone());
+        cols.push(format!("{}_vs_{other}_pct", a.key));
+    }
+    cols.extend(["runs", "ran_away", "inconsistent"].map(String::from));
+    for f in MAP_FIGURES {
+        for s in ["min", "median", "max"] {
+            cols.push(format!("{f}_{s}"));
+        }
+    }
+    cols.push("scenario".to_string());
+    cols.join(",") + "\n"
+}
+
+/// A number for the CSV: empty when it is not finite.
+fn field(v: f64) -> String {
+    if v.is_finite() {
+        v.to_string()
+    } else {
+        String::new()
+    }
+}
+
+/// One row of a map's CSV.
+pub fn csv_row(map: &Map, cell: &Cell) -> String {
+    let mut cols: Vec<String> = Vec::new();
+    for (a, v) in map.axes.iter().zip(&cell.values) {
+        let i = a.values.iter().position(|x| x == v).unwrap_or(0);
+        cols.push(field(*v));
+        cols.push(field(100.0 * a.errors[i]));
+    }
+    cols.extend([cell.runs, cell.ran_away, cell.inconsistent].map(|n| n.to_string()));
+    for s in &cell.stats {
+        cols.extend(s.iter().map(|v| field(*v)));
+    }
+    cols.push(cell.scenario.clone());
+    cols.join(",") + "\n"
+}
+
+/// The whole CSV of a map: a comment line with the map's text and seeds, the header, one row a
+/// cell.
+pub fn map_csv(map: &Map, cells: &[Cell]) -> String {
+    let mut out = csv_preamble(map);
+    for c in cells {
+        out.push_str(&csv_row(map, c));
+    }
+    out
+}
+
+/// The comment line and header that start a map's CSV.
+pub fn csv_preamble(map: &Map) -> String {
+    format!(
+        "# {} over {}\n{}",
+        map.scenario,
+        map.text(),
+        csv_header(map)
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn step() -> Scenario {
+        Scenario::parse("v=1&preset=step").unwrap()
+    }
+
+    #[test]
+    fn a_relative_axis_is_read_against_the_other_side() {
+        let a = Axis::parse(&step(), "plant.rr=-10%..+10%:3").unwrap();
+        assert_eq!(a.values.len(), 3);
+        assert!(
+            (a.values[0] - 4.95 * 0.9).abs() < 1e-12 && (a.values[2] - 4.95 * 1.1).abs() < 1e-12
+        );
+        assert!((a.errors[1]).abs() < 1e-15);
+        let m = Axis::parse(&step(), "model.j=0.016..0.024:2").unwrap();
+        assert!((m.errors[0] + 0.2).abs() < 1e-12 && (m.errors[1] - 0.2).abs() < 1e-12);
+    }
+
+    #[test]
+    fn bad_axes_are_refused_naming_the_input() {
+        for (text, says) in [
+            ("k1=1..2:3", "not a motor or model parameter"),
+            ("plant.rr=-10%..5:3", "both be values or both percentages"),
+            ("plant.rr=1..2:0", "N '0'"),
+            ("plant.rr=2..1:3", "above HI"),
+            ("plant.rr=x..1:3", "LO 'x'"),
+            ("plant.np=1..3:3", "whole numbers"),
+            ("plant.rr", "expected KEY=LO..HI:N"),
+        ] {
+            let e = Axis::parse(&step(), text).unwrap_err();
+            assert!(e.contains(says), "{text}: {e}");
+        }
+        let e = Map::parse(&step(), "plant.rr=-1000%..0%:3").unwrap_err();
+        assert!(e.contains("plant.rr="), "{e}");
+    }
+
+    #[test]
+    fn a_map_past_the_work_bound_is_refused_with_what_it_needs() {
+        let long = Scenario::parse("v=1&preset=rr-mismatch&duration=20").unwrap();
+        let e = Map::parse(&long, "plant.rr=-10%..10%:101;seeds=1..100").unwrap_err();
+        assert!(e.contains("plant steps") && e.contains("400000000"), "{e}");
+    }
+
+    #[test]
+    fn cells_run_the_last_axis_fastest_and_the_text_round_trips() {
+        let m = Map::parse(
+            &step(),
+            "plant.rr=-10%..10%:3;model.j=0.016..0.024:2;seeds=3..4",
+        )
+        .unwrap();
+        assert_eq!(m.cells.len(), 6);
+        assert_eq!(m.seeds, vec![3, 4]);
+        assert_eq!(m.cells[1].values[0], m.cells[0].values[0]);
+        assert!(m.cells[1].scenario.contains("model.j=0.024"));
+        let again = Map::parse(&step(), &m.text()).unwrap();
+        assert_eq!(again, m);
+    }
+
+    #[test]
+    fn the_summary_counts_runaways_and_takes_statistics_over_completed_runs() {
+        let m = Map::parse(&step(), "plant.rr=-10%..10%:1;seeds=1..3").unwrap();
+        let run = |seed, v: f64, failure: Option<&str>| MapRun {
+            seed,
+            figures: vec![v; MAP_FIGURES.len()],
+            ran_away: failure.is_some(),
+            inconsistent: false,
+            failure: failure.map(String::from),
+        };
+        let c = summarise(
+            &m.cells[0],
+            &[
+                run(1, 3.0, None),
+                run(2, 1.0, None),
+                run(3, 1e9, Some("diverged")),
+            ],
+        );
+        assert_eq!((c.runs, c.ran_away), (3, 1));
+        assert_eq!(c.stats[0], [1.0, 2.0, 3.0]);
+    }
+
+    #[test]
+    fn the_paper_step_runs_away_with_the_motor_r_r_ten_percent_high_and_not_when_exact() {
+        let m = Map::parse(&step(), "plant.rr=0%..10%:2;seeds=1..2").unwrap();
+        let rows: Vec<Cell> = m
+            .cells
+            .iter()
+            .map(|c| {
+                let runs: Vec<MapRun> = m
+                    .seeds
+                    .iter()
+                    .map(|&s| map_run(&c.scenario, s).unwrap())
+                    .collect();
+                summarise(c, &runs)
+            })
+            .collect();
+        assert_eq!(rows[0].ran_away, 0);
+        assert_eq!(rows[1].ran_away, 2);
+        let csv = map_csv(&m, &rows);
+        assert!(csv.starts_with("# v=1&preset=step over plant.rr=0%..10%:2;seeds=1..2\nplant.rr,plant.rr_vs_model_pct,runs,"));
+        assert_eq!(csv.lines().count(), 4);
+    }
+}
