@@ -597,6 +597,8 @@ fn robust_map(map: &Map, out: &mut impl Write) -> Result<(), Stop> {
                         .map(|r| r.take().expect("checked"))
                         .collect();
                     let row = csv_row(map, &robust::summarise(&map.cells[written], &cell_runs));
+                    // Clears the progress line, so that on a terminal the row starts a line.
+                    to_stderr(format_args!("\r{:30}\r", ""));
                     out.write_all(row.as_bytes())
                         .and_then(|()| out.flush())
                         .map_err(stdout_stop)?;
