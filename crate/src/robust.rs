@@ -68,6 +68,8 @@ pub struct Map {
     pub seeds: Vec<u64>,
     /// Plant steps the whole map takes.
     pub work: u64,
+    /// The map as [`Map::parse`] reads it: `AXIS[;AXIS];seeds=A..B`.
+    pub text: String,
 }
 
 /// One run of one cell: the figures of [`MAP_FIGURES`] (NaN where the run has none) and what
@@ -324,8 +326,11 @@ impl Map {
                 seeds.len()
             ));
         }
+        let mut parts: Vec<String> = axes.iter().map(|a| a.text.clone()).collect();
+        parts.push(format!("seeds={}..{}", seeds[0], seeds[seeds.len() - 1]));
         Ok(Map {
             scenario: base.encode(),
+            text: parts.join(";"),
             axes,
             cells,
             seeds,
@@ -345,17 +350,6 @@ impl Map {
             }
         }
         Map::plan(base, axes, seeds.unwrap_or_else(|| (1..=10).collect()))
-    }
-
-    /// The map's text, as [`Map::parse`] reads it.
-    pub fn text(&self) -> String {
-        let mut parts: Vec<String> = self.axes.iter().map(|a| a.text.clone()).collect();
-        parts.push(format!(
-            "seeds={}..{}",
-            self.seeds[0],
-            self.seeds[self.seeds.len() - 1]
-        ));
-        parts.join(";")
     }
 }
 
@@ -481,12 +475,7 @@ pub fn map_csv(map: &Map, cells: &[Cell]) -> String {
 
 /// The comment line and header that start a map's CSV.
 pub fn csv_preamble(map: &Map) -> String {
-    format!(
-        "# {} over {}\n{}",
-        map.scenario,
-        map.text(),
-        csv_header(map)
-    )
+    format!("# {} over {}\n{}", map.scenario, map.text, csv_header(map))
 }
 
 #[cfg(test)]
@@ -545,7 +534,7 @@ mod tests {
         assert_eq!(m.seeds, vec![3, 4]);
         assert_eq!(m.cells[1].values[0], m.cells[0].values[0]);
         assert!(m.cells[1].scenario.contains("model.j=0.024"));
-        let again = Map::parse(&step(), &m.text()).unwrap();
+        let again = Map::parse(&step(), &m.text).unwrap();
         assert_eq!(again, m);
     }
 

@@ -3,6 +3,7 @@
 use crate::analysis;
 use crate::params::Lumped;
 use crate::record::COLUMNS;
+use crate::robust;
 use crate::scenario::{Scenario, MAX_SEED, PRESETS};
 use crate::sim;
 use js_sys::{Array, Float64Array};
@@ -386,6 +387,56 @@ pub fn seed_bands(runs: JsValue) -> Result<JsValue, JsValue> {
 pub fn seeds_csv(results: JsValue) -> Result<String, JsValue> {
     let results: Vec<analysis::SeedResult> = from_js(results)?;
     Ok(analysis::seeds_csv(&results))
+}
+
+/// The model-error map `text` (`AXIS[;AXIS][;seeds=A..B]`, as `imlab robust` reads its
+/// options) of `scenario`, checked and bounded before any run: its axes, cells and seeds.
+#[wasm_bindgen]
+pub fn robust_plan(scenario: &str, text: &str) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    to_js(&robust::Map::parse(&s, text).map_err(js_error)?)
+}
+
+/// One run of a map's cell: its scenario as the plan wrote it, with noise seed `seed`.
+#[wasm_bindgen]
+pub fn robust_run(scenario: &str, seed: f64) -> Result<JsValue, JsValue> {
+    to_js(&robust::map_run(scenario, whole("seed", seed)?).map_err(js_error)?)
+}
+
+/// The rows of a map's cells from its runs, cell after cell, each cell's seeds in the map's order.
+#[wasm_bindgen]
+pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
+    let map: robust::Map = from_js(map)?;
+    let runs: Vec<robust::MapRun> = from_js(runs)?;
+    let per = map.seeds.len();
+    if runs.len() != map.cells.len() * per {
+        return Err(js_error(format!(
+            "{} runs for {} cells × {per} seeds",
+            runs.len(),
+            map.cells.len()
+        )));
+    }
+    let cells: Vec<robust::Cell> = map
+        .cells
+        .iter()
+        .zip(runs.chunks(per))
+        .map(|(c, r)| robust::summarise(c, r))
+        .collect();
+    to_js(&cells)
+}
+
+/// A map's rows as the CSV `imlab robust` prints.
+#[wasm_bindgen]
+pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
+    let map: robust::Map = from_js(map)?;
+    let cells: Vec<robust::Cell> = from_js(cells)?;
+    Ok(robust::map_csv(&map, &cells))
+}
+
+/// The figures a map keeps of each run, by their `imlab metrics` names.
+#[wasm_bindgen]
+pub fn robust_figures() -> Vec<String> {
+    robust::MAP_FIGURES.iter().map(|f| f.to_string()).collect()
 }
 
 /// Pinned runs to compare with the current one (at most four).
