@@ -200,3 +200,32 @@ fn slices_by_the_clock_run_the_same_samples_as_one_call() {
         whole.csv_chunk(0, whole.rows())
     );
 }
+
+#[wasm_bindgen_test]
+fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
+    use imlab::robust;
+    use imlab::wasm::{robust_cells, robust_csv, robust_plan, robust_run};
+    let (scenario, text) = (
+        "v=1&preset=step&duration=0.06",
+        "plant.rr=0%..10%:2;seeds=1..2",
+    );
+    let plan = robust_plan(scenario, text).unwrap();
+    let map = robust::Map::parse(&Scenario::parse(scenario).unwrap(), text).unwrap();
+    let runs = js_sys::Array::new();
+    let mut core_cells = Vec::new();
+    for cell in &map.cells {
+        let mut core_runs = Vec::new();
+        for &seed in &map.seeds {
+            runs.push(&robust_run(&cell.scenario, seed as f64).unwrap());
+            core_runs.push(robust::map_run(&cell.scenario, seed).unwrap());
+        }
+        core_cells.push(robust::summarise(cell, &core_runs));
+    }
+    let cells = robust_cells(plan.clone(), runs.into()).unwrap();
+    assert_eq!(
+        robust_csv(plan, cells).unwrap(),
+        robust::map_csv(&map, &core_cells)
+    );
+    let e = error_text(robust_plan(scenario, "k1=1..2:2").unwrap_err());
+    assert!(e.contains("not a motor or model parameter"), "{e}");
+}
