@@ -72,7 +72,10 @@ export class Pool {
     await Promise.all(this.members.map((m) => m.ready));
   }
 
-  /** Runs `jobs` (messages without `type`/`job`); `onDone(count)` reports progress. */
+  /**
+   * Runs `jobs` (messages without `type`/`job`); `onDone(count, index, result)` reports each
+   * job as it ends, so that a caller can keep what finished before a cancel.
+   */
   async run(jobs, onDone = () => {}) {
     await this.start();
     const generation = ++this.generation;
@@ -90,7 +93,7 @@ export class Pool {
         const data = await reply;
         if (data.error) throw new Error(data.error);
         results[index] = data.result;
-        onDone(++done);
+        onDone(++done, index, data.result);
       }
     };
     try {

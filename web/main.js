@@ -19,6 +19,7 @@ import { createTabs } from './tabs.js';
 import { createPresentation } from './presentation.js';
 import { wireShare } from './share.js';
 import { createSweeps } from './sweeps.js';
+import { createRobust } from './robust.js';
 import { createChallenge } from './challenge.js';
 import { createCompose } from './challenge-compose.js';
 
@@ -91,6 +92,13 @@ const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
 const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
+const robust = createRobust({
+  state, analysis, showTab: tabs.showTab,
+  open: (scenario) => {
+    tabs.showTab('plots');
+    settings.load(scenario);
+  },
+});
 const challenge = createChallenge({
   client, state, relayout: () => plotSets.forEach((p) => p.resize()),
 });
@@ -101,6 +109,7 @@ const run = createRun({
   afterRun: () => {
     pins.afterRun();
     sweeps.afterRun();
+    robust.afterRun();
     challenge.check();
     // So that the walkthrough's first showing need not typeset every equation at once (an embed
     // never shows it).
@@ -118,6 +127,7 @@ new LessonPanel({
   onOpen: async (lesson) => {
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
+    if (lesson.map) robust.fill(lesson.map);
     window.scrollTo(0, 0);
     await settings.load(lesson.run);
   },

@@ -32,7 +32,9 @@
 //   {type: 'job', job, kind, ...}              → {type: 'job', job, result} | {type: 'job', job, error}
 //     kinds: 'sweep' {scenario, changes, freq, amp, duration, offset}, 'seed' {scenario, seed, every},
 //     'grid' {lo, hi, n}, 'seed-range' {first, n}, 'bands' {runs}, 'summary' {points},
-//     'sweep-csv' {points}, 'seeds-csv' {results}
+//     'sweep-csv' {points}, 'seeds-csv' {results}; the model-error map's 'map-plan' {scenario, text}
+//     → {map, figures}, 'map-run' {scenario, seed} (one cell, one seed), 'map-cells' {map, runs}
+//     (runs cell after cell) → cells, 'map-csv' {map, cells}
 //     (stateless, so any worker of a pool can take any job), and the challenge jobs of
 //     challenge-jobs.js
 //   {type: 'challenge-measure', id}         → {type: 'challenge-measured', id, measures}: run `id`'s
@@ -46,7 +48,9 @@
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover, seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover,
+  robust_cells, robust_csv, robust_figures, robust_plan, robust_run,
+  seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
 } from '../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
@@ -341,6 +345,10 @@ const JOBS = {
   summary: (d) => sweep_summary(d.points),
   'sweep-csv': (d) => sweep_csv(d.points),
   'seeds-csv': (d) => seeds_csv(d.results),
+  'map-plan': (d) => ({ map: robust_plan(d.scenario, d.text), figures: robust_figures() }),
+  'map-run': (d) => robust_run(d.scenario, d.seed),
+  'map-cells': (d) => robust_cells(d.map, d.runs),
+  'map-csv': (d) => robust_csv(d.map, d.cells),
   ...CHALLENGE_JOBS,
 };
 

@@ -50,8 +50,8 @@ pub struct Axis {
 pub struct CellPlan {
     /// The cell's value on each axis.
     pub values: Vec<f64>,
-    /// The base scenario with those values, as the codec writes it (its seed is replaced by
-    /// each of the map's seeds).
+    /// The base scenario with those values and the map's first seed, as the codec writes it
+    /// (each run replaces the seed by one of the map's seeds).
     pub scenario: String,
 }
 
@@ -299,6 +299,7 @@ impl Map {
         let mut work: u64 = 0;
         for index in 0..count {
             let mut s = base.clone();
+            s.seed = seeds[0];
             let mut rest = index;
             let mut values = vec![0.0; axes.len()];
             for (k, axis) in axes.iter().enumerate().rev() {

@@ -433,10 +433,14 @@ pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
     Ok(robust::map_csv(&map, &cells))
 }
 
-/// The figures a map keeps of each run, by their `imlab metrics` names.
+/// The figures a map keeps of each run, in its order: `[{name, label, unit}]`.
 #[wasm_bindgen]
-pub fn robust_figures() -> Vec<String> {
-    robust::MAP_FIGURES.iter().map(|f| f.to_string()).collect()
+pub fn robust_figures() -> Result<JsValue, JsValue> {
+    let info: Vec<_> = robust::MAP_FIGURES
+        .iter()
+        .filter_map(|f| crate::record::figure_info(f))
+        .collect();
+    to_js(&info)
 }
 
 /// Pinned runs to compare with the current one (at most four).
