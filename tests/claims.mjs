@@ -78,6 +78,37 @@ export class Core {
     return this.traces.get(run);
   }
 
+  /**
+   * The rows of `imlab robust run --vary …`: one object a cell, by the CSV's column names
+   * (numbers as numbers, an empty field as NaN, the cell's scenario as text).
+   */
+  robust(run, vary, seeds = '1..10') {
+    const key = JSON.stringify([run, vary, seeds]);
+    if (!this.maps) this.maps = new Map();
+    if (!this.maps.has(key)) {
+      const args = ['robust', run, ...[vary].flat().flatMap((v) => ['--vary', v]), '--seeds', seeds];
+      const [, header, ...lines] = execFileSync(CLI, args, { stdio: ['ignore', 'pipe', 'ignore'] }).toString().trim().split('\n');
+      const names = header.split(',');
+      this.maps.set(key, lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], names[i] === 'scenario' ? v : (v === '' ? NaN : Number(v))]))));
+    }
+    return this.maps.get(key);
+  }
+
+  /** The mean frequency at which the stator current vector of `run` turns from time t0 on (Hz). */
+  statorFrequency(run, t0) {
+    const tr = this.trace(run);
+    const [a, b] = [tr.column('i_sa'), tr.column('i_sb')];
+    let [turned, prev, first] = [0, null, -1];
+    tr.t.forEach((t, i) => {
+      if (t < t0) return;
+      const angle = Math.atan2(b[i], a[i]);
+      if (prev !== null) turned += ((angle - prev + 3 * Math.PI) % (2 * Math.PI)) - Math.PI;
+      else first = i;
+      prev = angle;
+    });
+    return turned / (2 * Math.PI * (tr.t.at(-1) - tr.t[first]));
+  }
+
   described(run) {
     return execFileSync(CLI, ['describe', run]).toString().split('\n');
   }
