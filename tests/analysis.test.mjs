@@ -186,3 +186,52 @@ test('a seed range past the largest seed is refused before any run, naming the r
     assert.equal(await page.textContent('#seeds-status'), 'Seed sweep failed: seeds 9007199254740990 to 9007199254740993 (4 from 9007199254740990): past the largest seed, 9007199254740991 (2^53 − 1); start at 9007199254740988 at most');
     assert.equal(await page.locator('#seeds-plots .plot canvas').count(), 0);
   }));
+
+const mapDone = (page) => page.waitForFunction(() => ['done', 'failed', 'cancelled', 'refused'].includes(document.body.dataset.map), null, { timeout: 120_000 })
+  .then(() => page.evaluate(() => document.body.dataset.map));
+
+test('a model-error map link replays the map, its CSV is imlab robust\'s byte for byte, runaway cells are marked and never coloured, and a cell opens its run', async () => {
+  const text = 'plant.rr=-10%..+10%:5;model.j=-20%..+20%:3;seeds=1..3';
+  await withPage(`?v=1&preset=step#robust=${encodeURIComponent(text)}`, async (page) => {
+    assert.equal(await mapDone(page), 'done');
+    const csv = await download(page, '#map-csv');
+    const native = execFileSync(cli, ['robust', 'v=1&preset=step', '--vary', 'plant.rr=-10%..+10%:5', '--vary', 'model.j=-20%..+20%:3', '--seeds', '1..3'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    assert.equal(csv, native);
+    // The CSV's runaway counts are what the cells show; a runaway cell carries no colour.
+    const rows = native.trim().split('\n').slice(2).map((l) => l.split(','));
+    const cells = await page.$$eval('.map-table .map-cell', (bs) => bs.map((b) => ({ text: b.textContent, ranAway: b.classList.contains('map-ran-away'), background: b.style.background })));
+    assert.equal(cells.length, rows.length);
+    rows.forEach((r, i) => {
+      const ranAway = Number(r[5]);
+      assert.equal(cells[i].ranAway, ranAway > 0, `cell ${i}`);
+      if (ranAway > 0) assert.ok(cells[i].text.startsWith(`✕ ${ranAway}/3`) && cells[i].background === '', `cell ${i}: ${cells[i].text}`);
+    });
+    assert.ok(cells.some((c) => c.ranAway) && cells.some((c) => !c.ranAway), 'the map has both kinds of cell');
+    // A click on the first cell runs its scenario, the one the CSV's row names.
+    await page.click('.map-table .map-cell >> nth=0');
+    assert.equal(await settled(page), 'done');
+    assert.equal(new URL(page.url()).search.slice(1), rows[0].at(-1));
+  });
+});
+
+test('a map past the work bound is refused before any run, naming what it needs; a cancelled map keeps its finished cells', async () => {
+  await withPage('?v=1&preset=rr-mismatch&duration=20', async (page) => {
+    await page.click('#tab-analysis');
+    await page.fill('[name=axis1]', 'plant.rr=-10%..+10%:101');
+    await page.fill('[name=seeds]', '1..100');
+    await page.click('#map-run');
+    assert.equal(await mapDone(page), 'refused');
+    assert.match(await page.textContent('#map-status'), /needs 4040000000 plant steps/);
+    await page.fill('[name=axis1]', 'plant.rr=-10%..+10%:21');
+    await page.fill('[name=seeds]', '1..2');
+    await page.click('#map-run');
+    // Cancel once the first cell (both its seeds) is in.
+    await page.waitForFunction(() => /: [3-9]\d* of 42 runs|: \d\d of 42 runs/.test(document.getElementById('map-status').textContent), null, { timeout: 120_000 });
+    await page.click('#map-cancel');
+    assert.equal(await mapDone(page), 'cancelled', await page.textContent('#map-status'));
+    const shown = await page.$$eval('.map-table .map-cell', (bs) => bs.length);
+    const missing = await page.$$eval('.map-table .map-missing', (ts) => ts.length);
+    assert.ok(shown >= 1 && shown + missing === 21, `${shown} shown, ${missing} not run`);
+    assert.match(await page.textContent('#map-status'), new RegExp(`${shown} of 21 cells finished`));
+  });
+});

@@ -102,7 +102,7 @@ export function createRobust({ state, analysis, open, showTab }) {
       cancelled = true;
     }
     // The cells whose every seed finished (all of them unless cancelled).
-    const whole = map.cells.map((_, i) => runs.slice(i * per, (i + 1) * per).every(Boolean));
+    const whole = map.cells.map((_, i) => runs.slice(i * per, (i + 1) * per).filter(Boolean).length === per);
     const kept = { ...map, cells: map.cells.filter((_, i) => whole[i]) };
     try {
       const [cells] = await analysis.pool.run([{ kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) }]);
