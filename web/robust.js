@@ -173,51 +173,62 @@ export function createRobust({ state, analysis, open, showTab }) {
       new uPlot(opts, [x, series[0], series[1], series[2]], div);
       const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
       if (gaps.length) {
-        box.append(el('p', { className: 'map-gaps', textContent: `Not drawn, because some seeds ran away there: ${gaps.map((i) => `${fmt(axisValue(0, i))} (${byIndex[i].ran_away} of ${byIndex[i].runs})`).join(', ')}.` }));
+        box.append(el('p', { className: 'map-gaps', textContent: `Not drawn, because some seeds ran away there: ${gaps.map((i) => `${fmt(axisValue(0, i))}${relative[0] ? ' %' : ''} (${byIndex[i].ran_away} of ${byIndex[i].runs} seeds)`).join(', ')}.` }));
       }
     }
     box.append(table(axes, axisValue, axisName, byIndex, median, figure));
   }
 
-  /** The map as a table of buttons, coloured by the figure's median; a click opens the cell's run. */
+  /**
+   * The map as a table of buttons, coloured by the figure's median; a click opens the cell's run.
+   * One axis is a column (a row a value, with the range over the seeds); two are a grid.
+   */
   function table(axes, axisValue, axisName, byIndex, median, figure) {
     const two = axes.length === 2;
-    const [rows, cols] = two ? [axes[0].values.length, axes[1].values.length] : [1, axes[0].values.length];
+    const k = chosen();
     const values = byIndex.filter((cell) => cell && cell.ran_away === 0).map(median);
     const scale = colourScale(values);
-    const t = el('table', { className: 'map-table' });
-    t.append(el('caption', { textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over ${last.full.seeds.length} seeds; colour on a ${scale.log ? 'log' : 'linear'} scale; ✕ ran away on that many seeds (never coloured as a value); ⚠ EKF inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).` }));
-    const head = el('tr', {}, [el('th', { scope: 'col', textContent: two ? `${axisName(0)} ↓ / ${axisName(1)} →` : axisName(0) })]);
-    for (let j = 0; j < cols; j++) head.append(el('th', { scope: 'col', textContent: fmt(axisValue(two ? 1 : 0, j)) }));
-    t.append(head);
-    for (let i = 0; i < rows; i++) {
-      const tr = el('tr', {}, [el('th', { scope: 'row', textContent: two ? fmt(axisValue(0, i)) : 'median' })]);
-      for (let j = 0; j < cols; j++) {
-        const cell = byIndex[i * cols + j];
-        const td = el('td');
-        if (!cell) {
-          td.textContent = 'not run';
-          td.className = 'map-missing';
-        } else {
-          const lines = [];
-          if (cell.ran_away > 0) lines.push(`✕ ${cell.ran_away}/${cell.runs}`);
-          else lines.push(fmt(median(cell)));
-          if (cell.inconsistent > 0) lines.push(`⚠ ${cell.inconsistent}/${cell.runs}`);
-          const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
-          button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent; ${figure.label} ${fmt(cell.stats[chosen()][0])} to ${fmt(cell.stats[chosen()][2])}`;
-          if (cell.ran_away > 0) button.classList.add('map-ran-away');
-          else {
-            const [colour, light] = scale.of(median(cell));
-            Object.assign(button.style, { background: colour, color: light ? '#fff' : '#000' });
-          }
-          button.addEventListener('click', () => open(cell.scenario));
-          td.append(button);
-        }
-        tr.append(td);
+    const cellOf = (cell) => {
+      const td = el('td');
+      if (!cell) {
+        td.textContent = 'not run';
+        td.className = 'map-missing';
+        return td;
       }
-      t.append(tr);
+      const lines = [cell.ran_away > 0 ? `✕ ${cell.ran_away}/${cell.runs}` : fmt(median(cell))];
+      if (cell.inconsistent > 0) lines.push(`⚠ ${cell.inconsistent}/${cell.runs}`);
+      const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
+      button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent; ${figure.label} ${fmt(cell.stats[k][0])} to ${fmt(cell.stats[k][2])}`;
+      if (cell.ran_away > 0) button.classList.add('map-ran-away');
+      else {
+        const [colour, light] = scale.of(median(cell));
+        Object.assign(button.style, { background: colour, color: light ? '#fff' : '#000' });
+      }
+      button.addEventListener('click', () => open(cell.scenario));
+      td.append(button);
+      return td;
+    };
+    const t = el('table', { className: 'map-table' });
+    if (two) {
+      const [rows, cols] = [axes[0].values.length, axes[1].values.length];
+      const head = el('tr', {}, [el('th', { scope: 'col', textContent: `${axisName(0)} ↓ / ${axisName(1)} →` })]);
+      for (let j = 0; j < cols; j++) head.append(el('th', { scope: 'col', textContent: fmt(axisValue(1, j)) }));
+      t.append(head);
+      for (let i = 0; i < rows; i++) {
+        const tr = el('tr', {}, [el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) })]);
+        for (let j = 0; j < cols; j++) tr.append(cellOf(byIndex[i * cols + j]));
+        t.append(tr);
+      }
+    } else {
+      t.append(el('tr', {}, [axisName(0), 'median', 'min – max'].map((h) => el('th', { scope: 'col', textContent: h }))));
+      axes[0].values.forEach((_, i) => {
+        const cell = byIndex[i];
+        const range = cell && cell.ran_away === 0 ? `${fmt(cell.stats[k][0])} – ${fmt(cell.stats[k][2])}` : '';
+        t.append(el('tr', {}, [el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }), cellOf(cell), el('td', { className: 'map-range', textContent: range })]));
+      });
     }
-    return t;
+    const key = el('p', { className: 'map-key', textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over ${last.full.seeds.length} seeds; colour on a ${scale.log ? 'log' : 'linear'} scale; ✕ ran away on that many seeds (never coloured as a value); ⚠ EKF inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).` });
+    return el('div', {}, [key, t]);
   }
 
   /** After a run: a shared link with a map in its fragment runs that map, once. */
