@@ -3,7 +3,7 @@
 // Every number shown here comes from the core (through the worker); the page only formats it.
 import katex from '../vendor/katex/katex.mjs';
 import { Plots, six } from './plots.js';
-import { SECTIONS } from './teaching.js';
+import { SECTIONS, STABILITY_CAUSES } from './teaching.js';
 
 function el(tag, props = {}, children = []) {
   const e = Object.assign(document.createElement(tag), props);
@@ -420,11 +420,6 @@ function stabilityText(st) {
   const b = st.bound;
   const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
   if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
-  const why = {
-    saturation: 'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.',
-    sampling: 'With the perfect observer d̃2 = d̃4 = 0, and in continuous time V would follow the bound exactly; the 20 kHz sampled loop meets it while V is large and then sits just above it, by an error that halves with Ts.',
-    estimation_errors: 'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold.',
-    eps_or_sampling: 'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.',
-  }[st.cause];
+  const why = STABILITY_CAUSES[st.cause];
   return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(st.first_outside.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
 }
