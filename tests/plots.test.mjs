@@ -1,6 +1,7 @@
 // Browser tests of the plots: true to the samples at every zoom, the run's figures, knobs
 // that run, and lessons with their panel. Every test fails on a console error.
 import { test } from 'node:test';
+import { LESSONS } from '../web/teaching.js';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
@@ -179,7 +180,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
     const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
-    assert.equal(lessons.length, 11);
+    assert.equal(lessons.length, LESSONS.length);
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
     for (const [i, run] of lessons.entries()) {
       // The low-speed lesson's run ends as a failure: it runs away.
@@ -195,6 +196,11 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
       await page.click('#lesson-panel .hint summary');
       assert.equal(await page.isVisible('#lesson-panel .hint p'), true);
       assert.equal(await page.evaluate(() => window.scrollY), 0, `lesson ${i + 1} opens at the top`);
+      // A lesson with a model-error map opens the Analysis tab with the map filled in.
+      if (LESSONS[i].map) {
+        assert.equal(await page.isVisible('#map-run'), true);
+        assert.equal(await page.inputValue('[name=axis1]'), LESSONS[i].map.split(';')[0]);
+      }
       if (i < lessons.length - 1) await page.click('#lesson-panel >> text=Next →');
     }
   }));

@@ -1,5 +1,6 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
 import { test } from 'node:test';
+import { LESSONS } from '../web/teaching.js';
 import assert from 'node:assert/strict';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 
@@ -101,7 +102,8 @@ test('the real-drive lesson runs with PWM, shows the ripple and the current agai
     const n = await page.evaluate(() => [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /real drive/.test(l.textContent)));
     assert.ok(n >= 0, 'lesson listed');
     await page.click(`text=Start lesson ${n + 1}`);
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=sine200-drive' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    const run = LESSONS.find((l) => /real drive/.test(l.title)).run;
+    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', run, { timeout: 30_000 });
     const figure = (name) => page.evaluate((k) => {
       const item = document.querySelector(`#figures [data-name=${k}]`);
       return item && { value: Number(item.dataset.value), text: item.textContent };
@@ -116,6 +118,6 @@ test('the real-drive lesson runs with PWM, shows the ripple and the current agai
     await page.click('details[data-group=drive] > summary');
     await page.check('#field-delay\\.comp');
     await page.click('#run');
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=sine200-drive&delay.comp=1' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `${run}&delay.comp=1`, { timeout: 30_000 });
     assert.notEqual((await figure('tracking_rms')).value, rmsDelayed);
   }));
