@@ -133,14 +133,17 @@ test('the walkthrough plots wait until it is first opened, then draw recorded sa
     shown[0].forEach((time, j) => assert.equal(shown[1][j], step.get(time).nis));
   }));
 
+/** The figures strip as `imlab metrics` prints it: {name: value}. */
+const stripFigures = (page) => page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
+  [f.dataset.name, Number(f.dataset.value)],
+  ...(f.dataset.settled ? [[`${f.dataset.name}_rate`, Number(f.dataset.rate)], [`${f.dataset.name}_settled`, Number(f.dataset.settled)]] : []),
+  ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
+  ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
+])));
+
 test('the figures strip equals imlab metrics, and the y-axes leave out the start-up transient', () =>
   withPage('v=1&preset=step', async (page) => {
-    const shown = await page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
-      [f.dataset.name, Number(f.dataset.value)],
-      ...(f.dataset.settled ? [[`${f.dataset.name}_rate`, Number(f.dataset.rate)], [`${f.dataset.name}_settled`, Number(f.dataset.settled)]] : []),
-      ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
-      ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
-    ])));
+    const shown = await stripFigures(page);
     const cli = cliMetrics('v=1&preset=step');
     assert.deepEqual(shown, cli);
     assert.match(await page.textContent('#fit-label'), new RegExp(`t ≥ ${Number((cli.transient_end * 1e3).toPrecision(3))} ms`));
@@ -152,6 +155,36 @@ test('the figures strip equals imlab metrics, and the y-axes leave out the start
     const full = await yRange();
     assert.ok(full[1] - full[0] > 10 * (fitted[1] - fitted[0]), `fitted ${fitted}, full ${full}`);
   }));
+
+test('a slow decay is still changing, a settling time not reached says so in its place, and a run that ran away has no settled value', async () => {
+  // The model's inertia 20 % off: ω is still outside the step's 2 % band at 0.1 s, and the speed
+  // error still decays although it moves by less than its tolerance over the last tenth.
+  const slow = 'v=1&preset=step&model.j=0.024';
+  await withPage(slow, async (page) => {
+    assert.deepEqual(await stripFigures(page), cliMetrics(slow));
+    const names = await page.$$eval('#figures .figure', (fs) => fs.map((f) => f.dataset.name));
+    assert.equal(names.indexOf('settling_time_reached'), names.indexOf('tracking_peak') + 1, names.join());
+    assert.ok(!names.includes('settling_time'));
+    const unreached = await page.textContent('#figures [data-name=settling_time_reached]');
+    assert.match(unreached, /^2 % settling time of ω after the stepnot settled by the end of the run \(t = 99\.95 ms\)from the step at 50 ms$/);
+    const final = await page.$eval('#figures [data-name=speed_error_final]', (f) => ({ settled: f.dataset.settled, text: f.textContent }));
+    assert.equal(final.settled, '0');
+    assert.match(final.text, /still changing: -?[\d.]+ rad\/s per s at the end; run longer \(about 0\.0\d+ rad\/s still to go\)/);
+    assert.match(await page.textContent('#key-figures'), /final ω − ω_d 0\.0223 rad\/s \(still changing\)/);
+  });
+  // At 1 rad/s with the rotor resistance 10 % off the estimates drift away and the flux ends at
+  // 33 Wb: no final value is settled.
+  await suite.withPage('?v=1&preset=rr-mismatch&ref.value=1&ekf=rk4&init_err=0&duration=3', async (page) => {
+    assert.equal(await settled(page), 'failed');
+    const finals = await page.$$eval('#figures .figure[data-settled]', (fs) => fs.map((f) => [f.dataset.name, f.dataset.settled, f.querySelector('dd.trend').textContent]));
+    assert.deepEqual(finals.map(([name]) => name), ['flux_error_final', 'speed_error_final', 'speed_estimate_error_final']);
+    for (const [name, flag, text] of finals) {
+      assert.equal(flag, '0', name);
+      assert.equal(text, 'the run ran away: not a final value', name);
+    }
+    assert.match(await page.textContent('#key-figures'), /final ω − ω_d -24\.5 rad\/s \(ran away\)/);
+  });
+});
 
 test('a walkthrough knob re-runs the scenario, and an invalid value is marked at the knob', () =>
   withPage('v=1&preset=step', async (page) => {

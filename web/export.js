@@ -52,7 +52,8 @@ export function createExport({ client, state, plots, walkthrough }) {
   /** The lines the PNG export carries above the plots: the scenario and the run's figures. */
   function pngHeader() {
     const figures = state.figures.filter((f) => !f.name.startsWith('mean_nis_'))
-      .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`);
+      .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`)
+      .concat(state.unreached.map((u) => `${u.label}: ${u.text}`));
     const lines = [`IM Lab · ${state.info.encoded}`];
     for (let i = 0; i < figures.length; i += 3) lines.push(figures.slice(i, i + 3).join(' · '));
     return lines;

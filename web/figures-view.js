@@ -13,7 +13,7 @@ function showKeyFigures(figures, rated) {
     const span = document.createElement('span');
     if (f.name === 'current_peak' && rated) span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
     else if (f.name === 'speed_error_final' && f.trend) {
-      span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating' }[f.trend.state]})`;
+      span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
       if (!f.trend.settled) span.className = 'unsettled';
     } else if (f.name === 'mean_nis' && low && high) {
       span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
@@ -29,18 +29,37 @@ function showKeyFigures(figures, rated) {
  * [short text, the detail for its tooltip].
  */
 function trendText(f) {
-  const { rate, over, tolerance, scatter, state } = f.trend;
+  const { rate, over, tolerance, scatter, to_go: toGo, state } = f.trend;
   const unit = f.unit ? ` ${f.unit}` : '';
-  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it; settled means both within ${Number(tolerance.toPrecision(2))}${unit}`;
+  const approach = toGo == null ? '' : `; the means of the last three tenths approach a value ${Number(toGo.toPrecision(2))}${unit} away`;
+  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means each within ${Number(tolerance.toPrecision(2))}${unit}`;
   if (state === 'settled') return ['settled by the end of the run', fit];
+  if (state === 'ran away') return ['the run ran away: not a final value', fit];
   if (state === 'fluctuating') return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
-  return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer`, fit];
+  const left = toGo != null && toGo > tolerance ? ` (about ${Number(toGo.toPrecision(2))}${unit} still to go)` : '';
+  return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer${left}`, fit];
+}
+
+/** An item of the strip for a figure the run had not reached by its end: the words, no value. */
+function unreachedItem(u) {
+  const item = Object.assign(document.createElement('div'), { className: 'figure unsettled' });
+  // As `imlab metrics` prints it: NAME_reached,0.
+  Object.assign(item.dataset, { name: `${u.name}_reached`, value: '0' });
+  item.append(
+    Object.assign(document.createElement('dt'), { textContent: u.label }),
+    Object.assign(document.createElement('dd'), { textContent: u.text, title: `no value: ${u.text}; ${u.window}` }),
+    Object.assign(document.createElement('dd'), { className: 'window', textContent: u.window }),
+  );
+  return item;
 }
 
 /** The figures display; the plots in `plotSets` carry the figures in their text alternatives. */
 export function createFiguresView({ plotSets }) {
-  /** The figures strip: each figure of the run with its unit and window (all from the core). */
-  function show(figures, warnings = []) {
+  /**
+   * The figures strip: each figure of the run with its unit and window, and in place of a figure
+   * the run had not reached by its end, the words that say so (all from the core).
+   */
+  function show(figures, warnings = [], unreached = []) {
     const fmt = (f) => {
       if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
       if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
@@ -48,7 +67,9 @@ export function createFiguresView({ plotSets }) {
     };
     const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
     const rated = figures.find((f) => f.name === 'current_rated');
-    const items = figures.filter((f) => !['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)).map((f) => {
+    const items = figures.flatMap((f, i) => [...unreached.filter((u) => u.index === i), f]).concat(unreached.filter((u) => u.index >= figures.length)).map((f) => {
+      if (!('value' in f)) return unreachedItem(f);
+      if (['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)) return null;
       let text = fmt(f);
       if (rated && ['current_peak', 'current_rms'].includes(f.name)) {
         text += ` (${Number((f.value / rated.value).toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
@@ -75,7 +96,7 @@ export function createFiguresView({ plotSets }) {
       );
       if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }));
       return item;
-    });
+    }).filter(Boolean);
     // What the figures must not be read without, in the core's words.
     // (A run that ran away says so in the message above, as a failure.)
     const warning = warnings.filter((w) => w.kind !== 'runaway').map((w) => w.text).join(' ');

@@ -34,6 +34,7 @@ const state = {
   shownRun: 0, // the run the plots show (run)
   transient: null, // {t, reason}: the end of the start-up transient, from the core (run)
   figures: [], // the run's figures, from the core (run)
+  unreached: [], // the figures the run had not reached by its end, from the core (run)
   export: null, // the CSV export under way: {serial, parts: [Blob]} (export)
   pins: [], // pinned scenarios, in pin order (pins)
   pinning: false, // pins are being run in the worker (pins; run, when the worker fails)

@@ -106,19 +106,20 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       ui.progress.value = done / total;
       ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
     },
-    async done({ id, rows, failure, view, computeMs, stability, figures, transient, warnings }) {
+    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings }) {
       if (id !== state.runId) return;
       setBusy(false);
       ui.progress.value = 1;
       const arrived = performance.now();
       state.transient = transient;
       state.figures = figures;
+      state.unreached = unreached;
       ui.fitLabel.textContent = transient
         ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
         : 'Fit y-axes after the start-up transient';
       ui.fitLabel.title = transient?.reason ?? '';
       $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
-      figuresView.show(figures, warnings);
+      figuresView.show(figures, warnings, unreached);
       if (view) {
         state.shownRun = id;
         walkthrough.show(stability, state.nisBand);

@@ -7,7 +7,7 @@
 //     (keeps the acceptable fields of a bad scenario and lists the rejected ones)
 //   {type: 'run', id, scenario, groups, buckets, overlay}
 //        → {type: 'progress', id, done, total}* then
-//          {type: 'done', id, view, rows, failure, computeMs, stability, figures, transient, warnings}
+//          {type: 'done', id, view, rows, failure, computeMs, stability, figures, unreached, transient, warnings}
 //          | {type: 'invalid', id, message} | {type: 'cancelled', id}
 //     (`view` is the whole run's view of `groups`, kept while the run went; `overlay`, a column
 //     or null, is kept as it goes for the overlay with the pins)
@@ -200,7 +200,8 @@ async function run({ id, scenario, groups, buckets, overlay }) {
   const figures = report?.figures ?? [];
   const transient = report?.transient ?? null;
   const warnings = report?.warnings ?? [];
-  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, transient, warnings }, v);
+  const unreached = report?.unreached ?? [];
+  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, unreached, transient, warnings }, v);
 }
 
 /**

@@ -195,8 +195,10 @@ impl Simulation {
     }
 
     /// Where the start-up transient ends and the figures of the run so far:
-    /// `{transient: {t, reason}, figures: [{name, label, value, unit, window}] | null}`, the
-    /// figures as `imlab metrics` prints them (null when nothing is recorded).
+    /// `{transient: {t, reason}, figures: [{name, label, value, unit, window, trend}] | null,
+    /// unreached: [{name, label, index, window, end, text}], warnings: [{kind, text}]}`, the
+    /// figures as `imlab metrics` prints them (null when nothing is recorded), with the figures
+    /// the run had not reached by its end in words.
     pub fn report(&self) -> Result<JsValue, JsValue> {
         to_js(&self.inner.report())
     }

@@ -1,7 +1,7 @@
 //! `imlab metrics`: the figures of a run as the CLI prints them, checked against the physics
 //! (settling through the reference filter, saturation, EKF consistency) and against the library.
 
-use imlab::record::Figure;
+use imlab::record::Report;
 use imlab::scenario::Scenario;
 use imlab::sim::Simulation;
 use std::process::Command;
@@ -33,11 +33,18 @@ fn metrics(scenario: &str) -> Vec<(String, f64, String)> {
         .collect()
 }
 
-/// The lines `imlab metrics` prints for `list`: each figure, and after a final value its trend's
-/// rate and settled flag.
-fn expected_lines(list: &[Figure]) -> Vec<(String, f64, String)> {
+/// The lines `imlab metrics` prints for `report`: each figure, after a final value its trend's
+/// rate and settled flag, and `NAME_reached,0` in place of a figure the run had not reached.
+fn expected_lines(report: &Report) -> Vec<(String, f64, String)> {
+    let list = report.figures.as_deref().unwrap_or(&[]);
     let mut out = Vec::new();
-    for f in list {
+    let not_reached = |i: usize, out: &mut Vec<(String, f64, String)>| {
+        for u in report.unreached.iter().filter(|u| u.index == i) {
+            out.push((format!("{}_reached", u.name), 0.0, String::new()));
+        }
+    };
+    for (i, f) in list.iter().enumerate() {
+        not_reached(i, &mut out);
         out.push((f.name.to_string(), f.value, f.unit.to_string()));
         if let Some(t) = &f.trend {
             out.push((format!("{}_rate", f.name), t.rate, format!("{}/s", f.unit)));
@@ -48,6 +55,7 @@ fn expected_lines(list: &[Figure]) -> Vec<(String, f64, String)> {
             ));
         }
     }
+    not_reached(list.len(), &mut out);
     out
 }
 
@@ -122,11 +130,12 @@ fn one_rad_at_200_hz_saturates_and_a_ramp_has_no_settling_time() {
 
 #[test]
 fn printed_figures_are_the_library_figures_exactly() {
-    for text in ["step", "ifoc-step"] {
+    // The last has no settling time: ω is still outside the step's band at its end.
+    for text in ["step", "ifoc-step", "v=1&preset=step&model.j=0.024"] {
         let printed = metrics(text);
         let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
         sim.run().unwrap();
-        let lib = expected_lines(&sim.figures().unwrap());
+        let lib = expected_lines(&sim.report());
         assert_eq!(printed.len(), lib.len(), "{text}");
         for (p, f) in printed.iter().zip(&lib) {
             assert_eq!((&p.0, &p.2), (&f.0, &f.2), "{text}");
@@ -150,7 +159,9 @@ fn a_diverged_run_prints_the_figures_before_the_failure_and_fails() {
     let mut sim = Simulation::new(&Scenario::parse(text).unwrap(), 1).unwrap();
     sim.run().unwrap_err();
     let mut expected = String::from("name,value,unit\n");
-    for (name, value, unit) in expected_lines(&sim.figures().expect("samples before the failure")) {
+    let report = sim.report();
+    assert!(report.figures.is_some(), "samples before the failure");
+    for (name, value, unit) in expected_lines(&report) {
         expected.push_str(&format!("{name},{value},{unit}\n"));
     }
     assert_eq!(String::from_utf8_lossy(&out.stdout), expected);

@@ -7,7 +7,7 @@ use imlab::analysis::{
     SweepSettings, MAX_SEED_RUNS,
 };
 use imlab::challenge::{judge, measure, Challenge, Measures, Verdict, BUILTINS};
-use imlab::record::Figure;
+use imlab::record::{Figure, Unreached};
 use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
@@ -458,7 +458,12 @@ fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
     let mut sim = Simulation::traced(s).map_err(|e| e.to_string())?;
     let result = sim.run();
     let report = sim.report();
-    write_figures(report.figures.as_deref().unwrap_or(&[]), out).map_err(stdout_stop)?;
+    write_figures(
+        report.figures.as_deref().unwrap_or(&[]),
+        &report.unreached,
+        out,
+    )
+    .map_err(stdout_stop)?;
     let printed = if report.figures.is_some() {
         "figures printed of the samples before the failure"
     } else {
@@ -476,17 +481,25 @@ fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
 }
 
 /// Writes the header `name,value,unit` and one line per figure; a value read at the last sample
-/// is followed by its trend over the last tenth of the run, `NAME_rate` (its unit per second) and
-/// `NAME_settled` (1 when the value had settled by the end of the run, 0 when it was still
-/// changing).
-fn write_figures(list: &[Figure], out: &mut impl Write) -> io::Result<()> {
+/// is followed by its trend, `NAME_rate` (the slope of its line over the last tenth of the run,
+/// its unit per second) and `NAME_settled` (1 when the value had settled by the end of the run, 0
+/// when it was still changing, fluctuating, or the run ran away). A figure the run had not
+/// reached by its end is `NAME_reached,0,` in its place, with no value.
+fn write_figures(list: &[Figure], unreached: &[Unreached], out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "name,value,unit")?;
-    for f in list {
+    let not_reached = |i: usize| unreached.iter().filter(move |u| u.index == i);
+    for (i, f) in list.iter().enumerate() {
+        for u in not_reached(i) {
+            writeln!(out, "{}_reached,0,", u.name)?;
+        }
         writeln!(out, "{},{},{}", f.name, f.value, f.unit)?;
         if let Some(t) = &f.trend {
             writeln!(out, "{}_rate,{},{}/s", f.name, t.rate, f.unit)?;
             writeln!(out, "{}_settled,{},", f.name, u8::from(t.settled))?;
         }
+    }
+    for u in not_reached(list.len()) {
+        writeln!(out, "{}_reached,0,", u.name)?;
     }
     Ok(())
 }

@@ -56,7 +56,9 @@ pub struct Measure {
     pub value: f64,
     /// Unit.
     pub unit: String,
-    /// For a value read at the last sample: whether it had settled.
+    /// For a value read at the last sample: whether it had settled by the rule of the
+    /// challenge's brief, over the last tenth of the run (see
+    /// [`crate::record::Trend::settled_in_last_tenth`]).
     pub settled: Option<bool>,
 }
 
@@ -78,7 +80,8 @@ impl Measures {
 }
 
 /// The measures of a finished run: every figure of its report (the `*_final` ones with whether
-/// they settled), and [`LOAD_RECOVERY`] when its scenario has a load step.
+/// they settled over the last tenth, as the brief states), and [`LOAD_RECOVERY`] when its
+/// scenario has a load step.
 pub fn measure(sim: &Simulation) -> Measures {
     let r = sim.report();
     let mut figures: Vec<Measure> = r
@@ -89,7 +92,7 @@ pub fn measure(sim: &Simulation) -> Measures {
             name: f.name.to_string(),
             value: f.value,
             unit: f.unit.to_string(),
-            settled: f.trend.map(|t| t.settled),
+            settled: f.trend.map(|t| t.settled_in_last_tenth),
         })
         .collect();
     let s = sim.scenario();

@@ -19,7 +19,9 @@ mod trace;
 mod transient;
 mod window;
 
-pub use figures::{figure_info, report, Figure, FigureInfo, Report, Trend, Warning, FIGURE_INFO};
+pub use figures::{
+    figure_info, report, Figure, FigureInfo, Report, Trend, Unreached, Warning, FIGURE_INFO,
+};
 pub use m4::{m4, M4};
 pub use metrics::{metrics, Metrics};
 pub use recorder::Recorder;

@@ -10,8 +10,13 @@ use crate::scenario::Scenario;
 /// Settling band of the step response: 2 % of the step size.
 pub(super) const SETTLING_BAND: f64 = 0.02;
 
-/// Fraction of the recorded run, at its end, over which a final value's trend is fitted.
+/// Fraction of the recorded run, at its end, over which a final value's trend is fitted: its
+/// last tenth, and the two tenths before it for the means its approach is read from.
 pub(super) const TREND_SHARE: f64 = 0.1;
+
+/// Tenths a final value's trend reads: three consecutive means are the fewest that tell an
+/// approach (changes shrinking by a constant ratio) from a drift.
+pub(super) const TREND_TENTHS: usize = 3;
 
 /// Rows up to which a traced run keeps its window tally (about 50 s at 20 kHz, 40 MiB); a longer
 /// run's figures replay its window instead.
@@ -69,6 +74,55 @@ impl<const N: usize> LineFit<N> {
         let syy = self.syy[k] - self.sy[k] * self.sy[k] / self.n;
         let sty = self.sty[k] - self.st * self.sy[k] / self.n;
         ((syy - slope * sty) / (self.n - 2.0)).max(0.0).sqrt()
+    }
+
+    /// The mean of signal `k` (NaN with no samples).
+    pub(super) fn mean(&self, k: usize) -> f64 {
+        self.sy[k] / self.n
+    }
+}
+
+/// The final values' trend sums: one line fit per tenth of the recorded run over its last
+/// [`TREND_TENTHS`] tenths, oldest first; the last is the trend's line, the others give their
+/// means.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Tenths {
+    /// The first row of each tenth.
+    pub(super) from: [usize; TREND_TENTHS],
+    pub(super) fits: [LineFit<3>; TREND_TENTHS],
+}
+
+impl Tenths {
+    /// For a run of rows `0..len` at times `time(i)`.
+    pub(super) fn new(len: usize, time: impl Fn(usize) -> f64) -> Tenths {
+        let from = trend_starts(len, &time);
+        Tenths {
+            from,
+            fits: from.map(|i| LineFit::new(time(i.min(len - 1)))),
+        }
+    }
+
+    /// The first row the trend reads.
+    pub(super) fn first(&self) -> usize {
+        self.from[0]
+    }
+
+    /// Takes row `i` (rows in order; those before the first tenth are ignored).
+    #[inline]
+    pub(super) fn push(&mut self, i: usize, r: &Row) {
+        if let Some(k) = (0..TREND_TENTHS).rev().find(|&k| i >= self.from[k]) {
+            self.fits[k].push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
+        }
+    }
+
+    /// The line through the last tenth.
+    pub(super) fn line(&self) -> &LineFit<3> {
+        &self.fits[TREND_TENTHS - 1]
+    }
+
+    /// The means of signal `k` over the tenths, oldest first (NaN for a tenth with no rows).
+    pub(super) fn means(&self, k: usize) -> [f64; TREND_TENTHS] {
+        self.fits.map(|f| f.mean(k))
     }
 }
 
@@ -196,12 +250,14 @@ impl Settling {
     }
 }
 
-/// The first row of the final values' trend in a run of rows `0..len` at times `time(i)`: the
-/// last tenth of the recorded run.
-pub(super) fn trend_start(len: usize, time: impl Fn(usize) -> f64) -> usize {
+/// The first rows of the tenths the final values' trend reads in a run of rows `0..len` at times
+/// `time(i)`: the last [`TREND_TENTHS`] tenths of the recorded run, oldest first.
+fn trend_starts(len: usize, time: impl Fn(usize) -> f64) -> [usize; TREND_TENTHS] {
     let (first, last) = (time(0), time(len - 1));
-    let cut = last - TREND_SHARE * (last - first);
-    first_not(len, |i| time(i) < cut)
+    std::array::from_fn(|k| {
+        let cut = last - (TREND_TENTHS - k) as f64 * TREND_SHARE * (last - first);
+        first_not(len, |i| time(i) < cut)
+    })
 }
 
 /// What the window figures read of every row of a traced run, kept as its rows come (row k at
@@ -213,9 +269,8 @@ pub struct WindowTally {
     limit: Limit,
     steps: usize,
     summands: Vec<Summand>,
-    /// The trend's first row and its sums as planned.
-    trend_from: usize,
-    trend: LineFit<3>,
+    /// The trend's sums over the tenths as planned.
+    trend: Tenths,
     settling: Option<Settling>,
 }
 
@@ -228,13 +283,11 @@ impl WindowTally {
         }
         let ts = scenario.ts;
         let time = |k: usize| k as f64 * ts;
-        let trend_from = trend_start(steps, time);
         Some(WindowTally {
             limit: scenario.limit(),
             steps,
             summands: Vec::with_capacity(steps),
-            trend_from,
-            trend: LineFit::new(time(trend_from.min(steps - 1))),
+            trend: Tenths::new(steps, time),
             settling: Settling::step(&scenario.reference, ts, |t| {
                 first_not(steps, |k| time(k) < t)
             }),
@@ -246,10 +299,7 @@ impl WindowTally {
     pub fn push(&mut self, i: usize, r: &Row) {
         // Within the capacity reserved for the whole run: no allocation.
         self.summands.push(Summand::of(r, &self.limit));
-        if i >= self.trend_from {
-            self.trend
-                .push(r.t, [r.flux - r.flux_ref, r.omega_err, r.omega_est_err]);
-        }
+        self.trend.push(i, r);
         if let Some(s) = &mut self.settling {
             s.push(i, r);
         }
@@ -258,12 +308,8 @@ impl WindowTally {
     /// The window sums over rows `start..len`, the trend and the step's last time outside its
     /// band, when the tally covers them: the run reached its last sample (`len` rows) and the
     /// trend lies inside the window.
-    pub(super) fn window(
-        &self,
-        start: usize,
-        len: usize,
-    ) -> Option<(Window, LineFit<3>, Option<f64>)> {
-        if len != self.steps || self.summands.len() != len || self.trend_from < start {
+    pub(super) fn window(&self, start: usize, len: usize) -> Option<(Window, Tenths, Option<f64>)> {
+        if len != self.steps || self.summands.len() != len || self.trend.first() < start {
             return None;
         }
         let mut w = Window::new();
