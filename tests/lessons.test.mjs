@@ -347,10 +347,12 @@ const SPECS = {
       ['removes with a time constant of about [0.6] s', { tol: 0.05, seeds: SEEDS }, (m, seed) => rrTau(m, '', seed)],
       ['the true speed ends [0.12] rad/s high on every seed', { tol: 0.01, seeds: SEEDS }, (m, seed) => rrError(m, 6, '', seed)],
       ['the true speed ends 0.12 rad/s high on every seed', 'claim', (m) => SEEDS.every((seed) => m.fig(onSeed(RR, seed), 'speed_error_final_settled') === 1)],
-      // The same: a slow transient (a time constant of 0.45–0.75 s), then a settled bias under 0.35 rad/s.
+      // The same: a slow transient (a time constant of 0.45–0.75 s), then a bias under 0.35 rad/s
+      // that a run twice as long ends within 0.01 rad/s of (the strip's trend, read over the last
+      // tenth of one run, calls one of these 30 runs still changing).
       ['The same holds with the motor’s R_r 10 % below the model’s', 'claim', (m) => across([RR_LOW, J_HIGH, J_LOW]).every(([extra, seed]) => {
         const tau = rrTau(m, extra, seed);
-        return tau > 0.45 && tau < 0.75 && Math.abs(rrError(m, 6, extra, seed)) < 0.35 && m.fig(variant(RR, extra, seed), 'speed_error_final_settled') === 1;
+        return tau > 0.45 && tau < 0.75 && Math.abs(rrError(m, 6, extra, seed)) < 0.35 && Math.abs(rrError(m, 12, extra, seed) - rrError(m, 6, extra, seed)) < 0.01;
       })],
       ['(plant.rr=4.455: it ends [0.30] rad/s high)', { tol: 0.01, seeds: SEEDS }, (m, seed) => rrError(m, 6, RR_LOW, seed)],
       ['and with the model’s inertia 20 % off either way ([0.10] to [0.16] rad/s high)', { range: 0.01, seeds: across([J_HIGH, J_LOW]) }, (m, [extra, seed]) => rrError(m, 6, extra, seed)],
@@ -441,7 +443,7 @@ const SPECS = {
       ['and within 0.05 rad/s with the motor’s R_r 10 % below the model’s instead or the model’s inertia 20 % off either way', 'claim',
         (m) => overAll(m, EST_PRESET, [RR_LOW, J_HIGH, J_LOW], 'speed_error_final').every((e) => Math.abs(e) < 0.05)],
       // With the motor's R_r exact or 10 % low, R̂_r is over 1 % high at 4 s as well.
-      ['But R̂_r is biased high whatever the motor’s value', 'claim', (m) => across([['plant.rr=4.95', 4.95], [RR_LOW, 4.455]]).every(([[extra, rr], seed]) => rrEstStats(m, variant(RR_EST, extra, seed), 4).hat > 1.01 * rr)],
+      ['But R̂_r is biased high, with the motor’s R_r 10 % above, equal to or 10 % below the model’s', 'claim', (m) => across([['plant.rr=4.95', 4.95], [RR_LOW, 4.455]]).every(([[extra, rr], seed]) => rrEstStats(m, variant(RR_EST, extra, seed), 4).hat > 1.01 * rr)],
       ['[1.6] to [3.2] % at 4 s', { range: 0.1, seeds: SEEDS }, (m, seed) => 100 * (rrEstStats(m, onSeed(RR_EST, seed), 4).hat / 5.445 - 1)],
       ['[2.3] to [3.6] % at 8 s (duration=8) over seeds 1–10', { range: 0.1, seeds: SEEDS }, (m, seed) => 100 * (rrEstStats(m, onSeed(RR_EST8, seed), 8).hat / 5.445 - 1)],
       ['At 4 s the speed is [0.017] to [0.030] rad/s high', { range: 0.001, seeds: SEEDS }, (m, seed) => m.fig(onSeed(RR_EST, seed), 'speed_error_final')],
@@ -465,7 +467,7 @@ const SPECS = {
     givens: ['α_c = 2π·1 kHz', 'poles at −2π·50 Hz', 'speed loop at 10 Hz', 'Ki = Kp·α_ω/4', 'ramp at 200 rad/s² to 40 rad/s', 'limited to 3.7 A so that |i_s| stays within the 4 A rating', 'same ramp within 4 A', 'ramp ends (at 0.25 s)', 'within 2 % of 40 rad/s', 'R_r 10 % above the model’s (plant.rr = 5.445)', 'again with plant.rr = 5.445', 'load.time = 1 and duration = 2', 'within the same 4 A', '5-state design does not', 'With an exact model, on seeds 1–10', 'within 2 % (0.8 rad/s) for good', 'inertia 20 % high or low it falls', 'preset’s 40 rad/s step', 'a 2 N m step at 1 s', 'back within 0.5 rad/s after', 'with R_r 10 % or the inertia 20 % off either way', 'follows the same ramp with R_r 10 % high or low', 'and the 5-state design at least'],
     checks: [
       // Backstepping holds +4 % on every seed and runs away at +5 % on most, from the EKF's 10 % initial error.
-      ['it survives a motor R_r at most about 5 % above the model’s', 'claim', (m) => runaways(m, `${RAMP_BS}${rrOff(4)}`) === 0 && runaways(m, `${RAMP_BS}${rrOff(5)}`) > 5],
+      ['it survives a motor R_r at most 4 % above the model’s', 'claim', (m) => runaways(m, `${RAMP_BS}${rrOff(4)}`) === 0 && runaways(m, `${RAMP_BS}${rrOff(5)}`) > 5],
       ['where the IFOC holds with R_r 10 % off either way', 'claim', (m) => [rrOff(10), rrOff(-10)].every((off) => runaways(m, `${RAMP}${off}`) === 0 && everySeed(`${RAMP}${off}`, (run) => m.fig(run, 'tracking_peak') < 8))],
       // The largest peak over seeds 1–10 is between 0.14 and 0.15 rad/s.
       ['stays within 0.15 rad/s of the ramp', 'claim', (m) => {
@@ -546,7 +548,7 @@ const SPECS = {
       // With each of the three model errors, on every seed: Euler at least 98.5 %, RK4 under 0.1 %.
       ['This holds with an exact model, with the model’s inertia 20 % off either way and with the motor’s R_r 10 % below the model’s', 'claim', (m) => ['&model.j=0.024', '&model.j=0.016', rrOff(-10)].every((off) => everySeed(`${HIGH}${off}`, (run) => m.fig(run, 'saturated_share') > 0.985)
         && everySeed(`${HIGH}${off}&ekf=rk4`, (run) => m.fig(run, 'saturated_share') < 0.001))],
-      ['with it 10 % above, this 0.5 rad/s step is where the loop loses the motor whatever the predictor', 'claim', (m) => runaways(m, `${HIGH}${rrOff(10)}`) > 0 && runaways(m, `${HIGH}${rrOff(10)}&ekf=rk4`) === 10],
+      ['with it 10 % above, this 0.5 rad/s step can lose the motor with either predictor', 'claim', (m) => runaways(m, `${HIGH}${rrOff(10)}`) > 0 && runaways(m, `${HIGH}${rrOff(10)}&ekf=rk4`) === 10],
       ['At 3000/s [99.2] to [99.6] % of the strip’s samples', { range: 0.05, ...S10 }, (m, s) => 100 * m.fig(withSeed(HIGH, s), 'saturated_share')],
       ['with noise 0 still [99.4] %', 0.05, (m) => 100 * m.fig(`${HIGH}&noise=0`, 'saturated_share')],
       // The largest share over seeds 1–10.
@@ -606,7 +608,7 @@ const SPECS = {
     ],
   },
   'How exact must the model be?': {
-    givens: ['0 → 0.5 rad/s', 'run for 1 s', 'from 10 % below to 10 % above the model’s 4.95 Ω', 'noise seeds 1–10', 'plant.rr = 4.95', 'duration = 3', 'holding 50 rad/s', 'when it holds 50 rad/s', 'at 0.5 rad/s and at 50 rad/s', '±10 %'],
+    givens: ['0 → 0.5 rad/s', 'run for 1 s', 'from 10 % below to 10 % above the model’s 4.95 Ω', 'noise seeds 1–10', 'plant.rr = 4.95', 'duration = 3', 'holding 50 rad/s', 'when it holds 50 rad/s', 'at 50 rad/s read the period', '±10 %'],
     checks: [
       ['at most 4 % above the model’s: from 6 % above on it runs away on every seed', 'claim', (m) => {
         const rows = m.robust(MAP_STEP, 'plant.rr=4%..6%:2');
@@ -620,11 +622,17 @@ const SPECS = {
         return Math.abs(r.speed_error_final_max - 0.082) < 0.0005 && Math.abs(r.speed_error_final_min - 0.082) < 0.0005;
       }],
       ['Holding 50 rad/s, the same loop holds the whole ±10 % on every seed and ends within 0.4 rad/s of the reference', 'claim', (m) => m.robust(MAP_50, 'plant.rr=-10%..+10%:11').every((r) => r.ran_away === 0 && Math.abs(r.speed_error_final_min) < 0.4 && Math.abs(r.speed_error_final_max) < 0.4)],
+      ['at 0.5 rad/s it is longer than the 1 s run', 'claim', (m) => 1 / m.statorFrequency(MAP_STEP, 0.5) > 1],
       ['[0.42] Hz at 0.5 rad/s', 0.005, (m) => m.statorFrequency(MAP_STEP, 0.5)],
       ['[16] Hz at 50 rad/s', 0.5, (m) => m.statorFrequency(MAP_50, 1.5)],
+      ['at 4 % above, the speed still ends 0.033 to 0.034 rad/s low, over a hundred times the exact model’s error', 'claim', (m) => {
+        const [exact, off] = m.robust(MAP_STEP, 'plant.rr=0%..4%:2');
+        return Math.round(-1e3 * off.speed_error_final_min) === 34 && Math.round(-1e3 * off.speed_error_final_max) === 33
+          && off.speed_error_final_median / exact.speed_error_final_median > 100;
+      }],
       // The same loop, the speed raised: the run away at +10 % goes.
-      ['That explains 0.5 against 50 rad/s', 'cause', (m) => m.robust(MAP_STEP, 'plant.rr=10%..10%:1')[0].ran_away === 10 && m.robust(MAP_50, 'plant.rr=10%..10%:1')[0].ran_away === 0],
-      ['the tolerance is not simply set by the speed: holding 20 rad/s the loop runs away with the motor’s R_r 10 % high on every seed and already 4 % high on some, worse than at 0.5 rad/s', 'cause', (m) => {
+      ['The usual argument fits this pair', 'claim', (m) => m.robust(MAP_STEP, 'plant.rr=10%..10%:1')[0].ran_away === 10 && m.robust(MAP_50, 'plant.rr=10%..10%:1')[0].ran_away === 0],
+      ['the tolerance is not a function of the speed alone: holding 20 rad/s the loop runs away with the motor’s R_r 10 % high on every seed and already 4 % high on some, worse than at 0.5 rad/s', 'cause', (m) => {
         const at20 = m.robust(atSpeed(20), 'plant.rr=4%..10%:2');
         const some = at20[0].ran_away;
         return at20[1].ran_away === 10 && some > 0 && some < 10 && m.robust(MAP_STEP, 'plant.rr=4%..4%:1')[0].ran_away === 0;

@@ -4,6 +4,7 @@
 // map (`#robust=`) runs once; a cancelled map keeps the cells it finished.
 import uPlot from '../vendor/uPlot.esm.js';
 import { $, say } from './page.js';
+import { Pool } from './analysis.js';
 import { download } from './export.js';
 import { excerpt, fragment, setFragment } from './url.js';
 
@@ -16,32 +17,43 @@ const el = (tag, props = {}, children = []) => {
 /** A number for a cell or an axis tick: four significant digits. */
 const fmt = (v) => (Number.isFinite(v) ? Number(v.toPrecision(4)).toString() : '—');
 
-// Colours of the heat map, light to dark (a sequential scale readable in greyscale).
+// Colours of the heat map: light to dark for values of one sign (readable in greyscale), and
+// blue through white to red for values of both signs, white at zero.
 const SCALE = ['#f7fbff', '#deebf7', '#c6dbef', '#9ecae1', '#6baed6', '#4292c6', '#2171b5', '#08519c', '#08306b'];
+const DIVERGING = ['#2166ac', '#4393c3', '#92c5de', '#d1e5f0', '#f7f7f7', '#fddbc7', '#f4a582', '#d6604d', '#b2182b'];
 
 /**
- * The colour of `v` among `values`: on a log scale when they are all positive and span more
- * than a decade, else linear. Returns [colour, whether the text on it should be light].
+ * The colour of `v` among `values`: values of both signs on a scale centred at zero; values of
+ * one sign on a log scale when they span more than a decade, else linear. Returns {of(v) →
+ * [colour, light text], words: the scale and its ends}.
  */
 function colourScale(values) {
   const finite = values.filter(Number.isFinite);
-  const log = finite.length > 0 && finite.every((v) => v > 0) && Math.max(...finite) / Math.min(...finite) > 10;
+  const [min, max] = [Math.min(...finite), Math.max(...finite)];
+  const pick = (palette, x) => {
+    const i = Math.min(palette.length - 1, Math.max(0, Math.round(x * (palette.length - 1))));
+    return [palette[i], palette === SCALE ? i >= 5 : i <= 1 || i >= 7];
+  };
+  if (min < 0 && max > 0) {
+    const m = Math.max(-min, max);
+    return { of: (v) => pick(DIVERGING, 0.5 + v / (2 * m)), words: `blue −${fmt(m)} through white 0 to red ${fmt(m)}` };
+  }
+  const log = min > 0 && max / min > 10;
   const f = log ? Math.log10 : (v) => v;
-  const [lo, hi] = [Math.min(...finite.map(f)), Math.max(...finite.map(f))];
+  const [lo, hi] = [f(min), f(max)];
   return {
-    log,
-    of: (v) => {
-      const x = hi > lo ? (f(v) - lo) / (hi - lo) : 0.5;
-      const i = Math.min(SCALE.length - 1, Math.max(0, Math.round(x * (SCALE.length - 1))));
-      return [SCALE[i], i >= 5];
-    },
+    of: (v) => pick(SCALE, hi > lo ? (f(v) - lo) / (hi - lo) : 0.5),
+    words: `${log ? 'log' : 'linear'} scale from light ${fmt(min)} to dark ${fmt(max)}`,
   };
 }
 
 /** `analysis` holds the worker pool; `open(scenario)` runs a scenario on the Plots tab. */
 export function createRobust({ state, analysis, open, showTab }) {
   let shared = fragment('robust'); // from the link that opened the page
-  let last = null; // {map, cells, figures, partial}: the map drawn
+  let last = null; // {map, full, cells, figures, whole}: the map drawn
+  // The map's own workers: a sweep or a seed run on the Analysis tab's other pool neither waits
+  // for it nor cancels it.
+  const pool = new Pool(analysis.pool.size);
   const form = $('map-form');
   const status = $('map-status');
   const progress = $('map-progress');
@@ -51,7 +63,8 @@ export function createRobust({ state, analysis, open, showTab }) {
     const seeds = parts.find((p) => p.startsWith('seeds='));
     const axes = parts.filter((p) => !p.startsWith('seeds='));
     form.elements.namedItem('axis1').value = axes[0] ?? '';
-    form.elements.namedItem('axis2').value = axes[1] ?? '';
+    // A third axis stays in the form, where the core refuses it by name.
+    form.elements.namedItem('axis2').value = axes.slice(1).join(';');
     if (seeds) form.elements.namedItem('seeds').value = seeds.slice('seeds='.length);
   }
 
@@ -65,7 +78,7 @@ export function createRobust({ state, analysis, open, showTab }) {
     const text = formText();
     let plan;
     try {
-      [plan] = await analysis.pool.run([{ kind: 'map-plan', scenario: state.info.encoded, text }]);
+      [plan] = await pool.run([{ kind: 'map-plan', scenario: state.info.encoded, text }]);
     } catch (e) {
       status.textContent = `The map was not run: ${e.message}.`;
       document.body.dataset.map = 'refused';
@@ -76,18 +89,21 @@ export function createRobust({ state, analysis, open, showTab }) {
     const per = map.seeds.length;
     const total = map.cells.length * per;
     const runs = new Array(total);
+    const finished = new Array(map.cells.length).fill(0);
+    let cellsDone = 0;
     $('map-run').disabled = true;
     $('map-cancel').disabled = false;
     $('map-csv').disabled = true;
     progress.value = 0;
-    document.body.dataset.map = 'running';
+    Object.assign(document.body.dataset, { map: 'running', mapCells: '0' });
     status.textContent = `Running ${map.cells.length} cells × ${per} seeds…`;
     const started = performance.now();
     let cancelled = false;
     try {
       const jobs = map.cells.flatMap((c) => map.seeds.map((seed) => ({ kind: 'map-run', scenario: c.scenario, seed })));
-      await analysis.pool.run(jobs, (done, index, result) => {
+      await pool.run(jobs, (done, index, result) => {
         runs[index] = result;
+        if (++finished[Math.floor(index / per)] === per) document.body.dataset.mapCells = String(++cellsDone);
         progress.value = done / total;
         status.textContent = `Running the map: ${done} of ${total} runs.`;
       });
@@ -101,11 +117,13 @@ export function createRobust({ state, analysis, open, showTab }) {
       }
       cancelled = true;
     }
-    // The cells whose every seed finished (all of them unless cancelled).
-    const whole = map.cells.map((_, i) => runs.slice(i * per, (i + 1) * per).filter(Boolean).length === per);
+    // The cells whose every seed finished (all of them unless cancelled); the summary that
+    // follows cannot be cancelled, so that what finished is kept.
+    $('map-cancel').disabled = true;
+    const whole = finished.map((n) => n === per);
     const kept = { ...map, cells: map.cells.filter((_, i) => whole[i]) };
     try {
-      const [cells] = await analysis.pool.run([{ kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) }]);
+      const [cells] = await pool.run([{ kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) }]);
       last = { map: kept, full: map, cells, figures, whole };
       draw();
       const ms = performance.now() - started;
@@ -140,9 +158,9 @@ export function createRobust({ state, analysis, open, showTab }) {
     box.replaceChildren();
     const { full, cells, whole } = last;
     const axes = full.axes;
-    const relative = axes.map((a) => a.text.includes('%'));
+    const relative = axes.map((a) => a.relative);
     const axisValue = (a, i) => (relative[a] ? 100 * axes[a].errors[i] : axes[a].values[i]);
-    const axisName = (a) => (relative[a] ? `${axes[a].key} against the ${axes[a].key.startsWith('plant.') ? 'model' : 'motor'} (%)` : axes[a].key);
+    const axisName = (a) => axes[a].label;
     // The cells by their place in the full grid; a cell not run is undefined.
     const byIndex = [];
     let c = 0;
@@ -227,7 +245,7 @@ export function createRobust({ state, analysis, open, showTab }) {
         t.append(el('tr', {}, [el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }), cellOf(cell), el('td', { className: 'map-range', textContent: range })]));
       });
     }
-    const key = el('p', { className: 'map-key', textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over ${last.full.seeds.length} seeds; colour on a ${scale.log ? 'log' : 'linear'} scale; ✕ ran away on that many seeds (never coloured as a value); ⚠ EKF inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).` });
+    const key = el('p', { className: 'map-key', textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${last.full.seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).` });
     return el('div', {}, [key, t]);
   }
 
@@ -247,10 +265,10 @@ export function createRobust({ state, analysis, open, showTab }) {
   }
 
   $('map-run').addEventListener('click', runMap);
-  $('map-cancel').addEventListener('click', () => analysis.pool.cancel());
+  $('map-cancel').addEventListener('click', () => pool.cancel());
   $('map-figure').addEventListener('change', () => last && draw());
   $('map-csv').addEventListener('click', async () => {
-    const [csv] = await analysis.pool.run([{ kind: 'map-csv', map: last.map, cells: last.cells }]);
+    const [csv] = await pool.run([{ kind: 'map-csv', map: last.full, cells: last.cells }]);
     download(new Blob([csv], { type: 'text/csv' }), 'imlab-robust.csv');
   });
 

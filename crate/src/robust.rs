@@ -27,6 +27,10 @@ pub const MAX_POINTS: usize = 101;
 /// Most seeds a map runs at each cell.
 pub const MAX_MAP_SEEDS: u64 = 1000;
 
+/// Most runs (cells × seeds) in one map: each run is a message and a result in the page's
+/// workers, whatever its length.
+pub const MAX_MAP_RUNS: usize = 100_000;
+
 /// Most plant steps (samples × RK4 substeps) a whole map may take: 40 of the longest single runs
 /// the codec accepts, a few minutes on each of two cores.
 pub const MAX_MAP_WORK: u64 = 400_000_000;
@@ -38,6 +42,10 @@ pub struct Axis {
     pub key: String,
     /// The axis as written, `KEY=LO..HI:N`, for the map's text.
     pub text: String,
+    /// Whether LO and HI were relative errors (the axis is read in per cent of the other side).
+    pub relative: bool,
+    /// The axis in words for a plot, e.g. "plant.rr against the model (%)" or "model.j (kg m²)".
+    pub label: String,
     /// The key's values, in order.
     pub values: Vec<f64>,
     /// Each value's relative error against the other side's value in the base scenario (the
@@ -48,6 +56,8 @@ pub struct Axis {
 /// One cell of a map: its values on each axis and the scenario that runs there.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CellPlan {
+    /// The cell's place on each axis.
+    pub index: Vec<usize>,
     /// The cell's value on each axis.
     pub values: Vec<f64>,
     /// The base scenario with those values and the map's first seed, as the codec writes it
@@ -94,6 +104,8 @@ pub struct MapRun {
 /// median and maximum over the runs that completed.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cell {
+    /// The cell's place on each axis.
+    pub index: Vec<usize>,
     /// The cell's value on each axis.
     pub values: Vec<f64>,
     /// The cell's scenario (see [`CellPlan::scenario`]).
@@ -104,8 +116,8 @@ pub struct Cell {
     pub ran_away: usize,
     /// Runs whose filter was inconsistent.
     pub inconsistent: usize,
-    /// Per figure of [`MAP_FIGURES`]: [minimum, median, maximum] over the runs that completed
-    /// (the simulation did not stop early) and have the figure; NaN when none has.
+    /// Per figure of [`MAP_FIGURES`]: [minimum, median, maximum] over the runs that neither ran
+    /// away nor stopped early and have the figure; NaN when none has.
     pub stats: Vec<[f64; 3]>,
 }
 
@@ -119,13 +131,10 @@ fn counterpart(key: &str) -> Option<String> {
     }
 }
 
-/// The value of numeric field `key` of `s`.
-fn value_of(s: &Scenario, key: &str) -> Option<f64> {
-    s.describe()
-        .into_iter()
-        .find(|f| f.key == key)
-        .and_then(|f| f.value)
-        .and_then(|v| v.parse().ok())
+/// The value and unit of numeric field `key` of `s`.
+fn value_of(s: &Scenario, key: &str) -> Option<(f64, &'static str)> {
+    let f = s.describe().into_iter().find(|f| f.key == key)?;
+    Some((f.value?.parse().ok()?, f.unit))
 }
 
 /// One end of an axis: a number, or a relative error in per cent (`-10%`, `+5%`).
@@ -135,8 +144,10 @@ fn end(text: &str, what: &str) -> Result<(f64, bool), String> {
         Some(n) => (n, true),
         None => (t, false),
     };
-    let v: f64 = number
+    let unsigned = number
         .strip_prefix('+')
+        .filter(|n| !n.starts_with(['-', '+']));
+    let v: f64 = unsigned
         .unwrap_or(number)
         .parse()
         .ok()
@@ -168,7 +179,7 @@ impl Axis {
                 excerpt(key)
             )
         })?;
-        let theirs = value_of(base, &other)
+        let (theirs, unit) = value_of(base, &other)
             .ok_or_else(|| format!("axis '{}': no parameter {}", excerpt(text), excerpt(key)))?;
         if key.ends_with(".np") {
             return Err(format!(
@@ -202,6 +213,13 @@ impl Axis {
                     excerpt(count)
                 )
             })?;
+        if lo_rel && theirs == 0.0 {
+            return Err(format!(
+                "axis '{}': {other} is 0, so a relative error of it is 0 too; give {key} in \
+                 values",
+                excerpt(text)
+            ));
+        }
         if lo > hi {
             return Err(format!(
                 "axis {key}: LO ({}) is above HI ({})",
@@ -220,17 +238,40 @@ impl Axis {
         // 5.197500000000001), so a cell's scenario is the one its link names.
         let values: Vec<f64> = (0..n)
             .map(|i| {
-                if lo_rel {
-                    rounded(theirs * (1.0 + at(i)))
+                rounded(if lo_rel {
+                    theirs * (1.0 + at(i))
                 } else {
                     at(i)
+                })
+            })
+            .collect();
+        // Against a zero other side no relative error exists (NaN, an empty CSV field).
+        let errors = values
+            .iter()
+            .map(|v| {
+                if theirs == 0.0 {
+                    f64::NAN
+                } else {
+                    rounded(v / theirs - 1.0)
                 }
             })
             .collect();
-        let errors = values.iter().map(|v| rounded(v / theirs - 1.0)).collect();
+        let side = if key.starts_with("plant.") {
+            "model"
+        } else {
+            "motor"
+        };
         Ok(Axis {
             key: key.to_string(),
             text: format!("{key}={lo_text}..{hi_text}:{n}"),
+            relative: lo_rel,
+            label: if lo_rel {
+                format!("{key} against the {side} (%)")
+            } else if unit.is_empty() {
+                key.to_string()
+            } else {
+                format!("{key} ({unit})")
+            },
             values,
             errors,
         })
@@ -287,14 +328,26 @@ impl Map {
         if axes.is_empty() || axes.len() > 2 {
             return Err(format!("{} axes: a map has one or two", axes.len()));
         }
-        if axes.len() == 2 && axes[0].key == axes[1].key {
-            return Err(format!("both axes vary {}: choose two keys", axes[0].key));
+        if axes.len() == 2 && axes[0].key[6..] == axes[1].key[6..] {
+            return Err(format!(
+                "the axes vary {} and {}, both sides of one parameter: vary one side, in values \
+                 or as a relative error against the other",
+                axes[0].key, axes[1].key
+            ));
         }
         if seeds.is_empty() {
             return Err("no seeds: a map runs at least one".to_string());
         }
         let shape: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
         let count: usize = shape.iter().product();
+        if count * seeds.len() > MAX_MAP_RUNS {
+            return Err(format!(
+                "the map needs {} runs ({count} cells × {} seeds), more than the {MAX_MAP_RUNS} \
+                 allowed; use fewer points or seeds",
+                count * seeds.len(),
+                seeds.len()
+            ));
+        }
         let mut cells = Vec::with_capacity(count);
         let mut work: u64 = 0;
         for index in 0..count {
@@ -302,10 +355,12 @@ impl Map {
             s.seed = seeds[0];
             let mut rest = index;
             let mut values = vec![0.0; axes.len()];
+            let mut place = vec![0; axes.len()];
             for (k, axis) in axes.iter().enumerate().rev() {
                 let i = rest % shape[k];
                 rest /= shape[k];
                 values[k] = axis.values[i];
+                place[k] = i;
                 s.set(&axis.key, &axis.values[i].to_string())
                     .map_err(|e| format!("{}={}: {e}", axis.key, short(axis.values[i])))?;
             }
@@ -315,6 +370,7 @@ impl Map {
                     .saturating_mul(seeds.len() as u64),
             );
             cells.push(CellPlan {
+                index: place,
                 values,
                 scenario: s.encode(),
             });
@@ -346,6 +402,9 @@ impl Map {
         let mut seeds = None;
         for part in text.split(';').filter(|p| !p.trim().is_empty()) {
             match part.trim().strip_prefix("seeds=") {
+                Some(_) if seeds.is_some() => {
+                    return Err("seeds are given twice: give them once".to_string())
+                }
                 Some(range) => seeds = Some(parse_seeds(range)?),
                 None => axes.push(Axis::parse(base, part)?),
             }
@@ -397,8 +456,12 @@ fn stats(mut values: Vec<f64>) -> [f64; 3] {
 
 /// The row of `cell` from its runs (one a seed; their order does not matter).
 pub fn summarise(cell: &CellPlan, runs: &[MapRun]) -> Cell {
-    let done: Vec<&MapRun> = runs.iter().filter(|r| r.failure.is_none()).collect();
+    let done: Vec<&MapRun> = runs
+        .iter()
+        .filter(|r| r.failure.is_none() && !r.ran_away)
+        .collect();
     Cell {
+        index: cell.index.clone(),
         values: cell.values.clone(),
         scenario: cell.scenario.clone(),
         runs: runs.len(),
@@ -451,10 +514,9 @@ fn field(v: f64) -> String {
 /// One row of a map's CSV.
 pub fn csv_row(map: &Map, cell: &Cell) -> String {
     let mut cols: Vec<String> = Vec::new();
-    for (a, v) in map.axes.iter().zip(&cell.values) {
-        let i = a.values.iter().position(|x| x == v).unwrap_or(0);
+    for ((a, v), &i) in map.axes.iter().zip(&cell.values).zip(&cell.index) {
         cols.push(field(*v));
-        cols.push(field(100.0 * a.errors[i]));
+        cols.push(field(rounded(100.0 * a.errors[i])));
     }
     cols.extend([cell.runs, cell.ran_away, cell.inconsistent].map(|n| n.to_string()));
     for s in &cell.stats {
@@ -465,9 +527,21 @@ pub fn csv_row(map: &Map, cell: &Cell) -> String {
 }
 
 /// The whole CSV of a map: a comment line with the map's text and seeds, the header, one row a
-/// cell.
+/// cell. When `cells` holds only some of the map's cells (it was stopped), a second comment line
+/// says how many.
 pub fn map_csv(map: &Map, cells: &[Cell]) -> String {
     let mut out = csv_preamble(map);
+    if cells.len() < map.cells.len() {
+        let at = out.find('\n').map_or(0, |i| i + 1);
+        out.insert_str(
+            at,
+            &format!(
+                "# {} of {} cells: the map was stopped before the others ran\n",
+                cells.len(),
+                map.cells.len()
+            ),
+        );
+    }
     for c in cells {
         out.push_str(&csv_row(map, c));
     }
@@ -518,6 +592,59 @@ mod tests {
     }
 
     #[test]
+    fn maps_that_would_be_silently_wrong_are_refused() {
+        let no_load = Scenario::parse("v=1&preset=step&plant.t0=0&model.t0=0").unwrap();
+        let e = Axis::parse(&no_load, "plant.t0=-10%..10%:3").unwrap_err();
+        assert!(e.contains("model.t0 is 0"), "{e}");
+        let e = Map::parse(&step(), "plant.rr=-10%..10%:3;model.rr=4..5:2").unwrap_err();
+        assert!(e.contains("both sides of one parameter"), "{e}");
+        let e = Map::parse(&step(), "plant.rr=-10%..10%:3;seeds=1..2;seeds=3..4").unwrap_err();
+        assert!(e.contains("twice"), "{e}");
+        let e = Axis::parse(&step(), "plant.rr=+-5%..5%:3").unwrap_err();
+        assert!(e.contains("LO '+-5%'"), "{e}");
+        let e = Map::parse(
+            &step(),
+            "plant.rr=-10%..10%:101;model.j=-20%..20%:101;seeds=1..11",
+        )
+        .unwrap_err();
+        assert!(e.contains("112211 runs"), "{e}");
+        // Values and their errors are written as a user would type them.
+        let m = Map::parse(&step(), "model.j=0.016..0.024:5;seeds=1").unwrap();
+        assert!(
+            m.cells[1].scenario.ends_with("model.j=0.018"),
+            "{}",
+            m.cells[1].scenario
+        );
+        assert_eq!(m.axes[0].label, "model.j (kg m²)");
+        let m = Map::parse(&step(), "plant.rr=-10%..10%:21;seeds=1").unwrap();
+        let cell = summarise(&m.cells[3], &[]);
+        assert!(
+            csv_row(&m, &cell).starts_with("4.6035,-7,0,"),
+            "{}",
+            csv_row(&m, &cell)
+        );
+    }
+
+    #[test]
+    fn a_stopped_map_says_how_many_cells_its_csv_holds() {
+        let m = Map::parse(&step(), "plant.rr=-10%..10%:3;seeds=1").unwrap();
+        let cells: Vec<Cell> = m.cells[..1].iter().map(|c| summarise(c, &[])).collect();
+        let csv = map_csv(&m, &cells);
+        assert_eq!(
+            csv.lines().nth(1),
+            Some("# 1 of 3 cells: the map was stopped before the others ran")
+        );
+        assert!(!map_csv(
+            &m,
+            &m.cells
+                .iter()
+                .map(|c| summarise(c, &[]))
+                .collect::<Vec<_>>()
+        )
+        .contains("stopped"));
+    }
+
+    #[test]
     fn a_map_past_the_work_bound_is_refused_with_what_it_needs() {
         let long = Scenario::parse("v=1&preset=rr-mismatch&duration=20").unwrap();
         let e = Map::parse(&long, "plant.rr=-10%..10%:101;seeds=1..100").unwrap_err();
@@ -549,15 +676,19 @@ mod tests {
             inconsistent: false,
             failure: failure.map(String::from),
         };
+        let mut away = run(4, -50.0, None);
+        away.ran_away = true;
         let c = summarise(
             &m.cells[0],
             &[
                 run(1, 3.0, None),
                 run(2, 1.0, None),
                 run(3, 1e9, Some("diverged")),
+                away,
             ],
         );
-        assert_eq!((c.runs, c.ran_away), (3, 1));
+        assert_eq!((c.runs, c.ran_away), (4, 2));
+        // Neither the diverged run nor the one that ran away enters the statistics.
         assert_eq!(c.stats[0], [1.0, 2.0, 3.0]);
     }
 

@@ -411,7 +411,7 @@ pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
     let map: robust::Map = from_js(map)?;
     let runs: Vec<robust::MapRun> = from_js(runs)?;
     let per = map.seeds.len();
-    if runs.len() != map.cells.len() * per {
+    if per == 0 || runs.len() != map.cells.len() * per {
         return Err(js_error(format!(
             "{} runs for {} cells × {per} seeds",
             runs.len(),
@@ -427,7 +427,8 @@ pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
     to_js(&cells)
 }
 
-/// A map's rows as the CSV `imlab robust` prints.
+/// A map's rows as the CSV `imlab robust` prints; `cells` may be some of `map`'s (a stopped map),
+/// which the CSV then says.
 #[wasm_bindgen]
 pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
     let map: robust::Map = from_js(map)?;
@@ -440,7 +441,7 @@ pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
 pub fn robust_figures() -> Result<JsValue, JsValue> {
     let info: Vec<_> = robust::MAP_FIGURES
         .iter()
-        .filter_map(|f| crate::record::figure_info(f))
+        .map(|f| crate::record::figure_info(f).expect("a map's figures are report figures"))
         .collect();
     to_js(&info)
 }

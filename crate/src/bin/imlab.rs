@@ -134,7 +134,8 @@ enum Command {
     /// order (the last --vary fastest), written as soon as the cell and every cell before it are
     /// done: the axis values and their errors against the other side (in %), the number of runs,
     /// of runs that ran away (the runaway warning, or a diverged simulation) and of runs whose
-    /// EKF was inconsistent, then the minimum, median and maximum over the completed runs of
+    /// EKF was inconsistent, then the minimum, median and maximum over the runs that neither ran
+    /// away nor stopped early of
     /// tracking_rms, tracking_peak, speed_error_final, speed_estimate_error_final,
     /// flux_error_final, current_peak, saturated_share and mean_nis, then the cell's scenario.
     Robust {
