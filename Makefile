@@ -13,11 +13,12 @@ wasm: setup
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
 # The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one module,
 # dist/web/main.js: a load asks for one file, not one per module found level by level. The worker's
-# modules stay apart (the core's glue finds the WASM module beside itself).
+# modules stay apart, in dist/web/worker/ (the core's glue finds the WASM module beside itself).
 dist: wasm
+	rm -rf dist/web
 	mkdir -p dist/web dist/vendor/katex/fonts
 	cp static/*.html static/*.css static/*.js dist/
-	cp web/*.js dist/web/
+	cp -r web/. dist/web/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
 	node_modules/.bin/esbuild dist/web/main.js --bundle --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js

@@ -1,11 +1,11 @@
-// The worker's challenge jobs (web/challenge-jobs.js) in Node, on the core the page ships: each
+// The worker's challenge jobs (web/worker/challenge-jobs.js) in Node, on the core the page ships: each
 // built-in's known solution passes on every run and its untouched base fails; a submission
 // outside the challenge is refused naming the field; a bad challenge throws the core's message.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { initSync } from '../dist/pkg/imlab.js';
-import { CHALLENGE_JOBS as jobs } from '../dist/web/challenge-jobs.js';
+import { CHALLENGE_JOBS as jobs } from '../dist/web/worker/challenge-jobs.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 

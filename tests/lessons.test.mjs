@@ -5,10 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { LESSONS, SECTIONS } from '../web/teaching.js';
+import { LESSONS, SECTIONS } from '../web/teaching/teaching.js';
 import { Core, checkText, numbersIn } from './claims.mjs';
 import { SEEDS, unnoticedSwaps, withSeed as onSeed } from './claims.mjs';
-import { STABILITY_CAUSES } from '../web/teaching.js';
+import { STABILITY_CAUSES } from '../web/teaching/teaching.js';
 import * as claims from './claims.mjs';
 
 const core = new Core();

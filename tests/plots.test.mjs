@@ -1,7 +1,7 @@
 // Browser tests of the plots: true to the samples at every zoom, the run's figures, knobs
 // that run, and lessons with their panel. Every test fails on a console error.
 import { test } from 'node:test';
-import { LESSONS } from '../web/teaching.js';
+import { LESSONS } from '../web/teaching/teaching.js';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';

@@ -1,12 +1,12 @@
 // The page quotes address parts on its main thread, which holds no instance of the core: its
-// `excerpt` (web/url.js) must write what the core's (crate/src/quote.rs, the CLI's) writes.
+// `excerpt` (web/ui/url.js) must write what the core's (crate/src/quote.rs, the CLI's) writes.
 // Checked in Node against the core's binding for every code point, in strings of a few at a time
 // (escaping is per character), and for the cut of long input.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { initSync, excerpt as core } from '../dist/pkg/imlab.js';
-import { excerpt as page } from '../web/url.js';
+import { excerpt as page } from '../web/ui/url.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 

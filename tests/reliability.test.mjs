@@ -64,7 +64,7 @@ test('the page runs its first run on the one worker started with it', () =>
     assert.equal(page.workers().length, 1);
   }));
 
-for (const blocked of ['web/worker.js', 'pkg/imlab_bg.wasm']) {
+for (const blocked of ['web/worker/worker.js', 'pkg/imlab_bg.wasm']) {
   test(`a worker that cannot load (${blocked} unreachable) is reported as not started`, async () => {
     const errors = [];
     const page = await newPage(suite.browser, errors);

@@ -1,6 +1,6 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
 import { test } from 'node:test';
-import { LESSONS } from '../web/teaching.js';
+import { LESSONS } from '../web/teaching/teaching.js';
 import assert from 'node:assert/strict';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 

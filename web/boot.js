@@ -6,7 +6,7 @@
 // page's modules start first (they cannot in practice), the run client has started the worker
 // and left `imlabBoot` null, and nothing is done here.
 if (globalThis.imlabBoot === undefined) {
-  const boot = { worker: new Worker('web/worker.js', { type: 'module' }), early: [], failure: null };
+  const boot = { worker: new Worker('web/worker/worker.js', { type: 'module' }), early: [], failure: null };
   boot.worker.onmessage = ({ data }) => boot.early.push(data);
   boot.worker.onerror = (e) => {
     e.preventDefault();

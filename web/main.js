@@ -1,27 +1,27 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 // This file composes the page's parts, each in its own module, and wires them to each other.
-import { Plots, PLOTS } from './plots.js';
-import { fieldValue } from './controls.js';
-import { scenarioFromUrl } from './url.js';
-import { Analysis } from './analysis.js';
-import { Walkthrough } from './walkthrough.js';
-import { LessonPanel } from './lessons.js';
-import { LESSONS } from './teaching.js';
-import { $, ui } from './page.js';
-import { RunClient } from './run-client.js';
-import { createRun } from './run.js';
-import { createSettings } from './settings.js';
-import { createViews } from './views.js';
-import { createFiguresView } from './figures-view.js';
-import { createExport } from './export.js';
-import { createPins } from './pins.js';
-import { createTabs } from './tabs.js';
-import { createPresentation } from './presentation.js';
-import { wireShare } from './share.js';
-import { createSweeps } from './sweeps.js';
-import { createRobust } from './robust.js';
-import { createChallenge } from './challenge.js';
-import { createCompose } from './challenge-compose.js';
+import { Plots, PLOTS } from './plots/plots.js';
+import { fieldValue } from './run/controls.js';
+import { scenarioFromUrl } from './ui/url.js';
+import { Analysis } from './analysis/analysis.js';
+import { Walkthrough } from './teaching/walkthrough.js';
+import { LessonPanel } from './teaching/lessons.js';
+import { LESSONS } from './teaching/teaching.js';
+import { $, ui } from './ui/page.js';
+import { RunClient } from './client/run-client.js';
+import { createRun } from './run/run.js';
+import { createSettings } from './run/settings.js';
+import { createViews } from './run/views.js';
+import { createFiguresView } from './run/figures-view.js';
+import { createExport } from './run/export.js';
+import { createPins } from './run/pins.js';
+import { createTabs } from './ui/tabs.js';
+import { createPresentation } from './ui/presentation.js';
+import { wireShare } from './ui/share.js';
+import { createSweeps } from './analysis/sweeps.js';
+import { createRobust } from './analysis/robust.js';
+import { createChallenge } from './challenge/challenge.js';
+import { createCompose } from './challenge/challenge-compose.js';
 
 // What the page's parts share; in brackets, the parts that write each field.
 const state = {

@@ -3,7 +3,7 @@
 /// Plot width the benchmarks ask for (buckets, about the pixels of a plot).
 pub const BUCKETS: usize = 1000;
 
-/// The plots of the page, one envelope each, as `PLOTS` in web/plots.js lists their columns
+/// The plots of the page, one envelope each, as `PLOTS` in web/plots/plots.js lists their columns
 /// (keep in step): one view request of the worker computes all of them.
 pub const PAGE_PLOTS: &[&[&str]] = &[
     &["omega_ref", "omega_hat", "omega"],

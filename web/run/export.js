@@ -1,8 +1,8 @@
 // Downloads: the run's CSV, which the worker sends in chunks of rows, and a PNG of the plots in
 // the open tab.
-import { say, ui } from './page.js';
+import { say, ui } from '../ui/page.js';
 import { png } from './png.js';
-import { presetNamed } from './url.js';
+import { presetNamed } from '../ui/url.js';
 
 // The browser reads a blob: URL while it saves the download, which for a CSV of a gigabyte
 // takes seconds; revoking the URL earlier would fail the download.

@@ -8,7 +8,7 @@
 //   'challenge-builtins'   {}                 → [{name, summary, text, solution}]
 //   'challenge-figures'    {}                 → [{name, label, unit}]: what criteria may name
 // A bad challenge throws the core's message, which the worker returns as the job's error.
-import { Challenge, challenge_builtins, challenge_figures, challenge_measure, Simulation } from '../pkg/imlab.js';
+import { Challenge, challenge_builtins, challenge_figures, challenge_measure, Simulation } from '../../pkg/imlab.js';
 
 /** `f(challenge)` on the challenge parsed from `text`, freed afterwards. */
 function withChallenge(text, f) {

@@ -2,7 +2,7 @@
 // the link as `#present=1`), the settings drawer it and small screens use, and an embed
 // (`#embed=PLOT,PLOT...`) that shows a few plots in a frame of any size.
 import { say, ui } from './page.js';
-import { PLOTS } from './plots.js';
+import { PLOTS } from '../plots/plots.js';
 import { excerpt, fragment, setFragment } from './url.js';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };

@@ -1,10 +1,10 @@
 // The Analysis tab's runs: frequency-response sweeps and seed runs from their forms, their
 // progress and status lines, and their CSV downloads. A link's sweep (`#sweep=`) runs once.
-import { $, say } from './page.js';
+import { $, say } from '../ui/page.js';
 import { formatSweep, isCount, parseSweep } from './analysis.js';
-import { fieldValue } from './controls.js';
-import { download } from './export.js';
-import { excerpt, fragment, setFragment } from './url.js';
+import { fieldValue } from '../run/controls.js';
+import { download } from '../run/export.js';
+import { excerpt, fragment, setFragment } from '../ui/url.js';
 
 /** `analysis` runs the jobs and draws their results; `showTab(name)` opens a tab. */
 export function createSweeps({ state, analysis, framing, showTab }) {

@@ -1,11 +1,6 @@
 // Guided lessons: a list in the Lessons tab, and a lesson panel beside the plots that keeps the
 // lesson's context (what to look for, the question, a hint, the answer) while its plots are shown.
-
-function el(tag, props = {}, children = []) {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-}
+import { el } from '../ui/dom.js';
 
 export class LessonPanel {
   /**

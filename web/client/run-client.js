@@ -1,6 +1,7 @@
 // The run client: the simulation worker, which owns the core, and the page's messages with it.
 // Describe requests, jobs and challenge measures are answered as promises; every other message
 // goes to the page's handler of its type. A worker that fails is replaced.
+import { WORKER_URL } from '../worker-url.js';
 
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
@@ -26,7 +27,7 @@ export class RunClient {
     const boot = globalThis.imlabBoot;
     globalThis.imlabBoot = null; // boot.js, if it comes later, starts none
     if (!boot) {
-      this.worker = new Worker(new URL('./worker.js', import.meta.url), { type: 'module' });
+      this.worker = new Worker(WORKER_URL, { type: 'module' });
       this.listen();
       return;
     }

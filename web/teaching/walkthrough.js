@@ -1,15 +1,10 @@
 // The design walkthrough: for each of the seven sections its prose, its equations (KaTeX), its
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
 // Every number shown here comes from the core (through the worker); the page only formats it.
-import katex from '../vendor/katex/katex.mjs';
-import { Plots, six } from './plots.js';
+import katex from '../../vendor/katex/katex.mjs';
+import { Plots, six } from '../plots/plots.js';
 import { SECTIONS, STABILITY_CAUSES } from './teaching.js';
-
-function el(tag, props = {}, children = []) {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-}
+import { el } from '../ui/dom.js';
 
 function setAttributes(e, attributes) {
   for (const [name, value] of Object.entries(attributes)) e.setAttribute(name, value);

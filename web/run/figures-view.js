@@ -1,6 +1,6 @@
 // The run's figures, all from the core: the strip of every figure with its unit, window and
 // trend, the compact row of key figures, and the warnings they must not be read without.
-import { ui } from './page.js';
+import { ui } from '../ui/page.js';
 
 // The figures the compact row shows, in this order.
 const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_final'];

@@ -51,7 +51,7 @@ import init, {
   challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover,
   robust_cells, robust_csv, robust_figures, robust_plan, robust_run,
   seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
-} from '../pkg/imlab.js';
+} from '../../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
 // A slice of work between two looks at the message queue (ms of the worker's clock, read by the

@@ -2,17 +2,12 @@
 // parameters times the noise seeds, run cell by cell in the pool's workers. The core checks and
 // bounds the map, runs each cell and summarises it; this module draws what it returns. A link's
 // map (`#robust=`) runs once; a cancelled map keeps the cells it finished.
-import uPlot from '../vendor/uPlot.esm.js';
-import { $, say } from './page.js';
-import { Pool } from './analysis.js';
-import { download } from './export.js';
-import { excerpt, fragment, setFragment } from './url.js';
-
-const el = (tag, props = {}, children = []) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-};
+import uPlot from '../../vendor/uPlot.esm.js';
+import { $, say } from '../ui/page.js';
+import { Pool } from '../client/pool.js';
+import { download } from '../run/export.js';
+import { excerpt, fragment, setFragment } from '../ui/url.js';
+import { el } from '../ui/dom.js';
 
 /** A number for a cell or an axis tick: four significant digits. */
 const fmt = (v) => (Number.isFinite(v) ? Number(v.toPrecision(4)).toString() : '—');

@@ -3,16 +3,11 @@
 // run and on each robustness variant (run in a pool of workers, with progress and Cancel). The
 // address then holds the student's submission link. The built-in challenges are listed in the
 // Lessons tab.
-import { $, ui } from './page.js';
-import { fieldValue } from './controls.js';
-import { Pool } from './analysis.js';
-import { challengeFromUrl, excerpt, holdAddress, scenarioFromUrl } from './url.js';
-
-const el = (tag, props = {}, children = []) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-};
+import { $, ui } from '../ui/page.js';
+import { fieldValue } from '../run/controls.js';
+import { Pool } from '../client/pool.js';
+import { challengeFromUrl, excerpt, holdAddress, scenarioFromUrl } from '../ui/url.js';
+import { el } from '../ui/dom.js';
 
 /** A measured value as the checklist writes it. */
 function formatValue(value, unit) {

@@ -1,5 +1,6 @@
 // Settings form generated from the core's field table (key, unit, range, meaning, value).
 // Text from the URL or the core only ever reaches the page through textContent and values.
+import { el } from '../ui/dom.js';
 
 const GROUPS = {
   reference: 'Reference',
@@ -14,12 +15,6 @@ const GROUPS = {
   drive: 'Drive: computation delay, inverter limit and PWM',
 };
 const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
-
-function el(tag, props = {}, children = []) {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-}
 
 function allowed(f) {
   if (f.options.length) return f.options.join(' | ');

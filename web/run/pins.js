@@ -1,8 +1,8 @@
 // Pins: runs kept in the worker beside the current one, listed in the Analysis tab and kept in
 // the link (`#pins=`), and the overlay that compares one column of them with the current run.
-import uPlot from '../vendor/uPlot.esm.js';
-import { $, say, ui } from './page.js';
-import { decodePins, excerpt, fragment, listed, setFragment } from './url.js';
+import uPlot from '../../vendor/uPlot.esm.js';
+import { $, say, ui } from '../ui/page.js';
+import { decodePins, excerpt, fragment, listed, setFragment } from '../ui/url.js';
 
 // A pins fragment longer than this is refused whole (characters): four pins of the longest
 // scenario the codec accepts (16 KiB each) fit.

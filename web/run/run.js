@@ -1,8 +1,8 @@
 // The run of the scenario in the form: starting it, its progress and status line, how it ended,
 // and the plots, figures and walkthrough it fills when it is done.
-import { $, say, ui } from './page.js';
+import { $, say, ui } from '../ui/page.js';
 import { fieldValue } from './controls.js';
-import { excerpt, markRun } from './url.js';
+import { excerpt, markRun } from '../ui/url.js';
 
 /**
  * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a

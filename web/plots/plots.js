@@ -1,7 +1,7 @@
 // The trajectory plots: uPlot charts with a shared, synchronised time axis.
 // Each plot draws the M4 envelope the worker sends for its own columns: every point is a recorded
 // sample at its own time, so no zoom draws an edge the samples do not have.
-import uPlot from '../vendor/uPlot.esm.js';
+import uPlot from '../../vendor/uPlot.esm.js';
 
 // One visual language in every tab: a signal has the same colour and dash wherever it is drawn.
 // References and bands are dashed grey, true signals blue, estimates orange (b-axis components

@@ -1,10 +1,10 @@
 // The scenario in the settings form: loading one (from the address, a preset, history or a
 // lesson), checking each edit of the form or of a walkthrough knob with the core, the preset
 // picker, and Run.
-import { $, say, ui } from './page.js';
+import { $, say, ui } from '../ui/page.js';
 import { composeScenario, fieldControl, forwardKnob, markInvalid, renderFields } from './controls.js';
-import { WorkerFailed } from './run-client.js';
-import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from './url.js';
+import { WorkerFailed } from '../client/run-client.js';
+import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
 
 // Keys that move through the preset list without choosing; Enter (also from the open list) chooses.
 const BROWSE = new Set(['ArrowUp', 'ArrowDown', 'ArrowLeft', 'ArrowRight', 'Home', 'End', 'PageUp', 'PageDown']);

@@ -2,15 +2,10 @@
 // base), the fields a student may change with their ranges, criteria on the figures of the
 // current run with their bounds, and robustness variants. The core checks the link and writes
 // it and the task in words, both to copy; its message names the field at fault.
-import { $ } from './page.js';
-import { fieldValue } from './controls.js';
-import { presetNamed } from './url.js';
-
-const el = (tag, props = {}, children = []) => {
-  const e = Object.assign(document.createElement(tag), props);
-  e.append(...children);
-  return e;
-};
+import { $ } from '../ui/page.js';
+import { fieldValue } from '../run/controls.js';
+import { presetNamed } from '../ui/url.js';
+import { el } from '../ui/dom.js';
 
 /** `x` to two significant digits, as the codec writes numbers. */
 const round2 = (x) => Number(x.toPrecision(2));

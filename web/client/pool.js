@@ -1,0 +1,109 @@
+// A pool of workers for stateless jobs (sweeps, seed runs, maps, challenge checks): one job a
+// worker at a time, results in job order, Cancel that stops at once, a crashed worker replaced.
+import { WORKER_URL } from '../worker-url.js';
+
+/**
+ * One worker of a pool. A crash (the worker's 'crashed' message, or an error event) terminates
+ * it and rejects the reply it was waiting for; the pool then starts a fresh one.
+ */
+class Member {
+  constructor() {
+    this.worker = new Worker(WORKER_URL, { type: 'module' });
+    this.failed = null; // why the worker failed
+    this.waiting = null; // {type, job, resolve, reject}: the reply awaited
+    this.worker.onmessage = ({ data }) => {
+      if (data.type === 'crashed') this.fail(data.message);
+      else if (this.waiting && data.type === this.waiting.type && data.job === this.waiting.job) {
+        const { resolve } = this.waiting;
+        this.waiting = null;
+        resolve(data);
+      }
+    };
+    this.worker.onerror = (e) => {
+      e.preventDefault();
+      this.fail(e.message || 'unknown error');
+    };
+    this.worker.onmessageerror = () => this.fail('a message from it could not be read');
+    this.ready = this.reply('ready');
+  }
+
+  /**
+   * Resolves with the worker's next message of `type` (for `job`), or rejects if it fails first.
+   * A newer wait (another run took the pool) cancels the older one.
+   */
+  reply(type, job) {
+    this.waiting?.reject(new Error('cancelled'));
+    return new Promise((resolve, reject) => {
+      if (this.failed) reject(new Error(`a worker failed (${this.failed})`));
+      else this.waiting = { type, job, resolve, reject };
+    });
+  }
+
+  fail(reason, error = new Error(`a worker failed (${reason}); the next run starts a fresh one`)) {
+    if (this.failed) return;
+    this.failed = reason;
+    this.worker.terminate();
+    this.waiting?.reject(error);
+    this.waiting = null;
+  }
+}
+
+/** Workers running stateless jobs; results come back in job order. */
+export class Pool {
+  constructor(size) {
+    this.size = size;
+    this.members = [];
+    this.generation = 0;
+    this.jobs = 0; // job ids, unique over the pool's life so a late reply never matches a new job
+  }
+
+  /** Brings the pool to `size` live workers and waits until each has loaded the core. */
+  async start() {
+    for (const m of this.members.splice(this.size)) m.worker.terminate();
+    this.members = this.members.filter((m) => !m.failed);
+    while (this.members.length < this.size) this.members.push(new Member());
+    await Promise.all(this.members.map((m) => m.ready));
+  }
+
+  /**
+   * Runs `jobs` (messages without `type`/`job`); `onDone(count, index, result)` reports each
+   * job as it ends, so that a caller can keep what finished before a cancel.
+   */
+  async run(jobs, onDone = () => {}) {
+    await this.start();
+    const generation = ++this.generation;
+    const results = new Array(jobs.length);
+    let next = 0;
+    let done = 0;
+    let failed = false; // a job failed: the other workers stop after their current one
+    const work = async (member) => {
+      while (next < jobs.length) {
+        if (this.generation !== generation || failed) throw new Error('cancelled');
+        const index = next++;
+        const job = ++this.jobs;
+        const reply = member.reply('job', job);
+        member.worker.postMessage({ type: 'job', job, ...jobs[index] });
+        const data = await reply;
+        if (data.error) throw new Error(data.error);
+        results[index] = data.result;
+        onDone(++done, index, data.result);
+      }
+    };
+    try {
+      await Promise.all(this.members.map(work));
+    } catch (e) {
+      failed = true;
+      throw e;
+    }
+    return results;
+  }
+
+  /**
+   * Stops the jobs under way at once: a job runs in one call, so the workers that hold one are
+   * terminated (the next run starts fresh ones) rather than waited for.
+   */
+  cancel() {
+    this.generation++;
+    for (const m of this.members) if (m.waiting) m.fail('cancelled', new Error('cancelled'));
+  }
+}
