@@ -1,6 +1,7 @@
 // A pool of workers for stateless jobs (sweeps, seed runs, maps, challenge checks): one job a
 // worker at a time, results in job order, Cancel that stops at once, a crashed worker replaced.
 import { WORKER_URL } from '../worker-url.js';
+import { watch } from './watch.js';
 
 /**
  * One worker of a pool. A crash (the worker's 'crashed' message, or an error event) terminates
@@ -8,22 +9,21 @@ import { WORKER_URL } from '../worker-url.js';
  */
 class Member {
   constructor() {
-    this.worker = new Worker(WORKER_URL, { type: 'module' });
+    // A pool's worker answers stateless jobs only: `role=pool` tells it to hold no pins and to
+    // skip the run worker's warm-up.
+    this.worker = new Worker(new URL('?role=pool', WORKER_URL), { type: 'module' });
     this.failed = null; // why the worker failed
     this.waiting = null; // {type, job, resolve, reject}: the reply awaited
-    this.worker.onmessage = ({ data }) => {
-      if (data.type === 'crashed') this.fail(data.message);
-      else if (this.waiting && data.type === this.waiting.type && data.job === this.waiting.job) {
-        const { resolve } = this.waiting;
-        this.waiting = null;
-        resolve(data);
-      }
-    };
-    this.worker.onerror = (e) => {
-      e.preventDefault();
-      this.fail(e.message || 'unknown error');
-    };
-    this.worker.onmessageerror = () => this.fail('a message from it could not be read');
+    watch(this.worker, {
+      onMessage: (data) => {
+        if (this.waiting && data.type === this.waiting.type && data.job === this.waiting.job) {
+          const { resolve } = this.waiting;
+          this.waiting = null;
+          resolve(data);
+        }
+      },
+      onFail: (reason) => this.fail(reason),
+    });
     this.ready = this.reply('ready');
   }
 

@@ -2,6 +2,7 @@
 // Describe requests, jobs and challenge measures are answered as promises; every other message
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
+import { watch } from './watch.js';
 
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
@@ -41,7 +42,8 @@ export class RunClient {
       for (const data of boot.early) {
         if (this.failures !== failures) return;
         try {
-          this.receive(data);
+          if (data.type === 'crashed') this.fail(data.message);
+          else this.receive(data);
         } catch (e) {
           reportError(e);
         }
@@ -51,12 +53,7 @@ export class RunClient {
   }
 
   listen() {
-    this.worker.onmessage = ({ data }) => this.receive(data);
-    this.worker.onerror = (e) => {
-      e.preventDefault();
-      this.fail(e.message || 'unknown error');
-    };
-    this.worker.onmessageerror = () => this.fail('a message from it could not be read');
+    watch(this.worker, { onMessage: (data) => this.receive(data), onFail: (reason) => this.fail(reason) });
   }
 
   post(message) {
@@ -106,8 +103,6 @@ export class RunClient {
       this.answer(`describe ${req}`, null, data.info);
     } else if (type === 'invalid' && req !== undefined) {
       this.answer(`describe ${req}`, data.message);
-    } else if (type === 'crashed') {
-      this.fail(data.message);
     } else {
       if (type === 'ready') this.ready = true;
       this.handlers[type](data);

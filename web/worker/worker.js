@@ -357,9 +357,15 @@ function pinsMessage(rejected = []) {
   return { type: 'pins', scenarios: comparison.scenarios(), legends: current ? comparison.legends(current.sim) : [], rejected };
 }
 
+// A pool's worker (`?role=pool`) answers stateless jobs only: it holds no pins and needs no
+// warm-up for the run's first slices.
+const POOL = new URLSearchParams(self.location.search).get('role') === 'pool';
+
 const ready = init().then(() => {
-  comparison = new Comparison();
-  warmUp();
+  if (!POOL) {
+    comparison = new Comparison();
+    warmUp();
+  }
   self.postMessage({ type: 'ready', presets: presets(), nisBand: nis_band() });
 });
 
