@@ -30,6 +30,8 @@ serve: dist
 	cd dist && python3 -m http.server $(PORT) --bind 127.0.0.1
 
 test: dist
+	node_modules/.bin/prettier --check --log-level=warn .
+	node_modules/.bin/eslint --max-warnings=0 .
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --release -- -D warnings
 	cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings

@@ -25,7 +25,10 @@ async function withPage(path, [width, height], body) {
   assert.deepEqual(errors, [], 'console errors');
 }
 
-for (const viewport of [[390, 844], [1440, 900]]) {
+for (const viewport of [
+  [390, 844],
+  [1440, 900],
+]) {
   test(`axe-core finds no violations at ${viewport.join('×')}: every tab, inspect open, presentation mode`, () =>
     withPage('?v=1&preset=step', viewport, async (page) => {
       const found = {};
@@ -44,7 +47,11 @@ for (const viewport of [[390, 844], [1440, 900]]) {
       // axe 4.14 no longer checks ids; every id on the page is unique (knobs appear in several
       // walkthrough sections).
       const ids = await page.$$eval('[id]', (list) => list.map((e) => e.id));
-      assert.deepEqual(ids.filter((id, i) => ids.indexOf(id) !== i), [], 'duplicate ids');
+      assert.deepEqual(
+        ids.filter((id, i) => ids.indexOf(id) !== i),
+        [],
+        'duplicate ids',
+      );
     }));
 }
 
@@ -77,9 +84,18 @@ test('a preset is chosen and run from the keyboard; arrow keys on the picker sta
 
 test('the tabs follow the WAI-ARIA pattern: one tab stop, arrow keys, panels labelled', () =>
   withPage('?v=1&preset=step', [1280, 800], async (page) => {
-    const tabs = await page.$$eval('[role=tablist] > *', (list) => list.map((t) => [t.getAttribute('role'), t.tabIndex, t.getAttribute('aria-controls')]));
-    assert.deepEqual(tabs.map((t) => t[0]), ['tab', 'tab', 'tab', 'tab', 'tab'], 'only tabs inside the tablist');
-    assert.deepEqual(tabs.map((t) => t[1]), [0, -1, -1, -1, -1]);
+    const tabs = await page.$$eval('[role=tablist] > *', (list) =>
+      list.map((t) => [t.getAttribute('role'), t.tabIndex, t.getAttribute('aria-controls')]),
+    );
+    assert.deepEqual(
+      tabs.map((t) => t[0]),
+      ['tab', 'tab', 'tab', 'tab', 'tab'],
+      'only tabs inside the tablist',
+    );
+    assert.deepEqual(
+      tabs.map((t) => t[1]),
+      [0, -1, -1, -1, -1],
+    );
     await page.focus('#tab-plots');
     await page.keyboard.press('ArrowRight');
     assert.equal(await page.evaluate(() => document.activeElement.id), 'tab-walkthrough');
@@ -109,8 +125,10 @@ test('a focused plot moves the inspect cursor with the arrow keys, by one sample
     // One percent of the window on from sample 1, then snapped to the nearest sample by the inspect
     // replay: t = 1.0495 ms is sample 21.
     assert.equal(Math.round((5e-5 + (max - min) / 100) / 5e-5), 21);
-    await page.waitForFunction(() => /Inspect sample k = 21,/.test(document.querySelector('#inspect')?.textContent ?? ''));
-    assert.ok(Math.abs(await marked() - 21 * 5e-5) < 1e-15);
+    await page.waitForFunction(() =>
+      /Inspect sample k = 21,/.test(document.querySelector('#inspect')?.textContent ?? ''),
+    );
+    assert.ok(Math.abs((await marked()) - 21 * 5e-5) < 1e-15);
   }));
 
 test('presentation mode is in the URL fragment and draws plot text at least 20 px', () =>
@@ -124,9 +142,11 @@ test('presentation mode is in the URL fragment and draws plot text at least 20 p
 
 test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
   withPage('?v=1&preset=step#embed=speed', [720, 520], async (page) => {
-    const visiblePlots = () => page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot));
+    const visiblePlots = () =>
+      page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot));
     assert.deepEqual(await visiblePlots(), ['speed']);
-    for (const hidden of ['#settings', '[role=tablist]', 'header']) assert.equal(await page.isVisible(hidden), false, hidden);
+    for (const hidden of ['#settings', '[role=tablist]', 'header'])
+      assert.equal(await page.isVisible(hidden), false, hidden);
     assert.equal(await page.isVisible('#key-figures'), true);
     // The plot fills the frame under the run row: the frame shows it whole.
     const bottom = await page.$eval('.plot.embedded', (p) => p.getBoundingClientRect().bottom);
@@ -136,11 +156,16 @@ test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
     await page.waitForFunction((n) => Number(document.body.dataset.run) > n, before);
     // The snippet "Copy embed code" gives, in a page of its own.
     await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
-    await page.evaluate(() => { document.body.classList.remove('embed'); });
+    await page.evaluate(() => {
+      document.body.classList.remove('embed');
+    });
     await page.click('#copy-embed');
     const snippet = await page.evaluate(() => navigator.clipboard.readText());
     // It embeds the plots in view: at 720×520, the speed plot alone.
-    assert.match(snippet, /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed" title="IM Lab: step, speed"/);
+    assert.match(
+      snippet,
+      /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed" title="IM Lab: step, speed"/,
+    );
     const host = await page.context().newPage();
     await host.setContent(`<!doctype html><title>course page</title>${snippet}`);
     const frame = await (await host.waitForSelector('iframe')).contentFrame();
@@ -150,10 +175,15 @@ test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
 
 test('Copy embed code embeds the plots in view, and an unknown plot is named until the user runs', () =>
   withPage('?v=1&preset=step#embed=speed,nope,flux', [900, 800], async (page) => {
-    assert.deepEqual(await page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot)), ['speed', 'flux']);
+    assert.deepEqual(
+      await page.$$eval('.plot', (list) => list.filter((p) => p.offsetParent !== null).map((p) => p.dataset.plot)),
+      ['speed', 'flux'],
+    );
     assert.match(await page.textContent('#message'), /No plot named 'nope'; showing speed, flux\./);
     // Both plots fit the frame.
-    const bottom = await page.$$eval('.plot.embedded', (ps) => Math.max(...ps.map((p) => p.getBoundingClientRect().bottom)));
+    const bottom = await page.$$eval('.plot.embedded', (ps) =>
+      Math.max(...ps.map((p) => p.getBoundingClientRect().bottom)),
+    );
     assert.ok(bottom <= 800, `the plots end at ${bottom} px of 800`);
     const before = Number(await page.evaluate(() => document.body.dataset.run));
     await page.click('#run');

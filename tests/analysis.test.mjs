@@ -8,18 +8,23 @@ import { browserSuite, runAgain, settled } from './browser.mjs';
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
 /** Opens the app at `path`, waits for its run, then runs `body(page)`. */
-const withPage = (path, body) => suite.withPage(path, async (page) => {
-  assert.equal(await settled(page), 'done');
-  await body(page);
-});
+const withPage = (path, body) =>
+  suite.withPage(path, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  });
 
 async function download(page, selector) {
   const [d] = await Promise.all([page.waitForEvent('download'), page.click(selector)]);
   return readFileSync(await d.path(), 'utf8');
 }
 
-const sweepDone = (page) => page.waitForFunction(() => ['done', 'failed', 'cancelled'].includes(document.body.dataset.sweep), null, { timeout: 60_000 })
-  .then(() => page.evaluate(() => document.body.dataset.sweep));
+const sweepDone = (page) =>
+  page
+    .waitForFunction(() => ['done', 'failed', 'cancelled'].includes(document.body.dataset.sweep), null, {
+      timeout: 60_000,
+    })
+    .then(() => page.evaluate(() => document.body.dataset.sweep));
 
 test('a pinned run is overlaid with a legend of what differs, and the comparison is shared by URL', async () => {
   let shared;
@@ -57,16 +62,22 @@ test('a pinned run is overlaid with a legend of what differs, and the comparison
     await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
     assert.match(await page.textContent('#pins'), /pin 1: k1: 1200 → 600 1\/s/);
     await page.click('#pins button');
-    await page.waitForFunction(() => document.querySelectorAll('#pins li').length === 0 && !location.hash.includes('pins'));
+    await page.waitForFunction(
+      () => document.querySelectorAll('#pins li').length === 0 && !location.hash.includes('pins'),
+    );
   });
 });
 
 /** `imlab sweep SCENARIO ARGS...` as CSV text. */
-const cliSweep = (scenario, ...args) => execFileSync(cli, ['sweep', scenario, ...args], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+const cliSweep = (scenario, ...args) =>
+  execFileSync(cli, ['sweep', scenario, ...args], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
 
 /** The column `name` of a sweep CSV's points, as numbers. */
 function sweepColumn(csv, name) {
-  const [header, ...lines] = csv.trim().split('\n').filter((l) => !l.startsWith('#'));
+  const [header, ...lines] = csv
+    .trim()
+    .split('\n')
+    .filter((l) => !l.startsWith('#'));
   const c = header.split(',').indexOf(name);
   return lines.map((l) => Number(l.split(',')[c]));
 }
@@ -76,7 +87,10 @@ test('input quoted in a message has its invisible and reordering characters esca
   withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=step&k\u202e1=5')}`, async (page) => {
     await page.waitForFunction(() => document.getElementById('message').textContent.includes('not pin'));
     const message = await page.textContent('#message');
-    assert.match(message, /ould not pin v=1&preset=step&k\\u\{202e\}1=5: field 'k\\u\{202e\}1' is not a scenario field/);
+    assert.match(
+      message,
+      /ould not pin v=1&preset=step&k\\u\{202e\}1=5: field 'k\\u\{202e\}1' is not a scenario field/,
+    );
     assert.doesNotMatch(message, /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u);
   }));
 
@@ -91,15 +105,32 @@ test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
     // step preset, for each variant as the CLI measures it.
     assert.match(parallel.split('\n')[0], /,peak_current_a$/);
     assert.equal(await page.textContent('#sweep-table th:nth-child(7)'), 'peak |i_s| (A)');
-    const ifocpi = cliSweep('v=1&preset=step&controller=ifoc', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2');
-    for (const [variant, csv] of [['euler', expected], ['ifocpi', ifocpi]]) {
+    const ifocpi = cliSweep(
+      'v=1&preset=step&controller=ifoc',
+      '--freqs',
+      '10:1000:12',
+      '--amp',
+      '0.02',
+      '--duration',
+      '0.2',
+    );
+    for (const [variant, csv] of [
+      ['euler', expected],
+      ['ifocpi', ifocpi],
+    ]) {
       const peak = Math.max(...sweepColumn(csv, 'peak_current_a'));
       assert.ok(peak > 0 && peak < 4, `${variant}: ${peak}`);
-      assert.equal(await page.textContent(`#sweep-table tr[data-variant=${variant}] td:nth-child(7)`), `${peak.toPrecision(3)} (rated 4.00)`);
+      assert.equal(
+        await page.textContent(`#sweep-table tr[data-variant=${variant}] td:nth-child(7)`),
+        `${peak.toPrecision(3)} (rated 4.00)`,
+      );
     }
     // The IFOC's PI alone at standstill never settles in 0.2 s runs (its MRAS is blind near zero
     // speed), so the core gives no bandwidth for it.
-    assert.match(await page.textContent('#sweep-table tr[data-variant=ifocpi] td:nth-child(2)'), /^not given: it would rest on a point that had not settled$/);
+    assert.match(
+      await page.textContent('#sweep-table tr[data-variant=ifocpi] td:nth-child(2)'),
+      /^not given: it would rest on a point that had not settled$/,
+    );
     await page.fill('#sweep-form [name=workers]', '1');
     await page.click('#sweep-run');
     await page.waitForFunction(() => document.getElementById('sweep-status').textContent.includes('on 1 worker.'));
@@ -116,11 +147,14 @@ test('the points whose peak current is above the rated current are listed and ma
     const above = freqs.filter((_, i) => peaks[i] > 1.52).map((f) => `${f.toPrecision(4)} Hz`);
     assert.deepEqual(above, ['215.4 Hz', '1000 Hz']);
     const cell = page.locator('#sweep-table tr[data-variant=euler] td:nth-child(7)');
-    assert.equal(await cell.textContent(), `${Math.max(...peaks).toPrecision(3)} (rated 1.52); above the rating at 2: ${above.join(', ')}`);
+    assert.equal(
+      await cell.textContent(),
+      `${Math.max(...peaks).toPrecision(3)} (rated 1.52); above the rating at 2: ${above.join(', ')}`,
+    );
     assert.equal(await cell.getAttribute('class'), 'over-rating');
   }));
 
-test('a sweep amplitude too small to measure is refused with the core\'s message, as by the CLI', () =>
+test("a sweep amplitude too small to measure is refused with the core's message, as by the CLI", () =>
   withPage('?v=1&preset=step#sweep=100,100,1,1e-200,0,0.05,euler', async (page) => {
     assert.equal(await sweepDone(page), 'failed');
     const status = await page.textContent('#sweep-status');
@@ -137,10 +171,22 @@ test('points that had not settled are drawn hollow, listed with the reason, and 
     assert.equal(cells[5], '2: 300.0 Hz, 480.0 Hz');
     const reasons = await page.locator('#bode .sweep-unsettled li').allTextContents();
     assert.equal(reasons.length, 2);
-    for (const r of reasons) assert.match(r, /^Classical IFOC \+ MRAS, torque feedforward, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/);
+    for (const r of reasons)
+      assert.match(
+        r,
+        /^Classical IFOC \+ MRAS, torque feedforward, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/,
+      );
     // Each Bode plot has a series of hollow markers for them.
-    assert.equal(await page.locator('#bode .u-legend', { hasText: 'Classical IFOC + MRAS, torque feedforward, not settled' }).count(), 2);
-    assert.match(await download(page, '#sweep-csv'), /\n# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=2\n$/);
+    assert.equal(
+      await page
+        .locator('#bode .u-legend', { hasText: 'Classical IFOC + MRAS, torque feedforward, not settled' })
+        .count(),
+      2,
+    );
+    assert.match(
+      await download(page, '#sweep-csv'),
+      /\n# bandwidth_hz=unsettled phase_at_200hz_deg=none unsettled=2\n$/,
+    );
   }));
 
 test('Cancel stops a sweep midway', () =>
@@ -173,7 +219,9 @@ test('a seed sweep shows mean and min–max bands and its CSV equals the CLI', (
     await page.waitForFunction(() => document.body.dataset.seeds === 'done', null, { timeout: 60_000 });
     assert.equal(await page.locator('#seeds-plots .plot canvas').count(), 2);
     const csv = await download(page, '#seeds-csv');
-    const expected = execFileSync(cli, ['seeds', 'v=1&preset=step', '--n', '4'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    const expected = execFileSync(cli, ['seeds', 'v=1&preset=step', '--n', '4'], {
+      stdio: ['ignore', 'pipe', 'ignore'],
+    }).toString();
     assert.equal(csv, expected);
   }));
 
@@ -182,29 +230,65 @@ test('a seed range past the largest seed is refused before any run, naming the r
     await page.click('[data-tab=analysis]');
     await page.fill('#seeds-form [name=n]', '4');
     await page.click('#seeds-run');
-    await page.waitForFunction(() => document.getElementById('seeds-status').textContent.startsWith('Seed sweep failed'));
-    assert.equal(await page.textContent('#seeds-status'), 'Seed sweep failed: seeds 9007199254740990 to 9007199254740993 (4 from 9007199254740990): past the largest seed, 9007199254740991 (2^53 − 1); start at 9007199254740988 at most');
+    await page.waitForFunction(() =>
+      document.getElementById('seeds-status').textContent.startsWith('Seed sweep failed'),
+    );
+    assert.equal(
+      await page.textContent('#seeds-status'),
+      'Seed sweep failed: seeds 9007199254740990 to 9007199254740993 (4 from 9007199254740990): past the largest seed, 9007199254740991 (2^53 − 1); start at 9007199254740988 at most',
+    );
     assert.equal(await page.locator('#seeds-plots .plot canvas').count(), 0);
   }));
 
-const mapDone = (page) => page.waitForFunction(() => ['done', 'failed', 'cancelled', 'refused'].includes(document.body.dataset.map), null, { timeout: 120_000 })
-  .then(() => page.evaluate(() => document.body.dataset.map));
+const mapDone = (page) =>
+  page
+    .waitForFunction(() => ['done', 'failed', 'cancelled', 'refused'].includes(document.body.dataset.map), null, {
+      timeout: 120_000,
+    })
+    .then(() => page.evaluate(() => document.body.dataset.map));
 
-test('a model-error map link replays the map, its CSV is imlab robust\'s byte for byte, runaway cells are marked and never coloured, and a cell opens its run', async () => {
+test("a model-error map link replays the map, its CSV is imlab robust's byte for byte, runaway cells are marked and never coloured, and a cell opens its run", async () => {
   const text = 'plant.rr=-10%..+10%:5;model.j=-20%..+20%:3;seeds=1..3';
   await withPage(`?v=1&preset=step#robust=${encodeURIComponent(text)}`, async (page) => {
     assert.equal(await mapDone(page), 'done');
     const csv = await download(page, '#map-csv');
-    const native = execFileSync(cli, ['robust', 'v=1&preset=step', '--vary', 'plant.rr=-10%..+10%:5', '--vary', 'model.j=-20%..+20%:3', '--seeds', '1..3'], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+    const native = execFileSync(
+      cli,
+      [
+        'robust',
+        'v=1&preset=step',
+        '--vary',
+        'plant.rr=-10%..+10%:5',
+        '--vary',
+        'model.j=-20%..+20%:3',
+        '--seeds',
+        '1..3',
+      ],
+      { stdio: ['ignore', 'pipe', 'ignore'] },
+    ).toString();
     assert.equal(csv, native);
     // The CSV's runaway counts are what the cells show; a runaway cell carries no colour.
-    const rows = native.trim().split('\n').slice(2).map((l) => l.split(','));
-    const cells = await page.$$eval('.map-table .map-cell', (bs) => bs.map((b) => ({ text: b.textContent, ranAway: b.classList.contains('map-ran-away'), background: b.style.background })));
+    const rows = native
+      .trim()
+      .split('\n')
+      .slice(2)
+      .map((l) => l.split(','));
+    const cells = await page.$$eval('.map-table .map-cell', (bs) =>
+      bs.map((b) => ({
+        text: b.textContent,
+        ranAway: b.classList.contains('map-ran-away'),
+        background: b.style.background,
+      })),
+    );
     assert.equal(cells.length, rows.length);
     rows.forEach((r, i) => {
       const ranAway = Number(r[5]);
       assert.equal(cells[i].ranAway, ranAway > 0, `cell ${i}`);
-      if (ranAway > 0) assert.ok(cells[i].text.startsWith(`✕ ${ranAway}/3`) && cells[i].background === '', `cell ${i}: ${cells[i].text}`);
+      if (ranAway > 0)
+        assert.ok(
+          cells[i].text.startsWith(`✕ ${ranAway}/3`) && cells[i].background === '',
+          `cell ${i}: ${cells[i].text}`,
+        );
     });
     assert.ok(cells.some((c) => c.ranAway) && cells.some((c) => !c.ranAway), 'the map has both kinds of cell');
     // A click on the first cell runs its scenario, the one the CSV's row names.

@@ -9,7 +9,11 @@ import { execFileSync } from 'node:child_process';
 import { browserSuite, openWalkthrough, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
-const PRESETS = execFileSync(cli, ['list']).toString().trim().split('\n').map((l) => l.split(/\s+/)[0]);
+const PRESETS = execFileSync(cli, ['list'])
+  .toString()
+  .trim()
+  .split('\n')
+  .map((l) => l.split(/\s+/)[0]);
 // Window widths (s): 200 and 20 samples at 20 kHz.
 const WINDOWS = [0.01, 0.001];
 // Where the windows sit, as fractions of the run: in or near the start-up transient, the middle
@@ -25,59 +29,69 @@ const suite = browserSuite();
  * (with the fit on, only those after the transient count, unless a plot has none after it), and
  * tick labels that repeat or do not read back as their ticks to within half the tick spacing.
  */
-const problems = (page) => page.evaluate((LOG_DECADES) => {
-  const { fit, from } = window.imlab.plots.framing();
-  const found = [];
-  const sets = [['plots', window.imlab.plots.charts], ['walkthrough', window.imlab.walkthrough.charts]];
-  for (const [set, charts] of sets) {
-    for (const u of charts) {
-      const name = `${set} '${u.root.parentElement.dataset.plot}'`;
-      const t = u.data[0];
-      const fitted = fit && t.some((x) => x >= from);
-      for (let s = 1; s < u.series.length; s++) {
-        const series = u.series[s];
-        if (!series.show) continue;
-        const { min, max, distr } = u.scales[series.scale];
-        let out = 0;
-        let example = null;
-        u.data[s].forEach((v, j) => {
-          if (v == null || !Number.isFinite(v) || (fitted && t[j] < from)) return;
-          // A log axis has no place for zero, and spans at most LOG_DECADES below its top: a
-          // signal that falls further (an exponential bound) leaves it by design.
-          if (distr === 3 && (v <= 0 || (v < min && max / min >= 10 ** LOG_DECADES / 2))) return;
-          if (v < min || v > max) {
-            out += 1;
-            example ??= `${v} at t = ${t[j]}`;
-          }
+const problems = (page) =>
+  page.evaluate((LOG_DECADES) => {
+    const { fit, from } = window.imlab.plots.framing();
+    const found = [];
+    const sets = [
+      ['plots', window.imlab.plots.charts],
+      ['walkthrough', window.imlab.walkthrough.charts],
+    ];
+    for (const [set, charts] of sets) {
+      for (const u of charts) {
+        const name = `${set} '${u.root.parentElement.dataset.plot}'`;
+        const t = u.data[0];
+        const fitted = fit && t.some((x) => x >= from);
+        for (let s = 1; s < u.series.length; s++) {
+          const series = u.series[s];
+          if (!series.show) continue;
+          const { min, max, distr } = u.scales[series.scale];
+          let out = 0;
+          let example = null;
+          u.data[s].forEach((v, j) => {
+            if (v == null || !Number.isFinite(v) || (fitted && t[j] < from)) return;
+            // A log axis has no place for zero, and spans at most LOG_DECADES below its top: a
+            // signal that falls further (an exponential bound) leaves it by design.
+            if (distr === 3 && (v <= 0 || (v < min && max / min >= 10 ** LOG_DECADES / 2))) return;
+            if (v < min || v > max) {
+              out += 1;
+              example ??= `${v} at t = ${t[j]}`;
+            }
+          });
+          if (out)
+            found.push(
+              `${name} ${series.label}: ${out} of ${u.data[s].length} samples outside [${min}, ${max}], e.g. ${example}`,
+            );
+        }
+        u.axes.forEach((axis, i) => {
+          if (!axis.show || !axis._show || !axis._values) return;
+          const ticks = axis._splits;
+          const labels = axis._values.map((l, j) => [l == null ? '' : String(l), ticks[j]]).filter(([l]) => l !== '');
+          const texts = labels.map(([l]) => l);
+          if (new Set(texts).size !== texts.length)
+            found.push(`${name} axis ${i} (${axis.scale}): repeated tick labels ${texts.join(' | ')}`);
+          let gap = Infinity;
+          for (let j = 1; j < ticks.length; j++) gap = Math.min(gap, Math.abs(ticks[j] - ticks[j - 1]));
+          const off = labels.filter(([l, v]) => !(Math.abs(Number(l) - v) < gap / 2));
+          if (off.length)
+            found.push(`${name} axis ${i} (${axis.scale}): labels ${off.map(([l, v]) => `${l} for ${v}`).join(', ')}`);
         });
-        if (out) found.push(`${name} ${series.label}: ${out} of ${u.data[s].length} samples outside [${min}, ${max}], e.g. ${example}`);
       }
-      u.axes.forEach((axis, i) => {
-        if (!axis.show || !axis._show || !axis._values) return;
-        const ticks = axis._splits;
-        const labels = axis._values.map((l, j) => [l == null ? '' : String(l), ticks[j]]).filter(([l]) => l !== '');
-        const texts = labels.map(([l]) => l);
-        if (new Set(texts).size !== texts.length) found.push(`${name} axis ${i} (${axis.scale}): repeated tick labels ${texts.join(' | ')}`);
-        let gap = Infinity;
-        for (let j = 1; j < ticks.length; j++) gap = Math.min(gap, Math.abs(ticks[j] - ticks[j - 1]));
-        const off = labels.filter(([l, v]) => !(Math.abs(Number(l) - v) < gap / 2));
-        if (off.length) found.push(`${name} axis ${i} (${axis.scale}): labels ${off.map(([l, v]) => `${l} for ${v}`).join(', ')}`);
-      });
     }
-  }
-  return found;
-}, LOG_DECADES);
+    return found;
+  }, LOG_DECADES);
 
 /** Waits until the main plots show the view asked for last, and the walkthrough's the same span. */
-const viewShown = (page) => page.waitForFunction(() => {
-  const { plots, walkthrough } = window.imlab;
-  const w = plots.window;
-  const whole = w === null || (w[0] <= plots.full[0] && w[1] >= plots.full[1]);
-  const view = document.body.dataset.view ?? '';
-  if (whole ? !view.startsWith('0,') : view !== `${w[0]},${w[1]}`) return false;
-  const t = plots.charts[0].data[0];
-  return walkthrough.charts.every((c) => c.data[0][0] === t[0] && c.data[0].at(-1) === t.at(-1));
-});
+const viewShown = (page) =>
+  page.waitForFunction(() => {
+    const { plots, walkthrough } = window.imlab;
+    const w = plots.window;
+    const whole = w === null || (w[0] <= plots.full[0] && w[1] >= plots.full[1]);
+    const view = document.body.dataset.view ?? '';
+    if (whole ? !view.startsWith('0,') : view !== `${w[0]},${w[1]}`) return false;
+    const t = plots.charts[0].data[0];
+    return walkthrough.charts.every((c) => c.data[0][0] === t[0] && c.data[0].at(-1) === t.at(-1));
+  });
 
 /** Drags across the speed plot from time t0 to t1 of its current window and waits for the view. */
 async function zoom(page, t0, t1) {

@@ -10,8 +10,14 @@ import { chromium } from 'playwright-core';
 
 const ROOT = new URL('../dist/', import.meta.url).pathname;
 export const CHROMIUM_ARGS = [
-  '--headless', '--no-sandbox', '--disable-gpu', '--no-first-run',
-  '--disable-background-networking', '--disable-component-update', '--disable-sync', '--disable-quic',
+  '--headless',
+  '--no-sandbox',
+  '--disable-gpu',
+  '--no-first-run',
+  '--disable-background-networking',
+  '--disable-component-update',
+  '--disable-sync',
+  '--disable-quic',
 ];
 
 async function freePort() {
@@ -25,12 +31,17 @@ async function freePort() {
 /** Serves `root` (dist/ unless given) on a free loopback port; returns {url, close}. */
 export async function serve(root = ROOT) {
   const port = await freePort();
-  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], { cwd: root, stdio: 'ignore' });
+  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], {
+    cwd: root,
+    stdio: 'ignore',
+  });
   const url = `http://127.0.0.1:${port}/`;
   for (let i = 0; i < 100; i++) {
     try {
       if ((await fetch(url)).ok) break;
-    } catch { /* not up yet */ }
+    } catch {
+      /* not up yet */
+    }
     await new Promise((r) => setTimeout(r, 50));
   }
   return { url, close: () => proc.kill() };
@@ -51,7 +62,11 @@ export async function newPage(browser, errors) {
 
 /** Waits until the current run has finished (done, failed, cancelled, or crashed with its worker). */
 export async function settled(page, timeout = 30_000) {
-  await page.waitForFunction(() => ['done', 'failed', 'cancelled', 'crashed'].includes(document.body.dataset.state), null, { timeout });
+  await page.waitForFunction(
+    () => ['done', 'failed', 'cancelled', 'crashed'].includes(document.body.dataset.state),
+    null,
+    { timeout },
+  );
   return page.evaluate(() => document.body.dataset.state);
 }
 
@@ -106,7 +121,10 @@ export function browserSuite() {
 /** The native CLI's CSV of `scenario` as rows of numbers keyed by column name. */
 export function cliRows(scenario) {
   const cli = new URL('../target/release/imlab', import.meta.url).pathname;
-  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
+  const [header, ...lines] = execFileSync(cli, ['run', scenario], { maxBuffer: 1 << 30 })
+    .toString()
+    .trim()
+    .split('\n');
   const names = header.split(',');
   return lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], Number(v)])));
 }
@@ -132,6 +150,13 @@ const AXE = readFileSync(new URL('../node_modules/axe-core/axe.min.js', import.m
  * the page's CSP to inject axe). */
 export async function violations(page) {
   if (!(await page.evaluate(() => 'axe' in window))) await page.addScriptTag({ content: AXE });
-  return page.evaluate(async () => (await window.axe.run(document)).violations
-    .map((v) => `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes.slice(0, 3).map((n) => n.target.join(' ')).join(' | ')}`));
+  return page.evaluate(async () =>
+    (await window.axe.run(document)).violations.map(
+      (v) =>
+        `${v.id}(${v.impact})×${v.nodes.length}: ${v.nodes
+          .slice(0, 3)
+          .map((n) => n.target.join(' '))
+          .join(' | ')}`,
+    ),
+  );
 }

@@ -19,11 +19,17 @@ function grade(text, submission) {
 
 test('each built-in passes with its solution and fails untouched', () => {
   const builtins = jobs['challenge-builtins']({});
-  assert.deepEqual(builtins.map((b) => b.name), ['step-tune', 'load-observer', 'ifoc-load']);
+  assert.deepEqual(
+    builtins.map((b) => b.name),
+    ['step-tune', 'load-observer', 'ifoc-load'],
+  );
   for (const b of builtins) {
     const desc = jobs.challenge({ text: b.name });
     assert.equal(desc.encoded, b.text);
-    const solved = `${b.text}${b.solution.split('&').map((p) => `&try.${p}`).join('')}`;
+    const solved = `${b.text}${b.solution
+      .split('&')
+      .map((p) => `&try.${p}`)
+      .join('')}`;
     assert.equal(grade(b.text, solved).pass, true, `${b.name} solved`);
     assert.equal(grade(b.text, b.text).pass, false, `${b.name} untouched`);
   }
@@ -40,7 +46,9 @@ test('a refused submission names the field; a bad challenge throws the message',
 
 test('a run that runs away fails every criterion, with the reason, however lenient the bound', () => {
   const base = encodeURIComponent('v=1&preset=step&model.rr=20&duration=0.2');
-  const text = jobs.challenge({ text: `c=1&title=x&base=${base}&allow.k1=300..5000&need.current_peak=max:1000` }).encoded;
+  const text = jobs.challenge({
+    text: `c=1&title=x&base=${base}&allow.k1=300..5000&need.current_peak=max:1000`,
+  }).encoded;
   const verdict = grade(text, text);
   assert.equal(verdict.pass, false);
   assert.equal(verdict.criteria[0].pass, false);

@@ -31,13 +31,20 @@ const GRADED = ['pass', 'fail', 'refused', 'failed', 'cancelled', 'malformed'];
 
 /** Waits until the checklist is graded after run number `after` (or later); returns the outcome. */
 async function graded(page, after = 0) {
-  await page.waitForFunction(([n, states]) => Number(document.body.dataset.challengeChecked ?? 0) > n && states.includes(document.body.dataset.challenge), [after, GRADED], { timeout: 60_000 });
+  await page.waitForFunction(
+    ([n, states]) =>
+      Number(document.body.dataset.challengeChecked ?? 0) > n && states.includes(document.body.dataset.challenge),
+    [after, GRADED],
+    { timeout: 60_000 },
+  );
   return page.evaluate(() => document.body.dataset.challenge);
 }
 
 /** Each criterion of the checklist as [figure, pass, text]. */
-const checklist = (page) => page.$$eval('#challenge-checklist li', (list) => list.map((li) => [li.dataset.figure, li.dataset.pass, li.textContent]));
-
+const checklist = (page) =>
+  page.$$eval('#challenge-checklist li', (list) =>
+    list.map((li) => [li.dataset.figure, li.dataset.pass, li.textContent]),
+  );
 
 /** Runs with the panel's knobs set to `values` and waits for the check; returns the outcome. */
 async function tryValues(page, values) {
@@ -62,7 +69,10 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     assert.equal(await page.inputValue('#compose-allow-k1-hi'), '2400');
     for (const k of ['k1', 'k2', 'k3', 'k4']) await page.fill(`#compose-allow-${k}-hi`, '5000');
     await page.fill('#compose-title', 'Fast step');
-    for (const [figure, bound] of [['settling_time', '0.004'], ['current_peak', '4']]) {
+    for (const [figure, bound] of [
+      ['settling_time', '0.004'],
+      ['current_peak', '4'],
+    ]) {
       await page.check(`#compose-need-${figure}`);
       await page.fill(`#compose-need-${figure}-bound`, bound);
       await page.check(`#compose-need-${figure}-robust`);
@@ -78,8 +88,14 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     await page.click('#compose-make');
     await page.waitForFunction(() => document.body.dataset.compose === 'made');
     link = await page.inputValue('#compose-link');
-    assert.match(link, /^http.*\?c=1&title=Fast%20step&base=v%3D1%26preset%3Dstep%26step\.wn%3D10000&allow\.k1=600\.\.5000&/);
-    assert.match(link, /&need\.settling_time=max:0\.004&need\.current_peak=max:4&vary=seeds:2\.\.3&robust=settling_time,current_peak$/);
+    assert.match(
+      link,
+      /^http.*\?c=1&title=Fast%20step&base=v%3D1%26preset%3Dstep%26step\.wn%3D10000&allow\.k1=600\.\.5000&/,
+    );
+    assert.match(
+      link,
+      /&need\.settling_time=max:0\.004&need\.current_peak=max:4&vary=seeds:2\.\.3&robust=settling_time,current_peak$/,
+    );
     assert.match(await page.inputValue('#compose-brief'), /You may change only:\n\s+k1\s+600 to 5000/);
     await page.click('#compose-copy-link');
     assert.equal(await page.evaluate(() => navigator.clipboard.readText()), link);
@@ -96,13 +112,28 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     assert.equal(await page.isDisabled('#field-psi_d'), true);
     assert.equal(await page.isDisabled('#preset'), true);
     const failing = await checklist(page);
-    assert.deepEqual(failing.map((c) => c.slice(0, 2)), [['settling_time', '0'], ['current_peak', '0']]);
+    assert.deepEqual(
+      failing.map((c) => c.slice(0, 2)),
+      [
+        ['settling_time', '0'],
+        ['current_peak', '0'],
+      ],
+    );
     assert.match(failing[0][2], /✗ fail/);
-    assert.match(await page.textContent('#challenge-verdict'), /✗ Not passed: 0 of 2 criteria met \(the nominal run and 2 variants\)/);
+    assert.match(
+      await page.textContent('#challenge-verdict'),
+      /✗ Not passed: 0 of 2 criteria met \(the nominal run and 2 variants\)/,
+    );
 
     assert.equal(await tryValues(page, { k1: '2000', k2: '2000', k3: '1500', k4: '1500' }), 'pass');
     values = await checklist(page);
-    assert.deepEqual(values.map((c) => c.slice(0, 2)), [['settling_time', '1'], ['current_peak', '1']]);
+    assert.deepEqual(
+      values.map((c) => c.slice(0, 2)),
+      [
+        ['settling_time', '1'],
+        ['current_peak', '1'],
+      ],
+    );
     assert.match(values[0][2], /✓ pass 2 % settling time of ω after the step: 0\.00345 s, needs ≤ 0\.004 s/);
     // The nominal run is the one on screen: measured where it ran, not run again.
     assert.equal(await page.evaluate(() => document.body.dataset.challengeNominal), 'page');
@@ -121,7 +152,10 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
   });
 });
 
-for (const [tamper, refusal] of [['&try.k1=6000', /k1=6000 is outside 300\.\.5000/], ['&try.ekf=rk4', /field 'ekf' is not allowed/]]) {
+for (const [tamper, refusal] of [
+  ['&try.k1=6000', /k1=6000 is outside 300\.\.5000/],
+  ['&try.ekf=rk4', /field 'ekf' is not allowed/],
+]) {
   test(`a tampered submission (${tamper}) is refused, naming the field, and not graded`, async () => {
     await withPage('?challenge=step-tune', async (page) => {
       assert.equal(await graded(page), 'fail');

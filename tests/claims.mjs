@@ -61,7 +61,10 @@ export class Core {
         return Number(line.split('=')[1].trim().split(/\s+/)[0]);
       };
       const every = Math.max(1, Math.ceil(field('duration') / field('ts') / TRACE_ROWS));
-      const [header, ...lines] = execFileSync(CLI, ['run', '--every', String(every), run], { maxBuffer: 1 << 30 }).toString().trim().split('\n');
+      const [header, ...lines] = execFileSync(CLI, ['run', '--every', String(every), run], { maxBuffer: 1 << 30 })
+        .toString()
+        .trim()
+        .split('\n');
       const names = header.split(',');
       const rows = lines.map((l) => l.split(','));
       const columns = new Map();
@@ -69,7 +72,10 @@ export class Core {
         if (!columns.has(name)) {
           const i = names.indexOf(name);
           if (i < 0) throw new Error(`no column ${name}`);
-          columns.set(name, Float64Array.from(rows, (r) => Number(r[i])));
+          columns.set(
+            name,
+            Float64Array.from(rows, (r) => Number(r[i])),
+          );
         }
         return columns.get(name);
       };
@@ -87,9 +93,19 @@ export class Core {
     if (!this.maps) this.maps = new Map();
     if (!this.maps.has(key)) {
       const args = ['robust', run, ...[vary].flat().flatMap((v) => ['--vary', v]), '--seeds', seeds];
-      const [, header, ...lines] = execFileSync(CLI, args, { stdio: ['ignore', 'pipe', 'ignore'] }).toString().trim().split('\n');
+      const [, header, ...lines] = execFileSync(CLI, args, { stdio: ['ignore', 'pipe', 'ignore'] })
+        .toString()
+        .trim()
+        .split('\n');
       const names = header.split(',');
-      this.maps.set(key, lines.map((l) => Object.fromEntries(l.split(',').map((v, i) => [names[i], names[i] === 'scenario' ? v : (v === '' ? NaN : Number(v))]))));
+      this.maps.set(
+        key,
+        lines.map((l) =>
+          Object.fromEntries(
+            l.split(',').map((v, i) => [names[i], names[i] === 'scenario' ? v : v === '' ? NaN : Number(v)]),
+          ),
+        ),
+      );
     }
     return this.maps.get(key);
   }
@@ -272,24 +288,32 @@ export function checkText(text, spec, core) {
       if (!result) problems.push(`${kind} "${plain}" does not hold`);
     } else if (typeof kind === 'number') {
       if (measured.length !== 1) problems.push(`"${phrase}": a value check brackets one number`);
-      else if (!(Math.abs(result - valueOf(measured[0])) <= kind)) problems.push(`${measured[0]} in "${plain}": the run gives ${result} (tolerance ${kind})`);
+      else if (!(Math.abs(result - valueOf(measured[0])) <= kind))
+        problems.push(`${measured[0]} in "${plain}": the run gives ${result} (tolerance ${kind})`);
     } else if (kind.range !== undefined) {
       const [lo, hi] = measured.map(valueOf).sort((a, b) => a - b);
       if (measured.length !== 2) problems.push(`"${phrase}": a range brackets two numbers`);
       else if (!(Math.abs(result[0] - lo) <= kind.range && Math.abs(result[1] - hi) <= kind.range)) {
-        problems.push(`${measured.join(' to ')} in "${plain}": seeds ${kind.seeds[0]}–${kind.seeds.at(-1)} give ${result[0]} to ${result[1]} (tolerance ${kind.range})`);
+        problems.push(
+          `${measured.join(' to ')} in "${plain}": seeds ${kind.seeds[0]}–${kind.seeds.at(-1)} give ${result[0]} to ${result[1]} (tolerance ${kind.range})`,
+        );
       }
     } else {
       if (measured.length !== 1) problems.push(`"${phrase}": a value check brackets one number`);
       const bad = kind.seeds.filter((_, i) => !(Math.abs(result[i] - valueOf(measured[0])) <= kind.tol));
-      if (bad.length) problems.push(`${measured[0]} in "${plain}": not within ${kind.tol} on seeds ${bad.join(', ')} (${result.map((v) => v.toPrecision(4)).join(', ')})`);
+      if (bad.length)
+        problems.push(
+          `${measured[0]} in "${plain}": not within ${kind.tol} on seeds ${bad.join(', ')} (${result.map((v) => v.toPrecision(4)).join(', ')})`,
+        );
     }
   }
   for (const m of text.matchAll(NUMBER)) {
-    if (!covered.slice(m.index, m.index + m[0].length).every(Boolean)) problems.push(`${m[0]} at "${context(text, m.index)}": in the text, but neither a given nor checked`);
+    if (!covered.slice(m.index, m.index + m[0].length).every(Boolean))
+      problems.push(`${m[0]} at "${context(text, m.index)}": in the text, but neither a given nor checked`);
   }
   for (const m of text.matchAll(CAUSAL)) {
-    if (!causal[m.index]) problems.push(`"${m[0]}" at "${context(text, m.index)}": a causal sentence with no check that removes its cause`);
+    if (!causal[m.index])
+      problems.push(`"${m[0]}" at "${context(text, m.index)}": a causal sentence with no check that removes its cause`);
   }
   return problems;
 }
@@ -311,7 +335,12 @@ export function unnoticedSwaps(text, spec, core) {
     for (let b = a + 1; b < found.length; b++) {
       const [x, y] = [found[a], found[b]];
       if (x[0] === y[0]) continue;
-      const swapped = text.slice(0, x.index) + y[0] + text.slice(x.index + x[0].length, y.index) + x[0] + text.slice(y.index + y[0].length);
+      const swapped =
+        text.slice(0, x.index) +
+        y[0] +
+        text.slice(x.index + x[0].length, y.index) +
+        x[0] +
+        text.slice(y.index + y[0].length);
       if (!checkText(swapped, spec, core).length) out.push([x[0], y[0], context(text, x.index)]);
     }
   }

@@ -71,7 +71,10 @@ test('a URL reproduces the run bit for bit, and the CSV export equals the CLI', 
 
     // Back returns to the first scenario and reruns it.
     await page.goBack();
-    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', scenario);
+    await page.waitForFunction(
+      (s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done',
+      scenario,
+    );
     assert.equal(await exportCsv(page), csv);
   }));
 
@@ -98,7 +101,9 @@ test('a diverging run is reported, nothing non-finite is plotted, and the next r
     assert.equal(await settled(page), 'failed');
     assert.match(await page.textContent('#message'), /diverged/);
     await page.selectOption('#preset', 'step');
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=step' && document.body.dataset.state === 'done');
+    await page.waitForFunction(
+      () => document.body.dataset.scenario === 'v=1&preset=step' && document.body.dataset.state === 'done',
+    );
   }));
 
 test('an invalid edit names the field and blocks Run until fixed', () =>
@@ -122,18 +127,21 @@ test('Cancel stops a long run', () =>
     // The longest run a link can ask for (about a million samples), cancelled by the page as soon
     // as its first progress shows: the run cannot end first, however fast or busy the machine.
     await page.goto(`${suite.server.url}?v=1&preset=step&duration=20&ts=0.00001878`);
-    await page.evaluate(() => new Promise((resolve) => {
-      // Each progress message rewrites the status line, which the observer sees.
-      const cancelOnProgress = () => {
-        if (document.body.dataset.state !== 'running' || !(document.getElementById('progress').value > 0)) return;
-        observer.disconnect();
-        document.getElementById('cancel').click();
-        resolve();
-      };
-      const observer = new MutationObserver(cancelOnProgress);
-      observer.observe(document.body, { attributes: true, subtree: true, characterData: true, childList: true });
-      cancelOnProgress();
-    }));
+    await page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          // Each progress message rewrites the status line, which the observer sees.
+          const cancelOnProgress = () => {
+            if (document.body.dataset.state !== 'running' || !(document.getElementById('progress').value > 0)) return;
+            observer.disconnect();
+            document.getElementById('cancel').click();
+            resolve();
+          };
+          const observer = new MutationObserver(cancelOnProgress);
+          observer.observe(document.body, { attributes: true, subtree: true, characterData: true, childList: true });
+          cancelOnProgress();
+        }),
+    );
     assert.equal(await settled(page), 'cancelled');
     const progress = await page.evaluate(() => document.getElementById('progress').value);
     assert.ok(progress < 1, `progress ${progress}`);
@@ -150,8 +158,9 @@ test('the main thread is never blocked for long while a 5 s simulation runs: the
     await settled(page);
     await page.evaluate(() => {
       window.longTasks = [];
-      new PerformanceObserver((list) => window.longTasks.push(...list.getEntries().map((e) => e.duration)))
-        .observe({ type: 'longtask' });
+      new PerformanceObserver((list) => window.longTasks.push(...list.getEntries().map((e) => e.duration))).observe({
+        type: 'longtask',
+      });
     });
     await page.selectOption('#preset', 'ramp');
     await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=ramp');
@@ -183,15 +192,25 @@ test('a loaded app reloads and runs offline', () =>
       await page.goto(`${suite.server.url}?v=1&preset=${preset}`);
       await settled(page);
     }
-    const pages = () => page.evaluate(async () => (await (await caches.open('imlab-v1')).keys()).filter((r) => new URL(r.url).pathname === '/').map((r) => r.url));
-    await page.waitForFunction(async () => (await (await caches.open('imlab-v1')).keys()).some((r) => r.url.endsWith('/')));
+    const pages = () =>
+      page.evaluate(async () =>
+        (await (await caches.open('imlab-v1')).keys()).filter((r) => new URL(r.url).pathname === '/').map((r) => r.url),
+      );
+    await page.waitForFunction(async () =>
+      (await (await caches.open('imlab-v1')).keys()).some((r) => r.url.endsWith('/')),
+    );
     assert.deepEqual(await pages(), [`${suite.server.url}`]);
   }));
 
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>
   withPage('v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');
-    const shown = () => page.evaluate(() => ({ url: location.search.slice(1), ran: document.body.dataset.scenario, unrun: document.body.dataset.unrun === '1' }));
+    const shown = () =>
+      page.evaluate(() => ({
+        url: location.search.slice(1),
+        ran: document.body.dataset.scenario,
+        unrun: document.body.dataset.unrun === '1',
+      }));
     // An edit not yet run: the address keeps the run on screen, and the page says so.
     await page.fill('#field-k1', '600');
     await page.press('#field-k1', 'Tab');
@@ -203,12 +222,25 @@ test('Enter in the settings runs, and the address always describes the run on sc
     // Enter straight after typing, with no change event first.
     await page.fill('#field-k2', '900');
     assert.equal(await startRun(page, () => page.press('#field-k2', 'Enter')), 'done');
-    assert.deepEqual(await shown(), { url: 'v=1&preset=step&k1=600&k2=900', ran: 'v=1&preset=step&k1=600&k2=900', unrun: false });
+    assert.deepEqual(await shown(), {
+      url: 'v=1&preset=step&k1=600&k2=900',
+      ran: 'v=1&preset=step&k1=600&k2=900',
+      unrun: false,
+    });
     // Back and Forward rerun what the address holds.
     await page.goBack();
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=step&k1=600' && document.body.dataset.state === 'done');
+    await page.waitForFunction(
+      () => document.body.dataset.scenario === 'v=1&preset=step&k1=600' && document.body.dataset.state === 'done',
+    );
     assert.deepEqual(await shown(), { url: 'v=1&preset=step&k1=600', ran: 'v=1&preset=step&k1=600', unrun: false });
     await page.goForward();
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=step&k1=600&k2=900' && document.body.dataset.state === 'done');
-    assert.deepEqual(await shown(), { url: 'v=1&preset=step&k1=600&k2=900', ran: 'v=1&preset=step&k1=600&k2=900', unrun: false });
+    await page.waitForFunction(
+      () =>
+        document.body.dataset.scenario === 'v=1&preset=step&k1=600&k2=900' && document.body.dataset.state === 'done',
+    );
+    assert.deepEqual(await shown(), {
+      url: 'v=1&preset=step&k1=600&k2=900',
+      ran: 'v=1&preset=step&k1=600&k2=900',
+      unrun: false,
+    });
   }));

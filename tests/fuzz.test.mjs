@@ -7,8 +7,21 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import {
-  initSync, columns, Comparison, describe, log_grid, presets, recover, seed_bands, seed_run, seeds_csv,
-  Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  initSync,
+  columns,
+  Comparison,
+  describe,
+  log_grid,
+  presets,
+  recover,
+  seed_bands,
+  seed_run,
+  seeds_csv,
+  Simulation,
+  sweep_csv,
+  sweep_point,
+  sweep_summary,
+  variant,
 } from '../dist/pkg/imlab.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
@@ -40,11 +53,84 @@ const FIELDS = describe('v=1&preset=step').fields;
 const KEYS = ['v', 'preset', ...FIELDS.map((f) => f.key)];
 const PRESETS = presets().map((p) => p.name);
 const COLUMNS = columns();
-const ODD_NUMBERS = ['NaN', 'Infinity', '-Infinity', 'inf', '1e309', '-1e309', '1e-320', '-0', '0x10', '1_000', '1,5', '١٢', '+5', '.5', '5.', 'e5',
-  '9'.repeat(400), `0.${'0'.repeat(400)}1`, '', ' ', '%20', '%', '%FF', '%00', 'true', '[]', '{}', '1e', '--1'];
-const ODD_CHARS = ['&', '=', '%', '.', '-', 'e', '+', '#', '?', ';', ' ', '\0', '\n', '\r', '\t', '\x7f', '\u2028', '\u202e', '\ufeff',
-  '\ud800', '\udfff', 'é', '😀', '\u0301', 'ß', 'İ', 'ﬀ', '０'];
-const ODD_ARGS = [0, -1, 1, 0.5, NaN, Infinity, -Infinity, -0, 2 ** 31, 2 ** 32 - 1, 2 ** 32, 2 ** 53, 1e308, -1e308, 5e-324];
+const ODD_NUMBERS = [
+  'NaN',
+  'Infinity',
+  '-Infinity',
+  'inf',
+  '1e309',
+  '-1e309',
+  '1e-320',
+  '-0',
+  '0x10',
+  '1_000',
+  '1,5',
+  '١٢',
+  '+5',
+  '.5',
+  '5.',
+  'e5',
+  '9'.repeat(400),
+  `0.${'0'.repeat(400)}1`,
+  '',
+  ' ',
+  '%20',
+  '%',
+  '%FF',
+  '%00',
+  'true',
+  '[]',
+  '{}',
+  '1e',
+  '--1',
+];
+const ODD_CHARS = [
+  '&',
+  '=',
+  '%',
+  '.',
+  '-',
+  'e',
+  '+',
+  '#',
+  '?',
+  ';',
+  ' ',
+  '\0',
+  '\n',
+  '\r',
+  '\t',
+  '\x7f',
+  '\u2028',
+  '\u202e',
+  '\ufeff',
+  '\ud800',
+  '\udfff',
+  'é',
+  '😀',
+  '\u0301',
+  'ß',
+  'İ',
+  'ﬀ',
+  '０',
+];
+const ODD_ARGS = [
+  0,
+  -1,
+  1,
+  0.5,
+  NaN,
+  Infinity,
+  -Infinity,
+  -0,
+  2 ** 31,
+  2 ** 32 - 1,
+  2 ** 32,
+  2 ** 53,
+  1e308,
+  -1e308,
+  5e-324,
+];
 
 function number(f) {
   const x = f.min + rng.next() * (f.max - f.min);
@@ -68,13 +154,26 @@ function mutated() {
   for (let i = rng.int(1, 6); i > 0; i--) {
     const at = rng.int(0, s.length);
     switch (rng.int(0, 6)) {
-      case 0: s = s.slice(0, at) + rng.pick(ODD_CHARS) + s.slice(at); break;
-      case 1: s = s.slice(0, at) + s.slice(at + rng.int(1, 5)); break;
-      case 2: s = s.slice(0, at) + rng.pick(ODD_NUMBERS) + s.slice(at + 1); break;
-      case 3: s += `&${rng.pick(KEYS)}=${rng.pick(ODD_NUMBERS)}`; break;
-      case 4: s = s.slice(0, at); break;
-      case 5: s = s.split('&').reverse().join('&'); break;
-      default: s += s.slice(0, rng.int(0, s.length));
+      case 0:
+        s = s.slice(0, at) + rng.pick(ODD_CHARS) + s.slice(at);
+        break;
+      case 1:
+        s = s.slice(0, at) + s.slice(at + rng.int(1, 5));
+        break;
+      case 2:
+        s = s.slice(0, at) + rng.pick(ODD_NUMBERS) + s.slice(at + 1);
+        break;
+      case 3:
+        s += `&${rng.pick(KEYS)}=${rng.pick(ODD_NUMBERS)}`;
+        break;
+      case 4:
+        s = s.slice(0, at);
+        break;
+      case 5:
+        s = s.split('&').reverse().join('&');
+        break;
+      default:
+        s += s.slice(0, rng.int(0, s.length));
     }
   }
   return s;
@@ -89,7 +188,11 @@ function soup() {
   const pairs = [];
   for (let i = rng.int(1, 30); i > 0; i--) {
     const key = rng.chance(0.8) ? rng.pick(KEYS) : randomBytes().slice(0, 8);
-    const value = rng.chance(0.5) ? rng.pick(ODD_NUMBERS) : rng.chance(0.5) ? String(rng.next() * 10 ** rng.int(-8, 8)) : rng.pick([...PRESETS, 'rk4', 'ifoc', 'x']);
+    const value = rng.chance(0.5)
+      ? rng.pick(ODD_NUMBERS)
+      : rng.chance(0.5)
+        ? String(rng.next() * 10 ** rng.int(-8, 8))
+        : rng.pick([...PRESETS, 'rk4', 'ifoc', 'x']);
     pairs.push(rng.chance(0.9) ? `${key}=${value}` : key);
   }
   return pairs.join(rng.pick(['&', '&', '&', '&&', ';', '']));
@@ -98,45 +201,84 @@ function soup() {
 function long() {
   const size = rng.int(5_000, 20_000);
   switch (rng.int(0, 3)) {
-    case 0: return `v=1&preset=step&${'k1=1&'.repeat(size / 5)}`;
-    case 1: return `v=1&preset=step&k1=${'9'.repeat(size)}`;
-    case 2: return `v=1&preset=step&${'x'.repeat(size)}=1`;
-    default: return rng.pick(ODD_CHARS).repeat(size);
+    case 0:
+      return `v=1&preset=step&${'k1=1&'.repeat(size / 5)}`;
+    case 1:
+      return `v=1&preset=step&k1=${'9'.repeat(size)}`;
+    case 2:
+      return `v=1&preset=step&${'x'.repeat(size)}=1`;
+    default:
+      return rng.pick(ODD_CHARS).repeat(size);
   }
 }
 
 function controlled() {
   const s = validScenario();
   const at = rng.int(0, s.length);
-  const noise = Array.from({ length: rng.int(1, 8) }, () => String.fromCharCode(rng.chance(0.7) ? rng.int(0, 31) : rng.int(0xd800, 0xdfff))).join('');
+  const noise = Array.from({ length: rng.int(1, 8) }, () =>
+    String.fromCharCode(rng.chance(0.7) ? rng.int(0, 31) : rng.int(0xd800, 0xdfff)),
+  ).join('');
   return s.slice(0, at) + noise + s.slice(at);
 }
 
 const KINDS = [validScenario, validScenario, mutated, mutated, randomBytes, soup, long, controlled];
 
 function junk(depth = 0) {
-  const point = () => ({ freq: rng.pick([...ODD_ARGS, 10, 100]), gain: rng.next(), gain_db: rng.pick(ODD_ARGS), phase: rng.next(), gain_hat: 1, phase_hat: 0, saturated: rng.next(), failure: rng.pick([null, 'x', 5]) });
+  const point = () => ({
+    freq: rng.pick([...ODD_ARGS, 10, 100]),
+    gain: rng.next(),
+    gain_db: rng.pick(ODD_ARGS),
+    phase: rng.next(),
+    gain_hat: 1,
+    phase_hat: 0,
+    saturated: rng.next(),
+    failure: rng.pick([null, 'x', 5]),
+  });
   const values = (length) => Array.from({ length }, () => rng.next());
   const run = () => {
     const n = rng.int(0, 5);
-    return { result: { seed: rng.int(0, 9), tracking_rms: rng.next(), estimate_rms: rng.pick(ODD_ARGS), tracking_max: 1, failure: rng.pick([null, 'x']) },
-      t: values(rng.chance(0.8) ? n : rng.int(0, 5)), error: values(n), estimate: values(rng.chance(0.8) ? n : rng.int(0, 5)) };
+    return {
+      result: {
+        seed: rng.int(0, 9),
+        tracking_rms: rng.next(),
+        estimate_rms: rng.pick(ODD_ARGS),
+        tracking_max: 1,
+        failure: rng.pick([null, 'x']),
+      },
+      t: values(rng.chance(0.8) ? n : rng.int(0, 5)),
+      error: values(n),
+      estimate: values(rng.chance(0.8) ? n : rng.int(0, 5)),
+    };
   };
   switch (rng.int(0, 9)) {
-    case 0: return rng.pick([undefined, null, 0, NaN, '', 'x', true, Symbol.iterator]);
-    case 1: return [];
-    case 2: return Array.from({ length: rng.int(1, 50) }, point);
-    case 3: return Array.from({ length: rng.int(1, 10) }, run);
-    case 4: return Array.from({ length: rng.int(1, 10) }, () => run().result);
-    case 5: return depth < 3 ? [junk(depth + 1), junk(depth + 1)] : {};
-    case 6: return { length: 2 ** 32 - 1 };
-    case 7: return Array.from({ length: rng.int(0, 5) }, () => rng.pick(ODD_ARGS));
+    case 0:
+      return rng.pick([undefined, null, 0, NaN, '', 'x', true, Symbol.iterator]);
+    case 1:
+      return [];
+    case 2:
+      return Array.from({ length: rng.int(1, 50) }, point);
+    case 3:
+      return Array.from({ length: rng.int(1, 10) }, run);
+    case 4:
+      return Array.from({ length: rng.int(1, 10) }, () => run().result);
+    case 5:
+      return depth < 3 ? [junk(depth + 1), junk(depth + 1)] : {};
+    case 6:
+      return { length: 2 ** 32 - 1 };
+    case 7:
+      return Array.from({ length: rng.int(0, 5) }, () => rng.pick(ODD_ARGS));
     case 8: {
       let deep = [];
       for (let i = rng.int(10, 2_000); i > 0; i--) deep = [deep];
       return deep;
     }
-    default: return Object.fromEntries(Array.from({ length: rng.int(0, 6) }, () => [rng.pick(['freq', 'gain', 'result', 't', 'seed', 'x']), junk(depth + 1)]));
+    default:
+      return Object.fromEntries(
+        Array.from({ length: rng.int(0, 6) }, () => [
+          rng.pick(['freq', 'gain', 'result', 't', 'seed', 'x']),
+          junk(depth + 1),
+        ]),
+      );
   }
 }
 
@@ -153,10 +295,18 @@ function attempt(name, fn, ...args) {
     const text = e instanceof Error ? e.message : String(e);
     if (e instanceof WebAssembly.RuntimeError || POISONED.test(text)) {
       counts.traps++;
-      const shown = args.map((a) => (typeof a === 'string' ? JSON.stringify(a) : JSON.stringify(a, (_, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v)) ?? String(a)).slice(0, 300));
+      const shown = args.map((a) =>
+        (typeof a === 'string'
+          ? JSON.stringify(a)
+          : (JSON.stringify(a, (_, v) => (typeof v === 'number' && !Number.isFinite(v) ? String(v) : v)) ?? String(a))
+        ).slice(0, 300),
+      );
       assert.fail(`${name} trapped (${e.name}: ${text}) on ${shown.join(', ')}`);
     }
-    assert.ok((typeof e === 'string' || e instanceof Error) && text.length > 0, `${name} threw ${String(e)} without a message`);
+    assert.ok(
+      (typeof e === 'string' || e instanceof Error) && text.length > 0,
+      `${name} threw ${String(e)} without a message`,
+    );
     counts.cleanErrors++;
     return undefined;
   }
@@ -175,7 +325,15 @@ function exercise(s) {
   if (short) {
     attempt('seed_run', seed_run, s, oddArg(rng.int(0, 1000)), rng.pick([0, 1, 7, 2 ** 32 - 1, -1, NaN]));
   }
-  attempt('sweep_point', sweep_point, s, oddArg(50, 200), oddArg(0.02), rng.pick([0.01, 0.02, 0.05, -1, NaN, 0]), oddArg(0));
+  attempt(
+    'sweep_point',
+    sweep_point,
+    s,
+    oddArg(50, 200),
+    oddArg(0.02),
+    rng.pick([0.01, 0.02, 0.05, -1, NaN, 0]),
+    oddArg(0),
+  );
   attempt('log_grid', log_grid, oddArg(10), oddArg(1000), rng.pick([0, 1, 20, 200, 201, -1, 2.5, 2 ** 32 + 5, NaN]));
 
   const sim = attempt('new Simulation', (text) => new Simulation(text), s);
@@ -183,16 +341,34 @@ function exercise(s) {
   try {
     if (sim) {
       attempt('step', (n) => sim.step(n), rng.pick([0, 1, 10, 500, SHORT_STEPS, 2 ** 32 - 1, -1]));
-      attempt('csv_chunk', (start, count) => sim.csv_chunk(start, count), rng.pick([0, 1, 5, 2 ** 31, 2 ** 32 - 1, -1]), rng.pick([0, 1, 3, 100, 2 ** 32 - 1, -1]));
-      const names = Array.from({ length: rng.int(0, 4) }, () => (rng.chance(0.8) ? rng.pick(COLUMNS) : randomBytes().slice(0, 10)));
+      attempt(
+        'csv_chunk',
+        (start, count) => sim.csv_chunk(start, count),
+        rng.pick([0, 1, 5, 2 ** 31, 2 ** 32 - 1, -1]),
+        rng.pick([0, 1, 3, 100, 2 ** 32 - 1, -1]),
+      );
+      const names = Array.from({ length: rng.int(0, 4) }, () =>
+        rng.chance(0.8) ? rng.pick(COLUMNS) : randomBytes().slice(0, 10),
+      );
       const groups = rng.chance(0.9) ? [names, names.slice(1)] : rng.pick([null, 7, 'omega', [[1]], [names, 'x']]);
       attempt('keep_overview', (g, b) => sim.keep_overview(g, b), groups, rng.pick([0, 1, 7, 1000, 2 ** 32 - 1]));
-      attempt('view', (...a) => sim.view(...a), groups, oddArg(0), oddArg(0.01), rng.pick([0, 1, 2, 7, 1000, 2 ** 32 - 1, -1, NaN]));
+      attempt(
+        'view',
+        (...a) => sim.view(...a),
+        groups,
+        oddArg(0),
+        oddArg(0.01),
+        rng.pick([0, 1, 2, 7, 1000, 2 ** 32 - 1, -1, NaN]),
+      );
       attempt('report', () => sim.report());
       attempt('inspect', (t) => sim.inspect(t), oddArg(rng.next() * 0.02));
       attempt('metrics', () => sim.metrics());
       attempt('stability', () => sim.stability());
-      attempt('lyapunov_bound', (t) => sim.lyapunov_bound(t), Float64Array.from({ length: rng.int(0, 5) }, () => oddArg(rng.next())));
+      attempt(
+        'lyapunov_bound',
+        (t) => sim.lyapunov_bound(t),
+        Float64Array.from({ length: rng.int(0, 5) }, () => oddArg(rng.next())),
+      );
       attempt('column', (name) => sim.column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
       attempt('keep_column', (name) => sim.keep_column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
       attempt('getters', () => [sim.done, sim.total, sim.rows, sim.finished, sim.failure, sim.scenario]);
@@ -202,7 +378,14 @@ function exercise(s) {
     attempt('pin', (text, c) => comparison.pin(text, c), 'v=1&preset=step&duration=0.002', column());
     if (sim) {
       attempt('legends', () => comparison.legends(sim));
-      attempt('overlay', (...a) => comparison.overlay(sim, ...a), rng.chance(0.7) ? rng.pick(COLUMNS) : s, oddArg(0), oddArg(0.01), rng.pick([0, 1, 100, 2 ** 32 - 1, -1]));
+      attempt(
+        'overlay',
+        (...a) => comparison.overlay(sim, ...a),
+        rng.chance(0.7) ? rng.pick(COLUMNS) : s,
+        oddArg(0),
+        oddArg(0.01),
+        rng.pick([0, 1, 100, 2 ** 32 - 1, -1]),
+      );
     }
     attempt('unpin', (i) => comparison.unpin(i), rng.pick([0, 1, 5, -1, 2 ** 32 - 1, NaN]));
     attempt('scenarios', () => comparison.scenarios());
@@ -223,7 +406,9 @@ test(`${STRINGS} generated inputs through every binding: clean errors, never a t
     counts.strings++;
   }
   const seconds = ((performance.now() - started) / 1000).toFixed(1);
-  console.log(`fuzz: ${counts.strings} strings, ${counts.calls} calls: ${counts.successes} successes, ${counts.cleanErrors} clean errors, ${counts.traps} traps (${seconds} s)`);
+  console.log(
+    `fuzz: ${counts.strings} strings, ${counts.calls} calls: ${counts.successes} successes, ${counts.cleanErrors} clean errors, ${counts.traps} traps (${seconds} s)`,
+  );
   assert.equal(counts.traps, 0);
   // The generators reach both sides of the codec.
   assert.ok(counts.successes > counts.calls / 10 && counts.cleanErrors > counts.calls / 10);
@@ -231,5 +416,8 @@ test(`${STRINGS} generated inputs through every binding: clean errors, never a t
 
 test('seed_bands refuses seed runs whose times and traces differ in length', () => {
   const result = { seed: 1, tracking_rms: 0, estimate_rms: 0, tracking_max: 0, failure: null };
-  assert.throws(() => seed_bands([{ result, t: [], error: [0.1], estimate: [0.1] }]), (e) => !(e instanceof WebAssembly.RuntimeError));
+  assert.throws(
+    () => seed_bands([{ result, t: [], error: [0.1], estimate: [0.1] }]),
+    (e) => !(e instanceof WebAssembly.RuntimeError),
+  );
 });

@@ -15,11 +15,12 @@ const MIN_PRESENT_PX = 20;
 const SECOND_LEVEL_SCRIPT = 0.6;
 
 /** Opens `path` at `width`×`height`, waits for its run, then runs `body(page)`. */
-const withPage = (path, [width, height], body) => suite.withPage(path, async (page) => {
-  await page.setViewportSize({ width, height });
-  assert.equal(await settled(page), 'done');
-  await body(page);
-});
+const withPage = (path, [width, height], body) =>
+  suite.withPage(path, async (page) => {
+    await page.setViewportSize({ width, height });
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  });
 
 /** Shows tab `name` and waits until its plots are drawn. */
 async function showTab(page, name) {
@@ -28,15 +29,34 @@ async function showTab(page, name) {
 }
 
 /** How far the page scrolls sideways, with the elements that stick out past the right edge. */
-const sideways = (page) => page.evaluate(() => {
-  const over = document.documentElement.scrollWidth - innerWidth;
-  const culprits = over <= 0 ? [] : [...document.querySelectorAll('body *')]
-    .filter((e) => e.getBoundingClientRect().right > innerWidth + 0.5 && e.checkVisibility() && !e.closest('.katex-mathml'))
-    .slice(0, 5).map((e) => `${e.tagName.toLowerCase()}${e.id ? `#${e.id}` : ''}.${[...e.classList].join('.')} right=${Math.round(e.getBoundingClientRect().right)}`);
-  return { over, culprits };
-});
+const sideways = (page) =>
+  page.evaluate(() => {
+    const over = document.documentElement.scrollWidth - innerWidth;
+    const culprits =
+      over <= 0
+        ? []
+        : [...document.querySelectorAll('body *')]
+            .filter(
+              (e) =>
+                e.getBoundingClientRect().right > innerWidth + 0.5 &&
+                e.checkVisibility() &&
+                !e.closest('.katex-mathml'),
+            )
+            .slice(0, 5)
+            .map(
+              (e) =>
+                `${e.tagName.toLowerCase()}${e.id ? `#${e.id}` : ''}.${[...e.classList].join('.')} right=${Math.round(e.getBoundingClientRect().right)}`,
+            );
+    return { over, culprits };
+  });
 
-for (const [width, height] of [[360, 740], [390, 844], [820, 1180], [1280, 720], [1920, 1080]]) {
+for (const [width, height] of [
+  [360, 740],
+  [390, 844],
+  [820, 1180],
+  [1280, 720],
+  [1920, 1080],
+]) {
   test(`no page scrolls sideways at ${width} px on any tab${width >= 1280 ? ', also in presentation mode' : ', also with the settings open'}`, () =>
     withPage('?v=1&preset=step', [width, height], async (page) => {
       const check = async (where) => {
@@ -65,24 +85,33 @@ for (const [width, height] of [[360, 740], [390, 844], [820, 1180], [1280, 720],
  * The smallest font size of visible text on the page: every non-blank text node whose element has
  * a box and is not visually hidden (.sr-only, KaTeX's MathML copy), with where it is.
  */
-const smallestText = (page, where) => page.evaluate(({ where, secondLevel }) => {
-  const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
-  let smallest = { px: Infinity, text: '' };
-  for (let node = walker.nextNode(); node; node = walker.nextNode()) {
-    const e = node.parentElement;
-    if (!node.data.trim() || e.closest('.sr-only, .katex-mathml, script, style, option')) continue;
-    const box = e.getBoundingClientRect();
-    if (box.width <= 1 || box.height <= 1 || !e.checkVisibility({ checkVisibilityCSS: true })) continue;
-    const px = parseFloat(getComputedStyle(e).fontSize);
-    const equation = e.closest('.katex');
-    if (equation && px < secondLevel * parseFloat(getComputedStyle(equation).fontSize)) continue;
-    if (px < smallest.px) {
-      const owner = e.closest('[id], [class]');
-      smallest = { px, text: node.data.trim().slice(0, 40), in: `${owner?.tagName.toLowerCase()}#${owner?.id}.${owner?.className}`, where };
-    }
-  }
-  return smallest;
-}, { where, secondLevel: SECOND_LEVEL_SCRIPT });
+const smallestText = (page, where) =>
+  page.evaluate(
+    ({ where, secondLevel }) => {
+      const walker = document.createTreeWalker(document.body, NodeFilter.SHOW_TEXT);
+      let smallest = { px: Infinity, text: '' };
+      for (let node = walker.nextNode(); node; node = walker.nextNode()) {
+        const e = node.parentElement;
+        if (!node.data.trim() || e.closest('.sr-only, .katex-mathml, script, style, option')) continue;
+        const box = e.getBoundingClientRect();
+        if (box.width <= 1 || box.height <= 1 || !e.checkVisibility({ checkVisibilityCSS: true })) continue;
+        const px = parseFloat(getComputedStyle(e).fontSize);
+        const equation = e.closest('.katex');
+        if (equation && px < secondLevel * parseFloat(getComputedStyle(equation).fontSize)) continue;
+        if (px < smallest.px) {
+          const owner = e.closest('[id], [class]');
+          smallest = {
+            px,
+            text: node.data.trim().slice(0, 40),
+            in: `${owner?.tagName.toLowerCase()}#${owner?.id}.${owner?.className}`,
+            where,
+          };
+        }
+      }
+      return smallest;
+    },
+    { where, secondLevel: SECOND_LEVEL_SCRIPT },
+  );
 
 test('presentation mode at 1280×720 shows no text under 20 px: every tab, the drawer, the inspect sheet, a lesson', () =>
   withPage('?v=1&preset=step', [1280, 720], async (page) => {
@@ -119,17 +148,20 @@ async function inspectAt(over, page) {
 
 test('on a phone the plots come before the settings, which show under the run bar only while the drawer is open', () =>
   withPage('?v=1&preset=step', [390, 844], async (page) => {
-    const layout = () => page.evaluate(() => {
-      const rect = (s) => document.querySelector(s).getBoundingClientRect();
-      const fields = [...document.querySelectorAll('#settings input, #settings select')].filter((e) => e.checkVisibility());
-      return {
-        plot: rect('#plots .plot').top,
-        runBar: rect('.run-bar').bottom,
-        results: rect('#results').top,
-        form: document.querySelector('#settings').checkVisibility() ? rect('#settings').top : null,
-        fieldsAbovePlot: fields.filter((e) => e.getBoundingClientRect().top < rect('#plots .plot').top).length,
-      };
-    });
+    const layout = () =>
+      page.evaluate(() => {
+        const rect = (s) => document.querySelector(s).getBoundingClientRect();
+        const fields = [...document.querySelectorAll('#settings input, #settings select')].filter((e) =>
+          e.checkVisibility(),
+        );
+        return {
+          plot: rect('#plots .plot').top,
+          runBar: rect('.run-bar').bottom,
+          results: rect('#results').top,
+          form: document.querySelector('#settings').checkVisibility() ? rect('#settings').top : null,
+          fieldsAbovePlot: fields.filter((e) => e.getBoundingClientRect().top < rect('#plots .plot').top).length,
+        };
+      });
     const closed = await layout();
     assert.equal(closed.form, null, 'the settings form shows before the drawer is opened');
     assert.equal(closed.fieldsAbovePlot, 0);
@@ -167,20 +199,33 @@ test('after a frequency sweep on a phone the page still does not scroll sideways
   withPage('?v=1&preset=step', [390, 844], async (page) => {
     await showTab(page, 'analysis');
     // A small sweep: three frequencies, each run long enough for one period in its fit window.
-    for (const [name, value] of [['lo', '100'], ['n', '3'], ['duration', '0.05']]) await page.fill(`#sweep-form [name=${name}]`, value);
+    for (const [name, value] of [
+      ['lo', '100'],
+      ['n', '3'],
+      ['duration', '0.05'],
+    ])
+      await page.fill(`#sweep-form [name=${name}]`, value);
     await page.click('#sweep-run');
-    await page.waitForFunction(() => document.querySelector('#sweep-table').rows.length > 1 && !document.querySelector('#sweep-run').disabled);
+    await page.waitForFunction(
+      () => document.querySelector('#sweep-table').rows.length > 1 && !document.querySelector('#sweep-run').disabled,
+    );
     const { over, culprits } = await sideways(page);
     assert.ok(over <= 0, `the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);
   }));
 
-for (const [width, height] of [[1280, 720], [1024, 768]]) {
+for (const [width, height] of [
+  [1280, 720],
+  [1024, 768],
+]) {
   test(`presentation mode at ${width}×${height}: the first screen shows the main plot and the key figures, the strip one click away`, () =>
     withPage('?v=1&preset=rr-mismatch#present=1', [width, height], async (page) => {
       const top = await page.$eval('#plots .plot', (p) => p.getBoundingClientRect().top);
       assert.ok(top < height - 200, `the first plot starts ${top} px down`);
       assert.equal(await page.isVisible('#key-figures'), true);
-      assert.match(await page.textContent('#key-figures'), /RMS of ω − ω_d .* · final ω − ω_d -5\.02 rad\/s \(still changing\)/);
+      assert.match(
+        await page.textContent('#key-figures'),
+        /RMS of ω − ω_d .* · final ω − ω_d -5\.02 rad\/s \(still changing\)/,
+      );
       assert.equal(await page.isVisible('#figures'), false);
       await page.click('#figures-toggle');
       assert.equal(await page.isVisible('#figures'), true);

@@ -8,10 +8,11 @@ import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './br
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
-const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
-  assert.equal(await settled(page), 'done');
-  await body(page);
-});
+const withPage = (query, body) =>
+  suite.withPage(`?${query}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  });
 
 function cliMetrics(scenario) {
   const [header, ...lines] = execFileSync(cli, ['metrics', scenario]).toString().trim().split('\n');
@@ -20,10 +21,11 @@ function cliMetrics(scenario) {
 }
 
 /** The speed plot's data and x window, as uPlot holds them. */
-const speedPlot = (page) => page.evaluate(() => {
-  const u = window.imlab.plots.charts[0];
-  return { data: u.data.map((a) => [...a]), min: u.scales.x.min, max: u.scales.x.max };
-});
+const speedPlot = (page) =>
+  page.evaluate(() => {
+    const u = window.imlab.plots.charts[0];
+    return { data: u.data.map((a) => [...a]), min: u.scales.x.min, max: u.scales.x.max };
+  });
 
 /** Drags across the speed plot from time t0 to t1 (of a run shown in full) and waits for the view. */
 async function zoom(page, t0, t1, duration) {
@@ -44,16 +46,30 @@ test('a zoomed plot draws exactly the recorded samples, reads out, and returns t
     const rows = cliRows('v=1&preset=sine200-1rad');
     const inside = rows.filter((r) => r.t >= min && r.t <= max);
     // Every sample of the window, each at its own time with its own values.
-    assert.deepEqual(data[0], inside.map((r) => r.t));
-    assert.deepEqual(data[1], inside.map((r) => r.omega_ref));
-    assert.deepEqual(data[2], inside.map((r) => r.omega_hat));
-    assert.deepEqual(data[3], inside.map((r) => r.omega));
+    assert.deepEqual(
+      data[0],
+      inside.map((r) => r.t),
+    );
+    assert.deepEqual(
+      data[1],
+      inside.map((r) => r.omega_ref),
+    );
+    assert.deepEqual(
+      data[2],
+      inside.map((r) => r.omega_hat),
+    );
+    assert.deepEqual(
+      data[3],
+      inside.map((r) => r.omega),
+    );
 
     // The read-out follows the cursor and shows the recorded value at the nearest sample.
     const box = await page.locator('#plots .plot[data-plot=speed] .u-over').boundingBox();
     const readout = async (fraction) => {
       await page.mouse.move(box.x + box.width * fraction, box.y + box.height / 2);
-      return page.$eval('#plots .plot[data-plot=speed] .u-legend', (l) => [...l.querySelectorAll('.u-value')].map((v) => v.textContent));
+      return page.$eval('#plots .plot[data-plot=speed] .u-legend', (l) =>
+        [...l.querySelectorAll('.u-value')].map((v) => v.textContent),
+      );
     };
     const [a, b] = [await readout(0.3), await readout(0.7)];
     assert.notDeepEqual(a, b);
@@ -94,15 +110,17 @@ test('the walkthrough plots wait until it is first opened, then draw recorded sa
   withPage('v=1&preset=sine200-1rad', async (page) => {
     // A run on the plots tab leaves the walkthrough's plots for later.
     assert.equal(await page.evaluate(() => window.imlab.walkthrough.charts.length), 0);
-    const nis = () => page.evaluate(() => {
-      const u = window.imlab.walkthrough.charts.find((c) => c.series[1]?.label === 'NIS');
-      return u ? [[...u.data[0]], [...u.data[1]]] : null;
-    });
+    const nis = () =>
+      page.evaluate(() => {
+        const u = window.imlab.walkthrough.charts.find((c) => c.series[1]?.label === 'NIS');
+        return u ? [[...u.data[0]], [...u.data[1]]] : null;
+      });
     const rows = new Map(cliRows('v=1&preset=sine200-1rad').map((r) => [r.t, r]));
-    const recorded = ([t, v]) => t.forEach((time, j) => {
-      assert.ok(rows.has(time), `t = ${time} is not a sample`);
-      assert.equal(v[j], rows.get(time).nis);
-    });
+    const recorded = ([t, v]) =>
+      t.forEach((time, j) => {
+        assert.ok(rows.has(time), `t = ${time} is not a sample`);
+        assert.equal(v[j], rows.get(time).nis);
+      });
     await openWalkthrough(page);
     const whole = await nis();
     assert.equal(whole[0][0], 0);
@@ -125,7 +143,10 @@ test('the walkthrough plots wait until it is first opened, then draw recorded sa
     // on the plots tab, its plots show that run as soon as the tab is clicked.
     const before = Number(await page.evaluate(() => document.body.dataset.run));
     await page.selectOption('#preset', 'step');
-    await page.waitForFunction((n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done', before);
+    await page.waitForFunction(
+      (n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done',
+      before,
+    );
     await page.click('[role=tab][data-tab=walkthrough]');
     const step = new Map(cliRows('v=1&preset=step').map((r) => [r.t, r]));
     const shown = await nis();
@@ -134,21 +155,43 @@ test('the walkthrough plots wait until it is first opened, then draw recorded sa
   }));
 
 /** The figures strip as `imlab metrics` prints it: {name: value}. */
-const stripFigures = (page) => page.$$eval('#figures .figure', (fs) => Object.fromEntries(fs.flatMap((f) => [
-  [f.dataset.name, Number(f.dataset.value)],
-  ...(f.dataset.settled ? [[`${f.dataset.name}_rate`, Number(f.dataset.rate)], [`${f.dataset.name}_settled`, Number(f.dataset.settled)]] : []),
-  ...(f.dataset.low ? [['mean_nis_low', Number(f.dataset.low)], ['mean_nis_high', Number(f.dataset.high)]] : []),
-  ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
-])));
+const stripFigures = (page) =>
+  page.$$eval('#figures .figure', (fs) =>
+    Object.fromEntries(
+      fs.flatMap((f) => [
+        [f.dataset.name, Number(f.dataset.value)],
+        ...(f.dataset.settled
+          ? [
+              [`${f.dataset.name}_rate`, Number(f.dataset.rate)],
+              [`${f.dataset.name}_settled`, Number(f.dataset.settled)],
+            ]
+          : []),
+        ...(f.dataset.low
+          ? [
+              ['mean_nis_low', Number(f.dataset.low)],
+              ['mean_nis_high', Number(f.dataset.high)],
+            ]
+          : []),
+        ...(f.dataset.rated ? [['current_rated', Number(f.dataset.rated)]] : []),
+      ]),
+    ),
+  );
 
 test('the figures strip equals imlab metrics, and the y-axes leave out the start-up transient', () =>
   withPage('v=1&preset=step', async (page) => {
     const shown = await stripFigures(page);
     const cli = cliMetrics('v=1&preset=step');
     assert.deepEqual(shown, cli);
-    assert.match(await page.textContent('#fit-label'), new RegExp(`t ≥ ${Number((cli.transient_end * 1e3).toPrecision(3))} ms`));
+    assert.match(
+      await page.textContent('#fit-label'),
+      new RegExp(`t ≥ ${Number((cli.transient_end * 1e3).toPrecision(3))} ms`),
+    );
     // The voltage plot with the fit on ignores the ±10 kV... start-up command; off, it shows it.
-    const yRange = () => page.evaluate(() => { const u = window.imlab.walkthrough.charts.find((c) => c.root.closest('#section-step4')); return u ? [u.scales.y.min, u.scales.y.max] : null; });
+    const yRange = () =>
+      page.evaluate(() => {
+        const u = window.imlab.walkthrough.charts.find((c) => c.root.closest('#section-step4'));
+        return u ? [u.scales.y.min, u.scales.y.max] : null;
+      });
     await openWalkthrough(page);
     const fitted = await yRange();
     await page.uncheck('#fit');
@@ -166,18 +209,32 @@ test('a slow decay is still changing, a settling time not reached says so in its
     assert.equal(names.indexOf('settling_time_reached'), names.indexOf('tracking_peak') + 1, names.join());
     assert.ok(!names.includes('settling_time'));
     const unreached = await page.textContent('#figures [data-name=settling_time_reached]');
-    assert.match(unreached, /^2 % settling time of ω after the stepnot settled by the end of the run \(t = 99\.95 ms\)from the step at 50 ms$/);
-    const final = await page.$eval('#figures [data-name=speed_error_final]', (f) => ({ settled: f.dataset.settled, text: f.textContent }));
+    assert.match(
+      unreached,
+      /^2 % settling time of ω after the stepnot settled by the end of the run \(t = 99\.95 ms\)from the step at 50 ms$/,
+    );
+    const final = await page.$eval('#figures [data-name=speed_error_final]', (f) => ({
+      settled: f.dataset.settled,
+      text: f.textContent,
+    }));
     assert.equal(final.settled, '0');
-    assert.match(final.text, /still changing: -?[\d.]+ rad\/s per s at the end; run longer \(about 0\.0\d+ rad\/s still to go\)/);
+    assert.match(
+      final.text,
+      /still changing: -?[\d.]+ rad\/s per s at the end; run longer \(about 0\.0\d+ rad\/s still to go\)/,
+    );
     assert.match(await page.textContent('#key-figures'), /final ω − ω_d 0\.0223 rad\/s \(still changing\)/);
   });
   // At 1 rad/s with the rotor resistance 10 % off the estimates drift away and the flux ends at
   // 33 Wb: no final value is settled.
   await suite.withPage('?v=1&preset=rr-mismatch&ref.value=1&ekf=rk4&init_err=0&duration=3', async (page) => {
     assert.equal(await settled(page), 'failed');
-    const finals = await page.$$eval('#figures .figure[data-settled]', (fs) => fs.map((f) => [f.dataset.name, f.dataset.settled, f.querySelector('dd.trend').textContent]));
-    assert.deepEqual(finals.map(([name]) => name), ['flux_error_final', 'speed_error_final', 'speed_estimate_error_final']);
+    const finals = await page.$$eval('#figures .figure[data-settled]', (fs) =>
+      fs.map((f) => [f.dataset.name, f.dataset.settled, f.querySelector('dd.trend').textContent]),
+    );
+    assert.deepEqual(
+      finals.map(([name]) => name),
+      ['flux_error_final', 'speed_error_final', 'speed_estimate_error_final'],
+    );
     for (const [name, flag, text] of finals) {
       assert.equal(flag, '0', name);
       assert.equal(text, 'the run ran away: not a final value', name);
@@ -196,7 +253,10 @@ test('a walkthrough knob re-runs the scenario, and an invalid value is marked at
     const run = Number(await page.evaluate(() => document.body.dataset.run));
     await page.fill('#knob-k1', '600');
     await page.press('#knob-k1', 'Enter');
-    await page.waitForFunction((n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done', run);
+    await page.waitForFunction(
+      (n) => Number(document.body.dataset.run) > n && document.body.dataset.state === 'done',
+      run,
+    );
     assert.ok(new URL(page.url()).search.includes('k1=600'));
     const after = await settling();
     assert.ok(after > 1.5 * before, `peak |ω − ω_d| ${before} → ${after} rad/s`);
@@ -217,11 +277,18 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);
     for (const [i, run] of lessons.entries()) {
       // The low-speed lesson's run ends as a failure: it runs away.
-      await page.waitForFunction((s) => document.body.dataset.scenario === s && ['done', 'failed'].includes(document.body.dataset.state), run);
+      await page.waitForFunction(
+        (s) => document.body.dataset.scenario === s && ['done', 'failed'].includes(document.body.dataset.state),
+        run,
+      );
       assert.equal(await page.isVisible('#lesson-panel'), true);
       assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), run);
       // Focus follows the content: the lesson's title, not the page's body.
-      assert.equal(await page.evaluate(() => document.activeElement.matches('#lesson-panel h2')), true, `lesson ${i + 1} focus`);
+      assert.equal(
+        await page.evaluate(() => document.activeElement.matches('#lesson-panel h2')),
+        true,
+        `lesson ${i + 1} focus`,
+      );
       assert.ok((await page.textContent('#lesson-panel .question')).length > 20);
       assert.equal(await page.isVisible('#lesson-panel .answer p'), false);
       await page.click('#lesson-panel .answer summary');
@@ -253,7 +320,12 @@ test('the inspect panel rounds t to its sample, shows units, marks the instant a
   }));
 
 test('final values say whether they settled, and an inconsistent EKF is named in words', async () => {
-  const final = (page) => page.$eval('#figures [data-name=speed_error_final]', (f) => ({ settled: f.dataset.settled, text: f.textContent, flagged: f.classList.contains('unsettled') }));
+  const final = (page) =>
+    page.$eval('#figures [data-name=speed_error_final]', (f) => ({
+      settled: f.dataset.settled,
+      text: f.textContent,
+      flagged: f.classList.contains('unsettled'),
+    }));
   const warning = (page) => page.$eval('#consistency', (p) => (p.hidden ? '' : p.textContent));
   // Both end inside a slow transient: the rotor-resistance mismatch's slow mode, the load step's fall.
   for (const preset of ['rr-mismatch', 'load-step']) {
@@ -272,6 +344,9 @@ test('final values say whether they settled, and an inconsistent EKF is named in
   });
   // The paper's Euler EKF on sine200: mean NIS about 35 against a band near 2.
   await withPage('v=1&preset=sine200', async (page) => {
-    assert.match(await warning(page), /^The EKF is inconsistent on this run: its mean NIS is 3\d\.?\d*, far above the 95 % band/);
+    assert.match(
+      await warning(page),
+      /^The EKF is inconsistent on this run: its mean NIS is 3\d\.?\d*, far above the 95 % band/,
+    );
   });
 });

@@ -12,7 +12,11 @@ const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const published = JSON.parse(readFileSync(new URL('./fixtures/published.json', import.meta.url), 'utf8'));
 
 test('every preset is among the published runs', () => {
-  const presets = execFileSync(cli, ['list']).toString().trim().split('\n').map((l) => l.split(/\s+/)[0]);
+  const presets = execFileSync(cli, ['list'])
+    .toString()
+    .trim()
+    .split('\n')
+    .map((l) => l.split(/\s+/)[0]);
   for (const p of presets) assert.ok(p in published, `preset ${p} has no recorded CSV`);
 });
 

@@ -52,7 +52,7 @@ function trapOnNextStep(worker) {
 /** Checks that the page has the run's plots and figures. */
 async function assertDrawn(page) {
   assert.equal(await page.locator('#plots .plot canvas').count(), 8);
-  assert.ok(await page.locator('#figures .figure').count() > 0);
+  assert.ok((await page.locator('#figures .figure').count()) > 0);
 }
 
 // The worker starts with the page (boot.js), before the page's modules run, and the page adopts
@@ -72,12 +72,18 @@ for (const blocked of ['web/worker/worker.js', 'pkg/imlab_bg.wasm']) {
       await page.context().route(`**/${blocked}`, (route) => route.abort());
       await page.goto(suite.server.url);
       await page.waitForFunction(() => document.body.dataset.state === 'crashed');
-      assert.match(await page.locator('#message').innerText(), /^The simulation worker could not start \(.+\)\. Reload the page to try again\.$/);
+      assert.match(
+        await page.locator('#message').innerText(),
+        /^The simulation worker could not start \(.+\)\. Reload the page to try again\.$/,
+      );
     } finally {
       await page.context().close();
     }
     // The browser reports the blocked request itself; nothing else may fail.
-    assert.deepEqual(errors.filter((e) => !/Failed to load resource/.test(e)), []);
+    assert.deepEqual(
+      errors.filter((e) => !/Failed to load resource/.test(e)),
+      [],
+    );
   });
 }
 
@@ -172,7 +178,10 @@ test('the CSV of the largest allowed run exports whole, byte for byte the CLI’
     await withPage(`?${LARGEST}`, async (page) => {
       assert.equal(await settled(page, 120_000), 'done');
       assert.equal(await page.evaluate(() => document.body.dataset.rows), '1064963');
-      const [download] = await Promise.all([page.waitForEvent('download', { timeout: 300_000 }), page.click('#export-csv')]);
+      const [download] = await Promise.all([
+        page.waitForEvent('download', { timeout: 300_000 }),
+        page.click('#export-csv'),
+      ]);
       assert.equal(await page.evaluate(() => document.body.dataset.export), 'done');
       assert.equal(await page.textContent('#status'), 'CSV exported: 1,064,963 rows');
       const file = await download.path(); // Playwright's copy, removed with the context
@@ -190,7 +199,9 @@ test('a CSV export shows its progress, Cancel stops it, and a run started during
   withPage('?v=1&preset=step&duration=4&ts=0.0000167', async (page) => {
     assert.equal(await settled(page, 60_000), 'done');
     await page.click('#export-csv');
-    await page.waitForFunction(() => /^Exporting CSV: [\d,]+ of 239,521 rows$/.test(document.getElementById('status').textContent));
+    await page.waitForFunction(() =>
+      /^Exporting CSV: [\d,]+ of 239,521 rows$/.test(document.getElementById('status').textContent),
+    );
     assert.ok(await page.isDisabled('#export-csv'));
     await page.click('#cancel');
     assert.equal(await page.evaluate(() => document.body.dataset.export), 'cancelled');
@@ -208,8 +219,10 @@ test('a CSV export shows its progress, Cancel stops it, and a run started during
   }));
 
 test('hostile fragments are named in a message and the rest of the link still works', async () => {
-  const sweepDone = (page) => page.waitForFunction(() => ['done', 'failed'].includes(document.body.dataset.sweep), null, { timeout: 60_000 })
-    .then(() => page.evaluate(() => document.body.dataset.sweep));
+  const sweepDone = (page) =>
+    page
+      .waitForFunction(() => ['done', 'failed'].includes(document.body.dataset.sweep), null, { timeout: 60_000 })
+      .then(() => page.evaluate(() => document.body.dataset.sweep));
   // A pins part that does not decode.
   await withPage('?v=1&preset=step#pins=%', async (page) => {
     assert.equal(await settled(page), 'done');
@@ -225,28 +238,45 @@ test('hostile fragments are named in a message and the rest of the link still wo
     assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 1);
   });
   // Pins that decode to scenarios the core refuses, markup included: shown as text.
-  await withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=<img src=x>')}|${encodeURIComponent('v=1&preset=step&k1=-5')}`, async (page) => {
-    assert.equal(await settled(page), 'done');
-    await page.waitForFunction(() => document.getElementById('message').textContent.includes('Could not pin'));
-    const message = await page.textContent('#message');
-    assert.match(message, /^Could not pin v=1&preset=<img src=x>: .*preset.*; could not pin v=1&preset=step&k1=-5: .*'k1'.*\.$/);
-    assert.equal(await page.locator('#message img').count(), 0);
-    assert.equal(await page.locator('#pins li').count(), 0);
-  });
+  await withPage(
+    `?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=<img src=x>')}|${encodeURIComponent('v=1&preset=step&k1=-5')}`,
+    async (page) => {
+      assert.equal(await settled(page), 'done');
+      await page.waitForFunction(() => document.getElementById('message').textContent.includes('Could not pin'));
+      const message = await page.textContent('#message');
+      assert.match(
+        message,
+        /^Could not pin v=1&preset=<img src=x>: .*preset.*; could not pin v=1&preset=step&k1=-5: .*'k1'.*\.$/,
+      );
+      assert.equal(await page.locator('#message img').count(), 0);
+      assert.equal(await page.locator('#pins li').count(), 0);
+    },
+  );
   // A fragment of half a million pins: refused whole, with its size, and the page keeps working.
   await withPage(`?v=1&preset=step#pins=${'|x'.repeat(524_288)}`, async (page) => {
     assert.equal(await settled(page), 'done');
-    await page.waitForFunction(() => document.getElementById('message').textContent.startsWith('The pins in the address were not run'));
-    assert.match(await page.textContent('#message'), /^The pins in the address were not run: 1,048,576 characters, more than the 65,536 a pins fragment may hold\.$/);
+    await page.waitForFunction(() =>
+      document.getElementById('message').textContent.startsWith('The pins in the address were not run'),
+    );
+    assert.match(
+      await page.textContent('#message'),
+      /^The pins in the address were not run: 1,048,576 characters, more than the 65,536 a pins fragment may hold\.$/,
+    );
     assert.ok(!page.url().includes('pins='));
     assert.equal((await runAgain(page)).state, 'done');
   });
   // Many malformed pins under the size: a few are quoted, the rest counted.
-  await withPage(`?v=1&preset=step#pins=${Array.from({ length: 1000 }, (_, i) => `%z${i}`).join('|')}`, async (page) => {
-    assert.equal(await settled(page), 'done');
-    await page.waitForFunction(() => document.getElementById('message').textContent.includes('more'));
-    assert.match(await page.textContent('#message'), /^Ignored a malformed pin in the address: '%z0', '%z1', '%z2', '%z3', '%z4' … and 995 more\.$/);
-  });
+  await withPage(
+    `?v=1&preset=step#pins=${Array.from({ length: 1000 }, (_, i) => `%z${i}`).join('|')}`,
+    async (page) => {
+      assert.equal(await settled(page), 'done');
+      await page.waitForFunction(() => document.getElementById('message').textContent.includes('more'));
+      assert.match(
+        await page.textContent('#message'),
+        /^Ignored a malformed pin in the address: '%z0', '%z1', '%z2', '%z3', '%z4' … and 995 more\.$/,
+      );
+    },
+  );
   // Sweep sizes must be whole numbers; other malformed sweeps name their bad part.
   for (const [sweep, expected] of [
     ['10,1000,2.5,0.02,0,0.2,euler', /n = 2\.5: expected a whole number of points/],
@@ -307,20 +337,27 @@ test('a run that recorded nothing keeps the worker: Escape and Full run ask for 
 test('a slow pin runs in slices with progress, Cancel stops it, and the next pin works', () =>
   // The pin is about as heavy as the core accepts: 20,000 samples of 71 substeps on each of 7 PWM
   // intervals.
-  withPage(`?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=sine200-drive&substeps=71&duration=1')}`, async (page) => {
-    assert.equal(await settled(page), 'done');
-    await page.waitForFunction(() => document.body.dataset.pinning === 'running' && /Running pin 1 of 1: \d+ %/.test(document.getElementById('status').textContent));
-    assert.ok(await page.isEnabled('#cancel'));
-    await page.click('#cancel');
-    await page.waitForFunction(() => document.body.dataset.pinning === 'cancelled');
-    assert.equal(await page.locator('#pins li').count(), 0);
-    assert.match(await page.textContent("#message"), /^Could not pin v=1&preset=sine200-drive.*: cancelled\.$/);
-    // The worker is free: a run and a pin go through.
-    assert.equal((await runAgain(page)).state, 'done');
-    await page.click('#pin');
-    await page.waitForFunction(() => document.body.dataset.pinning === 'done');
-    assert.equal(await page.locator('#pins li').count(), 1);
-  }));
+  withPage(
+    `?v=1&preset=step#pins=${encodeURIComponent('v=1&preset=sine200-drive&substeps=71&duration=1')}`,
+    async (page) => {
+      assert.equal(await settled(page), 'done');
+      await page.waitForFunction(
+        () =>
+          document.body.dataset.pinning === 'running' &&
+          /Running pin 1 of 1: \d+ %/.test(document.getElementById('status').textContent),
+      );
+      assert.ok(await page.isEnabled('#cancel'));
+      await page.click('#cancel');
+      await page.waitForFunction(() => document.body.dataset.pinning === 'cancelled');
+      assert.equal(await page.locator('#pins li').count(), 0);
+      assert.match(await page.textContent('#message'), /^Could not pin v=1&preset=sine200-drive.*: cancelled\.$/);
+      // The worker is free: a run and a pin go through.
+      assert.equal((await runAgain(page)).state, 'done');
+      await page.click('#pin');
+      await page.waitForFunction(() => document.body.dataset.pinning === 'done');
+      assert.equal(await page.locator('#pins li').count(), 1);
+    },
+  ));
 
 test('seed runs show their progress, Cancel stops them at once, and the next seed runs work', () =>
   withPage('?v=1&preset=step&duration=5', async (page) => {

@@ -6,16 +6,22 @@ import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './br
 
 const suite = browserSuite();
 /** Opens the app at `query`, waits for its run, then runs `body(page)`. */
-const withPage = (query, body) => suite.withPage(`?${query}`, async (page) => {
-  assert.equal(await settled(page), 'done');
-  await body(page);
-});
+const withPage = (query, body) =>
+  suite.withPage(`?${query}`, async (page) => {
+    assert.equal(await settled(page), 'done');
+    await body(page);
+  });
 
 test('every walkthrough section renders its equations with no KaTeX error', () =>
   withPage('v=1&preset=step', async (page) => {
     await openWalkthrough(page);
     const sections = await page.$$eval('#walkthrough section.step', (ss) =>
-      ss.map((s) => ({ id: s.id, equations: s.querySelectorAll('.equation').length, rendered: s.querySelectorAll('.equation > .katex-display').length })));
+      ss.map((s) => ({
+        id: s.id,
+        equations: s.querySelectorAll('.equation').length,
+        rendered: s.querySelectorAll('.equation > .katex-display').length,
+      })),
+    );
     assert.equal(sections.length, 7);
     for (const s of sections) {
       assert.ok(s.equations >= 2, `${s.id} has ${s.equations} equations`);
@@ -24,7 +30,8 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
     assert.equal(await page.locator('.katex-error').count(), 0);
     // Each section shows live signals from the run and its design knobs.
     assert.equal(await page.locator('#walkthrough .plot canvas').count(), 12);
-    for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std']) assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
+    for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std'])
+      assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
     assert.match(await page.textContent('#section-stability .stability-report'), /of 2000 samples|all 2000 samples/);
   }));
 
@@ -41,7 +48,8 @@ test('the inspect panel holds the CLI CSV values of the clicked sample', () =>
   withPage('v=1&preset=step&seed=3', async (page) => {
     await inspectAt(page, 0.53);
     const shown = await page.$$eval('#inspect tr[data-column]', (rows) =>
-      rows.map((r) => [r.dataset.column, r.querySelector('td').dataset.exact]));
+      rows.map((r) => [r.dataset.column, r.querySelector('td').dataset.exact]),
+    );
     const heading = await page.textContent('#inspect h2');
     const k = Number(/k = (\d+)/.exec(heading)[1]);
     assert.ok(k > 900 && k < 1300, `k = ${k}`);
@@ -56,8 +64,13 @@ test('the Euler/RK4 comparison shows the observer limiting the 200 Hz sine', () 
     await page.click('[data-tab=walkthrough]');
     await page.click('#section-ekf button.compare');
     await page.waitForSelector('#section-ekf .compare-result table');
-    const rows = await page.$$eval('#section-ekf .compare-result tr', (trs) => trs.slice(1).map((tr) => [...tr.children].map((c) => c.textContent)));
-    assert.deepEqual(rows.map((r) => r[0]), ['euler', 'rk4']);
+    const rows = await page.$$eval('#section-ekf .compare-result tr', (trs) =>
+      trs.slice(1).map((tr) => [...tr.children].map((c) => c.textContent)),
+    );
+    assert.deepEqual(
+      rows.map((r) => r[0]),
+      ['euler', 'rk4'],
+    );
     const [euler, rk4] = rows.map((r) => ({ tracking: Number(r[1]), nis: Number(r[4]) }));
     assert.ok(rk4.tracking < euler.tracking / 2, `tracking RMS euler ${euler.tracking}, rk4 ${rk4.tracking}`);
     assert.ok(euler.nis > 10 && rk4.nis < 2.5, `mean NIS euler ${euler.nis}, rk4 ${rk4.nis}`);
@@ -65,7 +78,11 @@ test('the Euler/RK4 comparison shows the observer limiting the 200 Hz sine', () 
 
 test('presentation mode enlarges text and plots', () =>
   withPage('v=1&preset=step', async (page) => {
-    const size = () => page.evaluate(() => [parseFloat(getComputedStyle(document.body).fontSize), document.querySelector('#plots canvas').clientHeight]);
+    const size = () =>
+      page.evaluate(() => [
+        parseFloat(getComputedStyle(document.body).fontSize),
+        document.querySelector('#plots canvas').clientHeight,
+      ]);
     const [font0, plot0] = await size();
     await page.click('#present');
     const [font1, plot1] = await size();
@@ -75,10 +92,18 @@ test('presentation mode enlarges text and plots', () =>
 test('the load-estimation lesson runs and its walkthrough plot shows the load estimate against the true load', () =>
   withPage('v=1&preset=step', async (page) => {
     await page.click('[role=tab][data-tab=lessons]');
-    const n = await page.evaluate(() => [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /preset load-step-est|load as an EKF state/.test(l.textContent)));
+    const n = await page.evaluate(() =>
+      [...document.querySelectorAll('#lessons .lesson')].findIndex((l) =>
+        /preset load-step-est|load as an EKF state/.test(l.textContent),
+      ),
+    );
     assert.ok(n >= 0, 'lesson listed');
     await page.click(`text=Start lesson ${n + 1}`);
-    await page.waitForFunction(() => document.body.dataset.scenario === 'v=1&preset=load-step-est' && document.body.dataset.state === 'done', null, { timeout: 30_000 });
+    await page.waitForFunction(
+      () => document.body.dataset.scenario === 'v=1&preset=load-step-est' && document.body.dataset.state === 'done',
+      null,
+      { timeout: 30_000 },
+    );
     assert.equal(await page.isVisible('#panel-walkthrough'), true);
     // The plot's series are the core's columns at recorded samples: the estimate ends at the
     // true 2.5 N m within its band, and the truth steps from 0.5 to 2.5 N m at 0.15 s.
@@ -88,7 +113,12 @@ test('the load-estimation lesson runs and its walkthrough plot shows the load es
       const chart = set.charts[i];
       const label = (l) => chart.series.findIndex((s) => s.label === l);
       const last = (k) => chart.data[k][chart.data[k].length - 1];
-      return { estimate: last(label('T̂_L estimated')), truth: last(label('T_L true (T0 + step)')), first: chart.data[label('T_L true (T0 + step)')][0], upper: last(label('T̂_L + 2σ')) };
+      return {
+        estimate: last(label('T̂_L estimated')),
+        truth: last(label('T_L true (T0 + step)')),
+        first: chart.data[label('T_L true (T0 + step)')][0],
+        upper: last(label('T̂_L + 2σ')),
+      };
     });
     assert.equal(series.first, 0.5);
     assert.equal(series.truth, 2.5);
@@ -99,15 +129,22 @@ test('the load-estimation lesson runs and its walkthrough plot shows the load es
 test('the real-drive lesson runs with PWM, shows the ripple and the current against the rating, and its delay compensation re-runs', () =>
   withPage('v=1&preset=step', async (page) => {
     await page.click('[role=tab][data-tab=lessons]');
-    const n = await page.evaluate(() => [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /real drive/.test(l.textContent)));
+    const n = await page.evaluate(() =>
+      [...document.querySelectorAll('#lessons .lesson')].findIndex((l) => /real drive/.test(l.textContent)),
+    );
     assert.ok(n >= 0, 'lesson listed');
     await page.click(`text=Start lesson ${n + 1}`);
     const run = LESSONS.find((l) => /real drive/.test(l.title)).run;
-    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', run, { timeout: 30_000 });
-    const figure = (name) => page.evaluate((k) => {
-      const item = document.querySelector(`#figures [data-name=${k}]`);
-      return item && { value: Number(item.dataset.value), text: item.textContent };
-    }, name);
+    await page.waitForFunction(
+      (s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done',
+      run,
+      { timeout: 30_000 },
+    );
+    const figure = (name) =>
+      page.evaluate((k) => {
+        const item = document.querySelector(`#figures [data-name=${k}]`);
+        return item && { value: Number(item.dataset.value), text: item.textContent };
+      }, name);
     const ripple = await figure('ripple_peak');
     assert.ok(ripple.value > 0 && ripple.value < 0.5, `ripple ${ripple.value} A`);
     const current = await figure('current_peak');
@@ -118,6 +155,10 @@ test('the real-drive lesson runs with PWM, shows the ripple and the current agai
     await page.click('details[data-group=drive] > summary');
     await page.check('#field-delay\\.comp');
     await page.click('#run');
-    await page.waitForFunction((s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done', `${run}&delay.comp=1`, { timeout: 30_000 });
+    await page.waitForFunction(
+      (s) => document.body.dataset.scenario === s && document.body.dataset.state === 'done',
+      `${run}&delay.comp=1`,
+      { timeout: 30_000 },
+    );
     assert.notEqual((await figure('tracking_rms')).value, rmsDelayed);
   }));

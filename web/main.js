@@ -94,18 +94,28 @@ const pins = createPins({ client, state, plots });
 const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
 const robust = createRobust({
-  state, analysis, showTab: tabs.showTab,
+  state,
+  analysis,
+  showTab: tabs.showTab,
   open: (scenario) => {
     tabs.showTab('plots');
     settings.load(scenario);
   },
 });
 const challenge = createChallenge({
-  client, state, relayout: () => plotSets.forEach((p) => p.resize()),
+  client,
+  state,
+  relayout: () => plotSets.forEach((p) => p.resize()),
 });
 createCompose({ client, state });
 const run = createRun({
-  client, state, plots, walkthrough, views, figuresView, exporter,
+  client,
+  state,
+  plots,
+  walkthrough,
+  views,
+  figuresView,
+  exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
     pins.afterRun();
@@ -118,8 +128,14 @@ const run = createRun({
   },
 });
 const settings = createSettings({
-  client, state, walkthrough, startRun: run.start, markUnrun: run.markUnrun, openSettings: presentation.openSettings,
-  first: challenge.open, described: challenge.described,
+  client,
+  state,
+  walkthrough,
+  startRun: run.start,
+  markUnrun: run.markUnrun,
+  openSettings: presentation.openSettings,
+  first: challenge.open,
+  described: challenge.described,
 });
 new LessonPanel({
   panel: $('lesson-panel'),

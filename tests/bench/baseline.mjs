@@ -19,7 +19,21 @@ if (!existsSync(`${src}/Cargo.toml`)) {
   mkdirSync(src, { recursive: true });
   execSync(`git -C '${root}' archive ${BASELINE} | tar -x -C '${src}'`, { stdio: 'inherit' });
 }
-execFileSync('cargo', ['build', '--release', '-q', '--bin', 'imlab', '--manifest-path', `${src}/Cargo.toml`, '--target-dir', `${src}/target`], { stdio: 'inherit' });
+execFileSync(
+  'cargo',
+  [
+    'build',
+    '--release',
+    '-q',
+    '--bin',
+    'imlab',
+    '--manifest-path',
+    `${src}/Cargo.toml`,
+    '--target-dir',
+    `${src}/target`,
+  ],
+  { stdio: 'inherit' },
+);
 
 const run = 'v=1&preset=ramp&duration=20';
 const baseline = [`${src}/target/release/imlab`, 'run', run, '--every', '100000000'];
@@ -28,5 +42,7 @@ const current = [`${root}target/release/imlab`, 'run', '--every', '100000000', r
 const ratios = [];
 for (let r = 0; r < reps; r++) ratios.push(cpu(baseline) / cpu(current));
 const median = [...ratios].sort((a, b) => a - b)[Math.floor(reps / 2)];
-console.log(`the five-state path against ${BASELINE} (its CPU / this CPU, 400,000 steps, ${reps} repetitions; median (min–max)):`);
+console.log(
+  `the five-state path against ${BASELINE} (its CPU / this CPU, 400,000 steps, ${reps} repetitions; median (min–max)):`,
+);
 console.log(`  loop     ${median.toFixed(2)} (${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`);

@@ -11,7 +11,8 @@ import { statSync } from 'node:fs';
 import { serve, launch, newPage, settled, runAgain } from '../browser.mjs';
 
 const REPS = Number(process.env.BENCH_REPS ?? 5);
-if (!Number.isInteger(REPS) || REPS < 1) throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
+if (!Number.isInteger(REPS) || REPS < 1)
+  throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
 
 const server = await serve();
 const browser = await launch();
@@ -76,56 +77,73 @@ async function repetition() {
   // the run kept), and the walkthrough opened after a run on the plots tab: the first time (the
   // equations the page has not typeset while idle typeset now, and a replay of the whole run for
   // its plots), and after another run (whose view of the walkthrough's plots came with the run).
-  const viewMs = (request) => page.evaluate((request) => new Promise((resolve) => {
-    const start = performance.now();
-    const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
-    const observer = new MutationObserver(() => {
-      observer.disconnect();
-      painted();
-    });
-    observer.observe(document.body, { attributes: true, attributeFilter: ['data-view'] });
-    if (request === 'zoom') window.imlab.plots.charts[0].setScale('x', { min: 2, max: 3 });
-    else document.getElementById('full-run').click();
-  }), request);
+  const viewMs = (request) =>
+    page.evaluate(
+      (request) =>
+        new Promise((resolve) => {
+          const start = performance.now();
+          const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+          const observer = new MutationObserver(() => {
+            observer.disconnect();
+            painted();
+          });
+          observer.observe(document.body, { attributes: true, attributeFilter: ['data-view'] });
+          if (request === 'zoom') window.imlab.plots.charts[0].setScale('x', { min: 2, max: 3 });
+          else document.getElementById('full-run').click();
+        }),
+      request,
+    );
   out.zoomMs = await viewMs('zoom');
   out.fullMs = await viewMs('full');
-  const walkthroughMs = () => page.evaluate(() => new Promise((resolve) => {
-    const set = window.imlab.walkthrough;
-    const old = set.charts.at(-1)?.data[0];
-    const drawn = () => set.charts.length === set.defs.length && set.charts.at(-1).data[0] !== old;
-    const start = performance.now();
-    document.querySelector('[role=tab][data-tab=walkthrough]').click();
-    const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
-    const check = () => (drawn() ? painted() : setTimeout(check, 0));
-    check();
-  }));
+  const walkthroughMs = () =>
+    page.evaluate(
+      () =>
+        new Promise((resolve) => {
+          const set = window.imlab.walkthrough;
+          const old = set.charts.at(-1)?.data[0];
+          const drawn = () => set.charts.length === set.defs.length && set.charts.at(-1).data[0] !== old;
+          const start = performance.now();
+          document.querySelector('[role=tab][data-tab=walkthrough]').click();
+          const painted = () => requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+          const check = () => (drawn() ? painted() : setTimeout(check, 0));
+          check();
+        }),
+    );
   out.walkFirstMs = await walkthroughMs();
   await page.click('[role=tab][data-tab=plots]');
   await runAgain(page);
   out.walkMs = await walkthroughMs();
   // Back to the plots tab, to the painted frame.
-  out.backMs = await page.evaluate(() => new Promise((resolve) => {
-    const start = performance.now();
-    document.querySelector('[role=tab][data-tab=plots]').click();
-    requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
-  }));
+  out.backMs = await page.evaluate(
+    () =>
+      new Promise((resolve) => {
+        const start = performance.now();
+        document.querySelector('[role=tab][data-tab=plots]').click();
+        requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+      }),
+  );
   // The overlay of the 5 s run with a pin of it, from choosing its column to the painted frame:
   // another column than the runs keep (one replay of each, after which they keep it), then the
   // same column again (read from what they keep, as after a run with runs pinned).
   await page.click('#pin');
   await page.waitForFunction(() => document.querySelectorAll('#overlay-plots .plot canvas').length === 2);
-  const overlayMs = (column) => page.evaluate((column) => new Promise((resolve) => {
-    const plots = document.getElementById('overlay-plots');
-    const start = performance.now();
-    const observer = new MutationObserver(() => {
-      observer.disconnect();
-      requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
-    });
-    observer.observe(plots, { childList: true });
-    const select = document.getElementById('overlay-column');
-    select.value = column;
-    select.dispatchEvent(new Event('change'));
-  }), column);
+  const overlayMs = (column) =>
+    page.evaluate(
+      (column) =>
+        new Promise((resolve) => {
+          const plots = document.getElementById('overlay-plots');
+          const start = performance.now();
+          const observer = new MutationObserver(() => {
+            observer.disconnect();
+            requestAnimationFrame(() => setTimeout(() => resolve(performance.now() - start), 0));
+          });
+          observer.observe(plots, { childList: true });
+          const select = document.getElementById('overlay-column');
+          select.value = column;
+          select.dispatchEvent(new Event('change'));
+        }),
+      column,
+    );
   out.overlayNewMs = await overlayMs('u_a');
   out.overlayKeptMs = await overlayMs('u_a');
   await page.context().close();
@@ -145,14 +163,28 @@ function spread(key, digits = 1, scale = 1) {
 const steps = (key) => `${spread(key, 2, 1e-6)} M steps/s`;
 
 console.log(`Chromium, median (min–max) of ${REPS} page loads:`);
-console.log(`  cold load (fresh context, default scenario), navigation → first run plotted: ${spread('coldLoadMs', 0)} ms   [target ≤ 700 ms]`);
-console.log(`  sine200 (5,000 steps) run → plotted: first run after load ${spread('sineFirst')} ms (compute ${spread('sineCompute')} ms, plotting ${spread('sinePlot')} ms); warm (median of 5) ${spread('sineWarm')} ms`);
-console.log(`  closed loop, ramp 5 s, first run after load: ${steps('longFirst')}; run → plot ${spread('longFirstRunMs', 0)} ms`);
-console.log(`  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`);
-console.log(`  first run after load / warm (5 s ramp, each load's own pair): ${spread('firstOverWarm', 2)}   [target ≥ 0.70]`);
+console.log(
+  `  cold load (fresh context, default scenario), navigation → first run plotted: ${spread('coldLoadMs', 0)} ms   [target ≤ 700 ms]`,
+);
+console.log(
+  `  sine200 (5,000 steps) run → plotted: first run after load ${spread('sineFirst')} ms (compute ${spread('sineCompute')} ms, plotting ${spread('sinePlot')} ms); warm (median of 5) ${spread('sineWarm')} ms`,
+);
+console.log(
+  `  closed loop, ramp 5 s, first run after load: ${steps('longFirst')}; run → plot ${spread('longFirstRunMs', 0)} ms`,
+);
+console.log(
+  `  closed loop, ramp 5 s, best of 3 further runs: ${steps('long')}; run → plot ${spread('longRunMs', 0)} ms`,
+);
+console.log(
+  `  first run after load / warm (5 s ramp, each load's own pair): ${spread('firstOverWarm', 2)}   [target ≥ 0.70]`,
+);
 console.log(`  closed loop, ramp 1 s, best of 10 runs: ${steps('short')}`);
-console.log(`  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with a replay for its plots, ${spread('walkFirstMs', 0)} ms), and back to the plots ${spread('backMs', 0)} ms`);
-console.log(`  overlay of a 5 s run and a pin of it: a column the runs keep ${spread('overlayKeptMs', 0)} ms; another column (one replay of each) ${spread('overlayNewMs', 0)} ms`);
+console.log(
+  `  views of a 5 s run: zoom to 1 s ${spread('zoomMs', 0)} ms; whole run again ${spread('fullMs', 0)} ms; walkthrough opened after a run ${spread('walkMs', 0)} ms (the first time, with a replay for its plots, ${spread('walkFirstMs', 0)} ms), and back to the plots ${spread('backMs', 0)} ms`,
+);
+console.log(
+  `  overlay of a 5 s run and a pin of it: a column the runs keep ${spread('overlayKeptMs', 0)} ms; another column (one replay of each) ${spread('overlayNewMs', 0)} ms`,
+);
 
 const page = await newPage(browser, errors);
 await page.goto(`${server.url}?v=1&preset=step#sweep=10,1000,20,0.02,0,0.2,euler`);
@@ -160,9 +192,15 @@ await settled(page);
 await page.waitForFunction(() => document.body.dataset.sweep === 'done', null, { timeout: 60_000 });
 const sweepFirst = await page.evaluate(() => Number(document.body.dataset.sweepMs));
 await page.click('#sweep-run');
-await page.waitForFunction((ms) => document.body.dataset.sweep === 'done' && Number(document.body.dataset.sweepMs) !== ms, sweepFirst, { timeout: 60_000 });
+await page.waitForFunction(
+  (ms) => document.body.dataset.sweep === 'done' && Number(document.body.dataset.sweepMs) !== ms,
+  sweepFirst,
+  { timeout: 60_000 },
+);
 const sweepAgain = await page.evaluate(() => Number(document.body.dataset.sweepMs));
-console.log(`  20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`);
+console.log(
+  `  20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-form [name=workers]')} workers: ${sweepFirst.toFixed(0)} ms (first, incl. starting the workers), ${sweepAgain.toFixed(0)} ms (again)`,
+);
 
 // With BENCH_VS_DIST, the dist/ folder of another build (for example an older commit's: `git
 // worktree add /tmp/old COMMIT`, link node_modules into it, `make -C /tmp/old dist`), the cold load
@@ -170,9 +208,12 @@ console.log(`  20-point sweep of 0.2 s runs on ${await page.inputValue('#sweep-f
 // load in a fresh context; the ratio is taken pair by pair, as the machine's speed drifts.
 if (process.env.BENCH_VS_DIST) {
   const pairs = Number(process.env.BENCH_PAIRS ?? 15);
-  if (!Number.isInteger(pairs) || pairs < 1) throw new Error(`BENCH_PAIRS must be a positive integer, not ${process.env.BENCH_PAIRS}`);
+  if (!Number.isInteger(pairs) || pairs < 1)
+    throw new Error(`BENCH_PAIRS must be a positive integer, not ${process.env.BENCH_PAIRS}`);
   const other = await serve(process.env.BENCH_VS_DIST);
-  const mine = [], theirs = [], ratios = [];
+  const mine = [],
+    theirs = [],
+    ratios = [];
   for (let i = 0; i < pairs; i++) {
     theirs.push(await coldLoad(other.url));
     mine.push(await coldLoad());
@@ -180,11 +221,15 @@ if (process.env.BENCH_VS_DIST) {
   }
   other.close();
   const med = (v) => [...v].sort((a, b) => a - b)[v.length >> 1];
-  console.log(`  cold load against ${process.env.BENCH_VS_DIST}, ${pairs} alternating pairs: ${med(mine).toFixed(0)} ms against ${med(theirs).toFixed(0)} ms (medians); paired ratio ${med(ratios).toFixed(2)} (${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`);
+  console.log(
+    `  cold load against ${process.env.BENCH_VS_DIST}, ${pairs} alternating pairs: ${med(mine).toFixed(0)} ms against ${med(theirs).toFixed(0)} ms (medians); paired ratio ${med(ratios).toFixed(2)} (${Math.min(...ratios).toFixed(2)}–${Math.max(...ratios).toFixed(2)})`,
+  );
 }
 
 const wasm = statSync(new URL('../../dist/pkg/imlab_bg.wasm', import.meta.url)).size;
-console.log(`WASM binary: ${(wasm / 1000).toFixed(1)} KB (${wasm} bytes, uncompressed), ${(wasm / 300e3).toFixed(2)} of the 300 KB target`);
+console.log(
+  `WASM binary: ${(wasm / 1000).toFixed(1)} KB (${wasm} bytes, uncompressed), ${(wasm / 300e3).toFixed(2)} of the 300 KB target`,
+);
 if (errors.length) console.log('console errors:', errors);
 await browser.close();
 server.close();

@@ -19,7 +19,11 @@ const floorDir = new URL('../../../shared/bench/rustfloor/', import.meta.url).pa
 const reps = Number(process.env.BENCH_REPS ?? 7);
 const run = 'v=1&preset=ramp&duration=20';
 
-execFileSync('cargo', ['build', '--release', '-q', '--manifest-path', `${floorDir}Cargo.toml`, '--target-dir', `${root}target/floor`], { stdio: 'inherit' });
+execFileSync(
+  'cargo',
+  ['build', '--release', '-q', '--manifest-path', `${floorDir}Cargo.toml`, '--target-dir', `${root}target/floor`],
+  { stdio: 'inherit' },
+);
 const floor = `${root}target/floor/release/rustfloor`;
 const imlab = `${root}target/release/imlab`;
 
@@ -38,5 +42,7 @@ for (let r = 0; r < reps; r++) {
 const median = (v) => [...v].sort((a, b) => a - b)[Math.floor(v.length / 2)];
 console.log(`speed against the floor (floor CPU / path CPU, 400,000 steps, ${reps} repetitions; median (min–max)):`);
 for (const [name, v] of Object.entries(ratios)) {
-  console.log(`  ${name.padEnd(8)} ${median(v).toFixed(2)} (${Math.min(...v).toFixed(2)}–${Math.max(...v).toFixed(2)})`);
+  console.log(
+    `  ${name.padEnd(8)} ${median(v).toFixed(2)} (${Math.min(...v).toFixed(2)}–${Math.max(...v).toFixed(2)})`,
+  );
 }

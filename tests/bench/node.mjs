@@ -89,7 +89,7 @@ function nativeBinary() {
   try {
     return benchExecutable('native_speed');
   } catch (e) {
-    throw new Error(`${e.message}\nBENCH_NATIVE=0 skips the native twin`);
+    throw new Error(`${e.message}\nBENCH_NATIVE=0 skips the native twin`, { cause: e });
   }
 }
 
@@ -107,7 +107,8 @@ if (process.env.IMLAB_BENCH_CHILD) {
   const reps = [];
   const natives = [];
   for (let r = 0; r < REPS; r++) {
-    const wasm = () => reps.push(measure(process.execPath, [fileURLToPath(import.meta.url)], `Node repetition ${r + 1}`));
+    const wasm = () =>
+      reps.push(measure(process.execPath, [fileURLToPath(import.meta.url)], `Node repetition ${r + 1}`));
     const twin = () => native && natives.push(measure(native, [], `native repetition ${r + 1}`));
     // Alternate the order, so that a drift of the machine does not favour one side.
     if (r % 2) {
@@ -120,16 +121,26 @@ if (process.env.IMLAB_BENCH_CHILD) {
   }
   const per = (list, key) => list.map((x) => M(x[key])).join(' ');
   const show = ([med, lo, hi], f = M) => `${f(med)} (${f(lo)}–${f(hi)})`;
-  console.log(`WASM closed loop in Node ${process.version}, ramp, traced: median (min–max) of ${REPS} processes, each the best of ${RUNS} runs after ${WARMUP} warm-up runs${native ? ', against the native build measured alternately the same way' : ''}:`);
+  console.log(
+    `WASM closed loop in Node ${process.version}, ramp, traced: median (min–max) of ${REPS} processes, each the best of ${RUNS} runs after ${WARMUP} warm-up runs${native ? ', against the native build measured alternately the same way' : ''}:`,
+  );
   for (const [label] of SCENARIOS) {
     const node = spread(reps.map((x) => x[label]));
-    console.log(`  ${label} runs: Node ${show(node)} M steps/s, ${(node[0] * 50e-6).toFixed(0)}× real time   [per process: ${per(reps, label)}]`);
+    console.log(
+      `  ${label} runs: Node ${show(node)} M steps/s, ${(node[0] * 50e-6).toFixed(0)}× real time   [per process: ${per(reps, label)}]`,
+    );
     if (native) {
-      console.log(`  ${' '.repeat(label.length)}       native ${show(spread(natives.map((x) => x[label])))} M steps/s   [per process: ${per(natives, label)}]`);
+      console.log(
+        `  ${' '.repeat(label.length)}       native ${show(spread(natives.map((x) => x[label])))} M steps/s   [per process: ${per(natives, label)}]`,
+      );
       const ratio = spread(reps.map((x, i) => x[label] / natives[i][label]));
-      console.log(`  ${' '.repeat(label.length)}       Node/native ${show(ratio, (v) => v.toFixed(2))} (median of the ${REPS} neighbouring pairs; 1/${(1 / ratio[0]).toFixed(2)})   [target ≥ 1/1.25 = 0.80]`);
+      console.log(
+        `  ${' '.repeat(label.length)}       Node/native ${show(ratio, (v) => v.toFixed(2))} (median of the ${REPS} neighbouring pairs; 1/${(1 / ratio[0]).toFixed(2)})   [target ≥ 1/1.25 = 0.80]`,
+      );
     }
   }
   const compile = spread(reps.map((x) => x.compileMs));
-  console.log(`  first 1 s run after loading: ${show(spread(reps.map((x) => x.cold)))} M steps/s; compiling the module (initSync): ${compile[0].toFixed(0)} ms`);
+  console.log(
+    `  first 1 s run after loading: ${show(spread(reps.map((x) => x.cold)))} M steps/s; compiling the module (initSync): ${compile[0].toFixed(0)} ms`,
+  );
 }

@@ -7,16 +7,66 @@ import { Pool } from '../client/pool.js';
 
 // Variants offered for the sweep: the field changes that make each from the current scenario.
 export const VARIANTS = {
-  euler: { label: 'Backstepping + Euler EKF (paper)', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'euler']] },
-  rk4: { label: 'Backstepping + RK4 EKF', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'rk4']] },
-  perfect: { label: 'Backstepping + perfect observer', changes: [['controller', 'backstepping'], ['perfect', '1']] },
-  delay: { label: 'Backstepping + Euler EKF, one-sample delay', changes: [['controller', 'backstepping'], ['perfect', '0'], ['ekf', 'euler'], ['delay', '1'], ['delay.comp', '0']] },
+  euler: {
+    label: 'Backstepping + Euler EKF (paper)',
+    changes: [
+      ['controller', 'backstepping'],
+      ['perfect', '0'],
+      ['ekf', 'euler'],
+    ],
+  },
+  rk4: {
+    label: 'Backstepping + RK4 EKF',
+    changes: [
+      ['controller', 'backstepping'],
+      ['perfect', '0'],
+      ['ekf', 'rk4'],
+    ],
+  },
+  perfect: {
+    label: 'Backstepping + perfect observer',
+    changes: [
+      ['controller', 'backstepping'],
+      ['perfect', '1'],
+    ],
+  },
+  delay: {
+    label: 'Backstepping + Euler EKF, one-sample delay',
+    changes: [
+      ['controller', 'backstepping'],
+      ['perfect', '0'],
+      ['ekf', 'euler'],
+      ['delay', '1'],
+      ['delay.comp', '0'],
+    ],
+  },
   // The like-for-like baseline feeds the reference's torque forward, as the backstepping feeds
   // ω̇_d forward; `ifocpi` is the plain PI speed loop.
-  ifoc: { label: 'Classical IFOC + MRAS, torque feedforward', changes: [['controller', 'ifoc'], ['perfect', '0'], ['ifoc.ff', '1']] },
-  ifocpi: { label: 'Classical IFOC + MRAS, no feedforward', changes: [['controller', 'ifoc'], ['perfect', '0'], ['ifoc.ff', '0']] },
+  ifoc: {
+    label: 'Classical IFOC + MRAS, torque feedforward',
+    changes: [
+      ['controller', 'ifoc'],
+      ['perfect', '0'],
+      ['ifoc.ff', '1'],
+    ],
+  },
+  ifocpi: {
+    label: 'Classical IFOC + MRAS, no feedforward',
+    changes: [
+      ['controller', 'ifoc'],
+      ['perfect', '0'],
+      ['ifoc.ff', '0'],
+    ],
+  },
 };
-const COLORS = { euler: '#d62728', rk4: '#1f77b4', perfect: '#2ca02c', delay: '#ff7f0e', ifoc: '#9467bd', ifocpi: '#8c564b' };
+const COLORS = {
+  euler: '#d62728',
+  rk4: '#1f77b4',
+  perfect: '#2ca02c',
+  delay: '#ff7f0e',
+  ifoc: '#9467bd',
+  ifocpi: '#8c564b',
+};
 
 /**
  * Whether `n` can be a number of points: the core takes it as a 32-bit integer, and the
@@ -38,13 +88,15 @@ export function parseSweep(text) {
   const settings = {};
   for (const [i, key] of SWEEP_KEYS.entries()) {
     const value = Number(parts[i]);
-    if (parts[i].trim() === '' || !Number.isFinite(value)) throw new Error(`${key} = '${excerpt(parts[i])}' is not a number`);
+    if (parts[i].trim() === '' || !Number.isFinite(value))
+      throw new Error(`${key} = '${excerpt(parts[i])}' is not a number`);
     settings[key] = value;
   }
   if (!isCount(settings.n)) throw new Error(`n = ${excerpt(parts[2])}: expected a whole number of points`);
   settings.variants = parts[6].split('.');
   const unknown = settings.variants.find((v) => !Object.hasOwn(VARIANTS, v));
-  if (unknown !== undefined) throw new Error(`variant '${excerpt(unknown)}' is unknown (expected ${Object.keys(VARIANTS).join(', ')})`);
+  if (unknown !== undefined)
+    throw new Error(`variant '${excerpt(unknown)}' is unknown (expected ${Object.keys(VARIANTS).join(', ')})`);
   return settings;
 }
 
@@ -58,11 +110,18 @@ export function formatSweep(s) {
  */
 function bodePlot(title, unit, freqs, series, width, marker) {
   const opts = {
-    title, width, height: 280,
+    title,
+    width,
+    height: 280,
     scales: { x: { time: false, distr: 3, log: 10 } },
-    series: [{ label: 'f (Hz)' }, ...series.map(([label, color, , dash, unsettled]) => (unsettled
-      ? { label, stroke: color, width: 2, paths: () => null, points: { show: true, size: 10, fill: '#fff' } }
-      : { label, stroke: color, dash, width: 2, points: { show: true } }))],
+    series: [
+      { label: 'f (Hz)' },
+      ...series.map(([label, color, , dash, unsettled]) =>
+        unsettled
+          ? { label, stroke: color, width: 2, paths: () => null, points: { show: true, size: 10, fill: '#fff' } }
+          : { label, stroke: color, dash, width: 2, points: { show: true } },
+      ),
+    ],
     axes: [{ label: 'f (Hz)' }, { label: unit, size: 70 }],
   };
   const data = [freqs, ...series.map((s) => s[2])];
@@ -86,7 +145,10 @@ function peakCell(points) {
   const above = measured.filter((p) => p.peak_current > p.rated_current).map((p) => `${p.freq.toPrecision(4)} Hz`);
   const text = `${peak.toPrecision(3)} (rated ${rated.toPrecision(3)})`;
   return above.length
-    ? el('td', { className: 'over-rating', textContent: `${text}; above the rating at ${above.length}: ${above.join(', ')}` })
+    ? el('td', {
+        className: 'over-rating',
+        textContent: `${text}; above the rating at ${above.length}: ${above.join(', ')}`,
+      })
     : el('td', { textContent: text });
 }
 
@@ -101,10 +163,17 @@ export class Analysis {
   async sweep(settings, { onProgress = () => {}, workers } = {}) {
     if (workers) this.pool.size = workers;
     const [freqs] = await this.pool.run([{ kind: 'grid', lo: settings.lo, hi: settings.hi, n: settings.n }]);
-    const jobs = settings.variants.flatMap((v) => freqs.map((freq) => ({
-      kind: 'sweep', scenario: this.scenario(), changes: VARIANTS[v].changes,
-      freq, amp: settings.amp, duration: settings.duration, offset: settings.offset,
-    })));
+    const jobs = settings.variants.flatMap((v) =>
+      freqs.map((freq) => ({
+        kind: 'sweep',
+        scenario: this.scenario(),
+        changes: VARIANTS[v].changes,
+        freq,
+        amp: settings.amp,
+        duration: settings.duration,
+        offset: settings.offset,
+      })),
+    );
     const results = await this.pool.run(jobs, (done) => onProgress(done / jobs.length));
     const out = {};
     for (const [i, v] of settings.variants.entries()) {
@@ -126,41 +195,87 @@ export class Analysis {
     const freqs = out[variants[0]].points.map((p) => p.freq);
     // Failed points are gaps (null), never drawn; unsettled points are drawn apart, as hollow
     // markers, and left out of the line.
-    const column = (v, key, unsettled) => out[v].points.map((p) => (p.failure || Boolean(p.unsettled) !== unsettled ? null : p[key]));
+    const column = (v, key, unsettled) =>
+      out[v].points.map((p) => (p.failure || Boolean(p.unsettled) !== unsettled ? null : p[key]));
     const flagged = variants.flatMap((v) => out[v].points.filter((p) => p.unsettled).map((p) => [v, p]));
     bodeBox.replaceChildren();
     if (flagged.length) {
-      bodeBox.append(el('details', { className: 'sweep-unsettled' }, [
-        el('summary', { textContent: `${flagged.length} point${flagged.length > 1 ? 's' : ''} had not settled (hollow markers): the bandwidth and the phase at 200 Hz are never read off them. Longer runs may settle them.` }),
-        el('ul', {}, flagged.map(([v, p]) => el('li', { textContent: `${VARIANTS[v].label}, ${p.freq.toPrecision(4)} Hz: ${p.unsettled}` }))),
-      ]));
+      bodeBox.append(
+        el('details', { className: 'sweep-unsettled' }, [
+          el('summary', {
+            textContent: `${flagged.length} point${flagged.length > 1 ? 's' : ''} had not settled (hollow markers): the bandwidth and the phase at 200 Hz are never read off them. Longer runs may settle them.`,
+          }),
+          el(
+            'ul',
+            {},
+            flagged.map(([v, p]) =>
+              el('li', { textContent: `${VARIANTS[v].label}, ${p.freq.toPrecision(4)} Hz: ${p.unsettled}` }),
+            ),
+          ),
+        ]),
+      );
     }
     const width = Math.max(400, bodeBox.clientWidth - 10);
     // Dashed lines for variants drawn on top of others, so overlapping curves stay visible.
     const dash = { rk4: [6, 4], perfect: [2, 3], ifocpi: [6, 4] };
-    for (const [title, unit, key, marker] of [['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]], ['Phase of ω against ω_d', 'degrees', 'phase', null]]) {
+    for (const [title, unit, key, marker] of [
+      ['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]],
+      ['Phase of ω against ω_d', 'degrees', 'phase', null],
+    ]) {
       const series = variants.flatMap((v) => [
         [VARIANTS[v].label, COLORS[v], column(v, key, false), dash[v]],
-        ...(out[v].summary.unsettled ? [[`${VARIANTS[v].label}, not settled`, COLORS[v], column(v, key, true), null, true]] : []),
+        ...(out[v].summary.unsettled
+          ? [[`${VARIANTS[v].label}, not settled`, COLORS[v], column(v, key, true), null, true]]
+          : []),
       ]);
       const [opts, data] = bodePlot(title, unit, freqs, series, width, marker);
       const div = el('div', { className: 'plot' });
       bodeBox.append(div);
       new uPlot(opts, data, div);
     }
-    table.replaceChildren(el('tr', {}, ['variant', '−3 dB bandwidth', 'phase at 200 Hz', 'worst saturation', 'failed points', 'unsettled points', 'peak |i_s| (A)'].map((h) => el('th', { textContent: h }))));
+    table.replaceChildren(
+      el(
+        'tr',
+        {},
+        [
+          'variant',
+          '−3 dB bandwidth',
+          'phase at 200 Hz',
+          'worst saturation',
+          'failed points',
+          'unsettled points',
+          'peak |i_s| (A)',
+        ].map((h) => el('th', { textContent: h })),
+      ),
+    );
     for (const v of variants) {
       const { points, summary } = out[v];
       const fmt = (x, unit, missing) => (x == null ? missing : `${x.toPrecision(4)} ${unit}`);
       const worst = Math.max(...points.map((p) => (p.failure ? 0 : p.saturated)));
-      const bandwidth = summary.bandwidth_unsettled ? 'not given: it would rest on a point that had not settled'
-        : summary.below_grid ? 'below the lowest frequency' : fmt(summary.bandwidth, 'Hz', 'not reached in the grid');
+      const bandwidth = summary.bandwidth_unsettled
+        ? 'not given: it would rest on a point that had not settled'
+        : summary.below_grid
+          ? 'below the lowest frequency'
+          : fmt(summary.bandwidth, 'Hz', 'not reached in the grid');
       // The phase is interpolated between settled points only.
-      const phase = fmt(summary.phase_at_200, '°', summary.unsettled ? 'not reached by the settled points' : 'not reached in the grid');
+      const phase = fmt(
+        summary.phase_at_200,
+        '°',
+        summary.unsettled ? 'not reached by the settled points' : 'not reached in the grid',
+      );
       const unsettled = points.filter((p) => p.unsettled).map((p) => `${p.freq.toPrecision(4)} Hz`);
-      const row = el('tr', {}, [VARIANTS[v].label, bandwidth, phase,
-        `${worst.toPrecision(3)} of samples`, String(points.filter((p) => p.failure).length),
-        unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0'].map((c) => el('td', { textContent: c })));
+      const row = el(
+        'tr',
+        {},
+        [
+          VARIANTS[v].label,
+          bandwidth,
+          phase,
+          `${worst.toPrecision(3)} of samples`,
+          String(points.filter((p) => p.failure).length),
+          unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0',
+        ].map((c) => el('td', { textContent: c })),
+      );
       row.append(peakCell(points));
       row.dataset.variant = v;
       table.append(row);
@@ -198,10 +313,21 @@ export class Analysis {
     };
     this.seedCharts = [];
     // The same colours as ω − ω_d and ω − ω̂ on the Trajectories tab.
-    for (const [title, b, color] of [['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'], ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b']]) {
+    for (const [title, b, color] of [
+      ['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'],
+      ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b'],
+    ]) {
       const opts = {
-        title, width: Math.max(320, box.clientWidth - 10), height: 240, scales: { x: { time: false }, y: { range } },
-        series: [{ label: 't (s)' }, { label: 'mean', stroke: color, width: 2 }, { label: 'min', stroke: '#8a8a8a', dash: [3, 3] }, { label: 'max', stroke: '#8a8a8a', dash: [3, 3] }],
+        title,
+        width: Math.max(320, box.clientWidth - 10),
+        height: 240,
+        scales: { x: { time: false }, y: { range } },
+        series: [
+          { label: 't (s)' },
+          { label: 'mean', stroke: color, width: 2 },
+          { label: 'min', stroke: '#8a8a8a', dash: [3, 3] },
+          { label: 'max', stroke: '#8a8a8a', dash: [3, 3] },
+        ],
         bands: [{ series: [3, 2], fill: 'rgba(31,119,180,0.15)' }],
         axes: [{ label: 't (s)' }, { label: 'rad/s', size: 70 }],
       };

@@ -54,7 +54,10 @@ export function createRobust({ state, analysis, open, showTab }) {
   const progress = $('map-progress');
 
   function fill(text) {
-    const parts = text.split(';').map((p) => p.trim()).filter(Boolean);
+    const parts = text
+      .split(';')
+      .map((p) => p.trim())
+      .filter(Boolean);
     const seeds = parts.find((p) => p.startsWith('seeds='));
     const axes = parts.filter((p) => !p.startsWith('seeds='));
     form.elements.namedItem('axis1').value = axes[0] ?? '';
@@ -118,7 +121,9 @@ export function createRobust({ state, analysis, open, showTab }) {
     const whole = finished.map((n) => n === per);
     const kept = { ...map, cells: map.cells.filter((_, i) => whole[i]) };
     try {
-      const [cells] = await pool.run([{ kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) }]);
+      const [cells] = await pool.run([
+        { kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) },
+      ]);
       last = { map: kept, full: map, cells, figures, whole };
       draw();
       const ms = performance.now() - started;
@@ -140,7 +145,8 @@ export function createRobust({ state, analysis, open, showTab }) {
   function chosen() {
     const select = $('map-figure');
     if (!select.options.length) {
-      for (const f of last.figures) select.append(el('option', { value: f.name, textContent: f.unit ? `${f.label} (${f.unit})` : f.label }));
+      for (const f of last.figures)
+        select.append(el('option', { value: f.name, textContent: f.unit ? `${f.label} (${f.unit})` : f.label }));
     }
     return last.figures.findIndex((f) => f.name === select.value);
   }
@@ -159,18 +165,23 @@ export function createRobust({ state, analysis, open, showTab }) {
     // The cells by their place in the full grid; a cell not run is undefined.
     const byIndex = [];
     let c = 0;
-    whole.forEach((w, i) => { if (w) byIndex[i] = cells[c++]; });
+    whole.forEach((w, i) => {
+      if (w) byIndex[i] = cells[c++];
+    });
     const median = (cell) => cell.stats[k][1];
     const clean = (cell) => cell && cell.ran_away === 0;
     if (axes.length === 1) {
       // The band and median over the seeds of the cells where no seed ran away; the others are
       // gaps, marked below the plot and in the table, never drawn as values.
       const x = axes[0].values.map((_, i) => axisValue(0, i));
-      const series = [0, 1, 2].map((s) => axes[0].values.map((_, i) => (clean(byIndex[i]) ? byIndex[i].stats[k][s] : null)));
+      const series = [0, 1, 2].map((s) =>
+        axes[0].values.map((_, i) => (clean(byIndex[i]) ? byIndex[i].stats[k][s] : null)),
+      );
       const width = Math.max(320, box.clientWidth - 10);
       const opts = {
         title: `${figure.label} over the seeds: median, and min–max band`,
-        width, height: 280,
+        width,
+        height: 280,
         scales: { x: { time: false } },
         series: [
           { label: axisName(0) },
@@ -186,7 +197,12 @@ export function createRobust({ state, analysis, open, showTab }) {
       new uPlot(opts, [x, series[0], series[1], series[2]], div);
       const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
       if (gaps.length) {
-        box.append(el('p', { className: 'map-gaps', textContent: `Not drawn, because some seeds ran away there: ${gaps.map((i) => `${fmt(axisValue(0, i))}${relative[0] ? ' %' : ''} (${byIndex[i].ran_away} of ${byIndex[i].runs} seeds)`).join(', ')}.` }));
+        box.append(
+          el('p', {
+            className: 'map-gaps',
+            textContent: `Not drawn, because some seeds ran away there: ${gaps.map((i) => `${fmt(axisValue(0, i))}${relative[0] ? ' %' : ''} (${byIndex[i].ran_away} of ${byIndex[i].runs} seeds)`).join(', ')}.`,
+          }),
+        );
       }
     }
     box.append(table(axes, axisValue, axisName, byIndex, median, figure));
@@ -233,14 +249,29 @@ export function createRobust({ state, analysis, open, showTab }) {
         t.append(tr);
       }
     } else {
-      t.append(el('tr', {}, [axisName(0), 'median', 'min – max'].map((h) => el('th', { scope: 'col', textContent: h }))));
+      t.append(
+        el(
+          'tr',
+          {},
+          [axisName(0), 'median', 'min – max'].map((h) => el('th', { scope: 'col', textContent: h })),
+        ),
+      );
       axes[0].values.forEach((_, i) => {
         const cell = byIndex[i];
         const range = cell && cell.ran_away === 0 ? `${fmt(cell.stats[k][0])} – ${fmt(cell.stats[k][2])}` : '';
-        t.append(el('tr', {}, [el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }), cellOf(cell), el('td', { className: 'map-range', textContent: range })]));
+        t.append(
+          el('tr', {}, [
+            el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }),
+            cellOf(cell),
+            el('td', { className: 'map-range', textContent: range }),
+          ]),
+        );
       });
     }
-    const key = el('p', { className: 'map-key', textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${last.full.seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).` });
+    const key = el('p', {
+      className: 'map-key',
+      textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${last.full.seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent. Click a cell to run it (seed ${last.full.seeds[0]}).`,
+    });
     return el('div', {}, [key, t]);
   }
 

@@ -17,7 +17,12 @@ export function createSweeps({ state, analysis, framing, showTab }) {
     const f = sweepForm.elements;
     const num = (name) => Number(f.namedItem(name).value);
     return {
-      lo: num('lo'), hi: num('hi'), n: num('n'), amp: num('amp'), offset: num('offset'), duration: num('duration'),
+      lo: num('lo'),
+      hi: num('hi'),
+      n: num('n'),
+      amp: num('amp'),
+      offset: num('offset'),
+      duration: num('duration'),
       variants: [...sweepForm.querySelectorAll('[name=variant]:checked')].map((c) => c.value),
       workers: num('workers'),
     };
@@ -51,13 +56,16 @@ export function createSweeps({ state, analysis, framing, showTab }) {
     try {
       const out = await analysis.sweep(settings, {
         workers: settings.workers,
-        onProgress: (p) => { $('sweep-progress').value = p; },
+        onProgress: (p) => {
+          $('sweep-progress').value = p;
+        },
       });
       analysis.showSweep(out, $('bode'), $('sweep-table'));
       const ms = performance.now() - started;
       status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} worker${settings.workers > 1 ? 's' : ''}.`;
       if (settings.variants.some((v) => v.startsWith('ifoc')) && Math.abs(settings.offset) < 20) {
-        status.textContent += ' The IFOC figures are not meaningful here: its MRAS cannot estimate the speed near standstill. Sweep it about an operating speed (offset ≥ 20 rad/s) with longer runs (3 s).';
+        status.textContent +=
+          ' The IFOC figures are not meaningful here: its MRAS cannot estimate the speed near standstill. Sweep it about an operating speed (offset ≥ 20 rad/s) with longer runs (3 s).';
       }
       Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
       $('sweep-csv').disabled = false;
@@ -125,7 +133,9 @@ export function createSweeps({ state, analysis, framing, showTab }) {
   });
   $('seeds-run').addEventListener('click', runSeeds);
   $('seeds-cancel').addEventListener('click', () => analysis.pool.cancel());
-  $('seeds-csv').addEventListener('click', () => download(new Blob([seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'));
+  $('seeds-csv').addEventListener('click', () =>
+    download(new Blob([seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'),
+  );
 
   return { afterRun };
 }

@@ -40,14 +40,22 @@ export function createCompose({ client, state }) {
     figures ??= await client.job('challenge-figures');
     // The figures of the run on screen, when it is the form's scenario.
     let measures = null;
-    if (state.ranScenario === info.encoded && !state.running && state.runId > 0) measures = await client.measure(state.runId).catch(() => null);
+    if (state.ranScenario === info.encoded && !state.running && state.runId > 0)
+      measures = await client.measure(state.runId).catch(() => null);
     base = info;
     output.hidden = true;
     fail('');
     box.replaceChildren(
-      el('p', { className: 'hint', textContent: 'The challenge starts from the scenario in the settings (its base); the student may change only the fields listed here, within their ranges, and passes when every criterion holds. Set the scenario up and run it first: the criteria are prefilled from its figures, 20 % tighter than this run.' }),
+      el('p', {
+        className: 'hint',
+        textContent:
+          'The challenge starts from the scenario in the settings (its base); the student may change only the fields listed here, within their ranges, and passes when every criterion holds. Set the scenario up and run it first: the criteria are prefilled from its figures, 20 % tighter than this run.',
+      }),
       el('p', { className: 'compose-base' }, ['Base: ', el('code', { textContent: info.encoded })]),
-      el('label', { className: 'compose-title' }, ['Title ', el('input', { id: 'compose-title', value: `Challenge: ${presetNamed(info.encoded)}`, maxLength: 120 })]),
+      el('label', { className: 'compose-title' }, [
+        'Title ',
+        el('input', { id: 'compose-title', value: `Challenge: ${presetNamed(info.encoded)}`, maxLength: 120 }),
+      ]),
       allowSet(info),
       needSet(measures),
       varySet(info),
@@ -55,7 +63,9 @@ export function createCompose({ client, state }) {
       error,
       output,
     );
-    status.textContent = measures ? '' : 'No finished run of this scenario to take the figures from: run it, then press “Fill from the current scenario” again.';
+    status.textContent = measures
+      ? ''
+      : 'No finished run of this scenario to take the figures from: run it, then press “Fill from the current scenario” again.';
     box.prepend(status);
     document.body.dataset.compose = 'filled';
   }
@@ -68,7 +78,11 @@ export function createCompose({ client, state }) {
 
   function allowSet(info) {
     const fields = info.fields.filter((f) => f.value !== null && f.acts && f.key !== 'seed');
-    const picker = el('select', { id: 'compose-field' }, fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })));
+    const picker = el(
+      'select',
+      { id: 'compose-field' },
+      fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })),
+    );
     const rows = el('div', { id: 'compose-allow' });
     const add = button('compose-add', 'Add', () => {
       const f = fields.find((x) => x.key === picker.value);
@@ -76,7 +90,11 @@ export function createCompose({ client, state }) {
     });
     return el('fieldset', { className: 'compose-set' }, [
       el('legend', { textContent: 'Fields the student may change' }),
-      el('div', { className: 'buttons' }, [el('label', { htmlFor: 'compose-field', textContent: 'Field' }), picker, add]),
+      el('div', { className: 'buttons' }, [
+        el('label', { htmlFor: 'compose-field', textContent: 'Field' }),
+        picker,
+        add,
+      ]),
       rows,
     ]);
   }
@@ -98,8 +116,10 @@ export function createCompose({ client, state }) {
       const [lo, hi] = rangeAround(f);
       row.append(
         el('span', { className: 'key', textContent: f.key }),
-        el('label', { htmlFor: `${id}-lo`, textContent: 'from' }), el('input', { id: `${id}-lo`, name: 'lo', value: lo, size: 8, inputMode: 'decimal' }),
-        el('label', { htmlFor: `${id}-hi`, textContent: 'to' }), el('input', { id: `${id}-hi`, name: 'hi', value: hi, size: 8, inputMode: 'decimal' }),
+        el('label', { htmlFor: `${id}-lo`, textContent: 'from' }),
+        el('input', { id: `${id}-lo`, name: 'lo', value: lo, size: 8, inputMode: 'decimal' }),
+        el('label', { htmlFor: `${id}-hi`, textContent: 'to' }),
+        el('input', { id: `${id}-hi`, name: 'hi', value: hi, size: 8, inputMode: 'decimal' }),
         el('span', { className: 'range', textContent: `${unit.trim()} (now ${f.value})` }),
       );
     }
@@ -116,7 +136,10 @@ export function createCompose({ client, state }) {
     }
     return el('fieldset', { className: 'compose-set' }, [
       el('legend', { textContent: 'Criteria: the figures of this run' }),
-      el('p', { className: 'hint', textContent: '“All runs” makes the criterion hold on every variant too (the worst run counts).' }),
+      el('p', {
+        className: 'hint',
+        textContent: '“All runs” makes the criterion hold on every variant too (the worst run counts).',
+      }),
       rows,
     ]);
   }
@@ -129,17 +152,33 @@ export function createCompose({ client, state }) {
     const unit = fig.unit ? ` ${fig.unit}` : '';
     const now = m ? ` — now ${m.value === Infinity ? '∞' : Number(m.value.toPrecision(4))}${unit}` : '';
     const band = fig.name === 'mean_nis';
-    const op = el('select', { id: `${id}-op`, name: 'op' }, (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) => el('option', { value: o, textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o] })));
+    const op = el(
+      'select',
+      { id: `${id}-op`, name: 'op' },
+      (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) =>
+        el('option', {
+          value: o,
+          textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o],
+        }),
+      ),
+    );
     if (ABS.has(fig.name)) op.value = 'abs';
     const bound = el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' });
     if (m && Number.isFinite(m.value)) bound.value = round2((op.value === 'min' ? 1.2 : 0.8) * Math.abs(m.value));
-    const syncBound = () => { bound.disabled = op.value === 'band'; };
+    const syncBound = () => {
+      bound.disabled = op.value === 'band';
+    };
     op.addEventListener('change', syncBound);
     syncBound();
     row.append(
-      el('label', { className: 'need-label' }, [el('input', { type: 'checkbox', id, name: 'use' }), ` ${fig.label} (${fig.name})${now}`]),
-      el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: `${fig.name}: how it is bounded` }), op,
-      el('label', { htmlFor: `${id}-bound`, className: 'sr-only', textContent: `${fig.name}: bound${unit}` }), bound,
+      el('label', { className: 'need-label' }, [
+        el('input', { type: 'checkbox', id, name: 'use' }),
+        ` ${fig.label} (${fig.name})${now}`,
+      ]),
+      el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: `${fig.name}: how it is bounded` }),
+      op,
+      el('label', { htmlFor: `${id}-bound`, className: 'sr-only', textContent: `${fig.name}: bound${unit}` }),
+      bound,
       el('span', { className: 'range', textContent: unit.trim() }),
       el('label', {}, [el('input', { type: 'checkbox', id: `${id}-robust`, name: 'robust' }), ' all runs']),
     );
@@ -147,14 +186,25 @@ export function createCompose({ client, state }) {
   }
 
   function varySet(info) {
-    const vary = el('input', { id: 'compose-vary', size: 40, placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024' });
+    const vary = el('input', {
+      id: 'compose-vary',
+      size: 40,
+      placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024',
+    });
     const j = Number(fieldValue(info, 'model.j'));
-    const seeds = button('compose-seeds', 'Seeds 2 to 10', () => { vary.value = 'seeds:2..10'; });
-    const inertia = button('compose-inertia', 'model.j ±20 %', () => { vary.value = `model.j=${round2(0.8 * j)}|model.j=${round2(1.2 * j)}`; });
+    const seeds = button('compose-seeds', 'Seeds 2 to 10', () => {
+      vary.value = 'seeds:2..10';
+    });
+    const inertia = button('compose-inertia', 'model.j ±20 %', () => {
+      vary.value = `model.j=${round2(0.8 * j)}|model.j=${round2(1.2 * j)}`;
+    });
     inertia.disabled = !(j > 0);
     return el('fieldset', { className: 'compose-set' }, [
       el('legend', { textContent: 'Robustness variants (optional)' }),
-      el('label', { htmlFor: 'compose-vary', textContent: 'Variants: seeds:A..B, or settings applied on top of the student’s, separated by |' }),
+      el('label', {
+        htmlFor: 'compose-vary',
+        textContent: 'Variants: seeds:A..B, or settings applied on top of the student’s, separated by |',
+      }),
       vary,
       el('div', { className: 'buttons' }, [seeds, inertia]),
     ]);
@@ -177,7 +227,9 @@ export function createCompose({ client, state }) {
     const parts = ['c=1', `title=${enc(q('compose-title'))}`, `base=${enc(base.encoded)}`];
     for (const row of $('compose-allow').children) {
       const v = (name) => row.querySelector(`[name=${name}]`).value.trim();
-      parts.push(`allow.${row.dataset.field}=${row.querySelector('[name=options]') ? v('options').split('|').map(enc).join('|') : `${enc(v('lo'))}..${enc(v('hi'))}`}`);
+      parts.push(
+        `allow.${row.dataset.field}=${row.querySelector('[name=options]') ? v('options').split('|').map(enc).join('|') : `${enc(v('lo'))}..${enc(v('hi'))}`}`,
+      );
     }
     const robust = [];
     for (const row of $('compose-need').children) {
@@ -188,7 +240,17 @@ export function createCompose({ client, state }) {
       if (row.querySelector('[name=robust]').checked) robust.push(row.dataset.figure);
     }
     const vary = q('compose-vary');
-    if (vary) parts.push(`vary=${vary.startsWith('seeds:') ? vary : vary.split('|').map((v) => enc(v.trim())).join('|')}`);
+    if (vary)
+      parts.push(
+        `vary=${
+          vary.startsWith('seeds:')
+            ? vary
+            : vary
+                .split('|')
+                .map((v) => enc(v.trim()))
+                .join('|')
+        }`,
+      );
     if (robust.length) parts.push(`robust=${robust.join(',')}`);
     return parts.join('&');
   }
@@ -219,21 +281,30 @@ export function createCompose({ client, state }) {
     const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
     const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
     const copied = el('p', { className: 'hint', role: 'status' });
-    const copier = (id, label, what, text2) => button(id, label, async () => {
-      try {
-        await navigator.clipboard.writeText(text2);
-        copied.textContent = `${what} copied.`;
-      } catch {
-        copied.textContent = `Select the ${what.toLowerCase()} above and copy it.`;
-      }
-    });
+    const copier = (id, label, what, text2) =>
+      button(id, label, async () => {
+        try {
+          await navigator.clipboard.writeText(text2);
+          copied.textContent = `${what} copied.`;
+        } catch {
+          copied.textContent = `Select the ${what.toLowerCase()} above and copy it.`;
+        }
+      });
     output.replaceChildren(
-      el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }), linkBox,
+      el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }),
+      linkBox,
       el('div', { className: 'buttons' }, [
         copier('compose-copy-link', 'Copy challenge link', 'The challenge link', url),
-        el('a', { href: `?${desc.encoded}`, id: 'compose-open', textContent: 'Open as a student', target: '_blank', rel: 'noopener' }),
+        el('a', {
+          href: `?${desc.encoded}`,
+          id: 'compose-open',
+          textContent: 'Open as a student',
+          target: '_blank',
+          rel: 'noopener',
+        }),
       ]),
-      el('label', { htmlFor: 'compose-brief', textContent: 'The task in words (for a slide or the course page)' }), briefBox,
+      el('label', { htmlFor: 'compose-brief', textContent: 'The task in words (for a slide or the course page)' }),
+      briefBox,
       el('div', { className: 'buttons' }, [copier('compose-copy-brief', 'Copy the task', 'The task', desc.brief)]),
       copied,
     );

@@ -45,7 +45,12 @@ export function createChallenge({ client, state, relayout }) {
   const progress = el('progress', { id: 'challenge-progress', max: 1, value: 0, hidden: true });
   progress.setAttribute('aria-label', 'Challenge runs done');
   const cancel = el('button', { type: 'button', id: 'challenge-cancel', textContent: 'Cancel check', disabled: true });
-  const copy = el('button', { type: 'button', id: 'challenge-copy', textContent: 'Copy submission link', disabled: true });
+  const copy = el('button', {
+    type: 'button',
+    id: 'challenge-copy',
+    textContent: 'Copy submission link',
+    disabled: true,
+  });
   const copied = el('p', { className: 'hint', id: 'challenge-copied', role: 'status' });
   const alert = el('p', { id: 'challenge-error', className: 'challenge-error', role: 'alert' });
 
@@ -84,11 +89,15 @@ export function createChallenge({ client, state, relayout }) {
       body.challenge = 'malformed';
       return scenarioFromUrl();
     }
-    let sub = await client.job('challenge-submission', { text: desc.encoded, submission: link.submission ?? desc.encoded });
+    let sub = await client.job('challenge-submission', {
+      text: desc.encoded,
+      submission: link.submission ?? desc.encoded,
+    });
     if (sub.kind !== 'ok') {
-      refused = sub.kind === 'another'
-        ? 'This submission link belongs to another challenge (its challenge part was edited): it was not graded.'
-        : `This submission link was ${sub.kind === 'refused' ? 'refused' : 'rejected'}: ${sub.message}. It was not graded; the task starts from its base settings.`;
+      refused =
+        sub.kind === 'another'
+          ? 'This submission link belongs to another challenge (its challenge part was edited): it was not graded.'
+          : `This submission link was ${sub.kind === 'refused' ? 'refused' : 'rejected'}: ${sub.message}. It was not graded; the task starts from its base settings.`;
       sub = await client.job('challenge-submission', { text: desc.encoded, submission: desc.encoded });
     }
     holdAddress(refused ? location.search.slice(1) : sub.encoded);
@@ -119,7 +128,10 @@ export function createChallenge({ client, state, relayout }) {
       el('h2', { textContent: desc.title, tabIndex: -1 }),
       alert,
       el('h3', { textContent: 'Your settings' }),
-      el('p', { className: 'hint', textContent: `Only ${desc.allow.map((a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.` }),
+      el('p', {
+        className: 'hint',
+        textContent: `Only ${desc.allow.map((a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.`,
+      }),
       knobBox,
       el('div', { className: 'buttons' }, [run, cancel]),
       progress,
@@ -132,15 +144,22 @@ export function createChallenge({ client, state, relayout }) {
     );
     relayout();
     verdict.textContent = 'Not checked yet: the first run is being computed.';
-    checklist.replaceChildren(...desc.need.map((n) => el('li', { textContent: `${n.label} (${n.figure}): not checked yet` })));
+    checklist.replaceChildren(
+      ...desc.need.map((n) => el('li', { textContent: `${n.label} (${n.figure}): not checked yet` })),
+    );
   }
 
   /** The panel's control for an allowed field; its edits go to the settings form. */
   function knob(a) {
     const id = `challenge-${a.field}`;
-    const control = a.kind === 'choice'
-      ? el('select', { name: a.field, id }, a.options.map((o) => el('option', { value: o, textContent: o })))
-      : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
+    const control =
+      a.kind === 'choice'
+        ? el(
+            'select',
+            { name: a.field, id },
+            a.options.map((o) => el('option', { value: o, textContent: o })),
+          )
+        : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
     control.value = a.value ?? '';
     const unit = a.unit ? ` ${a.unit}` : '';
     const range = a.kind === 'choice' ? `one of ${a.options.join(', ')}` : `${a.lo} to ${a.hi}${unit}`;
@@ -170,7 +189,9 @@ export function createChallenge({ client, state, relayout }) {
     if (!desc) return;
     ui.preset.disabled = true;
     const allowed = new Set(desc.allow.map((a) => a.field));
-    for (const c of document.querySelectorAll('#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select')) {
+    for (const c of document.querySelectorAll(
+      '#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select',
+    )) {
       c.disabled = !allowed.has(c.name);
     }
     for (const [field, control] of knobs) {
@@ -191,7 +212,8 @@ export function createChallenge({ client, state, relayout }) {
     const me = ++grading;
     const runId = state.runId;
     if (refused && runId === 1) {
-      verdict.textContent = '✗ Not graded: the settings in the link were refused (see above). Change the allowed settings and run.';
+      verdict.textContent =
+        '✗ Not graded: the settings in the link were refused (see above). Change the allowed settings and run.';
       body.challengeChecked = runId;
       return;
     }
@@ -201,7 +223,9 @@ export function createChallenge({ client, state, relayout }) {
     body.challenge = 'checking';
     try {
       const info = await ranInfo();
-      const tries = desc.allow.map((a) => [a.field, fieldValue(info, a.field)]).filter(([f, v]) => v !== null && v !== desc.allow.find((a) => a.field === f).value);
+      const tries = desc.allow
+        .map((a) => [a.field, fieldValue(info, a.field)])
+        .filter(([f, v]) => v !== null && v !== desc.allow.find((a) => a.field === f).value);
       const text = desc.encoded + tries.map(([f, v]) => `&try.${f}=${encodeURIComponent(v)}`).join('');
       const sub = await client.job('challenge-submission', { text: desc.encoded, submission: text });
       if (me !== grading) return;
@@ -225,20 +249,31 @@ export function createChallenge({ client, state, relayout }) {
           verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
         };
         tell(0);
-        measured = await pool.run(queue.map((scenario) => ({ kind: 'challenge-run', scenario })), tell);
+        measured = await pool.run(
+          queue.map((scenario) => ({ kind: 'challenge-run', scenario })),
+          tell,
+        );
       }
       if (me !== grading) return;
-      const result = await client.job('challenge-judge', { text: desc.encoded, runs: held ? [held, ...measured] : measured });
+      const result = await client.job('challenge-judge', {
+        text: desc.encoded,
+        runs: held ? [held, ...measured] : measured,
+      });
       if (me !== grading) return;
       show(result, sub);
-      if (!held) verdict.append(' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.');
+      if (!held)
+        verdict.append(
+          ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
+        );
       holdAddress(sub.encoded);
       copy.disabled = false;
       body.challenge = result.pass ? 'pass' : 'fail';
     } catch (e) {
       if (me !== grading) return;
       const cancelled = e.message === 'cancelled';
-      verdict.textContent = cancelled ? '✗ Check cancelled: not graded. Run again to check.' : `✗ The check failed: ${e.message}. Not graded.`;
+      verdict.textContent = cancelled
+        ? '✗ Check cancelled: not graded. Run again to check.'
+        : `✗ The check failed: ${e.message}. Not graded.`;
       body.challenge = cancelled ? 'cancelled' : 'failed';
     } finally {
       if (me === grading) {
@@ -266,19 +301,21 @@ export function createChallenge({ client, state, relayout }) {
     verdict.textContent = result.pass
       ? `✓ Passed: ${result.criteria.length === 1 ? 'the criterion is' : `all ${result.criteria.length} criteria are`} met${over}.`
       : `✗ Not passed: ${met} of ${result.criteria.length} criteria met${over}.`;
-    checklist.replaceChildren(...result.criteria.map((c) => {
-      const where = c.run === 'nominal' ? '' : ` (worst run: ${excerpt(c.run)})`;
-      const li = el('li', { className: c.pass ? 'pass' : 'fail' }, [
-        el('strong', { className: 'mark', textContent: c.pass ? '✓ pass' : '✗ fail' }),
-        ` ${c.label}: `,
-        el('span', { className: 'value', textContent: formatValue(c.value, c.unit) }),
-        `, needs ${c.bound}${where}`,
-        ...(c.reason ? [el('span', { className: 'reason', textContent: ` — ${c.reason}` })] : []),
-      ]);
-      li.dataset.figure = c.figure;
-      li.dataset.pass = c.pass ? '1' : '0';
-      return li;
-    }));
+    checklist.replaceChildren(
+      ...result.criteria.map((c) => {
+        const where = c.run === 'nominal' ? '' : ` (worst run: ${excerpt(c.run)})`;
+        const li = el('li', { className: c.pass ? 'pass' : 'fail' }, [
+          el('strong', { className: 'mark', textContent: c.pass ? '✓ pass' : '✗ fail' }),
+          ` ${c.label}: `,
+          el('span', { className: 'value', textContent: formatValue(c.value, c.unit) }),
+          `, needs ${c.bound}${where}`,
+          ...(c.reason ? [el('span', { className: 'reason', textContent: ` — ${c.reason}` })] : []),
+        ]);
+        li.dataset.figure = c.figure;
+        li.dataset.pass = c.pass ? '1' : '0';
+        return li;
+      }),
+    );
   }
 
   async function copySubmission() {
@@ -295,11 +332,19 @@ export function createChallenge({ client, state, relayout }) {
   async function listBuiltins(list) {
     try {
       const builtins = await client.job('challenge-builtins');
-      list.replaceChildren(...builtins.map((b) => el('article', { className: 'lesson' }, [
-        el('h3', { textContent: b.name }),
-        el('p', { textContent: b.summary }),
-        el('a', { href: `?challenge=${b.name}`, textContent: `Open the ${b.name} challenge`, className: 'button-link' }),
-      ])));
+      list.replaceChildren(
+        ...builtins.map((b) =>
+          el('article', { className: 'lesson' }, [
+            el('h3', { textContent: b.name }),
+            el('p', { textContent: b.summary }),
+            el('a', {
+              href: `?challenge=${b.name}`,
+              textContent: `Open the ${b.name} challenge`,
+              className: 'button-link',
+            }),
+          ]),
+        ),
+      );
     } catch {
       list.textContent = 'The built-in challenges could not be listed.';
     }

@@ -9,20 +9,51 @@ import uPlot from '../../vendor/uPlot.esm.js';
 const REFERENCE = { stroke: '#6b6b6b', dash: [6, 4] };
 const BAND = { stroke: '#8a8a8a', dash: [3, 3] };
 const STYLE = {
-  omega_ref: REFERENCE, flux_ref: REFERENCE,
-  omega: { stroke: '#1f77b4' }, flux: { stroke: '#1f77b4' }, i_sa: { stroke: '#1f77b4' }, i_sb: { stroke: '#0b3d6e' },
-  omega_hat: { stroke: '#ff7f0e' }, flux_hat: { stroke: '#ff7f0e' }, i_sa_hat: { stroke: '#ff7f0e' }, i_sb_hat: { stroke: '#a34a00' },
-  u_a: { stroke: '#2ca02c' }, u_b: { stroke: '#135f13' }, u_a_cmd: { stroke: '#9467bd' },
-  omega_err: { stroke: '#d62728' }, omega_est_err: { stroke: '#8c564b' }, flux_est_err: { stroke: '#bcbd22' },
-  z1: { stroke: '#e377c2' }, z2: { stroke: '#17becf' }, z3: { stroke: '#7b4173' }, z4: { stroke: '#e7969c' },
-  v1: { stroke: '#333333' }, v2: { stroke: '#333333' }, v3: { stroke: '#333333' }, v4: { stroke: '#333333' },
-  v1a: { stroke: '#9467bd' }, v2a: { stroke: '#9467bd' }, v3a: { stroke: '#9467bd' }, v4a: { stroke: '#9467bd' },
-  v1s: { stroke: '#2ca02c' }, v2s: { stroke: '#2ca02c' }, v3s: { stroke: '#2ca02c' }, v4s: { stroke: '#2ca02c' },
+  omega_ref: REFERENCE,
+  flux_ref: REFERENCE,
+  omega: { stroke: '#1f77b4' },
+  flux: { stroke: '#1f77b4' },
+  i_sa: { stroke: '#1f77b4' },
+  i_sb: { stroke: '#0b3d6e' },
+  omega_hat: { stroke: '#ff7f0e' },
+  flux_hat: { stroke: '#ff7f0e' },
+  i_sa_hat: { stroke: '#ff7f0e' },
+  i_sb_hat: { stroke: '#a34a00' },
+  u_a: { stroke: '#2ca02c' },
+  u_b: { stroke: '#135f13' },
+  u_a_cmd: { stroke: '#9467bd' },
+  omega_err: { stroke: '#d62728' },
+  omega_est_err: { stroke: '#8c564b' },
+  flux_est_err: { stroke: '#bcbd22' },
+  z1: { stroke: '#e377c2' },
+  z2: { stroke: '#17becf' },
+  z3: { stroke: '#7b4173' },
+  z4: { stroke: '#e7969c' },
+  v1: { stroke: '#333333' },
+  v2: { stroke: '#333333' },
+  v3: { stroke: '#333333' },
+  v4: { stroke: '#333333' },
+  v1a: { stroke: '#9467bd' },
+  v2a: { stroke: '#9467bd' },
+  v3a: { stroke: '#9467bd' },
+  v4a: { stroke: '#9467bd' },
+  v1s: { stroke: '#2ca02c' },
+  v2s: { stroke: '#2ca02c' },
+  v3s: { stroke: '#2ca02c' },
+  v4s: { stroke: '#2ca02c' },
   torque_hat: { stroke: '#ff7f0e' },
-  innov_a: { stroke: '#9467bd' }, innov_band_a: BAND, nis: { stroke: '#9467bd' }, p_omega: { stroke: '#8c564b' },
-  lyapunov: { stroke: '#d62728' }, lyapunov_bound: BAND,
-  load_hat: { stroke: '#ff7f0e' }, load: { stroke: '#1f77b4' }, load_band: BAND,
-  rr_hat: { stroke: '#ff7f0e' }, rr: { stroke: '#1f77b4' }, rr_band: BAND,
+  innov_a: { stroke: '#9467bd' },
+  innov_band_a: BAND,
+  nis: { stroke: '#9467bd' },
+  p_omega: { stroke: '#8c564b' },
+  lyapunov: { stroke: '#d62728' },
+  lyapunov_bound: BAND,
+  load_hat: { stroke: '#ff7f0e' },
+  load: { stroke: '#1f77b4' },
+  load_band: BAND,
+  rr_hat: { stroke: '#ff7f0e' },
+  rr: { stroke: '#1f77b4' },
+  rr_band: BAND,
 };
 const CONSTANT = BAND;
 
@@ -32,37 +63,83 @@ const CONSTANT = BAND;
 // their estimates and stay visible.
 export const PLOTS = [
   {
-    id: 'speed', title: 'Rotor speed', unit: 'rad/s',
-    series: [['omega_ref', 'ω_d reference'], ['omega_hat', 'ω̂ estimated'], ['omega', 'ω true']],
+    id: 'speed',
+    title: 'Rotor speed',
+    unit: 'rad/s',
+    series: [
+      ['omega_ref', 'ω_d reference'],
+      ['omega_hat', 'ω̂ estimated'],
+      ['omega', 'ω true'],
+    ],
   },
   {
-    id: 'speed-error', title: 'Speed tracking error ω − ω_d', unit: 'rad/s',
+    id: 'speed-error',
+    title: 'Speed tracking error ω − ω_d',
+    unit: 'rad/s',
     series: [['omega_err', 'ω − ω_d']],
   },
   {
-    id: 'flux', title: 'Rotor-flux modulus', unit: 'Wb',
-    series: [['flux_ref', '√ψ_d target'], ['flux_hat', '|φ̂| estimated'], ['flux', '|φ| true']],
+    id: 'flux',
+    title: 'Rotor-flux modulus',
+    unit: 'Wb',
+    series: [
+      ['flux_ref', '√ψ_d target'],
+      ['flux_hat', '|φ̂| estimated'],
+      ['flux', '|φ| true'],
+    ],
   },
   {
-    id: 'current', title: 'Stator currents', unit: 'A',
-    series: [['i_sa_hat', 'î_sa estimated'], ['i_sb_hat', 'î_sb estimated'], ['i_sa', 'i_sa true'], ['i_sb', 'i_sb true']],
+    id: 'current',
+    title: 'Stator currents',
+    unit: 'A',
+    series: [
+      ['i_sa_hat', 'î_sa estimated'],
+      ['i_sb_hat', 'î_sb estimated'],
+      ['i_sa', 'i_sa true'],
+      ['i_sb', 'i_sb true'],
+    ],
   },
   {
-    id: 'voltage', title: 'Applied stator voltages (after the limit)', unit: 'V',
+    id: 'voltage',
+    title: 'Applied stator voltages (after the limit)',
+    unit: 'V',
     constants: [['+limit'], ['−limit']],
-    series: [['u_a', 'u_sa'], ['u_b', 'u_sb']],
+    series: [
+      ['u_a', 'u_sa'],
+      ['u_b', 'u_sb'],
+    ],
   },
   {
-    id: 'z13', title: 'Tracking errors', unit: 'rad/s', unit2: 'Wb²', backstepping: true,
-    series: [['z1', 'z1 = ω̂ − ω_d (rad/s)'], ['z3', 'z3 = |φ̂|² − ψ_d (Wb², right)', 'y2']],
+    id: 'z13',
+    title: 'Tracking errors',
+    unit: 'rad/s',
+    unit2: 'Wb²',
+    backstepping: true,
+    series: [
+      ['z1', 'z1 = ω̂ − ω_d (rad/s)'],
+      ['z3', 'z3 = |φ̂|² − ψ_d (Wb², right)', 'y2'],
+    ],
   },
   {
-    id: 'z24', title: 'Virtual-control errors', unit: 'rad/s²', unit2: 'Wb²/s', backstepping: true,
-    series: [['z2', 'z2 torque error (rad/s²)'], ['z4', 'z4 flux-rate error (Wb²/s, right)', 'y2']],
+    id: 'z24',
+    title: 'Virtual-control errors',
+    unit: 'rad/s²',
+    unit2: 'Wb²/s',
+    backstepping: true,
+    series: [
+      ['z2', 'z2 torque error (rad/s²)'],
+      ['z4', 'z4 flux-rate error (Wb²/s, right)', 'y2'],
+    ],
   },
   {
-    id: 'est', title: 'Estimation errors', unit: 'rad/s', unit2: 'Wb',
-    series: [['omega_est_err', 'ω − ω̂ (rad/s)'], ['flux_est_err', '|φ| − |φ̂| (Wb, right)', 'y2']],
+    id: 'est',
+    title: 'Estimation errors',
+    unit: 'rad/s',
+    unit2: 'Wb',
+    series: [
+      ['omega_est_err', 'ω − ω̂ (rad/s)'],
+      ['flux_est_err', '|φ| − |φ̂| (Wb, right)', 'y2'],
+    ],
   },
 ];
 
@@ -112,7 +189,10 @@ function tickLabels(u, splits, axisIdx, space, step) {
     if (v == null) return '';
     if (v === 0) return '0';
     const digits = Math.min(Math.max(Math.floor(Math.log10(Math.abs(v))) + d, 0), 20);
-    return v.toExponential(digits).replace(/\.?0+e/, 'e').replace('e+', 'e');
+    return v
+      .toExponential(digits)
+      .replace(/\.?0+e/, 'e')
+      .replace('e+', 'e');
   });
 }
 
@@ -184,9 +264,10 @@ function shareZero(a, b) {
   const lowered = f1 < 1 ? (1 - f0) / (1 - f1) : Infinity;
   const raised = f0 > 0 ? f1 / f0 : Infinity;
   if (Math.min(lowered, raised) > 1 / MIN_SHARE) return [a, b];
-  const aligned = lowered <= raised
-    ? [[Math.min(low[0], (-f1 * low[1]) / (1 - f1)), low[1]], high]
-    : [low, [high[0], Math.max(high[1], (-high[0] * (1 - f0)) / f0)]];
+  const aligned =
+    lowered <= raised
+      ? [[Math.min(low[0], (-f1 * low[1]) / (1 - f1)), low[1]], high]
+      : [low, [high[0], Math.max(high[1], (-high[0] * (1 - f0)) / f0)]];
   return fa < fb ? aligned : [aligned[1], aligned[0]];
 }
 
@@ -201,7 +282,11 @@ export class Plots {
    * `onPick(t)` inspects time t (a click, or the arrow keys on a focused plot); `sampleTime()` is
    * the run's Ts, the step of one arrow press.
    */
-  constructor(container, defs, { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null }) {
+  constructor(
+    container,
+    defs,
+    { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null },
+  ) {
     Object.assign(this, { container, defs, onWindow, onFull, onPick, constants, framing, height, sampleTime });
     this.scale = 1; // text and line scale: 1, or larger in presentation mode
     this.captions = ''; // the run's figures, as the captions give them
@@ -219,7 +304,9 @@ export class Plots {
 
   /** The columns each plot needs, by plot id (the worker sends one envelope per plot). */
   groups() {
-    return Object.fromEntries(this.defs.map((p) => [p.id, [...new Set(p.series.flatMap((s) => (s[4] ? [s[0], s[4]] : [s[0]])))]]));
+    return Object.fromEntries(
+      this.defs.map((p) => [p.id, [...new Set(p.series.flatMap((s) => (s[4] ? [s[0], s[4]] : [s[0]])))]]),
+    );
   }
 
   title(plot) {
@@ -230,7 +317,14 @@ export class Plots {
     const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
     for (const [column, label, axis] of plot.series) {
       const style = STYLE[column] ?? { stroke: '#444' };
-      series.push({ label, scale: axis === 'y2' ? 'y2' : 'y', stroke: style.stroke, dash: style.dash, width: this.scale, value: (u, v) => six(v) });
+      series.push({
+        label,
+        scale: axis === 'y2' ? 'y2' : 'y',
+        stroke: style.stroke,
+        dash: style.dash,
+        width: this.scale,
+        value: (u, v) => six(v),
+      });
     }
     for (const [label, axis] of plot.constants ?? []) {
       series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: this.scale, value: (u, v) => six(v) });
@@ -239,9 +333,26 @@ export class Plots {
     const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
     const axes = [
       { label: 't (s)', ...font, size: 50 * k, space: timeSpace(14 * k, 50 * k), incrs: STEPS, values: tickLabels },
-      { label: plot.unit, scale: 'y', ...font, size: 80 * k, ...(plot.log ? {} : { incrs: STEPS }), values: tickLabels },
+      {
+        label: plot.unit,
+        scale: 'y',
+        ...font,
+        size: 80 * k,
+        ...(plot.log ? {} : { incrs: STEPS }),
+        values: tickLabels,
+      },
     ];
-    if (plot.unit2) axes.push({ label: plot.unit2, scale: 'y2', side: 1, grid: { show: false }, ...font, size: 80 * k, incrs: STEPS, values: tickLabels });
+    if (plot.unit2)
+      axes.push({
+        label: plot.unit2,
+        scale: 'y2',
+        side: 1,
+        grid: { show: false },
+        ...font,
+        size: 80 * k,
+        incrs: STEPS,
+        values: tickLabels,
+      });
     const range = (u, min, max, key) => this.range(u, key, !!plot.unit2);
     const scales = {
       // While zoomed, new data keeps the window; otherwise the axis spans the data.
@@ -259,7 +370,12 @@ export class Plots {
       cursor: {
         sync: { key: SYNC_KEY, setSeries: false },
         drag: { x: true, y: false },
-        bind: { dblclick: () => () => { this.onFull(); return null; } },
+        bind: {
+          dblclick: () => () => {
+            this.onFull();
+            return null;
+          },
+        },
       },
       hooks: {
         setScale: [(u, key) => key === 'x' && this.zoomed(u)],
@@ -305,7 +421,8 @@ export class Plots {
   caption(plot) {
     const units = plot.unit2 ? `${plot.unit} (left) and ${plot.unit2} (right)` : plot.unit;
     const signals = plot.series.map(([, label]) => label).join('; ');
-    const keys = 'Focus the plot and use the arrow keys to inspect the run sample by sample (Shift: 1 % of the window).';
+    const keys =
+      'Focus the plot and use the arrow keys to inspect the run sample by sample (Shift: 1 % of the window).';
     return `${this.title(plot)}, in ${units} against time t in s. Signals: ${signals}.${this.captions ? ` ${this.captions}` : ''} ${keys}`;
   }
 
@@ -335,9 +452,12 @@ export class Plots {
   // A click (not a drag-to-zoom) on the plot area picks the time under the cursor.
   pickOnClick(u) {
     let downX = null;
-    u.over.addEventListener('mousedown', (e) => { downX = e.clientX; });
+    u.over.addEventListener('mousedown', (e) => {
+      downX = e.clientX;
+    });
     u.over.addEventListener('click', (e) => {
-      if (downX !== null && Math.abs(e.clientX - downX) < 3 && u.cursor.left >= 0) this.onPick(u.posToVal(u.cursor.left, 'x'));
+      if (downX !== null && Math.abs(e.clientX - downX) < 3 && u.cursor.left >= 0)
+        this.onPick(u.posToVal(u.cursor.left, 'x'));
     });
   }
 
@@ -377,11 +497,14 @@ export class Plots {
   data(plot, view) {
     const group = view.plots[plot.id];
     const t = group.t;
-    const rows = [t, ...plot.series.map(([col, , , sign = 1, about]) => {
-      const values = group.columns[col];
-      if (about) return values.map((v, i) => group.columns[about][i] + sign * v);
-      return sign === -1 ? values.map((v) => -v) : values;
-    })];
+    const rows = [
+      t,
+      ...plot.series.map(([col, , , sign = 1, about]) => {
+        const values = group.columns[col];
+        if (about) return values.map((v, i) => group.columns[about][i] + sign * v);
+        return sign === -1 ? values.map((v) => -v) : values;
+      }),
+    ];
     for (const value of this.constants(plot)) rows.push(new Float64Array(t.length).fill(value));
     return rows;
   }
@@ -391,7 +514,8 @@ export class Plots {
    * first run of uPlot's code happen while the worker loads the core.
    */
   prepare() {
-    if (this.charts.length === 0) this.create((plot) => [[], ...plot.series.map(() => []), ...(plot.constants ?? []).map(() => [])]);
+    if (this.charts.length === 0)
+      this.create((plot) => [[], ...plot.series.map(() => []), ...(plot.constants ?? []).map(() => [])]);
   }
 
   /**
@@ -431,7 +555,10 @@ export class Plots {
       // An embed shows only the plots its link names.
       if (this.embedded?.includes(plot.id)) div.classList.add('embedded');
       div.setAttribute('role', 'figure');
-      const caption = Object.assign(document.createElement('p'), { className: 'caption sr-only', id: `caption-${this.container.id || 'plots'}-${plot.id}` });
+      const caption = Object.assign(document.createElement('p'), {
+        className: 'caption sr-only',
+        id: `caption-${this.container.id || 'plots'}-${plot.id}`,
+      });
       div.setAttribute('aria-describedby', caption.id);
       div.append(caption);
       this.keyboard(div, i);

@@ -34,7 +34,11 @@ function input(f) {
     return el('input', { type: 'checkbox', name: f.key, checked: f.value === '1' });
   }
   return el('input', {
-    type: 'text', inputMode: 'decimal', name: f.key, value: f.value, spellcheck: false,
+    type: 'text',
+    inputMode: 'decimal',
+    name: f.key,
+    value: f.value,
+    spellcheck: false,
   });
 }
 

@@ -51,7 +51,8 @@ export function createExport({ client, state, plots, walkthrough }) {
 
   /** The lines the PNG export carries above the plots: the scenario and the run's figures. */
   function pngHeader() {
-    const figures = state.figures.filter((f) => !f.name.startsWith('mean_nis_'))
+    const figures = state.figures
+      .filter((f) => !f.name.startsWith('mean_nis_'))
       .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`)
       .concat(state.unreached.map((u) => `${u.label}: ${u.text}`));
     const lines = [`IM Lab · ${state.info.encoded}`];
@@ -84,7 +85,9 @@ export function createExport({ client, state, plots, walkthrough }) {
         if (state.export !== job) return;
         const stored = job.parts.reduce((sum, p) => sum + p.size, 0);
         endExport('failed', 'CSV export failed');
-        say(`The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${e.name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`);
+        say(
+          `The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${e.name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`,
+        );
         return;
       }
       if (state.export !== job) return; // cancelled meanwhile

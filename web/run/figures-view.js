@@ -8,18 +8,21 @@ const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_fi
 /** The compact row of key figures that stands for the strip on small screens and projectors. */
 function showKeyFigures(figures, rated) {
   const [low, high] = ['mean_nis_low', 'mean_nis_high'].map((n) => figures.find((f) => f.name === n));
-  const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name)).filter(Boolean).map((f) => {
-    const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
-    const span = document.createElement('span');
-    if (f.name === 'current_peak' && rated) span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
-    else if (f.name === 'speed_error_final' && f.trend) {
-      span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
-      if (!f.trend.settled) span.className = 'unsettled';
-    } else if (f.name === 'mean_nis' && low && high) {
-      span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
-    } else span.textContent = `${f.label} ${value}`;
-    return span;
-  });
+  const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name))
+    .filter(Boolean)
+    .map((f) => {
+      const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
+      const span = document.createElement('span');
+      if (f.name === 'current_peak' && rated)
+        span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
+      else if (f.name === 'speed_error_final' && f.trend) {
+        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
+        if (!f.trend.settled) span.className = 'unsettled';
+      } else if (f.name === 'mean_nis' && low && high) {
+        span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
+      } else span.textContent = `${f.label} ${value}`;
+      return span;
+    });
   ui.keyFigures.replaceChildren(...parts.flatMap((p, i) => (i ? [' · ', p] : [p])));
   ui.figuresBar.hidden = parts.length === 0;
 }
@@ -31,11 +34,15 @@ function showKeyFigures(figures, rated) {
 function trendText(f) {
   const { rate, over, tolerance, scatter, to_go: toGo, state } = f.trend;
   const unit = f.unit ? ` ${f.unit}` : '';
-  const approach = toGo == null ? '' : `; the means of the last three tenths approach a value ${Number(toGo.toPrecision(2))}${unit} away`;
+  const approach =
+    toGo == null
+      ? ''
+      : `; the means of the last three tenths approach a value ${Number(toGo.toPrecision(2))}${unit} away`;
   const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means each within ${Number(tolerance.toPrecision(2))}${unit}`;
   if (state === 'settled') return ['settled by the end of the run', fit];
   if (state === 'ran away') return ['the run ran away: not a final value', fit];
-  if (state === 'fluctuating') return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
+  if (state === 'fluctuating')
+    return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
   const left = toGo != null && toGo > tolerance ? ` (about ${Number(toGo.toPrecision(2))}${unit} still to go)` : '';
   return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer${left}`, fit];
 }
@@ -67,47 +74,64 @@ export function createFiguresView({ plotSets }) {
     };
     const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
     const rated = figures.find((f) => f.name === 'current_rated');
-    const items = figures.flatMap((f, i) => [...unreached.filter((u) => u.index === i), f]).concat(unreached.filter((u) => u.index >= figures.length)).map((f) => {
-      if (!('value' in f)) return unreachedItem(f);
-      if (['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)) return null;
-      let text = fmt(f);
-      if (rated && ['current_peak', 'current_rms'].includes(f.name)) {
-        text += ` (${Number((f.value / rated.value).toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
-      }
-      if (f.name === 'mean_nis' && 'mean_nis_low' in nis) {
-        const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
-        text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;
-      }
-      const item = Object.assign(document.createElement('div'), { className: 'figure' });
-      item.dataset.name = f.name;
-      item.dataset.value = String(f.value);
-      // A value read at the last sample says whether the run had settled by then.
-      const trend = f.trend && trendText(f);
-      if (f.trend) {
-        Object.assign(item.dataset, { rate: String(f.trend.rate), settled: f.trend.settled ? '1' : '0' });
-        if (!f.trend.settled) item.classList.add('unsettled');
-      }
-      if (f.name === 'mean_nis') Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
-      if (f.name === 'current_peak' && rated) item.dataset.rated = String(rated.value);
-      item.append(
-        Object.assign(document.createElement('dt'), { textContent: f.label }),
-        Object.assign(document.createElement('dd'), { textContent: text, title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}` }),
-        Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
-      );
-      if (trend) item.append(Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }));
-      return item;
-    }).filter(Boolean);
+    const items = figures
+      .flatMap((f, i) => [...unreached.filter((u) => u.index === i), f])
+      .concat(unreached.filter((u) => u.index >= figures.length))
+      .map((f) => {
+        if (!('value' in f)) return unreachedItem(f);
+        if (['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)) return null;
+        let text = fmt(f);
+        if (rated && ['current_peak', 'current_rms'].includes(f.name)) {
+          text += ` (${Number((f.value / rated.value).toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
+        }
+        if (f.name === 'mean_nis' && 'mean_nis_low' in nis) {
+          const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
+          text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;
+        }
+        const item = Object.assign(document.createElement('div'), { className: 'figure' });
+        item.dataset.name = f.name;
+        item.dataset.value = String(f.value);
+        // A value read at the last sample says whether the run had settled by then.
+        const trend = f.trend && trendText(f);
+        if (f.trend) {
+          Object.assign(item.dataset, { rate: String(f.trend.rate), settled: f.trend.settled ? '1' : '0' });
+          if (!f.trend.settled) item.classList.add('unsettled');
+        }
+        if (f.name === 'mean_nis')
+          Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
+        if (f.name === 'current_peak' && rated) item.dataset.rated = String(rated.value);
+        item.append(
+          Object.assign(document.createElement('dt'), { textContent: f.label }),
+          Object.assign(document.createElement('dd'), {
+            textContent: text,
+            title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}`,
+          }),
+          Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
+        );
+        if (trend)
+          item.append(
+            Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }),
+          );
+        return item;
+      })
+      .filter(Boolean);
     // What the figures must not be read without, in the core's words.
     // (A run that ran away says so in the message above, as a failure.)
-    const warning = warnings.filter((w) => w.kind !== 'runaway').map((w) => w.text).join(' ');
+    const warning = warnings
+      .filter((w) => w.kind !== 'runaway')
+      .map((w) => w.text)
+      .join(' ');
     ui.consistency.textContent = warning;
     ui.consistency.hidden = !warning;
     ui.figures.replaceChildren(...items);
     ui.figures.hidden = items.length === 0;
     showKeyFigures(figures, rated);
     // The plots' text alternatives carry the same figures.
-    const sentence = items.map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`).join('; ');
-    for (const set of plotSets) set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');
+    const sentence = items
+      .map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`)
+      .join('; ');
+    for (const set of plotSets)
+      set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');
   }
 
   ui.figuresToggle.addEventListener('click', () => {

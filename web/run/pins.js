@@ -18,13 +18,15 @@ export function createPins({ client, state, plots }) {
   function show(scenarios, legends) {
     state.pins = scenarios;
     setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
-    $('pins').replaceChildren(...scenarios.map((s, i) => {
-      const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
-      unpin.addEventListener('click', () => client.post({ type: 'unpin', index: i }));
-      const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
-      li.append(unpin);
-      return li;
-    }));
+    $('pins').replaceChildren(
+      ...scenarios.map((s, i) => {
+        const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
+        unpin.addEventListener('click', () => client.post({ type: 'unpin', index: i }));
+        const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
+        li.append(unpin);
+        return li;
+      }),
+    );
     requestOverlay();
   }
 
@@ -34,7 +36,14 @@ export function createPins({ client, state, plots }) {
       return;
     }
     if (state.running || !plots.full) return;
-    client.post({ type: 'overlay', id: state.runId, column: $('overlay-column').value, t0: 0, t1: Number.MAX_VALUE, buckets: Math.round(plots.width()) });
+    client.post({
+      type: 'overlay',
+      id: state.runId,
+      column: $('overlay-column').value,
+      t0: 0,
+      t1: Number.MAX_VALUE,
+      buckets: Math.round(plots.width()),
+    });
   }
 
   // Overlay of the current run and the pins, and their differences (all envelopes from the core).
@@ -46,8 +55,18 @@ export function createPins({ client, state, plots }) {
     const chart = (title, names, series) => {
       const div = Object.assign(document.createElement('div'), { className: 'plot' });
       const opts = {
-        title, width: plots.width(), height: 220, scales: { x: { time: false } },
-        series: [{ label: 't (s)' }, ...names.map((name, i) => ({ label: name, stroke: colors[(i + (names[0] === 'current' ? 0 : 1)) % colors.length], width: 2 }))],
+        title,
+        width: plots.width(),
+        height: 220,
+        scales: { x: { time: false } },
+        series: [
+          { label: 't (s)' },
+          ...names.map((name, i) => ({
+            label: name,
+            stroke: colors[(i + (names[0] === 'current' ? 0 : 1)) % colors.length],
+            width: 2,
+          })),
+        ],
         axes: [{ label: 't (s)' }, { size: 80 }],
       };
       new uPlot(opts, [data[0], ...series], div);
@@ -56,22 +75,32 @@ export function createPins({ client, state, plots }) {
     const pinNames = state.pins.map((_, i) => `pin ${i + 1}`);
     $('overlay-plots').replaceChildren(
       chart(`${label}: current run and pinned runs`, ['current', ...pinNames], data.slice(1, 2 + n)),
-      chart(`${label}: current − pin`, pinNames.map((p) => `current − ${p}`), data.slice(2 + n)),
+      chart(
+        `${label}: current − pin`,
+        pinNames.map((p) => `current − ${p}`),
+        data.slice(2 + n),
+      ),
     );
   }
 
   /** After a run: pins from a shared link are re-run once; afterwards each run refreshes the comparison. */
   function afterRun() {
     if (shared && shared.length > MAX_PINS_CHARS) {
-      say(`The pins in the address were not run: ${shared.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`);
+      say(
+        `The pins in the address were not run: ${shared.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`,
+      );
       setFragment('pins', null);
     } else if (shared) {
       const { scenarios, malformed } = decodePins(shared);
-      if (malformed.length) say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
+      if (malformed.length)
+        say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
       // The core pins a few runs at most and names the rest; no more are sent than it can take.
       const sent = scenarios.slice(0, MAX_PINS_SENT);
       const dropped = scenarios.length - sent.length;
-      if (dropped > 0) say(`Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`);
+      if (dropped > 0)
+        say(
+          `Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`,
+        );
       client.post({ type: 'pin', scenarios: sent, column: $('overlay-column').value });
     } else if (state.pins.length) {
       client.post({ type: 'pin', scenarios: [], column: $('overlay-column').value });
@@ -79,7 +108,9 @@ export function createPins({ client, state, plots }) {
     shared = null;
   }
 
-  $('pin').addEventListener('click', () => client.post({ type: 'pin', scenarios: [state.info.encoded], column: $('overlay-column').value }));
+  $('pin').addEventListener('click', () =>
+    client.post({ type: 'pin', scenarios: [state.info.encoded], column: $('overlay-column').value }),
+  );
   $('overlay-column').addEventListener('change', requestOverlay);
 
   const handlers = {
@@ -96,10 +127,17 @@ export function createPins({ client, state, plots }) {
       if (state.pinning) {
         state.pinning = false;
         ui.cancel.disabled = !state.running && state.export === null;
-        if (!state.running) ui.status.textContent = rejected.some((r) => /cancel/.test(r.message)) ? 'Pinning cancelled' : 'Pinned';
+        if (!state.running)
+          ui.status.textContent = rejected.some((r) => /cancel/.test(r.message)) ? 'Pinning cancelled' : 'Pinned';
       }
       document.body.dataset.pinning = rejected.some((r) => /cancel/.test(r.message)) ? 'cancelled' : 'done';
-      if (rejected.length) say(listed(rejected.map((r) => `could not pin ${excerpt(r.scenario)}: ${r.message}`), '; ').replace(/^c/, 'C') + '.');
+      if (rejected.length)
+        say(
+          listed(
+            rejected.map((r) => `could not pin ${excerpt(r.scenario)}: ${r.message}`),
+            '; ',
+          ).replace(/^c/, 'C') + '.',
+        );
       show(scenarios, legends);
     },
     overlay({ id, column, data }) {

@@ -30,7 +30,8 @@ export async function png(figures, header) {
   });
   const headerH = header.length * line + 8 * scale;
   out.width = width;
-  out.height = headerH + figures.reduce((h, f, i) => h + line * (1 + keyRows[i].length) + f.canvas.height + 8 * scale, 0);
+  out.height =
+    headerH + figures.reduce((h, f, i) => h + line * (1 + keyRows[i].length) + f.canvas.height + 8 * scale, 0);
   ctx.fillStyle = '#fff';
   ctx.fillRect(0, 0, out.width, out.height);
   ctx.fillStyle = '#000';

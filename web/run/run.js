@@ -8,14 +8,15 @@ import { excerpt, markRun } from '../ui/url.js';
  * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a
  * second at most).
  */
-const painted = () => new Promise((resolve) => {
-  if (document.hidden) {
-    resolve(); // a hidden page paints nothing
-    return;
-  }
-  requestAnimationFrame(() => setTimeout(resolve, 0));
-  setTimeout(resolve, 1000);
-});
+const painted = () =>
+  new Promise((resolve) => {
+    if (document.hidden) {
+      resolve(); // a hidden page paints nothing
+      return;
+    }
+    requestAnimationFrame(() => setTimeout(resolve, 0));
+    setTimeout(resolve, 1000);
+  });
 
 /**
  * The run, started with `start()` and followed through the worker's messages (`handlers`).
@@ -90,7 +91,9 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       say(`The simulation worker could not start (${reason}). Reload the page to try again.`);
       return;
     }
-    const dropped = state.pins.length ? ` The pinned runs were dropped: ${state.pins.map((p) => excerpt(p)).join('; ')}.` : '';
+    const dropped = state.pins.length
+      ? ` The pinned runs were dropped: ${state.pins.map((p) => excerpt(p)).join('; ')}.`
+      : '';
     say(`The simulation worker failed (${reason}). It was restarted; press Run to try again.${dropped}`);
   }
 
@@ -135,7 +138,11 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       }
       const ms = performance.now() - started;
       Object.assign(document.body.dataset, {
-        plotMs: (performance.now() - arrived).toFixed(1), runMs: ms.toFixed(1), rows, computeMs: computeMs.toFixed(2), run: id,
+        plotMs: (performance.now() - arrived).toFixed(1),
+        runMs: ms.toFixed(1),
+        rows,
+        computeMs: computeMs.toFixed(2),
+        run: id,
       });
       ui.csv.disabled = ui.png.disabled = rows === 0;
       const ranAway = warnings.find((w) => w.kind === 'runaway');

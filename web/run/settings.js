@@ -22,7 +22,14 @@ function syncControl(control, value) {
  * follows every description the form takes.
  */
 export function createSettings({
-  client, state, walkthrough, startRun, markUnrun, openSettings, first = scenarioFromUrl, described = () => {},
+  client,
+  state,
+  walkthrough,
+  startRun,
+  markUnrun,
+  openSettings,
+  first = scenarioFromUrl,
+  described = () => {},
 }) {
   let presets = []; // the core's presets: {name, description}
   let composed = null; // the scenario the form held when last checked
@@ -45,7 +52,11 @@ export function createSettings({
   }
 
   function applyDescription(info) {
-    const shown = (i) => i?.fields.filter((f) => f.value !== null).map((f) => `${f.key}${f.acts ? '' : '-'}`).join();
+    const shown = (i) =>
+      i?.fields
+        .filter((f) => f.value !== null)
+        .map((f) => `${f.key}${f.acts ? '' : '-'}`)
+        .join();
     const keysBefore = shown(state.info);
     const keysAfter = shown(info);
     const presetChanged = ui.preset.value !== presetNamed(info.encoded);
@@ -57,9 +68,14 @@ export function createSettings({
     ui.preset.value = presetNamed(info.encoded);
     // The preset's description, and what this run changes of it (a lesson's run may hold another
     // speed or length than the preset says).
-    const changed = info.encoded.split('&').slice(2).map((part) => part.split('=')[0]);
+    const changed = info.encoded
+      .split('&')
+      .slice(2)
+      .map((part) => part.split('=')[0]);
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
-    ui.presetDoc.textContent = changed.length ? `${description}. This run changes: ${changed.join(', ')}.` : description;
+    ui.presetDoc.textContent = changed.length
+      ? `${description}. This run changes: ${changed.join(', ')}.`
+      : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
     described(info);
@@ -90,11 +106,15 @@ export function createSettings({
       try {
         // Keep what is valid; name every field that was left out.
         const info = await client.describe(text, 'recover');
-        say(`Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`);
+        say(
+          `Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`,
+        );
         return info;
       } catch (again) {
         if (again instanceof WorkerFailed) throw again;
-        say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
+        say(
+          `The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`,
+        );
         return client.describe(DEFAULT_SCENARIO);
       }
     }
@@ -155,7 +175,9 @@ export function createSettings({
     presetByKeyboard = BROWSE.has(e.key) || e.key.length === 1;
     if (e.key === 'Enter' && presetPending) commitPreset();
   });
-  ui.preset.addEventListener('pointerdown', () => { presetByKeyboard = false; });
+  ui.preset.addEventListener('pointerdown', () => {
+    presetByKeyboard = false;
+  });
   ui.preset.addEventListener('change', () => {
     presetPending = true;
     if (!presetByKeyboard) commitPreset();
@@ -196,7 +218,8 @@ export function createSettings({
       if (!presets.length) {
         presets = offered;
         state.nisBand = nisBand;
-        for (const p of presets) ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
+        for (const p of presets)
+          ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
       }
       if (state.info === null) Promise.resolve(first()).then((text) => load(text));
     },

@@ -14,12 +14,14 @@ export class LessonPanel {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
       start.dataset.lesson = lesson.run;
       start.addEventListener('click', () => this.open(i));
-      list.append(el('article', { className: 'lesson' }, [
-        el('h3', { textContent: `${i + 1}. ${lesson.title}` }),
-        el('p', { textContent: lesson.look }),
-        el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
-        start,
-      ]));
+      list.append(
+        el('article', { className: 'lesson' }, [
+          el('h3', { textContent: `${i + 1}. ${lesson.title}` }),
+          el('p', { textContent: lesson.look }),
+          el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
+          start,
+        ]),
+      );
     });
   }
 
@@ -33,11 +35,20 @@ export class LessonPanel {
     previous.addEventListener('click', () => this.open(i - 1));
     next.addEventListener('click', () => this.open(i + 1));
     close.addEventListener('click', () => this.close());
-    const hint = el('details', { className: 'hint' }, [el('summary', { textContent: 'Hint' }), el('p', { textContent: lesson.hint })]);
-    const answer = el('details', { className: 'answer' }, [el('summary', { textContent: 'Show answer (for the lecturer)' }), el('p', { textContent: lesson.answer })]);
+    const hint = el('details', { className: 'hint' }, [
+      el('summary', { textContent: 'Hint' }),
+      el('p', { textContent: lesson.hint }),
+    ]);
+    const answer = el('details', { className: 'answer' }, [
+      el('summary', { textContent: 'Show answer (for the lecturer)' }),
+      el('p', { textContent: lesson.answer }),
+    ]);
     this.panel.replaceChildren(
       close,
-      el('p', { className: 'lesson-count', textContent: `Lesson ${i + 1} of ${this.lessons.length} · run ${lesson.run}` }),
+      el('p', {
+        className: 'lesson-count',
+        textContent: `Lesson ${i + 1} of ${this.lessons.length} · run ${lesson.run}`,
+      }),
       el('h2', { textContent: lesson.title, tabIndex: -1 }),
       el('h3', { textContent: 'What to look for' }),
       el('p', { className: 'look', textContent: lesson.look }),

@@ -41,8 +41,15 @@ function typesetWaiting(span) {
 
 /** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */
 function plain(source) {
-  return source.replace(/\\hat ([a-z])/g, '$1\u0302').replace(/\\psi/g, 'ψ').replace(/\\omega/g, 'ω').replace(/\\cdot/g, '·')
-    .replace(/\\text\{([^}]*)\}/g, '$1').replace(/\\ /g, ' ').replace(/ - /g, ' − ').replace(/[_{}^]/g, '');
+  return source
+    .replace(/\\hat ([a-z])/g, '$1\u0302')
+    .replace(/\\psi/g, 'ψ')
+    .replace(/\\omega/g, 'ω')
+    .replace(/\\cdot/g, '·')
+    .replace(/\\text\{([^}]*)\}/g, '$1')
+    .replace(/\\ /g, ' ')
+    .replace(/ - /g, ' − ')
+    .replace(/[_{}^]/g, '');
 }
 
 /**
@@ -87,7 +94,13 @@ function plotDefs(sectionDivs) {
   for (const s of SECTIONS) {
     for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6].filter(Boolean)) {
       const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
-      defs.push({ ...plot, id: `${s.id}-${defs.length}`, constants, container: sectionDivs[s.id], backstepping: BACKSTEPPING.has(s.id) });
+      defs.push({
+        ...plot,
+        id: `${s.id}-${defs.length}`,
+        constants,
+        container: sectionDivs[s.id],
+        backstepping: BACKSTEPPING.has(s.id),
+      });
     }
   }
   return defs;
@@ -97,13 +110,75 @@ const LUMPED = ['a1', 'a2', 'a3', 'a5', 'a6', 'a7', 'a8', 'a9', 'a10', 'b'];
 
 // Terms of the inspect panel, grouped by step: [column, TeX label].
 const INSPECT = [
-  ['Step 1', [['z1', 'z_1'], ['v1', 'v_1'], ['v1a', 'v_{1a}'], ['v1s', 'v_{1s}'], ['torque_hat', 'a_1(x_3\\hat x_4 - x_2\\hat x_5)']]],
-  ['Step 2', [['z2', 'z_2'], ['v2', 'v_2'], ['v2a', 'v_{2a}'], ['v2s', 'v_{2s}'], ['psi2', '\\psi_2']]],
-  ['Step 3', [['z3', 'z_3'], ['v3', 'v_3'], ['v3a', 'v_{3a}'], ['v3s', 'v_{3s}'], ['psi3', '\\psi_3']]],
-  ['Step 4', [['z4', 'z_4'], ['v4', 'v_4'], ['v4a', 'v_{4a}'], ['v4s', 'v_{4s}'], ['psi4', '\\psi_4']]],
-  ['Voltage (54) and limit', [['u_a_cmd', 'u_1\\ \\text{before}'], ['u_b_cmd', 'u_2\\ \\text{before}'], ['u_a', 'u_1\\ \\text{applied}'], ['u_b', 'u_2\\ \\text{applied}'], ['lyapunov', 'V']]],
-  ['Estimate x̂ (k|k)', [['omega_hat', '\\hat x_1'], ['i_sa_hat', '\\hat x_2'], ['i_sb_hat', '\\hat x_3'], ['phi_ra_hat', '\\hat x_4'], ['phi_rb_hat', '\\hat x_5']]],
-  ['Measured and true', [['y_a', 'y_1'], ['y_b', 'y_2'], ['omega', 'x_1'], ['omega_ref', '\\omega_d']]],
+  [
+    'Step 1',
+    [
+      ['z1', 'z_1'],
+      ['v1', 'v_1'],
+      ['v1a', 'v_{1a}'],
+      ['v1s', 'v_{1s}'],
+      ['torque_hat', 'a_1(x_3\\hat x_4 - x_2\\hat x_5)'],
+    ],
+  ],
+  [
+    'Step 2',
+    [
+      ['z2', 'z_2'],
+      ['v2', 'v_2'],
+      ['v2a', 'v_{2a}'],
+      ['v2s', 'v_{2s}'],
+      ['psi2', '\\psi_2'],
+    ],
+  ],
+  [
+    'Step 3',
+    [
+      ['z3', 'z_3'],
+      ['v3', 'v_3'],
+      ['v3a', 'v_{3a}'],
+      ['v3s', 'v_{3s}'],
+      ['psi3', '\\psi_3'],
+    ],
+  ],
+  [
+    'Step 4',
+    [
+      ['z4', 'z_4'],
+      ['v4', 'v_4'],
+      ['v4a', 'v_{4a}'],
+      ['v4s', 'v_{4s}'],
+      ['psi4', '\\psi_4'],
+    ],
+  ],
+  [
+    'Voltage (54) and limit',
+    [
+      ['u_a_cmd', 'u_1\\ \\text{before}'],
+      ['u_b_cmd', 'u_2\\ \\text{before}'],
+      ['u_a', 'u_1\\ \\text{applied}'],
+      ['u_b', 'u_2\\ \\text{applied}'],
+      ['lyapunov', 'V'],
+    ],
+  ],
+  [
+    'Estimate x̂ (k|k)',
+    [
+      ['omega_hat', '\\hat x_1'],
+      ['i_sa_hat', '\\hat x_2'],
+      ['i_sb_hat', '\\hat x_3'],
+      ['phi_ra_hat', '\\hat x_4'],
+      ['phi_rb_hat', '\\hat x_5'],
+    ],
+  ],
+  [
+    'Measured and true',
+    [
+      ['y_a', 'y_1'],
+      ['y_b', 'y_2'],
+      ['omega', 'x_1'],
+      ['omega_ref', '\\omega_d'],
+    ],
+  ],
 ];
 
 /** Shortest text that reads back as the same double (as the CLI's CSV writes it). */
@@ -141,7 +216,11 @@ export class Walkthrough {
     this.typesetting = false; // whether equations are being typeset while the page is idle
     for (const s of SECTIONS) this.container.append(this.section(s, onCompare));
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
-      onWindow, onFull, onPick, framing, height: 220,
+      onWindow,
+      onFull,
+      onPick,
+      framing,
+      height: 220,
       constants: (plot) => (plot.nisBand ? this.nisBand : []),
     });
   }
@@ -152,10 +231,18 @@ export class Walkthrough {
     for (const p of s.prose) div.append(el('p', { textContent: p }));
     s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
     if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
-    if (s.lumped) div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
-    if (s.stability) div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
+    if (s.lumped)
+      div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
+    if (s.stability)
+      div.append(
+        el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }),
+      );
     if (s.compare) {
-      const button = el('button', { type: 'button', className: 'compare', textContent: 'Compare Euler and RK4 predictors on this scenario' });
+      const button = el('button', {
+        type: 'button',
+        className: 'compare',
+        textContent: 'Compare Euler and RK4 predictors on this scenario',
+      });
       button.addEventListener('click', onCompare);
       div.append(button, scrollBox(el('div', { className: 'compare-result' }), 'Euler and RK4 predictors compared'));
     }
@@ -174,13 +261,20 @@ export class Walkthrough {
     this.ifoc = ifoc;
     let note = this.container.querySelector('.ifoc-note');
     if (ifoc && !note) {
-      note = el('p', { className: 'ifoc-note', textContent: 'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.' });
+      note = el('p', {
+        className: 'ifoc-note',
+        textContent:
+          'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.',
+      });
       this.container.prepend(note);
     } else if (!ifoc && note) note.remove();
     // Knobs are rebuilt only when the set of fields that act changes, so an edit keeps its focus
     // and the section does not move.
     for (const box of this.container.querySelectorAll('.knobs')) {
-      const knobs = box.dataset.keys.split(' ').map((key) => this.knob(key)).filter(Boolean);
+      const knobs = box.dataset.keys
+        .split(' ')
+        .map((key) => this.knob(key))
+        .filter(Boolean);
       const names = (labels) => labels.map((l) => l.querySelector('input, select').name).join();
       const shown = [...box.querySelectorAll('label.field')];
       if (names(knobs) !== names(shown)) {
@@ -196,13 +290,20 @@ export class Walkthrough {
         else now.value = value.value;
       });
     }
-    const table = el('table', {}, [el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))])]);
+    const table = el('table', {}, [
+      el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))]),
+    ]);
     for (const which of ['plant', 'model']) {
-      table.append(el('tr', {}, [el('th', { scope: 'row', textContent: which }), ...LUMPED.map((k) => {
-        const cell = el('td', { textContent: info[which][k].toPrecision(5) });
-        if (info.plant[k] !== info.model[k]) cell.className = 'differs';
-        return cell;
-      })]));
+      table.append(
+        el('tr', {}, [
+          el('th', { scope: 'row', textContent: which }),
+          ...LUMPED.map((k) => {
+            const cell = el('td', { textContent: info[which][k].toPrecision(5) });
+            if (info.plant[k] !== info.model[k]) cell.className = 'differs';
+            return cell;
+          }),
+        ]),
+      );
     }
     this.container.querySelector('.lumped').replaceChildren(table);
   }
@@ -230,10 +331,13 @@ export class Walkthrough {
   typesetWhenIdle() {
     if (this.typesetting) return;
     // Where the browser lacks idle callbacks: 10 ms slices 50 ms apart.
-    const idle = globalThis.requestIdleCallback ?? ((f) => setTimeout(() => {
-      const end = performance.now() + 10;
-      f({ timeRemaining: () => end - performance.now() });
-    }, 50));
+    const idle =
+      globalThis.requestIdleCallback ??
+      ((f) =>
+        setTimeout(() => {
+          const end = performance.now() + 10;
+          f({ timeRemaining: () => end - performance.now() });
+        }, 50));
     const some = (deadline) => {
       for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
         if (deadline.timeRemaining() <= 0) {
@@ -320,7 +424,12 @@ export class Walkthrough {
     box.replaceChildren(el('div', { className: 'inspect-head' }, [title, copy, close]));
     box.dataset.t = String(value.t);
     const grid = el('div', { className: 'inspect-grid' });
-    const head = () => el('tr', {}, ['term', 'value', 'unit', 'meaning'].map((h) => el('th', { scope: 'col', textContent: h })));
+    const head = () =>
+      el(
+        'tr',
+        {},
+        ['term', 'value', 'unit', 'meaning'].map((h) => el('th', { scope: 'col', textContent: h })),
+      );
     for (const [title, terms] of INSPECT) {
       const table = el('table', {}, [el('caption', { textContent: title }), head()]);
       for (const [col, label] of terms) {
@@ -338,14 +447,22 @@ export class Walkthrough {
       }
       grid.append(table);
     }
-    const gain = el('table', {}, [el('caption', { textContent: 'Kalman gain K_k (A⁻¹ × state unit) and L = K_k/Ts (per second)' }),
-      el('tr', {}, ['row', 'K·1', 'K·2', 'L·1', 'L·2'].map((h) => el('th', { scope: 'col', textContent: h })))]);
+    const gain = el('table', {}, [
+      el('caption', { textContent: 'Kalman gain K_k (A⁻¹ × state unit) and L = K_k/Ts (per second)' }),
+      el(
+        'tr',
+        {},
+        ['row', 'K·1', 'K·2', 'L·1', 'L·2'].map((h) => el('th', { scope: 'col', textContent: h })),
+      ),
+    ]);
     snap.gain.forEach((row, i) => {
-      gain.append(el('tr', {}, [
-        el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false, `K${i + 1}·`)]),
-        ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
-        ...snap.l[i].map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
-      ]));
+      gain.append(
+        el('tr', {}, [
+          el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false, `K${i + 1}·`)]),
+          ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
+          ...snap.l[i].map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
+        ]),
+      );
     });
     grid.append(gain);
     box.append(grid);
@@ -394,17 +511,47 @@ export class Walkthrough {
 
   showComparison(results) {
     const box = this.container.querySelector('.compare-result');
-    const rows = [['predictor', 'tracking RMS (rad/s)', 'speed-estimate RMS (rad/s)', 'flux-estimate RMS (Wb)', 'mean NIS', 'saturated']];
+    const rows = [
+      [
+        'predictor',
+        'tracking RMS (rad/s)',
+        'speed-estimate RMS (rad/s)',
+        'flux-estimate RMS (Wb)',
+        'mean NIS',
+        'saturated',
+      ],
+    ];
     for (const r of results) {
       const m = r.metrics;
-      rows.push([r.predictor, m.tracking_rms.toPrecision(3), m.speed_estimate_rms.toPrecision(3),
-        m.flux_estimate_rms.toPrecision(3), m.mean_nis.toPrecision(3), `${m.saturated.toPrecision(3)} of samples`]);
+      rows.push([
+        r.predictor,
+        m.tracking_rms.toPrecision(3),
+        m.speed_estimate_rms.toPrecision(3),
+        m.flux_estimate_rms.toPrecision(3),
+        m.mean_nis.toPrecision(3),
+        `${m.saturated.toPrecision(3)} of samples`,
+      ]);
     }
     // The first row names the columns, the first column the predictor.
-    const cell = (text, i, j) => (i === 0 || j === 0 ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text }) : el('td', { textContent: text }));
-    const table = el('table', {}, rows.map((r, i) => el('tr', {}, r.map((c, j) => cell(c, i, j)))));
+    const cell = (text, i, j) =>
+      i === 0 || j === 0
+        ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text })
+        : el('td', { textContent: text });
+    const table = el(
+      'table',
+      {},
+      rows.map((r, i) =>
+        el(
+          'tr',
+          {},
+          r.map((c, j) => cell(c, i, j)),
+        ),
+      ),
+    );
     box.replaceChildren(
-      el('p', { textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.` }),
+      el('p', {
+        textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
+      }),
       table,
     );
   }

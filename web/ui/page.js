@@ -3,11 +3,31 @@
 export const $ = (id) => document.getElementById(id);
 
 export const ui = {
-  preset: $('preset'), presetDoc: $('preset-doc'), form: $('settings'), run: $('run'),
-  cancel: $('cancel'), progress: $('progress'), status: $('status'), message: $('message'),
-  copy: $('copy-link'), csv: $('export-csv'), png: $('export-png'), plots: $('plots'),
-  present: $('present'), inspect: $('inspect'), settingsToggle: $('settings-toggle'), embed: $('copy-embed'), fullRun: $('full-run'), fit: $('fit'), fitLabel: $('fit-label'),
-  unrun: $('unrun'), figures: $('figures'), consistency: $('consistency'), keyFigures: $('key-figures'), figuresBar: document.querySelector('.figures-bar'), figuresToggle: $('figures-toggle'),
+  preset: $('preset'),
+  presetDoc: $('preset-doc'),
+  form: $('settings'),
+  run: $('run'),
+  cancel: $('cancel'),
+  progress: $('progress'),
+  status: $('status'),
+  message: $('message'),
+  copy: $('copy-link'),
+  csv: $('export-csv'),
+  png: $('export-png'),
+  plots: $('plots'),
+  present: $('present'),
+  inspect: $('inspect'),
+  settingsToggle: $('settings-toggle'),
+  embed: $('copy-embed'),
+  fullRun: $('full-run'),
+  fit: $('fit'),
+  fitLabel: $('fit-label'),
+  unrun: $('unrun'),
+  figures: $('figures'),
+  consistency: $('consistency'),
+  keyFigures: $('key-figures'),
+  figuresBar: document.querySelector('.figures-bar'),
+  figuresToggle: $('figures-toggle'),
 };
 
 /** Shows `text` in the message line as an error or as `info`; an empty text clears it. */

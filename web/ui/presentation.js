@@ -59,9 +59,11 @@ export function createPresentation({ state, plots, walkthrough }) {
     document.body.classList.add('embed');
     document.body.dataset.embed = ids.join(',');
     plots.embedded = ids;
-    for (const div of ui.plots.querySelectorAll('.plot[data-plot]')) div.classList.toggle('embedded', ids.includes(div.dataset.plot));
+    for (const div of ui.plots.querySelectorAll('.plot[data-plot]'))
+      div.classList.toggle('embedded', ids.includes(div.dataset.plot));
     // Kept until the user acts: a load's message would otherwise clear it.
-    if (unknown.length) state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
+    if (unknown.length)
+      state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
     say(state.notice ?? '', 'info');
     fitEmbed = () => plots.resize(embedHeight(ids.length));
     window.addEventListener('resize', fitEmbed);

@@ -5,11 +5,13 @@ import { presetNamed } from './url.js';
 /** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
 function plotsInView() {
   if (ui.plots.offsetParent === null) return ['speed'];
-  const inView = [...ui.plots.querySelectorAll('.plot[data-plot]')].filter((p) => {
-    const box = p.getBoundingClientRect();
-    const shown = Math.min(box.bottom, innerHeight) - Math.max(box.top, 0);
-    return box.height > 0 && shown >= box.height / 2;
-  }).map((p) => p.dataset.plot);
+  const inView = [...ui.plots.querySelectorAll('.plot[data-plot]')]
+    .filter((p) => {
+      const box = p.getBoundingClientRect();
+      const shown = Math.min(box.bottom, innerHeight) - Math.max(box.top, 0);
+      return box.height > 0 && shown >= box.height / 2;
+    })
+    .map((p) => p.dataset.plot);
   return inView.length ? inView : ['speed'];
 }
 
@@ -27,7 +29,10 @@ export function wireShare({ state }) {
   ui.embed.addEventListener('click', async () => {
     const ids = plotsInView();
     const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=${ids.join(',')}`;
-    const title = `IM Lab: ${presetNamed(state.info.encoded)}, ${ids.join(', ')}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
+    const title = `IM Lab: ${presetNamed(state.info.encoded)}, ${ids.join(', ')}`.replace(
+      /[&<"]/g,
+      (c) => `&#${c.charCodeAt(0)};`,
+    );
     // The plots share whatever height the frame has; this one gives each about 300 px.
     const height = 140 + 300 * ids.length;
     const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="100%" height="${height}" style="border:0;max-width:960px" loading="lazy"></iframe>`;

@@ -20,7 +20,10 @@ export function challengeFromUrl() {
   const name = /^challenge=([A-Za-z0-9_-]+)$/.exec(text);
   if (name) return { challenge: name[1], submission: null };
   if (!/^c=/.test(text)) return null;
-  const challenge = text.split('&').filter((p) => !p.startsWith('try.')).join('&');
+  const challenge = text
+    .split('&')
+    .filter((p) => !p.startsWith('try.'))
+    .join('&');
   return { challenge, submission: text };
 }
 
@@ -46,7 +49,11 @@ function urlFor(scenario) {
 }
 
 function fragmentEntries() {
-  return location.hash.slice(1).split('&').filter(Boolean).map((p) => p.split('=', 2));
+  return location.hash
+    .slice(1)
+    .split('&')
+    .filter(Boolean)
+    .map((p) => p.split('=', 2));
 }
 
 /** The value of `key` in the URL fragment (`#key=value&...`), or null. Values are kept as written. */
@@ -68,7 +75,10 @@ const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
  */
 export function excerpt(text, max = 40) {
   const chars = [...text];
-  const shown = chars.slice(0, max).map((c) => (INVISIBLE.test(c) ? ESCAPES[c] ?? `\\u{${c.codePointAt(0).toString(16)}}` : c)).join('');
+  const shown = chars
+    .slice(0, max)
+    .map((c) => (INVISIBLE.test(c) ? (ESCAPES[c] ?? `\\u{${c.codePointAt(0).toString(16)}}`) : c))
+    .join('');
   return chars.length > max ? `${shown}… (${chars.length} characters)` : shown;
 }
 
@@ -103,7 +113,11 @@ export function decodePins(value) {
 export function setFragment(key, value) {
   const entries = fragmentEntries().filter(([k]) => k !== key);
   if (value !== null) entries.push([key, value]);
-  history.replaceState(history.state, '', `${location.pathname}${location.search}#${entries.map((e) => e.join('=')).join('&')}`);
+  history.replaceState(
+    history.state,
+    '',
+    `${location.pathname}${location.search}#${entries.map((e) => e.join('=')).join('&')}`,
+  );
 }
 
 /** Puts `scenario` in the address bar as an edit of the current entry. */

@@ -48,9 +48,28 @@
 // its buffers are transferred, not copied. The column 'lyapunov_bound' is the bound (59)
 // evaluated by the core at the plot's times.
 import init, {
-  challenge_measure, Comparison, describe, log_grid, nis_band, panic_message, presets, recover,
-  robust_cells, robust_csv, robust_figures, robust_plan, robust_run,
-  seed_bands, seed_range, seed_run, seeds_csv, Simulation, sweep_csv, sweep_point, sweep_summary, variant,
+  challenge_measure,
+  Comparison,
+  describe,
+  log_grid,
+  nis_band,
+  panic_message,
+  presets,
+  recover,
+  robust_cells,
+  robust_csv,
+  robust_figures,
+  robust_plan,
+  robust_run,
+  seed_bands,
+  seed_range,
+  seed_run,
+  seeds_csv,
+  Simulation,
+  sweep_csv,
+  sweep_point,
+  sweep_summary,
+  variant,
 } from '../../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
@@ -89,7 +108,8 @@ function crash(error) {
   let message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
   // A Rust allocation failure aborts without a panic, as an 'unreachable' trap.
   if (panic) message += `; Rust panic: ${panic}`;
-  else if (error instanceof WebAssembly.RuntimeError && /unreachable/.test(error.message)) message += '; most likely the core ran out of memory';
+  else if (error instanceof WebAssembly.RuntimeError && /unreachable/.test(error.message))
+    message += '; most likely the core ran out of memory';
   self.postMessage({ type: 'crashed', message });
 }
 
@@ -122,9 +142,11 @@ function view(run, groups, t0, t1, buckets) {
   Object.entries(groups).forEach(([id, names], g) => {
     const cols = all[g];
     const columns = {};
-    names.filter((c) => c !== BOUND).forEach((name, i) => {
-      columns[name] = cols[i + 1];
-    });
+    names
+      .filter((c) => c !== BOUND)
+      .forEach((name, i) => {
+        columns[name] = cols[i + 1];
+      });
     if (names.includes(BOUND)) columns[BOUND] = run.sim.lyapunov_bound(cols[0]);
     plots[id] = { t: cols[0], columns };
   });
@@ -132,7 +154,9 @@ function view(run, groups, t0, t1, buckets) {
 }
 
 function post(message, view) {
-  const transfer = view ? Object.values(view.plots).flatMap((p) => [p.t.buffer, ...Object.values(p.columns).map((a) => a.buffer)]) : [];
+  const transfer = view
+    ? Object.values(view.plots).flatMap((p) => [p.t.buffer, ...Object.values(p.columns).map((a) => a.buffer)])
+    : [];
   self.postMessage(message, transfer);
 }
 
@@ -201,7 +225,22 @@ async function run({ id, scenario, groups, buckets, overlay }) {
   const transient = report?.transient ?? null;
   const warnings = report?.warnings ?? [];
   const unreached = report?.unreached ?? [];
-  post({ type: 'done', id, rows: sim.rows, failure, view: v, computeMs, stability, figures, unreached, transient, warnings }, v);
+  post(
+    {
+      type: 'done',
+      id,
+      rows: sim.rows,
+      failure,
+      view: v,
+      computeMs,
+      stability,
+      figures,
+      unreached,
+      transient,
+      warnings,
+    },
+    v,
+  );
 }
 
 /**
@@ -227,9 +266,11 @@ async function exportCsv({ id, serial }) {
       return;
     }
     rows = Math.min(total, rows + CSV_ROWS);
-    const wanted = rows < total && new Promise((answer) => {
-      exporting = { serial, answer };
-    });
+    const wanted =
+      rows < total &&
+      new Promise((answer) => {
+        exporting = { serial, answer };
+      });
     self.postMessage({ type: 'csv', serial, bytes, rows, total }, [bytes.buffer]);
     if (!wanted || !(await wanted) || current !== me) return;
   }
@@ -354,7 +395,12 @@ const JOBS = {
 };
 
 function pinsMessage(rejected = []) {
-  return { type: 'pins', scenarios: comparison.scenarios(), legends: current ? comparison.legends(current.sim) : [], rejected };
+  return {
+    type: 'pins',
+    scenarios: comparison.scenarios(),
+    legends: current ? comparison.legends(current.sim) : [],
+    rejected,
+  };
 }
 
 // A pool's worker (`?role=pool`) answers stateless jobs only: it holds no pins and needs no
@@ -431,7 +477,10 @@ self.onmessage = async ({ data }) => {
       if (current && current.id === data.id) {
         try {
           const data2 = [...comparison.overlay(current.sim, data.column, data.t0, data.t1, data.buckets)];
-          self.postMessage({ type: 'overlay', id: data.id, column: data.column, data: data2 }, data2.map((a) => a.buffer));
+          self.postMessage(
+            { type: 'overlay', id: data.id, column: data.column, data: data2 },
+            data2.map((a) => a.buffer),
+          );
         } catch (e) {
           if (!trapped(e)) post({ type: 'invalid', id: data.id, message: String(e) });
         }
