@@ -7,7 +7,7 @@ setup:
 	@scripts/setup.sh
 
 wasm: setup
-	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack
+	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack -- --no-default-features
 	rm -f dist/pkg/.gitignore
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
@@ -34,10 +34,10 @@ test: dist
 	node_modules/.bin/eslint --max-warnings=0 .
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --release -- -D warnings
-	cargo clippy --lib --target wasm32-unknown-unknown -- -D warnings
+	cargo clippy --lib --target wasm32-unknown-unknown --no-default-features -- -D warnings
 	cargo build --release
 	cargo test --release
-	wasm-pack test --node crate
+	wasm-pack test --node crate --no-default-features
 	node --test --test-concurrency=1 tests/*.test.mjs
 
 # Criterion benchmarks (about 2 minutes after the build), the speed against the floor

@@ -1,5 +1,6 @@
 //! `imlab metrics`: the figures of a run as the CLI prints them, checked against the physics
 //! (settling through the reference filter, saturation, EKF consistency) and against the library.
+#![cfg(not(target_arch = "wasm32"))]
 
 use imlab::record::Report;
 use imlab::scenario::Scenario;

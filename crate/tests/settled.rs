@@ -1,6 +1,7 @@
 //! Whether a final value had settled, on real runs: a slow decay that moves little over the last
 //! tenth is still changing, a settled value with noise on it stays settled over seeds, a run that
 //! ran away has no final value, and a step's settling time that the run did not reach says so.
+#![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{judge, measure, Submission, BUILTINS};
 use imlab::record::{Figure, Report, Trend};

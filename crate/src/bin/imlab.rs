@@ -20,6 +20,7 @@ use std::process::ExitCode;
 #[derive(Parser)]
 #[command(
     name = "imlab",
+    version,
     // A repeated option overrides the earlier one, as in most command lines.
     args_override_self = true,
     after_help = "SCENARIO is a preset name or a query string such as \
