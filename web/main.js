@@ -44,18 +44,6 @@ const state = {
 const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: state.transient?.t ?? -Infinity });
 const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
 
-/**
- * The largest value one voltage component can take under the scenario's limit, for the voltage
- * plot's limit lines: vmax for the box, v_dc/√3 for the circle, and the hexagon's vertex 2v_dc/3
- * for the hexagon (reached along the a axis only; elsewhere the hexagon is tighter).
- */
-function componentLimit() {
-  const shape = fieldValue(state.info, 'vlimit');
-  if (shape === 'box' || shape === null) return Number(fieldValue(state.info, 'vmax'));
-  const vdc = Number(fieldValue(state.info, 'vdc'));
-  return shape === 'circle' ? vdc / Math.sqrt(3) : (2 * vdc) / 3;
-}
-
 const client = new RunClient((reason, restarting) => {
   run.workerFailed(reason, restarting);
   if (restarting) pins.show([], []);
@@ -66,7 +54,7 @@ const plots = new Plots(ui.plots, PLOTS, {
   onPick: (t) => views.requestInspect(t),
   sampleTime,
   framing,
-  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * componentLimit()) : []),
+  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * state.info.component_limit) : []),
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),

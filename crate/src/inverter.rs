@@ -84,6 +84,17 @@ impl Limit {
         }
     }
 
+    /// The largest value one voltage component can take (V), for the plots' limit lines: vmax for
+    /// the box, v_dc/√3 for the circle, and the hexagon's vertex 2v_dc/3 (reached along the a
+    /// axis only; elsewhere the hexagon is tighter).
+    pub fn component_max(&self) -> f64 {
+        match self.shape {
+            Shape::Box => self.vmax,
+            Shape::Circle => self.vdc / SQRT3,
+            Shape::Hex => 2.0 * self.vdc / 3.0,
+        }
+    }
+
     /// The largest voltage magnitude the limit allows in every direction (V): the half-width of
     /// the box, or the radius of the circle (the hexagon's inscribed circle).
     pub fn radius(&self) -> f64 {
@@ -175,6 +186,31 @@ pub fn advance(
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_largest_component_is_what_the_limit_applies_to_a_large_a_axis_command() {
+        for shape in [Shape::Box, Shape::Circle, Shape::Hex] {
+            let limit = Limit {
+                shape,
+                vmax: 400.0,
+                vdc: 540.0,
+            };
+            let applied = limit.apply(&[1e6, 0.0]);
+            assert!(
+                (applied[0] - limit.component_max()).abs() < 1e-9,
+                "{shape:?}: {applied:?}"
+            );
+            // No direction gives a component beyond it.
+            for k in 0..360 {
+                let a = f64::from(k).to_radians();
+                let u = limit.apply(&[1e6 * libm::cos(a), 1e6 * libm::sin(a)]);
+                assert!(
+                    u[0].abs().max(u[1].abs()) <= limit.component_max() + 1e-9,
+                    "{shape:?} at {k}°"
+                );
+            }
+        }
+    }
     use crate::params::MotorParams;
     use crate::rng::Rng;
 

@@ -243,6 +243,8 @@ fn to_js(value: &impl Serialize) -> Result<JsValue, JsValue> {
 struct Description {
     encoded: String,
     steps: usize,
+    /// The largest value one voltage component can take under the limit (V).
+    component_limit: f64,
     fields: Vec<crate::scenario::FieldInfo>,
     plant: Lumped,
     model: Lumped,
@@ -257,6 +259,7 @@ pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
     to_js(&Description {
         encoded: s.encode(),
         steps: s.steps(),
+        component_limit: s.limit().component_max(),
         fields: s.describe(),
         plant: lumped(&s.plant)?,
         model: lumped(&s.model)?,
