@@ -34,7 +34,7 @@ const simulationWorker = (page) => page.workers()[0];
 function trapOnNextStep(worker) {
   return worker.evaluate(async (largest) => {
     // The same module URL gives the page's worker module, so the same WASM instance.
-    const m = await import(new URL('../pkg/imlab.js', self.location.href));
+    const m = await import(new URL('../../pkg/imlab.js', self.location.href));
     const hoard = [];
     const exhaust = function exhaust() {
       // Each run keeps a column of its 1,064,963 samples, about 8.5 MB; WASM32 memory ends at 4 GiB.

@@ -38,17 +38,8 @@ pub const MAX_STEPS: usize = 2_000_000;
 /// steps a sample, against about ten steps' worth for everything else a sample does), so
 /// [`MAX_STEPS`] alone bounds a run's time only with one substep.
 ///
-/// Chosen so that the plant's work adds about a second at most to any run. Measured on
-/// 2026-11-25 on this machine (2 cores, shared with other builds: load 4–6), user time of the
-/// release build: the work-bound worst case, the heaviest sample (7-state EKF with the RK4
-/// predictor, PWM, the perfect observer's prediction) at exactly this limit, `imlab run
-/// 'v=1&preset=sine200-drive&ekf=rk4&ekf.load=1&ekf.rr=1&delay.comp=1&perfect=1&substeps=1000&duration=0.0625'
-/// --out /dev/null` (1,250 samples × 8,000 steps), 1.1 s. The worst cases bound by the samples
-/// instead, that sample at the largest trace (`…&duration=20&ts=0.00001878`, 8.5 million
-/// steps): `imlab metrics` 4.1 s, `imlab run … --out /dev/null` 12.8 s, of which writing the
-/// 1.2 GB of CSV takes about 9 s whatever the work (the plain
-/// `v=1&preset=step&duration=20&ts=0.00001878` takes 10.0 s); that share is bounded by the
-/// trace's size limit ([`crate::sim::MAX_TRACE_BYTES`]), not by this one.
+/// Chosen so that the plant's work adds about a second at most to any run; the measurement is in
+/// `docs/figures.md` (the work bound).
 pub const MAX_WORK: u64 = 10_000_000;
 
 /// An extra load torque applied from a given time on, unknown to the controller and observer.
