@@ -175,7 +175,9 @@ export function createRobust({ state, analysis, open, showTab }) {
       // gaps, marked below the plot and in the table, never drawn as values.
       const x = axes[0].values.map((_, i) => axisValue(0, i));
       const series = [0, 1, 2].map((s) =>
-        axes[0].values.map((_, i) => (clean(byIndex[i]) ? byIndex[i].stats[k][s] : null)),
+        axes[0].values.map((_, i) =>
+          clean(byIndex[i]) && Number.isFinite(byIndex[i].stats[k][s]) ? byIndex[i].stats[k][s] : null,
+        ),
       );
       const width = Math.max(320, box.clientWidth - 10);
       const opts = {
@@ -229,7 +231,8 @@ export function createRobust({ state, analysis, open, showTab }) {
       const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
       button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent; ${figure.label} ${fmt(cell.stats[k][0])} to ${fmt(cell.stats[k][2])}`;
       if (cell.ran_away > 0) button.classList.add('map-ran-away');
-      else {
+      else if (Number.isFinite(median(cell))) {
+        // A cell whose runs lack the figure (the IFOC has no NIS) stays uncoloured, shown as —.
         const [colour, light] = scale.of(median(cell));
         Object.assign(button.style, { background: colour, color: light ? '#fff' : '#000' });
       }
