@@ -44,6 +44,21 @@ const state = {
 const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: state.transient?.t ?? -Infinity });
 const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
 
+/**
+ * The worker's messages handled by the page's parts, by type: one part a type. Two parts that
+ * would handle the same type are a mistake of the page, refused rather than one silently lost.
+ */
+function handlersOf(...parts) {
+  const handlers = {};
+  for (const part of parts) {
+    for (const [type, handle] of Object.entries(part.handlers)) {
+      if (Object.hasOwn(handlers, type)) throw new Error(`two parts of the page handle the worker's '${type}'`);
+      handlers[type] = handle;
+    }
+  }
+  return handlers;
+}
+
 const client = new RunClient((reason, restarting) => {
   run.workerFailed(reason, restarting);
   if (restarting) pins.show([], []);
@@ -138,7 +153,7 @@ new LessonPanel({
   },
 });
 wireShare({ state });
-client.handlers = { ...settings.handlers, ...run.handlers, ...views.handlers, ...pins.handlers, ...exporter.handlers };
+client.handlers = handlersOf(settings, run, views, pins, exporter);
 
 ui.fullRun.addEventListener('click', views.fullRun);
 ui.fit.addEventListener('change', () => {

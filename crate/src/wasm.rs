@@ -245,6 +245,8 @@ struct Description {
     steps: usize,
     /// The largest value one voltage component can take under the limit (V).
     component_limit: f64,
+    /// The keys of the fields that differ from the preset, in the codec's order.
+    changed: Vec<&'static str>,
     fields: Vec<crate::scenario::FieldInfo>,
     plant: Lumped,
     model: Lumped,
@@ -260,6 +262,7 @@ pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
         encoded: s.encode(),
         steps: s.steps(),
         component_limit: s.limit().component_max(),
+        changed: s.changed_keys(),
         fields: s.describe(),
         plant: lumped(&s.plant)?,
         model: lumped(&s.model)?,

@@ -68,10 +68,7 @@ export function createSettings({
     ui.preset.value = presetNamed(info.encoded);
     // The preset's description, and what this run changes of it (a lesson's run may hold another
     // speed or length than the preset says).
-    const changed = info.encoded
-      .split('&')
-      .slice(2)
-      .map((part) => part.split('=')[0]);
+    const changed = info.changed;
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
     ui.presetDoc.textContent = changed.length
       ? `${description}. This run changes: ${changed.join(', ')}.`

@@ -237,23 +237,40 @@ impl Scenario {
 
     /// The compact scenario string: version, preset, then only the fields that differ from it.
     pub fn encode(&self) -> String {
+        let mut out = format!("v={CODEC_VERSION}&preset={}", self.preset);
+        for (key, value) in self.changes() {
+            out.push('&');
+            out.push_str(key);
+            out.push('=');
+            out.push_str(&value);
+        }
+        out
+    }
+
+    /// The keys of the fields that differ from the preset, in the codec's order: what this
+    /// scenario changes of it.
+    pub fn changed_keys(&self) -> Vec<&'static str> {
+        self.changes().into_iter().map(|(key, _)| key).collect()
+    }
+
+    /// The fields that differ from the preset, with their codec text, in the codec's order.
+    fn changes(&self) -> Vec<(&'static str, String)> {
         let original = preset(&self.preset).expect("a scenario's preset exists");
         // After `ref=` switches kind, the reference parameters differ from that kind's defaults.
         let mut base = original.clone();
         if base.reference.kind() != self.reference.kind() {
             base.reference = default_reference(self.reference.kind()).expect("known kind");
         }
-        let mut out = format!("v={CODEC_VERSION}&preset={}", self.preset);
-        for field in fields() {
-            let theirs = field.get(if field.key == "ref" { &original } else { &base });
-            if let Some(mine) = field.get(self).filter(|m| Some(m) != theirs.as_ref()) {
-                out.push('&');
-                out.push_str(field.key);
-                out.push('=');
-                out.push_str(&mine);
-            }
-        }
-        out
+        fields()
+            .iter()
+            .filter_map(|field| {
+                let theirs = field.get(if field.key == "ref" { &original } else { &base });
+                field
+                    .get(self)
+                    .filter(|m| Some(m) != theirs.as_ref())
+                    .map(|mine| (field.key, mine))
+            })
+            .collect()
     }
 
     /// Sets one field from its codec text, then checks the whole scenario.
@@ -409,6 +426,14 @@ impl Scenario {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_changed_keys_are_those_the_codec_writes_in_its_order() {
+        let s = Scenario::parse("v=1&preset=step&duration=1&k1=600").unwrap();
+        assert_eq!(s.changed_keys(), ["k1", "duration"]);
+        assert_eq!(s.encode(), "v=1&preset=step&k1=600&duration=1");
+        assert!(preset("step").unwrap().changed_keys().is_empty());
+    }
 
     #[test]
     fn every_preset_round_trips_and_encodes_to_its_name() {
