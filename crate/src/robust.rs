@@ -5,6 +5,7 @@
 //! one cell, [`summarise`] turns a cell's runs into its row and [`map_csv`] writes the rows.
 
 use crate::quote::excerpt;
+use crate::record::WarningKind;
 use crate::scenario::{short, Scenario, MAX_SEED};
 use crate::sim::Simulation;
 use serde::{Deserialize, Serialize};
@@ -429,12 +430,12 @@ pub fn map_run(scenario: &str, seed: u64) -> Result<MapRun, String> {
                 .map_or(f64::NAN, |f| f.value)
         })
         .collect();
-    let warned = |kind: &str| report.warnings.iter().any(|w| w.kind == kind);
+    let warned = |kind: WarningKind| report.warnings.iter().any(|w| w.kind == kind);
     Ok(MapRun {
         seed,
         figures,
-        ran_away: failure.is_some() || warned("runaway"),
-        inconsistent: warned("inconsistent"),
+        ran_away: failure.is_some() || warned(WarningKind::Runaway),
+        inconsistent: warned(WarningKind::Inconsistent),
         failure,
     })
 }

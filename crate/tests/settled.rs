@@ -4,7 +4,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{judge, measure, Submission, BUILTINS};
-use imlab::record::{Figure, Report, Trend};
+use imlab::record::{Figure, Report, Trend, WarningKind};
 use imlab::scenario::Scenario;
 use imlab::sim::Simulation;
 use std::process::Command;
@@ -122,7 +122,10 @@ fn a_run_that_ran_away_has_no_settled_final_value() {
     // over the last tenth is flat: by the last tenth alone it would count as settled.
     let link = "v=1&preset=rr-mismatch&ref.value=1&ekf=rk4&init_err=0&duration=3";
     let r = report(link, 1.0);
-    assert!(r.warnings.iter().any(|w| w.kind == "runaway"), "{r:?}");
+    assert!(
+        r.warnings.iter().any(|w| w.kind == WarningKind::Runaway),
+        "{r:?}"
+    );
     assert!(trend(&r, "flux_error_final").settled_in_last_tenth);
     for name in FINALS {
         let t = trend(&r, name);

@@ -7,7 +7,7 @@ use imlab::analysis::{
     SweepSettings, MAX_SEED_RUNS,
 };
 use imlab::challenge::{judge, measure, Challenge, Measures, Verdict, BUILTINS};
-use imlab::record::{Figure, Unreached};
+use imlab::record::{Figure, Unreached, WarningKind};
 use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
@@ -474,7 +474,7 @@ fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
     result.map_err(|e| format!("{e} ({printed})"))?;
     // A run that ran away fails as a control run, although the simulation itself completed.
     for w in &report.warnings {
-        if w.kind == "runaway" {
+        if w.kind == WarningKind::Runaway {
             return Err(format!("{} (figures printed)", w.text).into());
         }
         to_stderr(format_args!("imlab metrics: warning: {}\n", w.text));

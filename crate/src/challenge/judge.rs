@@ -5,7 +5,7 @@
 //! the measures, so runs can be measured wherever they ran (a worker each, in the page).
 
 use super::{Challenge, Op};
-use crate::record::{FigureInfo, FIGURE_INFO};
+use crate::record::{FigureInfo, WarningKind, FIGURE_INFO};
 use crate::sim::Simulation;
 use serde::{Deserialize, Serialize};
 
@@ -113,7 +113,7 @@ pub fn measure(sim: &Simulation) -> Measures {
     } else {
         r.warnings
             .iter()
-            .find(|w| w.kind == "runaway")
+            .find(|w| w.kind == WarningKind::Runaway)
             .map(|w| w.text.clone())
     };
     Measures { figures, failure }

@@ -194,13 +194,23 @@ pub struct Unreached {
     pub text: String,
 }
 
+/// What a [`Warning`] is about; the page and the JSON see it as "runaway" or "inconsistent".
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum WarningKind {
+    /// The true state left the region the design holds it in, so the run failed as a control
+    /// run, however its samples look.
+    Runaway,
+    /// The EKF's mean NIS is far outside the band of a filter whose model fits, so its estimates
+    /// cannot be trusted.
+    Inconsistent,
+}
+
 /// A finding about the whole run that its figures alone would hide.
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Warning {
-    /// "runaway": the true state left the region the design holds it in, so the run failed as
-    /// a control run, however its samples look; "inconsistent": the EKF's mean NIS is far
-    /// outside the band of a filter whose model fits, so its estimates cannot be trusted.
-    pub kind: &'static str,
+    /// What it is about.
+    pub kind: WarningKind,
     /// One or two sentences that name what happened, with the run's numbers.
     pub text: String,
 }
@@ -283,7 +293,7 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     let window = last.t - end.t;
     let (low, high) = mean_nis_band(w.n);
     let warnings = warnings_of(&last, w.reference_peak, w.nis / n, (low, high));
-    let ran_away = warnings.iter().any(|w| w.kind == "runaway");
+    let ran_away = warnings.iter().any(|w| w.kind == WarningKind::Runaway);
     let trend_of = |k: usize, value: f64, tol: f64| {
         let rate = line.slope(k)?;
         let tolerance = tol.max(TREND_RELATIVE * value.abs());
@@ -436,7 +446,7 @@ fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> V
         || last.flux > RUNAWAY_FLUX * target
     {
         out.push(Warning {
-            kind: "runaway",
+            kind: WarningKind::Runaway,
             text: format!(
                 "The run ran away: at its end the true speed is {} rad/s from the reference, the speed estimate {} rad/s from the true speed, and the flux {} Wb against its target of {} Wb. The controller regulates the EKF's estimates; Theorem 4.6 bounds the closed loop only while the estimation errors stay bounded, and when they do not (a start-up error held only by the voltage limit, a wrong model at low speed) nothing bounds the motor.",
                 rounded(last.omega_err, 3),
@@ -449,7 +459,7 @@ fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> V
     let (low, high) = band;
     let describe = |side: &str, meaning: &str| {
         Warning {
-        kind: "inconsistent",
+        kind: WarningKind::Inconsistent,
         text: format!(
             "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
             rounded(nis, 4),

@@ -20,7 +20,8 @@ mod transient;
 mod window;
 
 pub use figures::{
-    figure_info, report, Figure, FigureInfo, Report, Trend, Unreached, Warning, FIGURE_INFO,
+    figure_info, report, Figure, FigureInfo, Report, Trend, Unreached, Warning, WarningKind,
+    FIGURE_INFO,
 };
 pub use m4::{m4, M4};
 pub use metrics::{metrics, Metrics};
