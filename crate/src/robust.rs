@@ -482,7 +482,7 @@ pub fn summarise(cell: &CellPlan, runs: &[MapRun]) -> Cell {
 }
 
 /// The header of a map's CSV.
-pub fn csv_header(map: &Map) -> String {
+fn csv_header(map: &Map) -> String {
     let mut cols: Vec<String> = Vec::new();
     for a in &map.axes {
         let other = if a.key.starts_with("plant.") {
@@ -590,6 +590,14 @@ mod tests {
         }
         let e = Map::parse(&step(), "plant.rr=-1000%..0%:3").unwrap_err();
         assert!(e.contains("plant.rr="), "{e}");
+    }
+
+    #[test]
+    fn every_figure_a_map_keeps_is_a_figure_of_the_report() {
+        // The bindings label the map's figures from the report's table.
+        for name in MAP_FIGURES {
+            assert!(crate::record::figure_info(name).is_some(), "{name}");
+        }
     }
 
     #[test]
