@@ -7,7 +7,7 @@ setup:
 	@scripts/setup.sh
 
 wasm: setup
-	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-typescript --no-pack -- --no-default-features
+	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-pack -- --no-default-features
 	rm -f dist/pkg/.gitignore
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
@@ -21,6 +21,8 @@ dist: wasm
 	cp -r web/. dist/web/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
+	cp node_modules/uplot/dist/uPlot.d.ts dist/vendor/uPlot.esm.d.ts
+	cp node_modules/katex/types/katex.d.ts dist/vendor/katex/katex.d.mts
 	node_modules/.bin/esbuild dist/web/main.js --bundle --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js
 	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
 	scripts/docs_html.py dist/docs

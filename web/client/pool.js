@@ -3,6 +3,8 @@
 import { WORKER_URL } from '../worker-url.js';
 import { watch } from './watch.js';
 
+/** @import * as P from '../worker/protocol.js' */
+
 /**
  * One worker of a pool. A crash (the worker's 'crashed' message, or an error event) terminates
  * it and rejects the reply it was waiting for; the pool then starts a fresh one.
@@ -68,6 +70,9 @@ export class Pool {
   /**
    * Runs `jobs` (messages without `type`/`job`); `onDone(count, index, result)` reports each
    * job as it ends, so that a caller can keep what finished before a cancel.
+   * @param {P.JobRequest[]} jobs
+   * @param {(count: number, index: number, result: any) => void} [onDone]
+   * @returns {Promise<any[]>}
    */
   async run(jobs, onDone = () => {}) {
     await this.start();
@@ -82,7 +87,9 @@ export class Pool {
         const index = next++;
         const job = ++this.jobs;
         const reply = member.reply('job', job);
-        member.worker.postMessage({ type: 'job', job, ...jobs[index] });
+        /** @type {P.JobMessage} */
+        const message = { type: 'job', job, ...jobs[index] };
+        member.worker.postMessage(message);
         const data = await reply;
         if (data.error) throw new Error(data.error);
         results[index] = data.result;

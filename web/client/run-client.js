@@ -4,6 +4,8 @@
 import { WORKER_URL } from '../worker-url.js';
 import { watch } from './watch.js';
 
+/** @import * as P from '../worker/protocol.js' */
+
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
 
@@ -14,7 +16,8 @@ export class RunClient {
    */
   constructor(onFailed) {
     this.onFailed = onFailed;
-    this.handlers = {}; // the page's handlers of the worker's messages, by type
+    /** @type {P.Handlers} the page's handlers of the worker's messages, by type */
+    this.handlers = {};
     this.worker = null;
     this.ready = false; // whether the current worker has loaded the core
     this.req = 0;
@@ -56,17 +59,28 @@ export class RunClient {
     watch(this.worker, { onMessage: (data) => this.receive(data), onFail: (reason) => this.fail(reason) });
   }
 
+  /** @param {P.ToWorker} message */
   post(message) {
     this.worker.postMessage(message);
   }
 
-  /** Asks the core to validate and describe a scenario string ('recover' keeps its good fields). */
+  /**
+   * Asks the core to validate and describe a scenario string ('recover' keeps its good fields).
+   * @param {string} scenario
+   * @param {'describe' | 'recover'} [type]
+   * @returns {Promise<P.Info>}
+   */
   describe(scenario, type = 'describe') {
     const req = ++this.req;
     return this.ask(`describe ${req}`, { type, req, scenario });
   }
 
-  /** Sends `message` and resolves with the answer that carries `key` (see receive). */
+  /**
+   * Sends `message` and resolves with the answer that carries `key` (see receive).
+   * @param {string} key
+   * @param {P.ToWorker} message
+   * @returns {Promise<any>}
+   */
   ask(key, message) {
     return new Promise((resolve, reject) => {
       this.pending.set(key, { resolve, reject });
@@ -74,13 +88,22 @@ export class RunClient {
     });
   }
 
-  /** Runs a stateless job of the worker (its JOBS table); resolves with its result. */
-  job(kind, data = {}) {
+  /**
+   * Runs a stateless job of the worker (protocol.js's Jobs); resolves with its result.
+   * @template {keyof P.Jobs} K
+   * @param {K} kind
+   * @param {P.Jobs[K]['req']} [data]
+   * @returns {Promise<P.Jobs[K]['result']>}
+   */
+  job(kind, data = /** @type {P.Jobs[K]['req']} */ ({})) {
     const job = ++this.req;
-    return this.ask(`job ${job}`, { type: 'job', job, kind, ...data });
+    return this.ask(`job ${job}`, /** @type {P.JobMessage} */ ({ type: 'job', job, kind, ...data }));
   }
 
-  /** The challenge measures of run `id`, if the worker still holds it (else null). */
+  /**
+   * The challenge measures of run `id`, if the worker still holds it (else null).
+   * @param {number} id
+   */
   measure(id) {
     return this.ask(`measure ${id}`, { type: 'challenge-measure', id });
   }
@@ -93,19 +116,24 @@ export class RunClient {
     else p?.resolve(result);
   }
 
+  /**
+   * Settles the request a reply answers, or hands an unprompted message to the page's handler
+   * of its type.
+   * @param {P.FromWorker} data
+   */
   receive(data) {
-    const { type, req } = data;
-    if (type === 'job') {
+    if (data.type === 'job') {
       this.answer(`job ${data.job}`, data.error, data.result);
-    } else if (type === 'challenge-measured') {
+    } else if (data.type === 'challenge-measured') {
       this.answer(`measure ${data.id}`, data.error, data.measures);
-    } else if (type === 'described') {
-      this.answer(`describe ${req}`, null, data.info);
-    } else if (type === 'invalid' && req !== undefined) {
-      this.answer(`describe ${req}`, data.message);
+    } else if (data.type === 'described') {
+      this.answer(`describe ${data.req}`, null, data.info);
+    } else if (data.type === 'invalid' && data.req !== undefined) {
+      this.answer(`describe ${data.req}`, data.message);
     } else {
-      if (type === 'ready') this.ready = true;
-      this.handlers[type](data);
+      if (data.type === 'ready') this.ready = true;
+      const handler = /** @type {(data: P.FromWorker) => void} */ (this.handlers[data.type]);
+      handler(data);
     }
   }
 

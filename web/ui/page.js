@@ -1,5 +1,11 @@
 // The page's elements, looked up once, and the message line every part of the page reports in.
 
+/**
+ * The element of index.html with `id`. Typed loosely: its kind (input, select, form, …) is the
+ * HTML's, which the compiler does not read.
+ * @param {string} id
+ * @returns {any}
+ */
 export const $ = (id) => document.getElementById(id);
 
 export const ui = {

@@ -1,13 +1,7 @@
-// The worker's challenge jobs: each parses the challenge text it is given (the core's Challenge),
-// so any worker of a pool can take any of them. Every check and figure comes from the core.
-//
-//   'challenge'            {text}             → describe(): {title, base, encoded, allow, need, variants, brief}
-//   'challenge-submission' {text, submission} → {kind, status, message, encoded, tries, scenarios}
-//   'challenge-judge'      {text, runs}       → {criteria: [...], pass}
-//   'challenge-run'        {scenario}         → the measures of the scenario run to its end
-//   'challenge-builtins'   {}                 → [{name, summary, text, solution}]
-//   'challenge-figures'    {}                 → [{name, label, unit}]: what criteria may name
-// A bad challenge throws the core's message, which the worker returns as the job's error.
+// The worker's challenge jobs (their fields and results are in protocol.js's Jobs): each parses
+// the challenge text it is given (the core's Challenge), so any worker of a pool can take any of
+// them. Every check and figure comes from the core. A bad challenge throws the core's message,
+// which the worker returns as the job's error.
 import { Challenge, challenge_builtins, challenge_figures, challenge_measure, Simulation } from '../../pkg/imlab.js';
 
 /** `f(challenge)` on the challenge parsed from `text`, freed afterwards. */

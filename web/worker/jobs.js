@@ -1,0 +1,47 @@
+// The worker's stateless jobs, by kind (see Jobs in protocol.js): each takes its fields and
+// returns what the core computed, so any worker of a pool can take any of them.
+import {
+  log_grid,
+  robust_cells,
+  robust_csv,
+  robust_figures,
+  robust_plan,
+  robust_run,
+  seed_bands,
+  seed_range,
+  seed_run,
+  seeds_csv,
+  sweep_csv,
+  sweep_point,
+  sweep_summary,
+  variant,
+} from '../../pkg/imlab.js';
+import { CHALLENGE_JOBS } from './challenge-jobs.js';
+
+/** @typedef {import('./protocol.js').Jobs} Jobs */
+
+/**
+ * `scenario` with the field changes `[[key, value], ...]` applied by the core.
+ * @param {string} scenario
+ * @param {[string, string][]} changes
+ */
+function withChanges(scenario, changes) {
+  return changes.reduce((s, [key, value]) => variant(s, key, value), scenario);
+}
+
+/** @type {{[K in keyof Jobs]: (d: Jobs[K]['req']) => Jobs[K]['result']}} */
+export const JOBS = {
+  grid: (d) => [...log_grid(d.lo, d.hi, d.n)],
+  sweep: (d) => sweep_point(withChanges(d.scenario, d.changes), d.freq, d.amp, d.duration, d.offset),
+  'seed-range': (d) => [...seed_range(d.first, d.n)],
+  seed: (d) => seed_run(d.scenario, d.seed, d.every),
+  bands: (d) => seed_bands(d.runs),
+  summary: (d) => sweep_summary(d.points),
+  'sweep-csv': (d) => sweep_csv(d.points),
+  'seeds-csv': (d) => seeds_csv(d.results),
+  'map-plan': (d) => ({ map: robust_plan(d.scenario, d.text), figures: robust_figures() }),
+  'map-run': (d) => robust_run(d.scenario, d.seed),
+  'map-cells': (d) => robust_cells(d.map, d.runs),
+  'map-csv': (d) => robust_csv(d.map, d.cells),
+  ...CHALLENGE_JOBS,
+};

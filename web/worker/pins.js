@@ -1,0 +1,109 @@
+// The worker's pins: finished runs kept beside the current one (the core's Comparison), run in
+// time slices like a run, and the overlay of one column across them.
+import { Comparison, Simulation } from '../../pkg/imlab.js';
+import { heldSim, held } from './run.js';
+import { post, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
+
+/** @import * as P from './protocol.js' */
+
+/** @type {Comparison | null} created with the run worker; a pool's worker holds no pins */
+let comparison = null;
+
+/** @type {{cancelled: boolean} | null} the pins being run */
+let pinning = null;
+
+/** Creates the pins' store (the run worker only). */
+export function holdPins() {
+  comparison = new Comparison();
+}
+
+/**
+ * The pins message, naming each scenario refused or not run.
+ * @param {{scenario: string, message: string}[]} rejected
+ * @returns {P.Pins}
+ */
+function pinsMessage(rejected = []) {
+  const sim = heldSim();
+  return { type: 'pins', scenarios: comparison.scenarios(), legends: sim ? comparison.legends(sim) : [], rejected };
+}
+
+/**
+ * Runs and pins `scenarios` one after the other, each in time slices like a run, with progress;
+ * a 'pin-cancel' stops at the next slice and pins nothing more. Then the pins message.
+ * @param {P.PinRequest} request
+ */
+export async function pinAll({ scenarios, column }) {
+  const me = { cancelled: false };
+  pinning = me;
+  const rejected = [];
+  for (const [index, scenario] of scenarios.entries()) {
+    if (me.cancelled) {
+      rejected.push({ scenario, message: 'not run: pinning was cancelled' });
+      continue;
+    }
+    let sim;
+    try {
+      comparison.check_room();
+      sim = new Simulation(scenario);
+      sim.keep_column(column);
+    } catch (e) {
+      sim?.free();
+      if (trapped(e)) return;
+      rejected.push({ scenario, message: String(e) });
+      continue;
+    }
+    while (!sim.finished) {
+      try {
+        sim.step_for(SLICE_MS);
+      } catch (e) {
+        if (trapped(e)) return;
+        break; // a run that fails stays pinned with the samples before its failure
+      }
+      post({ type: 'pin-progress', index, count: scenarios.length, done: sim.done, total: sim.total });
+      await yieldToMessages();
+      if (me.cancelled) break;
+    }
+    if (me.cancelled) {
+      sim.free();
+      rejected.push({ scenario, message: 'cancelled' });
+      continue;
+    }
+    try {
+      comparison.adopt(sim); // takes the run; `sim` is spent
+    } catch (e) {
+      if (trapped(e)) return;
+      rejected.push({ scenario, message: String(e) });
+    }
+  }
+  if (pinning === me) pinning = null;
+  post(pinsMessage(rejected));
+}
+
+export function cancelPins() {
+  if (pinning) pinning.cancelled = true;
+}
+
+/** @param {P.UnpinRequest} request */
+export function unpin({ index }) {
+  comparison.unpin(index);
+  post(pinsMessage());
+}
+
+/**
+ * The overlay of the held run and the pins in one column.
+ * @param {P.OverlayRequest} request
+ */
+export function overlay({ id, column, t0, t1, buckets }) {
+  const me = held(id);
+  if (!me) return;
+  try {
+    const data = [...comparison.overlay(me.sim, column, t0, t1, buckets)];
+    post(
+      { type: 'overlay', id, column, data },
+      null,
+      data.map((a) => a.buffer),
+    );
+  } catch (e) {
+    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+  }
+}

@@ -1,0 +1,194 @@
+// The protocol between the page and the worker: every message, its fields and its reply, as
+// types the TypeScript compiler checks (`make test` runs `tsc` over the page and the worker).
+// The module holds no code: the page's clients (client/) and the worker (worker/) import its
+// types. Every number in a reply comes from the core; the worker only moves messages.
+//
+// Requests carry `id` (a run), `req` (a describe), `job` (a job) or `serial` (an export), and the
+// reply carries the same key back. Buffers of views, overlays and CSV chunks are transferred.
+export {};
+
+// ---------------------------------------------------------------------------------------------
+// What the worker sends back: the parts shared by several replies.
+
+/**
+ * The samples of one plot over a window: its times and, by column name, the recorded values
+ * (an M4 envelope: every point a recorded sample at its own time). The column
+ * 'lyapunov_bound' is the bound (59) evaluated by the core at the plot's times.
+ * @typedef {{t: Float64Array, columns: Record<string, Float64Array>}} PlotView
+ */
+
+/**
+ * The view of a set of plots over the window [t0, t1].
+ * @typedef {{t0: number, t1: number, plots: Record<string, PlotView>}} View
+ */
+
+/**
+ * The plots' columns, `{plotId: [column, ...]}`: each plot gets its own envelope.
+ * @typedef {Record<string, string[]>} Groups
+ */
+
+/**
+ * A scenario as the core describes it (the core's `describe`): its canonical text in `encoded`,
+ * its fields and the keys it changes of its preset; `rejected` lists the fields a `recover`
+ * dropped. The core's binding documents the other fields.
+ * @typedef {{encoded: string, rejected?: {key: string, message: string}[], [field: string]: any}} Info
+ */
+
+/**
+ * A figure of a finished run (the core's report).
+ * @typedef {{name: string, label: string, value: number, unit: string, [more: string]: any}} Figure
+ */
+
+// ---------------------------------------------------------------------------------------------
+// Page → worker.
+
+/** @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest */
+/**
+ * Starts run `id` (a new run ends the last). `overlay`, a column or null, is kept as the run goes
+ * for the overlay with the pins.
+ * @typedef {{type: 'run', id: number, scenario: string, groups: Groups, buckets: number, overlay: string | null}} RunRequest
+ */
+/** @typedef {{type: 'cancel', id: number}} CancelRequest */
+/**
+ * A view of run `id`'s plots `groups` over [t0, t1]; `set` names the page's plot set and comes back.
+ * @typedef {{type: 'view', id: number, set: string, groups: Groups, t0: number, t1: number, buckets: number}} ViewRequest
+ */
+/**
+ * Run `id`'s CSV, sent in chunks of rows: the page asks for each next chunk ('csv-next') once it
+ * has stored the last; 'csv-cancel' (or a new run) ends the export.
+ * @typedef {{type: 'csv', id: number, serial: number}} CsvRequest
+ * @typedef {{type: 'csv-next' | 'csv-cancel', serial: number}} CsvNextRequest
+ */
+/** @typedef {{type: 'inspect', id: number, t: number}} InspectRequest */
+/** Run `id`'s scenario with each EKF predictor, to the end. @typedef {{type: 'compare', id: number}} CompareRequest */
+/**
+ * Runs each scenario in time slices and pins it, keeping the overlay's `column`; 'pin-cancel'
+ * stops at the next slice.
+ * @typedef {{type: 'pin', scenarios: string[], column: string}} PinRequest
+ * @typedef {{type: 'pin-cancel'}} PinCancelRequest
+ * @typedef {{type: 'unpin', index: number}} UnpinRequest
+ */
+/**
+ * The overlay of run `id` and the pins in `column` over [t0, t1]. Every run keeps `column` from
+ * then on: the next overlay of it replays none.
+ * @typedef {{type: 'overlay', id: number, column: string, t0: number, t1: number, buckets: number}} OverlayRequest
+ */
+/**
+ * Run `id`'s measures for judging a challenge.
+ * @typedef {{type: 'challenge-measure', id: number}} MeasureRequest
+ */
+/**
+ * A stateless job (any worker of a pool can take it): `kind` names it, its fields follow.
+ * @typedef {{type: 'job', job: number} & JobRequest} JobMessage
+ */
+
+/**
+ * Every message the page sends.
+ * @typedef {DescribeRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
+ *   | InspectRequest | CompareRequest | PinRequest | PinCancelRequest | UnpinRequest | OverlayRequest
+ *   | MeasureRequest | JobMessage} ToWorker
+ */
+
+// ---------------------------------------------------------------------------------------------
+// The jobs: `kind`, the fields it needs, and its result.
+
+/**
+ * Every job, by kind: `req` its fields, `result` what it resolves with.
+ * - 'sweep': one point of a frequency sweep of `scenario` with `changes` ([key, value] pairs).
+ * - 'seed': `scenario` run with `seed`, its figures kept every `every` samples.
+ * - 'grid', 'seed-range': the core's log-spaced frequencies and seed list.
+ * - 'bands', 'summary', 'sweep-csv', 'seeds-csv': summaries and CSVs of finished points and runs.
+ * - 'map-plan': the model-error map `text` over `scenario` (its cells and seeds) and the figures
+ *   it keeps; 'map-run' one cell's scenario with one seed; 'map-cells' the cells of `runs`;
+ *   'map-csv' the map's CSV.
+ * - 'challenge': a challenge's description; 'challenge-submission' a submission link read
+ *   against it; 'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
+ *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
+ *   built-in challenges and the figures a criterion may name.
+ * @typedef {{
+ *   sweep: {req: {scenario: string, changes: [string, string][], freq: number, amp: number, duration: number, offset: number}, result: any},
+ *   seed: {req: {scenario: string, seed: number, every: number}, result: any},
+ *   grid: {req: {lo: number, hi: number, n: number}, result: number[]},
+ *   'seed-range': {req: {first: number, n: number}, result: number[]},
+ *   bands: {req: {runs: any[]}, result: any},
+ *   summary: {req: {points: any[]}, result: any},
+ *   'sweep-csv': {req: {points: any[]}, result: string},
+ *   'seeds-csv': {req: {results: any[]}, result: string},
+ *   'map-plan': {req: {scenario: string, text: string}, result: {map: any, figures: any[]}},
+ *   'map-run': {req: {scenario: string, seed: number}, result: any},
+ *   'map-cells': {req: {map: any, runs: any[]}, result: any[]},
+ *   'map-csv': {req: {map: any, cells: any[]}, result: string},
+ *   challenge: {req: {text: string}, result: any},
+ *   'challenge-submission': {req: {text: string, submission: string}, result: any},
+ *   'challenge-judge': {req: {text: string, runs: any[]}, result: any},
+ *   'challenge-run': {req: {scenario: string}, result: any},
+ *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},
+ *   'challenge-figures': {req: {}, result: {name: string, label: string, unit: string}[]},
+ * }} Jobs
+ */
+
+/**
+ * A job's request: its kind and fields.
+ * @typedef {{[K in keyof Jobs]: {kind: K} & Jobs[K]['req']}[keyof Jobs]} JobRequest
+ */
+
+// ---------------------------------------------------------------------------------------------
+// Worker → page.
+
+/**
+ * Unprompted, once the core is loaded: the presets and the NIS band of the EKF's consistency.
+ * @typedef {{type: 'ready', presets: any[], nisBand: any}} Ready
+ */
+/**
+ * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
+ * error. The worker never calls the core again; the page replaces it.
+ * @typedef {{type: 'crashed', message: string}} Crashed
+ */
+/** @typedef {{type: 'described', req: number, info: Info}} Described */
+/**
+ * A request the core refused: `req` for a describe, `id` for a run's request.
+ * @typedef {{type: 'invalid', req?: number, id?: number, message: string}} Invalid
+ */
+/** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
+/**
+ * Run `id` ended: `view` is the whole run's view of its `groups` (null when it recorded nothing),
+ * `failure` why it stopped early, and the core's report (figures, warnings, …).
+ * @typedef {{type: 'done', id: number, rows: number, failure: string | null, view: View | null,
+ *   computeMs: number, stability: any, figures: Figure[], unreached: any[], transient: any,
+ *   warnings: any[]}} Done
+ */
+/** @typedef {{type: 'cancelled', id: number}} Cancelled */
+/** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */
+/**
+ * One chunk of a CSV export (the chunks concatenate to the CSV; the last has rows === total).
+ * @typedef {{type: 'csv', serial: number, bytes: Uint8Array, rows: number, total: number}} CsvChunk
+ * @typedef {{type: 'csv-failed', serial: number, message: string}} CsvFailed
+ */
+/** @typedef {{type: 'inspected', id: number, t: number, snapshot: any}} Inspected */
+/**
+ * @typedef {{type: 'compared', id: number, results: {predictor: string, scenario: string, metrics: any}[]}} Compared
+ */
+/**
+ * @typedef {{type: 'pin-progress', index: number, count: number, done: number, total: number}} PinProgress
+ * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: {scenario: string, message: string}[]}} Pins
+ */
+/**
+ * The overlay's samples: times, the current run, each pin, then each pin's difference to the run.
+ * @typedef {{type: 'overlay', id: number, column: string, data: Float64Array[]}} OverlayReply
+ */
+/**
+ * `measures` is null when the worker no longer holds run `id`.
+ * @typedef {{type: 'challenge-measured', id: number, measures: any, error?: string}} Measured
+ */
+/** @typedef {{type: 'job', job: number, result?: any, error?: string}} JobReply */
+
+/**
+ * Every message the worker sends.
+ * @typedef {Ready | Crashed | Described | Invalid | Progress | Done | Cancelled | ViewReply | CsvChunk
+ *   | CsvFailed | Inspected | Compared | PinProgress | Pins | OverlayReply | Measured | JobReply} FromWorker
+ */
+
+/**
+ * The page's handlers of the messages no request waits on, by type.
+ * @typedef {{[T in FromWorker['type']]?: (data: Extract<FromWorker, {type: T}>) => void}} Handlers
+ */
