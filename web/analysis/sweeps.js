@@ -1,15 +1,14 @@
-// The Analysis tab's runs: frequency-response sweeps and seed runs from their forms, their
-// progress and status lines, and their CSV downloads. A link's sweep (`#sweep=`) runs once.
-import { $, say } from '../ui/page.js';
+// The Analysis tab's frequency-response sweeps from their form, their progress and status line,
+// and their CSV download; the seed runs beside them (seeds.js). A link's sweep (`#sweep=`) runs once.
+import { $ } from '../ui/page.js';
 import { formatSweep, isCount, parseSweep } from './analysis.js';
-import { fieldValue } from '../run/controls.js';
 import { download } from '../run/export.js';
-import { excerpt, fragment, setFragment } from '../ui/url.js';
+import { setFragment } from '../ui/url.js';
+import { runFromLink } from './from-link.js';
+import { createSeeds } from './seeds.js';
 
 /** `analysis` runs the jobs and draws their results; `showTab(name)` opens a tab. */
 export function createSweeps({ state, analysis, framing, showTab }) {
-  let shared = fragment('sweep'); // from the link that opened the page
-  let seedsCsv = null; // the last seed runs' CSV
   const sweepForm = $('sweep-form');
   sweepForm.elements.namedItem('workers').value = analysis.pool.size;
 
@@ -78,52 +77,14 @@ export function createSweeps({ state, analysis, framing, showTab }) {
     }
   }
 
-  async function runSeeds() {
-    const n = Number($('seeds-form').elements.namedItem('n').value);
-    const status = $('seeds-status');
-    if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
-      status.textContent = `seeds = ${$('seeds-form').elements.namedItem('n').value}: expected a whole number from 1 to 1000.`;
-      return;
-    }
-    status.textContent = 'Running seeds…';
-    const progress = $('seeds-progress');
-    progress.value = 0;
-    $('seeds-cancel').disabled = false;
-    document.body.dataset.seeds = 'running';
-    try {
-      const first = Number(fieldValue(state.info, 'seed'));
-      const out = await analysis.seeds(n, first, state.info.steps, (p) => {
-        progress.value = p;
-        status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`;
-      });
-      analysis.showSeeds(out, $('seeds-plots'), framing);
-      seedsCsv = out.csv;
-      $('seeds-csv').disabled = false;
-      status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
-      document.body.dataset.seeds = 'done';
-    } catch (e) {
-      const cancelled = e.message === 'cancelled';
-      status.textContent = cancelled ? 'Seed runs cancelled.' : `Seed sweep failed: ${e.message}`;
-      document.body.dataset.seeds = cancelled ? 'cancelled' : 'failed';
-    } finally {
-      $('seeds-cancel').disabled = true;
-    }
-  }
-
   /** After a run: a shared link with a sweep in its fragment runs that sweep, once. */
-  function afterRun() {
-    const sweep = shared;
-    shared = null;
-    if (sweep) {
-      try {
-        fillSweepForm(parseSweep(sweep));
-        showTab('analysis');
-        runSweep();
-      } catch (e) {
-        say(`The sweep in the address (#sweep=${excerpt(sweep)}) was not run: ${e.message}.`);
-      }
-    }
-  }
+  const afterRun = runFromLink({
+    name: 'sweep',
+    what: 'sweep',
+    fill: (text) => fillSweepForm(parseSweep(text)),
+    run: runSweep,
+    showTab,
+  });
 
   $('sweep-run').addEventListener('click', runSweep);
   $('sweep-cancel').addEventListener('click', () => analysis.pool.cancel());
@@ -131,11 +92,7 @@ export function createSweeps({ state, analysis, framing, showTab }) {
     const first = Object.keys(analysis.points)[0];
     download(new Blob([await analysis.sweepCsv(first)], { type: 'text/csv' }), `imlab-sweep-${first}.csv`);
   });
-  $('seeds-run').addEventListener('click', runSeeds);
-  $('seeds-cancel').addEventListener('click', () => analysis.pool.cancel());
-  $('seeds-csv').addEventListener('click', () =>
-    download(new Blob([seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'),
-  );
+  createSeeds({ state, analysis, framing });
 
   return { afterRun };
 }

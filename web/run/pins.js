@@ -11,6 +11,58 @@ const MAX_PINS_CHARS = 65_536;
 // extra one is named.
 const MAX_PINS_SENT = 5;
 
+const COLOURS = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
+
+/**
+ * One overlay chart `width` px wide: `series` against the times `t`, named `names`. The current
+ * run, first when it is drawn, is black; each pin keeps its colour in both charts.
+ */
+function overlayChart(title, names, t, series, width) {
+  const div = Object.assign(document.createElement('div'), { className: 'plot' });
+  const opts = {
+    title,
+    width,
+    height: 220,
+    scales: { x: { time: false } },
+    series: [
+      { label: 't (s)' },
+      ...names.map((name, i) => ({
+        label: name,
+        stroke: COLOURS[(i + (names[0] === 'current' ? 0 : 1)) % COLOURS.length],
+        width: 2,
+      })),
+    ],
+    axes: [{ label: 't (s)' }, { size: 80 }],
+  };
+  new uPlot(opts, [t, ...series], div);
+  return div;
+}
+
+/**
+ * The pins of a link's fragment `shared` that are sent to the worker: none if the fragment is too
+ * long, and no more than the core can take; each one left out is said.
+ */
+function pinsFromLink(shared) {
+  if (shared.length > MAX_PINS_CHARS) {
+    say(
+      `The pins in the address were not run: ${shared.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`,
+    );
+    setFragment('pins', null);
+    return null;
+  }
+  const { scenarios, malformed } = decodePins(shared);
+  if (malformed.length)
+    say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
+  // The core pins a few runs at most and names the rest; no more are sent than it can take.
+  const sent = scenarios.slice(0, MAX_PINS_SENT);
+  const dropped = scenarios.length - sent.length;
+  if (dropped > 0)
+    say(
+      `Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`,
+    );
+  return sent;
+}
+
 export function createPins({ client, state, plots }) {
   let shared = fragment('pins'); // from the link that opened the page
 
@@ -50,58 +102,31 @@ export function createPins({ client, state, plots }) {
   function drawOverlay(column, data) {
     window.imlab.overlay = { column, data };
     const n = state.pins.length;
-    const colors = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
     const label = $('overlay-column').selectedOptions[0].textContent;
-    const chart = (title, names, series) => {
-      const div = Object.assign(document.createElement('div'), { className: 'plot' });
-      const opts = {
-        title,
-        width: plots.width(),
-        height: 220,
-        scales: { x: { time: false } },
-        series: [
-          { label: 't (s)' },
-          ...names.map((name, i) => ({
-            label: name,
-            stroke: colors[(i + (names[0] === 'current' ? 0 : 1)) % colors.length],
-            width: 2,
-          })),
-        ],
-        axes: [{ label: 't (s)' }, { size: 80 }],
-      };
-      new uPlot(opts, [data[0], ...series], div);
-      return div;
-    };
     const pinNames = state.pins.map((_, i) => `pin ${i + 1}`);
     $('overlay-plots').replaceChildren(
-      chart(`${label}: current run and pinned runs`, ['current', ...pinNames], data.slice(1, 2 + n)),
-      chart(
+      overlayChart(
+        `${label}: current run and pinned runs`,
+        ['current', ...pinNames],
+        data[0],
+        data.slice(1, 2 + n),
+        plots.width(),
+      ),
+      overlayChart(
         `${label}: current − pin`,
         pinNames.map((p) => `current − ${p}`),
+        data[0],
         data.slice(2 + n),
+        plots.width(),
       ),
     );
   }
 
   /** After a run: pins from a shared link are re-run once; afterwards each run refreshes the comparison. */
   function afterRun() {
-    if (shared && shared.length > MAX_PINS_CHARS) {
-      say(
-        `The pins in the address were not run: ${shared.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`,
-      );
-      setFragment('pins', null);
-    } else if (shared) {
-      const { scenarios, malformed } = decodePins(shared);
-      if (malformed.length)
-        say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
-      // The core pins a few runs at most and names the rest; no more are sent than it can take.
-      const sent = scenarios.slice(0, MAX_PINS_SENT);
-      const dropped = scenarios.length - sent.length;
-      if (dropped > 0)
-        say(
-          `Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`,
-        );
-      client.post({ type: 'pin', scenarios: sent, column: $('overlay-column').value });
+    if (shared) {
+      const sent = pinsFromLink(shared);
+      if (sent) client.post({ type: 'pin', scenarios: sent, column: $('overlay-column').value });
     } else if (state.pins.length) {
       client.post({ type: 'pin', scenarios: [], column: $('overlay-column').value });
     }

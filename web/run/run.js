@@ -18,6 +18,36 @@ const painted = () =>
     setTimeout(resolve, 1000);
   });
 
+/** Names the run's start-up transient (null if it has none) beside the switch that fits the y-axes after it. */
+function showTransient(transient) {
+  ui.fitLabel.textContent = transient
+    ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
+    : 'Fit y-axes after the start-up transient';
+  ui.fitLabel.title = transient?.reason ?? '';
+  $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
+}
+
+/**
+ * Says how a run of `rows` samples, done in `ms`, ended: stopped early (`failure`), ran away (one
+ * of its `warnings`), or done; in the status line and the page's state.
+ */
+function reportEnd(failure, warnings, rows, ms) {
+  const ranAway = warnings.find((w) => w.kind === 'runaway');
+  if (failure) {
+    say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
+    ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
+    document.body.dataset.state = 'failed';
+  } else if (ranAway) {
+    // The simulation completed, but as a control run it failed: say so before any figure.
+    say(`${ranAway.text} The plots show what the motor did.`);
+    ui.status.textContent = `Ran away: ${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+    document.body.dataset.state = 'failed';
+  } else {
+    ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+    document.body.dataset.state = 'done';
+  }
+}
+
 /**
  * The run, started with `start()` and followed through the worker's messages (`handlers`).
  * `figuresView` shows the run's figures, `exporter` is the CSV export a new run ends, `fitEmbed()`
@@ -117,11 +147,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       state.transient = transient;
       state.figures = figures;
       state.unreached = unreached;
-      ui.fitLabel.textContent = transient
-        ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
-        : 'Fit y-axes after the start-up transient';
-      ui.fitLabel.title = transient?.reason ?? '';
-      $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
+      showTransient(transient);
       figuresView.show(figures, warnings, unreached);
       if (view) {
         state.shownRun = id;
@@ -145,20 +171,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
         run: id,
       });
       ui.csv.disabled = ui.png.disabled = rows === 0;
-      const ranAway = warnings.find((w) => w.kind === 'runaway');
-      if (failure) {
-        say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
-        ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
-        document.body.dataset.state = 'failed';
-      } else if (ranAway) {
-        // The simulation completed, but as a control run it failed: say so before any figure.
-        say(`${ranAway.text} The plots show what the motor did.`);
-        ui.status.textContent = `Ran away: ${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
-        document.body.dataset.state = 'failed';
-      } else {
-        ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
-        document.body.dataset.state = 'done';
-      }
+      reportEnd(failure, warnings, rows, ms);
       afterRun();
     },
     cancelled({ id }) {

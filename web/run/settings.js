@@ -2,17 +2,42 @@
 // lesson), checking each edit of the form or of a walkthrough knob with the core, the preset
 // picker, and Run.
 import { $, say, ui } from '../ui/page.js';
-import { composeScenario, fieldControl, forwardKnob, markInvalid, renderFields } from './controls.js';
+import { composeScenario, forwardKnob, markInvalid, renderFields } from './controls.js';
 import { WorkerFailed } from '../client/run-client.js';
 import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
-
-// Keys that move through the preset list without choosing; Enter (also from the open list) chooses.
-const BROWSE = new Set(['ArrowUp', 'ArrowDown', 'ArrowLeft', 'ArrowRight', 'Home', 'End', 'PageUp', 'PageDown']);
+import { listPresets, pickPresets } from './preset-picker.js';
+import { followKnobs, knobMaker } from './knobs.js';
 
 function syncControl(control, value) {
   if (!control || control === document.activeElement) return;
   if (control.type === 'checkbox') control.checked = value === '1';
   else control.value = value;
+}
+
+/**
+ * The core's description of `text`, else of its valid fields, else of the default; says which
+ * (`state.notice` when all of it is valid).
+ */
+async function describeLoaded(client, state, text) {
+  try {
+    const info = await client.describe(text);
+    say(state.notice ?? '', 'info');
+    return info;
+  } catch (e) {
+    if (e instanceof WorkerFailed) throw e;
+    try {
+      // Keep what is valid; name every field that was left out.
+      const info = await client.describe(text, 'recover');
+      say(
+        `Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`,
+      );
+      return info;
+    } catch (again) {
+      if (again instanceof WorkerFailed) throw again;
+      say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
+      return client.describe(DEFAULT_SCENARIO);
+    }
+  }
 }
 
 /**
@@ -34,22 +59,7 @@ export function createSettings({
   let presets = []; // the core's presets: {name, description}
   let composed = null; // the scenario the form held when last checked
   let checking = Promise.resolve(true); // that check: whether the core accepted it
-  let knobTimer = null; // a pause in typing in a knob, after which it is checked
-  const knobIds = new Map(); // walkthrough knobs given out per field, for unique ids
-  let presetPending = false; // the picker moved by keyboard, not yet committed
-  // A preset chosen with the mouse runs at once; one reached with the arrow keys runs when it is
-  // committed (Enter, or leaving the picker), so stepping through the list starts no runs.
-  let presetByKeyboard = false;
-
-  // A field can be a knob in several sections: the first is `knob-KEY`, later ones
-  // `knob-KEY-2`, ... (ids stay unique; the ids given out are counted per description).
-  function knob(key) {
-    const f = state.info?.fields.find((x) => x.key === key && x.value !== null && x.acts);
-    if (!f) return null;
-    const n = (knobIds.get(key) ?? 0) + 1;
-    knobIds.set(key, n);
-    return fieldControl(f, n === 1 ? 'knob' : `knob${n}`);
-  }
+  const knobs = knobMaker(state); // the walkthrough's knobs, with unique ids
 
   function applyDescription(info) {
     const shown = (i) =>
@@ -61,7 +71,7 @@ export function createSettings({
     const keysAfter = shown(info);
     const presetChanged = ui.preset.value !== presetNamed(info.encoded);
     state.info = info;
-    knobIds.clear();
+    knobs.reset();
     if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
     else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
     walkthrough.describe(info);
@@ -82,7 +92,7 @@ export function createSettings({
   async function load(text, { run = true } = {}) {
     let info;
     try {
-      info = await describeLoaded(text);
+      info = await describeLoaded(client, state, text);
     } catch (e) {
       if (e instanceof WorkerFailed) return;
       throw e;
@@ -90,31 +100,6 @@ export function createSettings({
     applyDescription(info);
     showScenario(info.encoded);
     if (run) startRun();
-  }
-
-  /** The core's description of `text`, else of its valid fields, else of the default; says which. */
-  async function describeLoaded(text) {
-    try {
-      const info = await client.describe(text);
-      say(state.notice ?? '', 'info');
-      return info;
-    } catch (e) {
-      if (e instanceof WorkerFailed) throw e;
-      try {
-        // Keep what is valid; name every field that was left out.
-        const info = await client.describe(text, 'recover');
-        say(
-          `Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`,
-        );
-        return info;
-      } catch (again) {
-        if (again instanceof WorkerFailed) throw again;
-        say(
-          `The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`,
-        );
-        return client.describe(DEFAULT_SCENARIO);
-      }
-    }
   }
 
   /** Checks the form's scenario with the core; resolves with whether it is valid. An invalid value
@@ -151,7 +136,6 @@ export function createSettings({
 
   /** A walkthrough knob was edited: check it and re-run, so its section's plots follow. */
   async function knobChanged(control) {
-    clearTimeout(knobTimer);
     forwardKnob(ui.form, control);
     if (await formChanged()) startRun();
   }
@@ -163,23 +147,7 @@ export function createSettings({
     if (!ui.run.disabled) startRun();
   }
 
-  function commitPreset() {
-    presetPending = false;
-    load(`v=1&preset=${ui.preset.value}`);
-  }
-
-  ui.preset.addEventListener('keydown', (e) => {
-    presetByKeyboard = BROWSE.has(e.key) || e.key.length === 1;
-    if (e.key === 'Enter' && presetPending) commitPreset();
-  });
-  ui.preset.addEventListener('pointerdown', () => {
-    presetByKeyboard = false;
-  });
-  ui.preset.addEventListener('change', () => {
-    presetPending = true;
-    if (!presetByKeyboard) commitPreset();
-  });
-  ui.preset.addEventListener('blur', () => presetPending && commitPreset());
+  pickPresets(ui.preset, (name) => load(`v=1&preset=${name}`));
   ui.form.addEventListener('change', formChanged);
   // Enter in a settings field runs the scenario (a form of many fields and no submit button has no
   // implicit submission, so Enter is taken here).
@@ -193,19 +161,7 @@ export function createSettings({
     runForm();
   });
   // A walkthrough knob re-runs on change, on Enter, or after a pause in typing.
-  const walk = $('walkthrough');
-  walk.addEventListener('change', (e) => e.target.closest('.knobs') && knobChanged(e.target));
-  walk.addEventListener('keydown', (e) => {
-    if (e.key === 'Enter' && e.target.closest('.knobs')) {
-      e.preventDefault();
-      knobChanged(e.target);
-    }
-  });
-  walk.addEventListener('input', (e) => {
-    if (!e.target.closest('.knobs') || e.target.type === 'checkbox') return;
-    clearTimeout(knobTimer);
-    knobTimer = setTimeout(() => knobChanged(e.target), 800);
-  });
+  followKnobs($('walkthrough'), knobChanged);
   ui.run.addEventListener('click', runForm);
 
   const handlers = {
@@ -215,12 +171,11 @@ export function createSettings({
       if (!presets.length) {
         presets = offered;
         state.nisBand = nisBand;
-        for (const p of presets)
-          ui.preset.append(Object.assign(document.createElement('option'), { value: p.name, textContent: p.name }));
+        listPresets(ui.preset, presets);
       }
       if (state.info === null) Promise.resolve(first()).then((text) => load(text));
     },
   };
 
-  return { load, knob, handlers };
+  return { load, knob: knobs.knob, handlers };
 }

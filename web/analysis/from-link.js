@@ -1,0 +1,26 @@
+// A tool of the Analysis tab that a shared link holds in its fragment runs once, after the page's
+// first run.
+import { say } from '../ui/page.js';
+import { excerpt, fragment } from '../ui/url.js';
+
+/**
+ * Reads the fragment `name` now and returns `afterRun()`: the first call fills the tool's form from
+ * it (`fill(text)`, which throws on text it cannot take), opens the Analysis tab with
+ * `showTab(name)` and starts `run()`; a refused text is said, naming the tool as `what`. Later
+ * calls do nothing.
+ */
+export function runFromLink({ name, what, fill, run, showTab }) {
+  let shared = fragment(name); // from the link that opened the page
+  return function afterRun() {
+    const text = shared;
+    shared = null;
+    if (!text) return;
+    try {
+      fill(text);
+      showTab('analysis');
+      run();
+    } catch (e) {
+      say(`The ${what} in the address (#${name}=${excerpt(text)}) was not run: ${e.message}.`);
+    }
+  };
+}

@@ -1,0 +1,50 @@
+// The model-error map over one axis as a plot: the median of the chosen figure over the seeds and
+// its min–max band, with the cells where a seed ran away left out and named below.
+import uPlot from '../../vendor/uPlot.esm.js';
+import { el } from '../ui/dom.js';
+import { fmt } from './map-colours.js';
+
+/** Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out. */
+export function bandPlot(box, view) {
+  const { axes, axisValue, axisName, byIndex, k, figure } = view;
+  const clean = (cell) => cell && cell.ran_away === 0;
+  // The band and median over the seeds of the cells where no seed ran away; the others are
+  // gaps, marked below the plot and in the table, never drawn as values.
+  const x = axes[0].values.map((_, i) => axisValue(0, i));
+  const series = [0, 1, 2].map((s) =>
+    axes[0].values.map((_, i) =>
+      clean(byIndex[i]) && Number.isFinite(byIndex[i].stats[k][s]) ? byIndex[i].stats[k][s] : null,
+    ),
+  );
+  const width = Math.max(320, box.clientWidth - 10);
+  const opts = {
+    title: `${figure.label} over the seeds: median, and min–max band`,
+    width,
+    height: 280,
+    scales: { x: { time: false } },
+    series: [
+      { label: axisName(0) },
+      { label: 'min', stroke: '#6baed6', width: 1 },
+      { label: 'median', stroke: '#08519c', width: 2, points: { show: true } },
+      { label: 'max', stroke: '#6baed6', width: 1 },
+    ],
+    bands: [{ series: [3, 1], fill: 'rgba(107,174,214,0.25)' }],
+    axes: [{ label: axisName(0) }, { label: figure.unit || figure.label, size: 70 }],
+  };
+  const div = el('div', { className: 'plot' });
+  box.append(div);
+  new uPlot(opts, [x, series[0], series[1], series[2]], div);
+  const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
+  if (gaps.length) {
+    const percent = axes[0].relative ? ' %' : '';
+    const named = gaps.map(
+      (i) => `${fmt(axisValue(0, i))}${percent} (${byIndex[i].ran_away} of ${byIndex[i].runs} seeds)`,
+    );
+    box.append(
+      el('p', {
+        className: 'map-gaps',
+        textContent: `Not drawn, because some seeds ran away there: ${named.join(', ')}.`,
+      }),
+    );
+  }
+}

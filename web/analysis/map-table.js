@@ -1,0 +1,84 @@
+// The model-error map as a table of buttons, coloured by the chosen figure's median over the
+// seeds; a click opens the cell's run. One axis is a column (a row a value, with the range over
+// the seeds); two are a grid.
+import { el } from '../ui/dom.js';
+import { colourScale, fmt } from './map-colours.js';
+
+/** The cell of one map cell: a button that opens its run, or 'not run'. */
+function cellOf(cell, view, scale, open) {
+  const { k, figure, median } = view;
+  const td = el('td');
+  if (!cell) {
+    td.textContent = 'not run';
+    td.className = 'map-missing';
+    return td;
+  }
+  const lines = [cell.ran_away > 0 ? `✕ ${cell.ran_away}/${cell.runs}` : fmt(median(cell))];
+  if (cell.inconsistent > 0) lines.push(`⚠ ${cell.inconsistent}/${cell.runs}`);
+  const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
+  button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent; ${figure.label} ${fmt(cell.stats[k][0])} to ${fmt(cell.stats[k][2])}`;
+  if (cell.ran_away > 0) button.classList.add('map-ran-away');
+  else if (Number.isFinite(median(cell))) {
+    // A cell whose runs lack the figure (the IFOC has no NIS) stays uncoloured, shown as —.
+    const [colour, light] = scale.of(median(cell));
+    Object.assign(button.style, { background: colour, color: light ? '#fff' : '#000' });
+  }
+  button.addEventListener('click', () => open(cell.scenario));
+  td.append(button);
+  return td;
+}
+
+/** The rows of a two-axis map: the first axis down, the second across. */
+function gridRows(view, cell) {
+  const { axes, axisValue, axisName, byIndex } = view;
+  const [rows, cols] = [axes[0].values.length, axes[1].values.length];
+  const head = el('tr', {}, [el('th', { scope: 'col', textContent: `${axisName(0)} ↓ / ${axisName(1)} →` })]);
+  for (let j = 0; j < cols; j++) head.append(el('th', { scope: 'col', textContent: fmt(axisValue(1, j)) }));
+  const trs = [head];
+  for (let i = 0; i < rows; i++) {
+    const tr = el('tr', {}, [el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) })]);
+    for (let j = 0; j < cols; j++) tr.append(cell(byIndex[i * cols + j]));
+    trs.push(tr);
+  }
+  return trs;
+}
+
+/** The rows of a one-axis map: a value a row, its cell and its range over the seeds. */
+function columnRows(view, cell) {
+  const { axes, axisValue, axisName, byIndex, k } = view;
+  const head = el(
+    'tr',
+    {},
+    [axisName(0), 'median', 'min – max'].map((h) => el('th', { scope: 'col', textContent: h })),
+  );
+  return [
+    head,
+    ...axes[0].values.map((_, i) => {
+      const c = byIndex[i];
+      const range = c && c.ran_away === 0 ? `${fmt(c.stats[k][0])} – ${fmt(c.stats[k][2])}` : '';
+      return el('tr', {}, [
+        el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }),
+        cell(c),
+        el('td', { className: 'map-range', textContent: range }),
+      ]);
+    }),
+  ];
+}
+
+/** The table of `view` (see `mapView`) and its key; `open(scenario)` runs a cell's scenario. */
+export function mapTable(view, open) {
+  const { figure, median, seeds } = view;
+  const values = view.byIndex.filter((cell) => cell && cell.ran_away === 0).map(median);
+  const scale = colourScale(values);
+  const cell = (c) => cellOf(c, view, scale, open);
+  const t = el(
+    'table',
+    { className: 'map-table' },
+    view.axes.length === 2 ? gridRows(view, cell) : columnRows(view, cell),
+  );
+  const key = el('p', {
+    className: 'map-key',
+    textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent. Click a cell to run it (seed ${seeds[0]}).`,
+  });
+  return el('div', {}, [key, t]);
+}

@@ -1,0 +1,90 @@
+// A chart's uPlot options: its series in the plots' colours, its axes and their ranges, and the
+// hooks that tie it to its set (zoom, inspect, double-click for the whole run).
+import { STYLE, CONSTANT } from './style.js';
+import { STEPS, six, tickLabels, timeSpace } from './numbers.js';
+import { fittedRange, logRange } from './ranges.js';
+import { drawMarker, pickOnClick } from './inspect.js';
+
+const SYNC_KEY = 'imlab-time';
+
+/** The legend's series of `plot`: time, its signals, then its constant lines. */
+function seriesOf(plot, lineWidth) {
+  const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
+  for (const [column, label, axis] of plot.series) {
+    const style = STYLE[column] ?? { stroke: '#444' };
+    series.push({
+      label,
+      scale: axis === 'y2' ? 'y2' : 'y',
+      stroke: style.stroke,
+      dash: style.dash,
+      width: lineWidth,
+      value: (u, v) => six(v),
+    });
+  }
+  for (const [label, axis] of plot.constants ?? []) {
+    series.push({ label, scale: axis ?? 'y', ...CONSTANT, width: lineWidth, value: (u, v) => six(v) });
+  }
+  return series;
+}
+
+/** The time axis, the left y-axis and, for a plot with `unit2`, the right one; `k` scales the text. */
+function axesOf(plot, k) {
+  const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
+  const axes = [
+    { label: 't (s)', ...font, size: 50 * k, space: timeSpace(14 * k, 50 * k), incrs: STEPS, values: tickLabels },
+    {
+      label: plot.unit,
+      scale: 'y',
+      ...font,
+      size: 80 * k,
+      ...(plot.log ? {} : { incrs: STEPS }),
+      values: tickLabels,
+    },
+  ];
+  if (plot.unit2)
+    axes.push({
+      label: plot.unit2,
+      scale: 'y2',
+      side: 1,
+      grid: { show: false },
+      ...font,
+      size: 80 * k,
+      incrs: STEPS,
+      values: tickLabels,
+    });
+  return axes;
+}
+
+/** The options of the chart of `plot` in the set `set` (a Plots), `width` px wide. */
+export function chartOptions(set, plot, width) {
+  const range = (u, min, max, key) => fittedRange(u, key, !!plot.unit2, set.framing());
+  const scales = {
+    // While zoomed, new data keeps the window; otherwise the axis spans the data.
+    x: { time: false, auto: () => set.window === null },
+    y: plot.log ? { distr: 3, log: 10, range: logRange } : { range },
+  };
+  if (plot.unit2) scales.y2 = { range };
+  return {
+    title: set.title(plot),
+    width,
+    height: set.height,
+    scales,
+    series: seriesOf(plot, set.scale),
+    axes: axesOf(plot, set.scale),
+    cursor: {
+      sync: { key: SYNC_KEY, setSeries: false },
+      drag: { x: true, y: false },
+      bind: {
+        dblclick: () => () => {
+          set.onFull();
+          return null;
+        },
+      },
+    },
+    hooks: {
+      setScale: [(u, key) => key === 'x' && set.zoomed(u)],
+      ready: [(u) => pickOnClick(set, u)],
+      draw: [(u) => drawMarker(set, u)],
+    },
+  };
+}

@@ -1,0 +1,61 @@
+// What a run's results say in the walkthrough: the stability report (V against its bound) and the
+// table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
+import { el } from '../ui/dom.js';
+import { STABILITY_CAUSES } from './teaching.js';
+
+/** The stability report `st` of a run, in words. */
+export function stabilityText(st) {
+  if (!st) return 'Nothing was recorded.';
+  const b = st.bound;
+  const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
+  if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
+  const why = STABILITY_CAUSES[st.cause];
+  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(st.first_outside.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
+}
+
+/** The runs of one scenario with each predictor (`results`), as a sentence and a table. */
+export function comparison(results) {
+  const rows = [
+    [
+      'predictor',
+      'tracking RMS (rad/s)',
+      'speed-estimate RMS (rad/s)',
+      'flux-estimate RMS (Wb)',
+      'mean NIS',
+      'saturated',
+    ],
+  ];
+  for (const r of results) {
+    const m = r.metrics;
+    rows.push([
+      r.predictor,
+      m.tracking_rms.toPrecision(3),
+      m.speed_estimate_rms.toPrecision(3),
+      m.flux_estimate_rms.toPrecision(3),
+      m.mean_nis.toPrecision(3),
+      `${m.saturated.toPrecision(3)} of samples`,
+    ]);
+  }
+  // The first row names the columns, the first column the predictor.
+  const cell = (text, i, j) =>
+    i === 0 || j === 0
+      ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text })
+      : el('td', { textContent: text });
+  const table = el(
+    'table',
+    {},
+    rows.map((r, i) =>
+      el(
+        'tr',
+        {},
+        r.map((c, j) => cell(c, i, j)),
+      ),
+    ),
+  );
+  return [
+    el('p', {
+      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
+    }),
+    table,
+  ];
+}

@@ -1,0 +1,122 @@
+// The walkthrough's sections as the page shows them: each one's prose, equations, knobs and plots,
+// the lumped-parameter table, and the note that the IFOC baseline drives the motor.
+import { el } from '../ui/dom.js';
+import { SECTIONS } from './teaching.js';
+import { laterTex } from './tex.js';
+import { scrollBox } from './layout.js';
+
+// Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
+const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
+
+/** Plot definitions of every section, each drawn inside its section (`sectionDivs`, by id). */
+export function plotDefs(sectionDivs) {
+  const defs = [];
+  for (const s of SECTIONS) {
+    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6].filter(Boolean)) {
+      const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
+      defs.push({
+        ...plot,
+        id: `${s.id}-${defs.length}`,
+        constants,
+        container: sectionDivs[s.id],
+        backstepping: BACKSTEPPING.has(s.id),
+      });
+    }
+  }
+  return defs;
+}
+
+/**
+ * Section `s` of SECTIONS: its prose, equations (typeset later), the boxes its results fill, its
+ * knobs and the box its plots go in. `onCompare()` asks for the Euler/RK4 comparison. Returns
+ * [the section, the box for its plots].
+ */
+export function sectionElement(s, onCompare) {
+  const div = el('section', { className: 'step', id: `section-${s.id}` });
+  div.append(el('h2', { textContent: s.title }));
+  for (const p of s.prose) div.append(el('p', { textContent: p }));
+  s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
+  if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
+  if (s.lumped)
+    div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
+  if (s.stability)
+    div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
+  if (s.compare) {
+    const button = el('button', {
+      type: 'button',
+      className: 'compare',
+      textContent: 'Compare Euler and RK4 predictors on this scenario',
+    });
+    button.addEventListener('click', onCompare);
+    div.append(button, scrollBox(el('div', { className: 'compare-result' }), 'Euler and RK4 predictors compared'));
+  }
+  const knobs = el('div', { className: 'knobs' });
+  knobs.dataset.keys = s.knobs.join(' ');
+  div.append(el('h3', { textContent: 'Design knobs' }), knobs);
+  const plots = el('div', { className: 'section-plots' });
+  div.append(plots);
+  return [div, plots];
+}
+
+/** Shows, atop `container`, that the IFOC baseline drives the motor when `ifoc`; removes it otherwise. */
+export function ifocNote(container, ifoc) {
+  let note = container.querySelector('.ifoc-note');
+  if (ifoc && !note) {
+    note = el('p', {
+      className: 'ifoc-note',
+      textContent:
+        'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.',
+    });
+    container.prepend(note);
+  } else if (!ifoc && note) note.remove();
+}
+
+/**
+ * Fills each section's knobs in `container` with `knob(key)`, the settings control of a field.
+ * Knobs are rebuilt only when the set of fields that act changes, so an edit keeps its focus and
+ * the section does not move; otherwise they take the new values and lose their error marks.
+ */
+export function syncKnobs(container, knob) {
+  for (const box of container.querySelectorAll('.knobs')) {
+    const knobs = box.dataset.keys
+      .split(' ')
+      .map((key) => knob(key))
+      .filter(Boolean);
+    const names = (labels) => labels.map((l) => l.querySelector('input, select').name).join();
+    const shown = [...box.querySelectorAll('label.field')];
+    if (names(knobs) !== names(shown)) {
+      box.replaceChildren(...knobs);
+      continue;
+    }
+    knobs.forEach((fresh, i) => {
+      const [now, value] = [shown[i].querySelector('input, select'), fresh.querySelector('input, select')];
+      now.classList.remove('invalid');
+      shown[i].querySelector('.knob-error')?.remove();
+      if (now === document.activeElement) return;
+      if (now.type === 'checkbox') now.checked = value.checked;
+      else now.value = value.value;
+    });
+  }
+}
+
+const LUMPED = ['a1', 'a2', 'a3', 'a5', 'a6', 'a7', 'a8', 'a9', 'a10', 'b'];
+
+/** The lumped parameters of the plant and the model (`info`, the core's description), those that differ marked. */
+export function lumpedTable(info) {
+  const table = el('table', {}, [
+    el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))]),
+  ]);
+  for (const which of ['plant', 'model']) {
+    table.append(
+      el('tr', {}, [
+        el('th', { scope: 'row', textContent: which }),
+        ...LUMPED.map((k) => {
+          const cell = el('td', { textContent: info[which][k].toPrecision(5) });
+          if (info.plant[k] !== info.model[k]) cell.className = 'differs';
+          return cell;
+        }),
+      ]),
+    );
+  }
+  return table;
+}
