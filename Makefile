@@ -34,6 +34,8 @@ serve: dist
 test: dist
 	node_modules/.bin/prettier --check --log-level=warn .
 	node_modules/.bin/eslint --max-warnings=0 .
+	node_modules/.bin/tsc -p tsconfig.json
+	node_modules/.bin/tsc -p web/worker/tsconfig.json
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --release -- -D warnings
 	cargo clippy --lib --target wasm32-unknown-unknown --no-default-features -- -D warnings

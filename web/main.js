@@ -21,6 +21,7 @@ import { wireShare } from './ui/share.js';
 import { createSweeps } from './analysis/sweeps.js';
 import { createRobust } from './analysis/robust.js';
 import { createChallenge } from './challenge/challenge.js';
+import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
 
 // What the page's parts share; in brackets, the parts that write each field.
@@ -186,7 +187,7 @@ window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
-challenge.listBuiltins($('challenges'));
+listBuiltins(client, $('challenges'));
 // While the worker loads the core, the main plots are laid out, empty, and their drawing code is
 // compiled.
 plots.prepare();

@@ -4,6 +4,7 @@ import uPlot from '../../vendor/uPlot.esm.js';
 import { excerpt } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
+import { fittedRange } from '../plots/ranges.js';
 
 // Variants offered for the sweep: the field changes that make each from the current scenario.
 export const VARIANTS = {
@@ -107,8 +108,10 @@ export function formatSweep(s) {
 /**
  * Bode plot of `series` ([label, color, values, dash, unsettled]); a series of unsettled points
  * is drawn as hollow markers without a line.
+ * @returns {[uPlot.Options, uPlot.AlignedData]}
  */
 function bodePlot(title, unit, freqs, series, width, marker) {
+  /** @type {uPlot.Options} */
   const opts = {
     title,
     width,
@@ -159,7 +162,11 @@ export class Analysis {
     this.points = {};
   }
 
-  /** Runs a sweep of the current scenario; resolves with {variant: {points, summary}}. */
+  /**
+   * Runs a sweep of the current scenario; resolves with {variant: {points, summary}}.
+   * @param {any} settings
+   * @param {{onProgress?: (share: number) => void, workers?: number}} [options]
+   */
   async sweep(settings, { onProgress = () => {}, workers } = {}) {
     if (workers) this.pool.size = workers;
     const [freqs] = await this.pool.run([{ kind: 'grid', lo: settings.lo, hi: settings.hi, n: settings.n }]);
@@ -286,7 +293,7 @@ export class Analysis {
    * Runs `n` seeds from `first`; resolves with {results, bands}. The core gives the seeds, and
    * refuses a range past the largest seed before any run.
    */
-  async seeds(n, first, steps, onProgress = () => {}) {
+  async seeds(n, first, steps, onProgress = /** @type {(share: number) => void} */ (() => {})) {
     const every = Math.max(1, Math.floor(steps / 1000));
     const [seeds] = await this.pool.run([{ kind: 'seed-range', first, n }]);
     const jobs = seeds.map((seed) => ({ kind: 'seed', scenario: this.scenario(), seed, every }));
@@ -300,23 +307,15 @@ export class Analysis {
   showSeeds({ bands }, box, framing) {
     box.replaceChildren();
     // The y range over the samples after the start-up transient (all of them when framing is off).
-    const range = (u) => {
-      const { fit, from } = framing();
-      let [lo, hi] = [Infinity, -Infinity];
-      u.data[0].forEach((t, j) => {
-        if (fit && t < from) return;
-        for (const y of u.data.slice(1)) [lo, hi] = [Math.min(lo, y[j]), Math.max(hi, y[j])];
-      });
-      if (!(lo < hi)) return [lo - 1, hi + 1];
-      const pad = (hi - lo) * 0.05;
-      return [lo - pad, hi + pad];
-    };
+    /** @type {uPlot.Range.Function} */
+    const range = (u, _min, _max, key) => fittedRange(u, key, false, framing());
     this.seedCharts = [];
     // The same colours as ω − ω_d and ω − ω̂ on the Trajectories tab.
     for (const [title, b, color] of [
       ['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'],
       ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b'],
     ]) {
+      /** @type {uPlot.Options} */
       const opts = {
         title,
         width: Math.max(320, box.clientWidth - 10),
@@ -328,7 +327,7 @@ export class Analysis {
           { label: 'min', stroke: '#8a8a8a', dash: [3, 3] },
           { label: 'max', stroke: '#8a8a8a', dash: [3, 3] },
         ],
-        bands: [{ series: [3, 2], fill: 'rgba(31,119,180,0.15)' }],
+        bands: [{ series: /** @type {uPlot.Band.Bounds} */ ([3, 2]), fill: 'rgba(31,119,180,0.15)' }],
         axes: [{ label: 't (s)' }, { label: 'rad/s', size: 70 }],
       };
       const div = el('div', { className: 'plot' });

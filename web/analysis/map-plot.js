@@ -17,6 +17,7 @@ export function bandPlot(box, view) {
     ),
   );
   const width = Math.max(320, box.clientWidth - 10);
+  /** @type {uPlot.Options} */
   const opts = {
     title: `${figure.label} over the seeds: median, and min–max band`,
     width,
@@ -28,7 +29,7 @@ export function bandPlot(box, view) {
       { label: 'median', stroke: '#08519c', width: 2, points: { show: true } },
       { label: 'max', stroke: '#6baed6', width: 1 },
     ],
-    bands: [{ series: [3, 1], fill: 'rgba(107,174,214,0.25)' }],
+    bands: [{ series: /** @type {uPlot.Band.Bounds} */ ([3, 1]), fill: 'rgba(107,174,214,0.25)' }],
     axes: [{ label: axisName(0) }, { label: figure.unit || figure.label, size: 70 }],
   };
   const div = el('div', { className: 'plot' });

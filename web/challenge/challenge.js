@@ -6,25 +6,29 @@
 import { $, ui } from '../ui/page.js';
 import { fieldValue } from '../run/controls.js';
 import { Pool } from '../client/pool.js';
-import { challengeFromUrl, excerpt, holdAddress, scenarioFromUrl } from '../ui/url.js';
+import { challengeFromUrl, holdAddress, scenarioFromUrl } from '../ui/url.js';
 import { el } from '../ui/dom.js';
+import { plural, showVerdict } from './checklist.js';
+import { copyToForm, knob } from './knobs.js';
 
-/** A measured value as the checklist writes it. */
-function formatValue(value, unit) {
-  if (value === null || value === undefined) return 'not measured';
-  if (value === Infinity) return 'never (∞)';
-  const u = unit ? ` ${unit}` : '';
-  return `${Number(value.toPrecision(4))}${u}`;
+/** The panel's parts that outlive a render: the checklist, the check's progress and the copy. */
+function panelParts() {
+  const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
+  const verdict = el('p', { id: 'challenge-verdict', className: 'verdict', role: 'status' });
+  const progress = el('progress', { id: 'challenge-progress', max: 1, value: 0, hidden: true });
+  progress.setAttribute('aria-label', 'Challenge runs done');
+  const cancel = el('button', { type: 'button', id: 'challenge-cancel', textContent: 'Cancel check', disabled: true });
+  const copy = el('button', {
+    type: 'button',
+    id: 'challenge-copy',
+    textContent: 'Copy submission link',
+    disabled: true,
+  });
+  const copied = el('p', { className: 'hint', id: 'challenge-copied', role: 'status' });
+  const alert = el('p', { id: 'challenge-error', className: 'challenge-error', role: 'alert' });
+
+  return { checklist, verdict, progress, cancel, copy, copied, alert };
 }
-
-/** Copies a panel knob's value to the settings form's control of `field` (the run reads the form). */
-function copyToForm(field, control) {
-  const target = ui.form.elements.namedItem(field);
-  if (target?.type === 'checkbox') target.checked = control.value === '1';
-  else if (target) target.value = control.value;
-}
-
-const plural = (n, word) => `${n} ${word}${n === 1 ? '' : 's'}`;
 
 /**
  * The student's side of a challenge; `client` is the page's worker, `relayout()` sizes the plots
@@ -40,19 +44,7 @@ export function createChallenge({ client, state, relayout }) {
   const knobs = new Map(); // field → the panel's control
   const body = document.body.dataset;
 
-  const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
-  const verdict = el('p', { id: 'challenge-verdict', className: 'verdict', role: 'status' });
-  const progress = el('progress', { id: 'challenge-progress', max: 1, value: 0, hidden: true });
-  progress.setAttribute('aria-label', 'Challenge runs done');
-  const cancel = el('button', { type: 'button', id: 'challenge-cancel', textContent: 'Cancel check', disabled: true });
-  const copy = el('button', {
-    type: 'button',
-    id: 'challenge-copy',
-    textContent: 'Copy submission link',
-    disabled: true,
-  });
-  const copied = el('p', { className: 'hint', id: 'challenge-copied', role: 'status' });
-  const alert = el('p', { id: 'challenge-error', className: 'challenge-error', role: 'alert' });
+  const { checklist, verdict, progress, cancel, copy, copied, alert } = panelParts();
 
   /** Shows the error `text` in the panel (empty clears it). */
   function fail(text) {
@@ -120,7 +112,7 @@ export function createChallenge({ client, state, relayout }) {
       ui.run.click();
     });
     const knobBox = el('div', { className: 'knobs challenge-knobs' });
-    for (const a of desc.allow) knobBox.append(knob(a));
+    for (const a of desc.allow) knobBox.append(knob(a, knobs));
     copy.addEventListener('click', copySubmission);
     cancel.addEventListener('click', () => pool?.cancel());
     panel.replaceChildren(
@@ -149,49 +141,17 @@ export function createChallenge({ client, state, relayout }) {
     );
   }
 
-  /** The panel's control for an allowed field; its edits go to the settings form. */
-  function knob(a) {
-    const id = `challenge-${a.field}`;
-    const control =
-      a.kind === 'choice'
-        ? el(
-            'select',
-            { name: a.field, id },
-            a.options.map((o) => el('option', { value: o, textContent: o })),
-          )
-        : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
-    control.value = a.value ?? '';
-    const unit = a.unit ? ` ${a.unit}` : '';
-    const range = a.kind === 'choice' ? `one of ${a.options.join(', ')}` : `${a.lo} to ${a.hi}${unit}`;
-    const rangeId = `${id}-range`;
-    control.setAttribute('aria-describedby', rangeId);
-    knobs.set(a.field, control);
-    control.addEventListener('change', () => {
-      copyToForm(a.field, control);
-      ui.form.dispatchEvent(new Event('change'));
-    });
-    control.addEventListener('keydown', (e) => {
-      if (e.key !== 'Enter') return;
-      e.preventDefault();
-      copyToForm(a.field, control);
-      ui.run.click();
-    });
-    return el('label', { htmlFor: id, className: 'field' }, [
-      el('span', { className: 'key', textContent: a.field }),
-      el('span', { className: 'doc', textContent: `${a.doc}${unit ? ` (${a.unit})` : ''}` }),
-      control,
-      el('span', { className: 'range', id: rangeId, textContent: `allowed: ${range}` }),
-    ]);
-  }
-
   /** After each description of the form: only the allowed fields stay editable, and the panel follows the form. */
   function described(info) {
     if (!desc) return;
     ui.preset.disabled = true;
     const allowed = new Set(desc.allow.map((a) => a.field));
-    for (const c of document.querySelectorAll(
-      '#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select',
-    )) {
+    const controls = /** @type {NodeListOf<HTMLInputElement | HTMLSelectElement>} */ (
+      document.querySelectorAll(
+        '#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select',
+      )
+    );
+    for (const c of controls) {
       c.disabled = !allowed.has(c.name);
     }
     for (const [field, control] of knobs) {
@@ -235,32 +195,14 @@ export function createChallenge({ client, state, relayout }) {
       }
       const held = sub.scenarios[0] === state.ranScenario ? await client.measure(runId) : null;
       body.challengeNominal = held ? 'page' : 'pool';
-      const queue = held ? sub.scenarios.slice(1) : sub.scenarios;
-      let measured = [];
-      if (queue.length) {
-        pool ??= new Pool(1);
-        pool.size = Math.max(1, Math.min(queue.length, 4, navigator.hardwareConcurrency || 2));
-        progress.hidden = false;
-        progress.value = 0;
-        cancel.disabled = false;
-        const total = sub.scenarios.length;
-        const tell = (done) => {
-          progress.value = (done + (held ? 1 : 0)) / total;
-          verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
-        };
-        tell(0);
-        measured = await pool.run(
-          queue.map((scenario) => ({ kind: 'challenge-run', scenario })),
-          tell,
-        );
-      }
+      const measured = await measureRuns(held ? sub.scenarios.slice(1) : sub.scenarios, held !== null);
       if (me !== grading) return;
       const result = await client.job('challenge-judge', {
         text: desc.encoded,
         runs: held ? [held, ...measured] : measured,
       });
       if (me !== grading) return;
-      show(result, sub);
+      showVerdict({ verdict, checklist }, result, sub);
       if (!held)
         verdict.append(
           ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
@@ -284,6 +226,29 @@ export function createChallenge({ client, state, relayout }) {
     }
   }
 
+  /**
+   * Measures `scenarios` in the pool with progress (the nominal run is the first of them unless
+   * the page `held` it); rejects with 'cancelled' on Cancel.
+   */
+  async function measureRuns(scenarios, held) {
+    if (!scenarios.length) return [];
+    pool ??= new Pool(1);
+    pool.size = Math.max(1, Math.min(scenarios.length, 4, navigator.hardwareConcurrency || 2));
+    progress.hidden = false;
+    progress.value = 0;
+    cancel.disabled = false;
+    const total = scenarios.length + (held ? 1 : 0);
+    const tell = (done) => {
+      progress.value = (done + (held ? 1 : 0)) / total;
+      verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
+    };
+    tell(0);
+    return pool.run(
+      scenarios.map((scenario) => ({ kind: 'challenge-run', scenario })),
+      tell,
+    );
+  }
+
   function showRefusal(sub) {
     const text = `Your settings are not a valid answer: ${sub.message}.`;
     fail(text);
@@ -291,31 +256,6 @@ export function createChallenge({ client, state, relayout }) {
     checklist.replaceChildren();
     copy.disabled = true;
     body.challenge = 'refused';
-  }
-
-  /** The verdict as a checklist: each criterion's value, bound and mark, in words and symbols. */
-  function show(result, sub) {
-    const met = result.criteria.filter((c) => c.pass).length;
-    const runs = sub.scenarios.length;
-    const over = runs > 1 ? ` (the nominal run and ${plural(runs - 1, 'variant')})` : '';
-    verdict.textContent = result.pass
-      ? `✓ Passed: ${result.criteria.length === 1 ? 'the criterion is' : `all ${result.criteria.length} criteria are`} met${over}.`
-      : `✗ Not passed: ${met} of ${result.criteria.length} criteria met${over}.`;
-    checklist.replaceChildren(
-      ...result.criteria.map((c) => {
-        const where = c.run === 'nominal' ? '' : ` (worst run: ${excerpt(c.run)})`;
-        const li = el('li', { className: c.pass ? 'pass' : 'fail' }, [
-          el('strong', { className: 'mark', textContent: c.pass ? '✓ pass' : '✗ fail' }),
-          ` ${c.label}: `,
-          el('span', { className: 'value', textContent: formatValue(c.value, c.unit) }),
-          `, needs ${c.bound}${where}`,
-          ...(c.reason ? [el('span', { className: 'reason', textContent: ` — ${c.reason}` })] : []),
-        ]);
-        li.dataset.figure = c.figure;
-        li.dataset.pass = c.pass ? '1' : '0';
-        return li;
-      }),
-    );
   }
 
   async function copySubmission() {
@@ -328,27 +268,5 @@ export function createChallenge({ client, state, relayout }) {
     }
   }
 
-  /** Lists the built-in challenges in `list` (the Lessons tab), each a link that opens it. */
-  async function listBuiltins(list) {
-    try {
-      const builtins = await client.job('challenge-builtins');
-      list.replaceChildren(
-        ...builtins.map((b) =>
-          el('article', { className: 'lesson' }, [
-            el('h3', { textContent: b.name }),
-            el('p', { textContent: b.summary }),
-            el('a', {
-              href: `?challenge=${b.name}`,
-              textContent: `Open the ${b.name} challenge`,
-              className: 'button-link',
-            }),
-          ]),
-        ),
-      );
-    } catch {
-      list.textContent = 'The built-in challenges could not be listed.';
-    }
-  }
-
-  return { open, described, check, listBuiltins, active: () => link !== null && desc !== null };
+  return { open, described, check, active: () => link !== null && desc !== null };
 }

@@ -7,7 +7,10 @@ import { drawMarker, pickOnClick } from './inspect.js';
 
 const SYNC_KEY = 'imlab-time';
 
-/** The legend's series of `plot`: time, its signals, then its constant lines. */
+/**
+ * The legend's series of `plot`: time, its signals, then its constant lines.
+ * @returns {uPlot.Series[]}
+ */
 function seriesOf(plot, lineWidth) {
   const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
   for (const [column, label, axis] of plot.series) {
@@ -27,9 +30,13 @@ function seriesOf(plot, lineWidth) {
   return series;
 }
 
-/** The time axis, the left y-axis and, for a plot with `unit2`, the right one; `k` scales the text. */
+/**
+ * The time axis, the left y-axis and, for a plot with `unit2`, the right one; `k` scales the text.
+ * @returns {uPlot.Axis[]}
+ */
 function axesOf(plot, k) {
   const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
+  /** @type {uPlot.Axis[]} */
   const axes = [
     { label: 't (s)', ...font, size: 50 * k, space: timeSpace(14 * k, 50 * k), incrs: STEPS, values: tickLabels },
     {
@@ -55,9 +62,14 @@ function axesOf(plot, k) {
   return axes;
 }
 
-/** The options of the chart of `plot` in the set `set` (a Plots), `width` px wide. */
+/**
+ * The options of the chart of `plot` in the set `set` (a Plots), `width` px wide.
+ * @returns {uPlot.Options}
+ */
 export function chartOptions(set, plot, width) {
+  /** @type {uPlot.Range.Function} */
   const range = (u, min, max, key) => fittedRange(u, key, !!plot.unit2, set.framing());
+  /** @type {uPlot.Scales} */
   const scales = {
     // While zoomed, new data keeps the window; otherwise the axis spans the data.
     x: { time: false, auto: () => set.window === null },

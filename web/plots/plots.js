@@ -19,13 +19,30 @@ export class Plots {
   /**
    * `onPick(t)` inspects time t (a click, or the arrow keys on a focused plot); `sampleTime()` is
    * the run's Ts, the step of one arrow press.
+   * @param {HTMLElement} container
+   * @param {any[]} defs the plots' definitions (plot-defs.js)
+   * @param {{onWindow: (t0: number, t1: number) => void, onFull: () => void, onPick: (t: number) => void,
+   *   constants?: (plot: any) => number[], framing: () => {fit: boolean, from: number}, height?: number,
+   *   sampleTime?: () => number | null}} options
    */
   constructor(
     container,
     defs,
     { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null },
   ) {
-    Object.assign(this, { container, defs, onWindow, onFull, onPick, constants, framing, height, sampleTime });
+    this.container = container;
+    this.defs = defs;
+    this.onWindow = onWindow;
+    this.onFull = onFull;
+    this.onPick = onPick;
+    /** @type {(plot: any) => number[]} the constant lines of a plot (the voltage limit, the NIS band) */
+    this.constants = constants;
+    this.framing = framing;
+    this.height = height;
+    /** @type {() => number | null} */
+    this.sampleTime = sampleTime;
+    /** @type {string[] | null} the plots shown in an embed */
+    this.embedded = null;
     this.scale = 1; // text and line scale: 1, or larger in presentation mode
     this.captions = ''; // the run's figures, as the captions give them
     this.charts = [];

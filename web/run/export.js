@@ -62,7 +62,7 @@ export function createExport({ client, state, plots, walkthrough }) {
 
   ui.csv.addEventListener('click', startExport);
   ui.png.addEventListener('click', async () => {
-    const tab = document.querySelector('[role=tab][aria-selected=true]').dataset.tab;
+    const tab = /** @type {HTMLElement} */ (document.querySelector('[role=tab][aria-selected=true]')).dataset.tab;
     const set = tab === 'walkthrough' ? walkthrough.plots : plots;
     if (set.charts.length === 0 || (tab === 'walkthrough' && !walkthrough.drawn())) {
       say('These plots are still being drawn; export them in a moment.', 'info');

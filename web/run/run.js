@@ -9,14 +9,16 @@ import { excerpt, markRun } from '../ui/url.js';
  * second at most).
  */
 const painted = () =>
-  new Promise((resolve) => {
-    if (document.hidden) {
-      resolve(); // a hidden page paints nothing
-      return;
-    }
-    requestAnimationFrame(() => setTimeout(resolve, 0));
-    setTimeout(resolve, 1000);
-  });
+  new Promise(
+    /** @param {(value?: unknown) => void} resolve */ (resolve) => {
+      if (document.hidden) {
+        resolve(); // a hidden page paints nothing
+        return;
+      }
+      requestAnimationFrame(() => setTimeout(resolve, 0));
+      setTimeout(resolve, 1000);
+    },
+  );
 
 /** Names the run's start-up transient (null if it has none) beside the switch that fits the y-axes after it. */
 function showTransient(transient) {
@@ -94,7 +96,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     markRun(state.info.encoded);
     fromRun = document.activeElement === ui.run; // started from Run: focus returns there
     document.body.dataset.scenario = state.info.encoded;
-    document.body.dataset.started = id; // runs started: tests wait on it, not on a time
+    document.body.dataset.started = String(id); // runs started: tests wait on it, not on a time
     started = performance.now();
     ui.progress.value = 0;
     ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;

@@ -53,8 +53,8 @@ export function createSettings({
   startRun,
   markUnrun,
   openSettings,
-  first = scenarioFromUrl,
-  described = () => {},
+  first = /** @type {() => string | Promise<string>} */ (scenarioFromUrl),
+  described = /** @type {(info: any) => void} */ (() => {}),
 }) {
   let presets = []; // the core's presets: {name, description}
   let composed = null; // the scenario the form held when last checked

@@ -8,7 +8,9 @@ export class LessonPanel {
    * lesson's run (a scenario string).
    */
   constructor({ panel, list, lessons, onOpen }) {
-    Object.assign(this, { panel, lessons, onOpen });
+    this.panel = panel;
+    this.lessons = lessons;
+    this.onOpen = onOpen;
     this.index = null;
     lessons.forEach((lesson, i) => {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });

@@ -19,7 +19,11 @@ export class Walkthrough {
    * `onCompare()` asks for the Euler/RK4 comparison.
    */
   constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing }) {
-    Object.assign(this, { container, inspectBox, knob });
+    this.container = container;
+    this.inspectBox = inspectBox;
+    this.knob = knob;
+    /** @type {((t: number) => void) | null} told of each inspected time */
+    this.onInspect = null;
     inspectBox.setAttribute('aria-labelledby', 'inspect-title');
     // The plot last pressed or focused is the one an inspection comes from (a click, or the arrow
     // keys on a focused plot): the sheet must not cover it.
@@ -88,7 +92,7 @@ export class Walkthrough {
       ((f) =>
         setTimeout(() => {
           const end = performance.now() + 10;
-          f({ timeRemaining: () => end - performance.now() });
+          f({ didTimeout: false, timeRemaining: () => end - performance.now() });
         }, 50));
     const some = (deadline) => {
       for (const span of this.container.querySelectorAll('.equation[data-tex]')) {

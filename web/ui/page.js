@@ -32,7 +32,7 @@ export const ui = {
   figures: $('figures'),
   consistency: $('consistency'),
   keyFigures: $('key-figures'),
-  figuresBar: document.querySelector('.figures-bar'),
+  figuresBar: /** @type {HTMLElement} */ (document.querySelector('.figures-bar')),
   figuresToggle: $('figures-toggle'),
 };
 

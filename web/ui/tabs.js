@@ -4,13 +4,13 @@ import { $ } from './page.js';
 
 /** `walkthroughView()` asks for the last run's walkthrough view if it lacks one. */
 export function createTabs({ plots, walkthrough, walkthroughView }) {
-  const TABS = [...document.querySelectorAll('[role=tab]')];
+  const TABS = [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('[role=tab]'))];
 
   /** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
   function showTab(name, { fetch = true } = {}) {
     for (const tab of TABS) {
       const selected = tab.dataset.tab === name;
-      tab.setAttribute('aria-selected', selected);
+      tab.setAttribute('aria-selected', String(selected));
       tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
       const panel = $(`panel-${tab.dataset.tab}`);
       panel.hidden = !selected;
@@ -32,8 +32,8 @@ export function createTabs({ plots, walkthrough, walkthroughView }) {
 
   for (const tab of TABS) tab.addEventListener('click', () => showTab(tab.dataset.tab));
   // Arrow keys, Home and End move between tabs and select them.
-  document.querySelector('[role=tablist]').addEventListener('keydown', (e) => {
-    const i = TABS.indexOf(document.activeElement);
+  document.querySelector('[role=tablist]').addEventListener('keydown', (/** @type {KeyboardEvent} */ e) => {
+    const i = TABS.indexOf(/** @type {HTMLElement} */ (document.activeElement));
     const to = { ArrowRight: i + 1, ArrowLeft: i - 1, Home: 0, End: TABS.length - 1 }[e.key];
     if (i < 0 || to === undefined) return;
     e.preventDefault();

@@ -1,0 +1,27 @@
+// The built-in challenges, listed in the Lessons tab: each a link that opens it.
+import { el } from '../ui/dom.js';
+
+/**
+ * Lists the built-in challenges in `list` (the Lessons tab), each a link that opens it; `client`
+ * is the page's worker.
+ */
+export async function listBuiltins(client, list) {
+  try {
+    const builtins = await client.job('challenge-builtins');
+    list.replaceChildren(
+      ...builtins.map((b) =>
+        el('article', { className: 'lesson' }, [
+          el('h3', { textContent: b.name }),
+          el('p', { textContent: b.summary }),
+          el('a', {
+            href: `?challenge=${b.name}`,
+            textContent: `Open the ${b.name} challenge`,
+            className: 'button-link',
+          }),
+        ]),
+      ),
+    );
+  } catch {
+    list.textContent = 'The built-in challenges could not be listed.';
+  }
+}

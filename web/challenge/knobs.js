@@ -1,0 +1,49 @@
+// The challenge panel's knobs: one control for each field the challenge allows, with its range;
+// its edits go to the settings form, which the run reads.
+import { ui } from '../ui/page.js';
+import { el } from '../ui/dom.js';
+
+/** Copies a panel knob's value to the settings form's control of `field` (the run reads the form). */
+export function copyToForm(field, control) {
+  const target = ui.form.elements.namedItem(field);
+  if (target?.type === 'checkbox') target.checked = control.value === '1';
+  else if (target) target.value = control.value;
+}
+
+/**
+ * The panel's control for an allowed field `a` (the core's description), kept in `knobs` by field;
+ * its edits go to the settings form.
+ */
+export function knob(a, knobs) {
+  const id = `challenge-${a.field}`;
+  const control =
+    a.kind === 'choice'
+      ? el(
+          'select',
+          { name: a.field, id },
+          a.options.map((o) => el('option', { value: o, textContent: o })),
+        )
+      : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
+  control.value = a.value ?? '';
+  const unit = a.unit ? ` ${a.unit}` : '';
+  const range = a.kind === 'choice' ? `one of ${a.options.join(', ')}` : `${a.lo} to ${a.hi}${unit}`;
+  const rangeId = `${id}-range`;
+  control.setAttribute('aria-describedby', rangeId);
+  knobs.set(a.field, control);
+  control.addEventListener('change', () => {
+    copyToForm(a.field, control);
+    ui.form.dispatchEvent(new Event('change'));
+  });
+  control.addEventListener('keydown', (e) => {
+    if (e.key !== 'Enter') return;
+    e.preventDefault();
+    copyToForm(a.field, control);
+    ui.run.click();
+  });
+  return el('label', { htmlFor: id, className: 'field' }, [
+    el('span', { className: 'key', textContent: a.field }),
+    el('span', { className: 'doc', textContent: `${a.doc}${unit ? ` (${a.unit})` : ''}` }),
+    control,
+    el('span', { className: 'range', id: rangeId, textContent: `allowed: ${range}` }),
+  ]);
+}
