@@ -213,14 +213,26 @@ test('after a frequency sweep on a phone the page still does not scroll sideways
     assert.ok(over <= 0, `the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);
   }));
 
+/** The first main plot's box, from its title to its legend, and its time axis's box. */
+const firstPlot = (page) =>
+  page.$eval('#plots .plot', (p) => {
+    const box = (e) => {
+      const r = e.getBoundingClientRect();
+      return { top: r.top, bottom: r.bottom, height: r.height };
+    };
+    return { plot: box(p), canvas: box(p.querySelector('canvas')), title: p.querySelector('.u-title').textContent };
+  });
+
 for (const [width, height] of [
   [1280, 720],
   [1024, 768],
 ]) {
-  test(`presentation mode at ${width}×${height}: the first screen shows the main plot and the key figures, the strip one click away`, () =>
+  test(`presentation mode at ${width}×${height}: the first screen shows the main plot whole and the key figures, the strip one click away`, () =>
     withPage('?v=1&preset=rr-mismatch#present=1', [width, height], async (page) => {
-      const top = await page.$eval('#plots .plot', (p) => p.getBoundingClientRect().top);
-      assert.ok(top < height - 200, `the first plot starts ${top} px down`);
+      const { plot, canvas } = await firstPlot(page);
+      // Title, axes (the canvas holds them) and legend on the first screen, with room to read.
+      assert.ok(plot.top >= 0 && plot.bottom <= height, `the first plot spans ${plot.top}–${plot.bottom} px`);
+      assert.ok(canvas.height >= 250, `the first plot's axes are ${canvas.height} px tall`);
       assert.equal(await page.isVisible('#key-figures'), true);
       assert.match(
         await page.textContent('#key-figures'),
@@ -230,5 +242,33 @@ for (const [width, height] of [
       await page.click('#figures-toggle');
       assert.equal(await page.isVisible('#figures'), true);
       assert.equal(await page.getAttribute('#figures-toggle', 'aria-expanded'), 'true');
+    }));
+
+  test(`presentation mode at ${width}×${height} with a lesson open: the main plot whole beside the lesson, its question large on the first screen`, () =>
+    withPage('?v=1&preset=step#present=1', [width, height], async (page) => {
+      await page.click('#tab-lessons');
+      const before = await page.evaluate(() => Number(document.body.dataset.started));
+      await page.click('#lessons button[data-lesson="v=1&preset=step"]');
+      await page.waitForFunction((n) => Number(document.body.dataset.started) > n, before);
+      await settled(page);
+      // The plot is sized as the layout settles (the key figures, the lesson's column).
+      await page.waitForFunction((h) => {
+        const r = document.querySelector('#plots .plot').getBoundingClientRect();
+        return r.top >= 0 && r.bottom <= h;
+      }, height);
+      const { plot, canvas, title } = await firstPlot(page);
+      assert.equal(title, 'Rotor speed');
+      assert.ok(canvas.height >= 200, `the first plot's axes are ${canvas.height} px tall`);
+      const question = await page.$eval('#lesson-panel .question', (q) => {
+        const r = q.getBoundingClientRect();
+        return { top: r.top, bottom: r.bottom, left: r.left, size: parseFloat(getComputedStyle(q).fontSize) };
+      });
+      assert.ok(
+        question.top >= 0 && question.bottom <= height,
+        `the question spans ${question.top}–${question.bottom} px`,
+      );
+      assert.ok(question.size >= 24, `the question is set at ${question.size} px`);
+      assert.ok(question.left >= width / 2, 'the lesson stands beside the plot, not above it');
+      assert.ok(plot.bottom <= height);
     }));
 }

@@ -54,7 +54,7 @@ export class LessonPanel {
       el('h2', { textContent: lesson.title, tabIndex: -1 }),
       el('h3', { textContent: 'What to look for' }),
       el('p', { className: 'look', textContent: lesson.look }),
-      el('h3', { textContent: 'Question' }),
+      el('h3', { className: 'question-head', textContent: 'Question' }),
       el('p', { className: 'question', textContent: lesson.question }),
       hint,
       answer,

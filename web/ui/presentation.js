@@ -1,7 +1,7 @@
 // How the page is laid out for an audience: presentation mode (larger text and plots, kept in
 // the link as `#present=1`), the settings drawer it and small screens use, and an embed
 // (`#embed=PLOT,PLOT...`) that shows a few plots in a frame of any size.
-import { say, ui } from './page.js';
+import { $, say, ui } from './page.js';
 import { PLOTS } from '../plots/plots.js';
 import { excerpt, fragment, setFragment } from './url.js';
 
@@ -11,6 +11,10 @@ const EMBED_MIN_HEIGHT = 120;
 const EMBED_MARGIN = 8;
 // Presentation mode draws plot text and lines this much larger: 14 px ticks become 21 px.
 const PRESENT_SCALE = 1.5;
+// In presentation mode the main plots are as tall as PLOT_HEIGHT.present allows and the first
+// screen holds, down to this least height (px), with this margin under the first plot.
+const PRESENT_MIN_HEIGHT = 260;
+const PRESENT_MARGIN = 8;
 
 /** Sets up the layout the link asks for; `fitEmbed()` sizes an embed's plots to its frame. */
 export function createPresentation({ state, plots, walkthrough }) {
@@ -26,7 +30,32 @@ export function createPresentation({ state, plots, walkthrough }) {
     plots.rescale(scale, main);
     walkthrough.plots.rescale(scale, small);
     openSettings(false);
+    fitPresent();
   }
+
+  /**
+   * In presentation mode, sizes the main plots so that the first one, with its title, axes and
+   * legend, ends on the first screen: what stands above it (the run bar, the tabs, the key
+   * figures) is measured as laid out.
+   */
+  function fitPresent() {
+    const body = document.body.classList;
+    const first = ui.plots.querySelector('.plot');
+    if (!body.contains('present') || body.contains('embed') || !first || $('panel-plots').hidden) return;
+    const box = first.getBoundingClientRect();
+    const rest = box.height - plots.height; // the title and the legend
+    const room = Math.floor(innerHeight - (box.top + scrollY) - rest - PRESENT_MARGIN);
+    const height = Math.max(PRESENT_MIN_HEIGHT, Math.min(PLOT_HEIGHT.present[0], room));
+    if (height !== plots.height) plots.resize(height);
+  }
+  // What stands above the plots changes height as a run ends (its key figures), a lesson opens
+  // (the columns narrow) or the window changes: each time the plots are sized again.
+  const above = new ResizeObserver(() => fitPresent());
+  for (const e of document.querySelectorAll(
+    '.run-bar, .tab-row, .view-bar, .figures-bar, #message, #consistency, #panel-plots',
+  ))
+    above.observe(e);
+  window.addEventListener('resize', fitPresent);
   ui.present.addEventListener('click', () => present(!document.body.classList.contains('present')));
 
   /** Opens or closes the settings drawer (presentation mode and small screens). */
