@@ -2,12 +2,12 @@
 // This file composes the page's parts, each in its own module, and wires them to each other.
 import { Plots, PLOTS } from './plots/plots.js';
 import { fieldValue } from './run/controls.js';
-import { scenarioFromUrl } from './ui/url.js';
+import { challengeFromUrl, excerpt, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
 import { Analysis } from './analysis/analysis.js';
 import { Walkthrough } from './teaching/walkthrough.js';
 import { LessonPanel } from './teaching/lessons.js';
 import { LESSONS } from './teaching/teaching.js';
-import { $, ui } from './ui/page.js';
+import { $, say, ui } from './ui/page.js';
 import { RunClient } from './client/run-client.js';
 import { createRun } from './run/run.js';
 import { createSettings } from './run/settings.js';
@@ -138,14 +138,16 @@ const settings = createSettings({
   startRun: run.start,
   markUnrun: run.markUnrun,
   openSettings: presentation.openSettings,
-  first: challenge.open,
+  first: () => (lessonFromUrl() ? null : challenge.open()),
   described: challenge.described,
 });
-new LessonPanel({
+const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
   lessons: LESSONS,
   onOpen: async (lesson) => {
+    // A lesson starts from its own state: no runs pinned in another lesson stay in its overlay.
+    pins.clear();
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
     if (lesson.map) robust.fill(lesson.map);
@@ -154,6 +156,21 @@ new LessonPanel({
   },
 });
 wireShare({ state });
+
+/**
+ * Opens the lesson the address names (`#lesson=ID`), with its run, unless a challenge link holds
+ * the address; returns whether it did. An unknown name is said, with the names there are.
+ */
+function lessonFromUrl() {
+  const id = fragment('lesson');
+  if (id === null || challengeFromUrl()) return false;
+  // The lesson's run then stands in the address alone: an edit of it is no longer the lesson.
+  setFragment('lesson', null);
+  if (lessons.openById(id)) return true;
+  state.notice = `No lesson named '${excerpt(id)}'. Lessons: ${LESSONS.map((l) => l.id).join(', ')}.`;
+  say(state.notice, 'info');
+  return false;
+}
 client.handlers = handlersOf(settings, run, views, pins, exporter);
 
 ui.fullRun.addEventListener('click', views.fullRun);

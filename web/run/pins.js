@@ -170,5 +170,11 @@ export function createPins({ client, state, plots }) {
     },
   };
 
-  return { show, afterRun, handlers };
+  /** Unpins every run (a lesson starts from its own state). */
+  function clear() {
+    shared = null;
+    if (state.pins.length) client.post({ type: 'unpin-all' });
+  }
+
+  return { show, afterRun, clear, handlers };
 }

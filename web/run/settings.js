@@ -53,7 +53,7 @@ export function createSettings({
   startRun,
   markUnrun,
   openSettings,
-  first = /** @type {() => string | Promise<string>} */ (scenarioFromUrl),
+  first = /** @type {() => string | null | Promise<string>} */ (scenarioFromUrl),
   described = /** @type {(info: any) => void} */ (() => {}),
 }) {
   let presets = []; // the core's presets: {name, description}
@@ -173,7 +173,8 @@ export function createSettings({
         state.nisBand = nisBand;
         listPresets(ui.preset, presets);
       }
-      if (state.info === null) Promise.resolve(first()).then((text) => load(text));
+      // `first()` resolves with null when it has loaded a scenario itself (a lesson's run).
+      if (state.info === null) Promise.resolve(first()).then((text) => text !== null && load(text));
     },
   };
 

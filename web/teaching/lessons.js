@@ -2,6 +2,20 @@
 // lesson's context (what to look for, the question, a hint, the answer) while its plots are shown.
 import { el } from '../ui/dom.js';
 
+/** The link to `lesson`: its run, and its name, which opens its panel. */
+export const lessonLink = (lesson) => `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}`;
+
+/** Copies the link to `lesson`, saying so in `said` (or showing the link where the clipboard is refused). */
+async function copyLink(lesson, said) {
+  const link = lessonLink(lesson);
+  try {
+    await navigator.clipboard.writeText(link);
+    said.textContent = 'Link copied: it opens this lesson and its run.';
+  } catch {
+    said.textContent = `Copy this link: ${link}`;
+  }
+}
+
 export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
@@ -34,6 +48,9 @@ export class LessonPanel {
     const previous = el('button', { type: 'button', textContent: '← Previous', disabled: i === 0 });
     const next = el('button', { type: 'button', textContent: 'Next →', disabled: i === this.lessons.length - 1 });
     const close = el('button', { type: 'button', className: 'close', textContent: 'Close lesson' });
+    const copy = el('button', { type: 'button', className: 'copy-lesson', textContent: 'Copy link to this lesson' });
+    const copied = el('p', { className: 'hint', role: 'status' });
+    copy.addEventListener('click', () => copyLink(lesson, copied));
     previous.addEventListener('click', () => this.open(i - 1));
     next.addEventListener('click', () => this.open(i + 1));
     close.addEventListener('click', () => this.close());
@@ -58,7 +75,8 @@ export class LessonPanel {
       el('p', { className: 'question', textContent: lesson.question }),
       hint,
       answer,
-      el('div', { className: 'buttons' }, [previous, next]),
+      el('div', { className: 'buttons' }, [previous, next, copy]),
+      copied,
     );
     this.panel.dataset.open = lesson.run;
     this.panel.hidden = false;
@@ -68,6 +86,18 @@ export class LessonPanel {
     const started = this.onOpen(lesson);
     this.panel.querySelector('h2').focus({ preventScroll: true });
     await started;
+  }
+
+  /**
+   * Opens the lesson named `id` (its link's name); returns false, opening nothing, when no lesson
+   * has that name.
+   * @param {string} id
+   */
+  openById(id) {
+    const i = this.lessons.findIndex((l) => l.id === id);
+    if (i < 0) return false;
+    this.open(i);
+    return true;
   }
 
   close() {

@@ -89,6 +89,12 @@ export function unpin({ index }) {
   post(pinsMessage());
 }
 
+/** Unpins every run. */
+export function unpinAll() {
+  for (let i = comparison.scenarios().length; i > 0; i--) comparison.unpin(i - 1);
+  post(pinsMessage());
+}
+
 /**
  * The overlay of the held run and the pins in one column.
  * @param {P.OverlayRequest} request

@@ -67,6 +67,7 @@ export {};
  * @typedef {{type: 'pin', scenarios: string[], column: string}} PinRequest
  * @typedef {{type: 'pin-cancel'}} PinCancelRequest
  * @typedef {{type: 'unpin', index: number}} UnpinRequest
+ * @typedef {{type: 'unpin-all'}} UnpinAllRequest
  */
 /**
  * The overlay of run `id` and the pins in `column` over [t0, t1]. Every run keeps `column` from
@@ -85,7 +86,7 @@ export {};
 /**
  * Every message the page sends.
  * @typedef {DescribeRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
- *   | InspectRequest | CompareRequest | PinRequest | PinCancelRequest | UnpinRequest | OverlayRequest
+ *   | InspectRequest | CompareRequest | PinRequest | PinCancelRequest | UnpinRequest | UnpinAllRequest | OverlayRequest
  *   | MeasureRequest | JobMessage} ToWorker
  */
 

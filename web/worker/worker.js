@@ -6,7 +6,7 @@
 // answers jobs only (jobs.js): it holds no pins and skips the warm-up for a run's first slices.
 import init, { describe, nis_band, presets, recover } from '../../pkg/imlab.js';
 import { JOBS } from './jobs.js';
-import { cancelPins, holdPins, overlay, pinAll, unpin } from './pins.js';
+import { cancelPins, holdPins, overlay, pinAll, unpin, unpinAll } from './pins.js';
 import { cancel, compare, csvAnswer, exportCsv, inspect, measure, run, viewOf, warmUp } from './run.js';
 import { isCrashed, post, trapped } from './runtime.js';
 
@@ -74,6 +74,8 @@ self.onmessage = async ({ data }) => {
       return cancelPins();
     case 'unpin':
       return unpin(data);
+    case 'unpin-all':
+      return unpinAll();
     case 'overlay':
       return overlay(data);
     case 'job':

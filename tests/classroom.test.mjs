@@ -1,0 +1,89 @@
+// A class's use of the page: a lesson's link, a lesson that starts from its own state, and the
+// "not run yet" note where the eye is. Every test fails on a console error.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { browserSuite, settled } from './browser.mjs';
+import { LESSONS } from '../web/teaching/teaching.js';
+
+const suite = browserSuite();
+
+/** Opens lesson `id` from the Lessons tab and waits for its run. */
+async function startLesson(page, run) {
+  await page.click('#tab-lessons');
+  const before = await page.evaluate(() => Number(document.body.dataset.started ?? 0));
+  await page.click(`#lessons button[data-lesson="${run}"]`);
+  await page.waitForFunction((n) => Number(document.body.dataset.started ?? 0) > n, before);
+  await settled(page);
+}
+
+test('every lesson has a link name of its own', () => {
+  const ids = LESSONS.map((l) => l.id);
+  assert.ok(
+    ids.every((id) => /^[a-z0-9-]+$/.test(id)),
+    ids.join(),
+  );
+  assert.equal(new Set(ids).size, ids.length, 'two lessons share a name');
+});
+
+for (const present of [false, true]) {
+  test(`a lesson's link opens its panel and its run${present ? ', in presentation mode' : ''}`, () => {
+    const lesson = LESSONS.find((l) => l.id === 'rr-mismatch');
+    return suite.withPage(`#lesson=${lesson.id}${present ? '&present=1' : ''}`, async (page) => {
+      await settled(page);
+      assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), lesson.run);
+      assert.equal(await page.textContent('#lesson-panel h2'), lesson.title);
+      assert.equal(new URL(page.url()).search.slice(1), lesson.run);
+      assert.equal(await page.evaluate(() => document.body.classList.contains('present')), present);
+      // The name is taken from the address once: the address then names the run on screen.
+      assert.doesNotMatch(new URL(page.url()).hash, /lesson=/);
+    });
+  });
+}
+
+test('"Copy link to this lesson" gives the link by name, and an unknown name is said with the names there are', () =>
+  suite.withPage('#lesson=no-such-lesson', async (page) => {
+    await settled(page);
+    assert.equal(await page.isVisible('#lesson-panel'), false);
+    const message = await page.textContent('#message');
+    assert.match(message, /No lesson named 'no-such-lesson'/);
+    for (const l of LESSONS) assert.ok(message.includes(l.id), `${l.id} is not listed`);
+    await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
+    await startLesson(page, LESSONS[3].run);
+    await page.click('#lesson-panel .copy-lesson');
+    await page.waitForFunction(() => /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent));
+    const link = new URL(await page.evaluate(() => navigator.clipboard.readText()));
+    assert.equal(link.search.slice(1), LESSONS[3].run);
+    assert.equal(link.hash, `#lesson=${LESSONS[3].id}`);
+  }));
+
+test('a lesson starts from its own state: a run pinned in another lesson is not in its overlay', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    await startLesson(page, LESSONS[0].run);
+    await page.click('#tab-plots');
+    await page.click('#pin');
+    await page.waitForFunction(() => document.querySelectorAll('#pins li').length === 1);
+    await startLesson(page, LESSONS[1].run);
+    await page.waitForFunction(
+      () => document.querySelectorAll('#pins li').length === 0 && !document.querySelector('#overlay-plots canvas'),
+    );
+    assert.doesNotMatch(new URL(page.url()).hash, /pins=/);
+  }));
+
+test('a setting edited far down the form says "not run yet" within the window, where the field is', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    const field = page.locator('#settings input[type=text]:visible').last();
+    await field.scrollIntoViewIfNeeded();
+    await field.fill(String(Number(await field.inputValue()) * 1.5 || 1));
+    await field.press('Tab');
+    await page.waitForFunction(() => document.body.dataset.unrun === '1');
+    const at = await page.evaluate(() => {
+      const box = (e) => e.getBoundingClientRect();
+      return { note: box(document.querySelector('#unrun')), window: innerHeight };
+    });
+    assert.ok(
+      at.note.height > 0 && at.note.top >= 0 && at.note.bottom <= at.window,
+      `the note spans ${at.note.top}–${at.note.bottom} px`,
+    );
+  }));
