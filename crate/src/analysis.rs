@@ -390,12 +390,13 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
 
 /// Per-seed figures as CSV.
 pub fn seeds_csv(results: &[SeedResult]) -> String {
-    let mut out = String::from("seed,tracking_rms,estimate_rms,tracking_max,failure\n");
+    let mut out =
+        String::from("seed,tracking_rms,speed_estimate_error_rms,tracking_peak,failure\n");
     for r in results {
         let failure = r.failure.as_deref().unwrap_or("").replace(',', ";");
         out += &format!(
             "{},{},{},{},{failure}\n",
-            r.seed, r.tracking_rms, r.estimate_rms, r.tracking_max
+            r.seed, r.tracking_rms, r.speed_estimate_error_rms, r.tracking_peak
         );
     }
     out
@@ -472,17 +473,19 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
     }
 }
 
-/// Figures of one seed's run.
+/// Figures of one seed's run: those of its [`crate::record::Metrics`], by their names.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SeedResult {
     /// The noise seed.
     pub seed: u64,
-    /// RMS of ω − ω_d over the run after its first fifth (rad/s).
+    /// RMS of ω − ω_d over the samples from the end of the start-up transient on (the window of
+    /// the run's figures, see [`crate::record::transient`]) (rad/s); NaN when nothing was
+    /// recorded.
     pub tracking_rms: f64,
-    /// RMS of ω − ω̂ over the same window (rad/s).
-    pub estimate_rms: f64,
+    /// RMS of the speed-estimate error ω − ω̂ over the same window (rad/s).
+    pub speed_estimate_error_rms: f64,
     /// Largest |ω − ω_d| over the same window (rad/s).
-    pub tracking_max: f64,
+    pub tracking_peak: f64,
     /// Why the run stopped early, if it did.
     pub failure: Option<String>,
 }
@@ -538,8 +541,8 @@ pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, Sce
         result: SeedResult {
             seed,
             tracking_rms: figure(|m| m.tracking_rms),
-            estimate_rms: figure(|m| m.speed_estimate_rms),
-            tracking_max: figure(|m| m.tracking_max),
+            speed_estimate_error_rms: figure(|m| m.speed_estimate_error_rms),
+            tracking_peak: figure(|m| m.tracking_peak),
             failure,
         },
         t: rows.iter().step_by(every.max(1)).map(|r| r.t).collect(),

@@ -189,7 +189,10 @@ impl Simulation {
         to_js(&self.inner.stability())
     }
 
-    /// RMS tracking and estimation errors, mean NIS and saturation of the run.
+    /// RMS tracking and estimation errors, mean NIS and saturation of the run, by the report's
+    /// names where it gives the figure too: `{transient_end, tracking_rms, tracking_peak,
+    /// speed_estimate_error_rms, flux_estimate_error_rms, mean_nis, saturated_share}`, or null
+    /// when nothing is recorded.
     pub fn metrics(&self) -> Result<JsValue, JsValue> {
         to_js(&self.inner.metrics())
     }
@@ -375,7 +378,9 @@ pub fn excerpt(text: &str) -> String {
     crate::quote::excerpt(text)
 }
 
-/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces.
+/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces:
+/// `{result: {seed, tracking_rms, speed_estimate_error_rms, tracking_peak, failure}, t, error,
+/// estimate}`.
 #[wasm_bindgen]
 pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
