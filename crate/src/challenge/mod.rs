@@ -14,7 +14,7 @@
 //!   may set.
 //! - `need.FIGURE=OP`, in the order written: `max:B` (value ≤ B), `min:B` (≥ B), `abs:B`
 //!   (|value| ≤ B), `band` (mean NIS inside its 95 % band). The figures are those of
-//!   [`crate::record::report`] and [`judge::LOAD_RECOVERY`].
+//!   [`crate::record::report`] and [`crate::record::LOAD_RECOVERY`].
 //! - `vary`: robustness variants, `|`-separated override strings (applied after the student's
 //!   fields), or `seeds:A..B`; `robust`: the criteria that must also hold on every variant.
 //!
@@ -26,10 +26,10 @@ mod brief;
 mod builtin;
 mod judge;
 
+pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use judge::{
-    figure_info, figures, judge, measure, recovery_band, CriterionVerdict, Measure, Measures,
-    Verdict, LOAD_RECOVERY,
+    figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
 
 use crate::quote::excerpt;
