@@ -1,6 +1,7 @@
 //! JavaScript bindings: type conversion and error mapping only; no physics lives here.
 
 use crate::analysis;
+use crate::challenge::ErrorKind;
 use crate::params::Lumped;
 use crate::record::COLUMNS;
 use crate::robust;
@@ -589,12 +590,21 @@ pub struct Challenge {
     inner: crate::challenge::Challenge,
 }
 
+/// What kind of values an allowed field takes; the page sees "range" or "choice".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum AllowKind {
+    /// A number from `lo` to `hi`.
+    Range,
+    /// One of `options`.
+    Choice,
+}
+
 /// An allowed field as the page shows it.
 #[derive(Serialize)]
 struct AllowView {
     field: String,
-    /// "range" or "choice".
-    kind: &'static str,
+    kind: AllowKind,
     lo: Option<f64>,
     hi: Option<f64>,
     options: Vec<String>,
@@ -604,14 +614,27 @@ struct AllowView {
     value: Option<String>,
 }
 
+/// How a criterion bounds its figure; the page sees "max", "min", "abs" or "band".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum OpKind {
+    /// value ≤ bound.
+    Max,
+    /// value ≥ bound.
+    Min,
+    /// |value| ≤ bound.
+    Abs,
+    /// Inside the mean NIS's 95 % band (no bound).
+    Band,
+}
+
 /// A criterion as the page shows it.
 #[derive(Serialize)]
 struct NeedView {
     figure: String,
     label: &'static str,
     unit: &'static str,
-    /// "max", "min", "abs" or "band".
-    op: &'static str,
+    op: OpKind,
     bound: Option<f64>,
     /// Whether it must hold on every variant too.
     robust: bool,
@@ -629,11 +652,35 @@ struct ChallengeView {
     brief: String,
 }
 
+/// Whether a submission link can be graded, or why not; the page sees "ok", "malformed",
+/// "refused" or "another".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum SubmissionKind {
+    /// It can run.
+    Ok,
+    /// See [`ErrorKind::Malformed`].
+    Malformed,
+    /// See [`ErrorKind::Refused`].
+    Refused,
+    /// See [`ErrorKind::Another`].
+    Another,
+}
+
+impl From<ErrorKind> for SubmissionKind {
+    fn from(kind: ErrorKind) -> Self {
+        match kind {
+            ErrorKind::Malformed => SubmissionKind::Malformed,
+            ErrorKind::Refused => SubmissionKind::Refused,
+            ErrorKind::Another => SubmissionKind::Another,
+        }
+    }
+}
+
 /// What a submission link gives: its status and, when it can run, the scenarios to run.
 #[derive(Serialize)]
 struct SubmissionView {
-    /// "ok", "malformed", "refused" or "another".
-    kind: &'static str,
+    kind: SubmissionKind,
     /// "ok", or the grading status: "malformed: …", "refused: …", "another challenge".
     status: String,
     /// The error's message ("" when ok).
@@ -678,8 +725,10 @@ impl Challenge {
             .map(|a| {
                 let f = fields.iter().find(|f| f.key == a.field).expect("checked");
                 let (kind, lo, hi, options) = match &a.allowed {
-                    Allowed::Range { lo, hi } => ("range", Some(*lo), Some(*hi), Vec::new()),
-                    Allowed::Choice { options } => ("choice", None, None, options.clone()),
+                    Allowed::Range { lo, hi } => {
+                        (AllowKind::Range, Some(*lo), Some(*hi), Vec::new())
+                    }
+                    Allowed::Choice { options } => (AllowKind::Choice, None, None, options.clone()),
                 };
                 AllowView {
                     field: a.field.clone(),
@@ -699,10 +748,10 @@ impl Challenge {
             .map(|n| {
                 let f = figure_info(&n.figure).expect("checked");
                 let (op, bound) = match n.op {
-                    Op::Max(b) => ("max", Some(b)),
-                    Op::Min(b) => ("min", Some(b)),
-                    Op::Abs(b) => ("abs", Some(b)),
-                    Op::Band => ("band", None),
+                    Op::Max(b) => (OpKind::Max, Some(b)),
+                    Op::Min(b) => (OpKind::Min, Some(b)),
+                    Op::Abs(b) => (OpKind::Abs, Some(b)),
+                    Op::Band => (OpKind::Band, None),
                 };
                 NeedView {
                     figure: n.figure.clone(),
@@ -728,14 +777,13 @@ impl Challenge {
     /// A submission link of this challenge (bare query or URL): never throws; returns
     /// `{kind, status, message, encoded, tries, scenarios}` (see the fields' docs).
     pub fn submission(&self, text: &str) -> Result<JsValue, JsValue> {
-        use crate::challenge::ErrorKind;
         let read = self
             .inner
             .submission(text)
             .and_then(|s| s.scenarios().map(|runs| (s, runs)));
         let view = match read {
             Ok((s, runs)) => SubmissionView {
-                kind: "ok",
+                kind: SubmissionKind::Ok,
                 status: "ok".to_string(),
                 message: String::new(),
                 encoded: s.encode(),
@@ -743,11 +791,7 @@ impl Challenge {
                 scenarios: runs.iter().map(Scenario::encode).collect(),
             },
             Err(e) => SubmissionView {
-                kind: match e.kind {
-                    ErrorKind::Malformed => "malformed",
-                    ErrorKind::Refused => "refused",
-                    ErrorKind::Another => "another",
-                },
+                kind: e.kind.into(),
                 status: e.status(),
                 message: e.message.clone(),
                 encoded: String::new(),

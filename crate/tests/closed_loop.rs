@@ -1,5 +1,6 @@
 //! Closed-loop figures the paper and the design fix: decay rates, settling, tracking, EKF health.
 
+use imlab::record::StabilityCause;
 use imlab::scenario::{preset, Scenario, PRESETS};
 use imlab::sim::{SimError, Simulation};
 use nalgebra::SymmetricEigen;
@@ -315,15 +316,18 @@ fn lyapunov_function_meets_the_bound_up_to_the_sampling_error() {
         "V exceeds the bound by {e50} at 20 kHz"
     );
     assert!(e25 < 0.6 * e50, "excess {e25} at 25 µs vs {e50} at 50 µs");
-    assert_eq!(coarse.stability().unwrap().cause, "sampling");
+    assert_eq!(coarse.stability().unwrap().cause, StabilityCause::Sampling);
     // With the EKF (d̃ ≠ 0) and no robust term the ε = 0 bound cannot hold, and it does not.
     let with_ekf = run("step").stability().unwrap();
     assert!(
-        with_ekf.outside > 0 && with_ekf.cause == "estimation_errors",
+        with_ekf.outside > 0 && with_ekf.cause == StabilityCause::EstimationErrors,
         "{with_ekf:?}"
     );
     // Where the voltage limit is active most of the time, saturation is named.
-    assert_eq!(run("high-gain").stability().unwrap().cause, "saturation");
+    assert_eq!(
+        run("high-gain").stability().unwrap().cause,
+        StabilityCause::Saturation
+    );
 }
 
 #[test]

@@ -22,8 +22,8 @@ mod transient;
 mod window;
 
 pub use figures::{
-    figure_info, report, Figure, FigureInfo, Report, Trend, Unreached, Warning, WarningKind,
-    FIGURE_INFO,
+    figure_info, report, Figure, FigureInfo, Report, Trend, TrendState, Unreached, Warning,
+    WarningKind, FIGURE_INFO,
 };
 pub use m4::{m4, M4};
 pub use metrics::{metrics, Metrics};
@@ -33,7 +33,7 @@ pub use row::{
     first_not, is_saturated, write_csv, Row, RowVisitor, Sink, COLUMNS, COLUMN_DOCS, NUM_COLUMNS,
 };
 pub use samples::Samples;
-pub use tally::{Stability, StabilityTally, TransientTally, CHECKPOINT_EVERY};
+pub use tally::{Stability, StabilityCause, StabilityTally, TransientTally, CHECKPOINT_EVERY};
 pub use trace::{Column, Overview, Trace};
 pub use transient::{transient, Transient};
 pub use window::WindowTally;
