@@ -13,7 +13,9 @@ use wasm_bindgen::JsCast;
 
 mod challenge;
 
-pub use challenge::{challenge_builtins, challenge_figures, challenge_measure, Challenge};
+pub use challenge::{
+    challenge_builtins, challenge_compose, challenge_figures, challenge_measure, Challenge,
+};
 
 thread_local! {
     /// The text of the last Rust panic, kept for the worker to report after the trap it causes.

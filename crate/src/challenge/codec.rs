@@ -81,9 +81,8 @@ pub(super) fn field_order(base: &Scenario, key: &str) -> usize {
         .unwrap_or(usize::MAX)
 }
 
-/// The `key=value` pieces of a query, refusing pieces without `=`, duplicates and an
-/// over-long text.
-pub(super) fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
+/// Refuses a challenge or submission text longer than [`MAX_CHALLENGE_BYTES`].
+pub(super) fn check_length(text: &str) -> Result<(), ChallengeError> {
     if text.len() > MAX_CHALLENGE_BYTES {
         return Err(ChallengeError::malformed(format!(
             "the challenge is {} bytes long, more than the {MAX_CHALLENGE_BYTES} bytes ({} KiB) allowed",
@@ -91,6 +90,13 @@ pub(super) fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
             MAX_CHALLENGE_BYTES / 1024
         )));
     }
+    Ok(())
+}
+
+/// The `key=value` pieces of a query, refusing pieces without `=`, duplicates and an
+/// over-long text.
+pub(super) fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
+    check_length(text)?;
     let mut seen = HashSet::new();
     let mut out = Vec::new();
     for piece in query_of(text).split('&').filter(|p| !p.is_empty()) {
@@ -137,6 +143,22 @@ pub(super) fn apply_overrides(
     Ok(())
 }
 
+/// The built-in challenge named `name`, or the error naming the built-in ones.
+pub(super) fn builtin_named(name: &str) -> Result<Challenge, ChallengeError> {
+    let b = builtin(name).ok_or_else(|| {
+        ChallengeError::malformed(format!(
+            "'{}' is neither a challenge link nor a built-in challenge ({})",
+            excerpt(name),
+            BUILTINS
+                .iter()
+                .map(|b| b.name)
+                .collect::<Vec<_>>()
+                .join(", ")
+        ))
+    })?;
+    Ok(b.challenge())
+}
+
 /// Parses the challenge part of `text` (or a built-in's name) and returns it with the raw
 /// `try.*` pairs.
 pub(super) fn parse_parts(
@@ -144,18 +166,7 @@ pub(super) fn parse_parts(
 ) -> Result<(Challenge, Vec<(String, String)>), ChallengeError> {
     let trimmed = text.trim();
     if !trimmed.contains('=') {
-        let b = builtin(trimmed).ok_or_else(|| {
-            ChallengeError::malformed(format!(
-                "'{}' is neither a challenge link nor a built-in challenge ({})",
-                excerpt(trimmed),
-                BUILTINS
-                    .iter()
-                    .map(|b| b.name)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))
-        })?;
-        return Ok((b.challenge(), Vec::new()));
+        return Ok((builtin_named(trimmed)?, Vec::new()));
     }
     let pairs = pieces(text)?;
     let get = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
@@ -184,69 +195,175 @@ pub(super) fn parse_parts(
         }
     }
     let title = pct_decode("title", get("title").unwrap_or(""))?;
-    if title.chars().count() > MAX_TITLE_CHARS {
-        return Err(ChallengeError::malformed(format!(
-            "field 'title' is {} characters long, more than the {MAX_TITLE_CHARS} allowed",
-            title.chars().count()
-        )));
-    }
+    check_title(&title)?;
     let base_text = pct_decode(
         "base",
         get("base").ok_or_else(|| ChallengeError::malformed("field 'base' is missing"))?,
     )?;
-    let base = Scenario::parse(&base_text)
-        .map_err(|e| ChallengeError::malformed(format!("field 'base': {e}")))?;
-    let mut allow = Vec::new();
-    let mut need = Vec::new();
+    let mut draft = Draft::new(title, &base_text)?;
     let mut tries = Vec::new();
     for (k, v) in &pairs {
         if let Some(field) = k.strip_prefix("allow.") {
-            allow.push(parse_allow(&base, field, v)?);
+            draft.allow(field, v)?;
         } else if let Some(figure) = k.strip_prefix("need.") {
-            need.push(parse_need(&base, figure, v)?);
+            draft.need(figure, v)?;
         } else if let Some(field) = k.strip_prefix("try.") {
             tries.push((field.to_string(), pct_decode(k, v)?));
         }
     }
-    sort_small(&mut allow, |a| field_order(&base, &a.field));
-    if need.is_empty() {
-        return Err(ChallengeError::malformed(
-            "no criteria: add at least one need.FIGURE=OP",
-        ));
-    }
-    if need.len() > MAX_CRITERIA {
+    let challenge = draft
+        .finish(get("vary"), get("robust"))
+        .map_err(|(_, e)| e)?;
+    Ok((challenge, tries))
+}
+
+/// Refuses a title longer than [`MAX_TITLE_CHARS`].
+pub(super) fn check_title(title: &str) -> Result<(), ChallengeError> {
+    let chars = title.chars().count();
+    if chars > MAX_TITLE_CHARS {
         return Err(ChallengeError::malformed(format!(
-            "{} criteria, more than the {MAX_CRITERIA} allowed",
-            need.len()
+            "field 'title' is {chars} characters long, more than the {MAX_TITLE_CHARS} allowed"
         )));
     }
-    let vary = get("vary").map(|v| parse_vary(&base, v)).transpose()?;
-    let robust = match get("robust") {
-        None => Vec::new(),
-        Some(v) => parse_robust(&need, v)?,
-    };
-    match (&vary, robust.is_empty()) {
-        (Some(_), true) => {
-            return Err(ChallengeError::malformed(
-                "field 'vary': no criterion uses the variants (name them in robust=)",
-            ))
+    Ok(())
+}
+
+/// The part of a challenge an error is about, as the composer names it to the page.
+#[derive(Clone, Debug, PartialEq)]
+pub(super) enum Part {
+    /// `title`.
+    Title,
+    /// `base`.
+    Base,
+    /// `allow.FIELD`.
+    Allow(String),
+    /// `need.FIGURE`.
+    Need(String),
+    /// The criteria as a whole: none, or too many.
+    Criteria,
+    /// `vary`.
+    Vary,
+    /// `robust`.
+    Robust,
+    /// The whole text (its length).
+    Whole,
+}
+
+impl Part {
+    /// The key: `title`, `base`, `allow.FIELD`, `need.FIGURE`, `need`, `vary`, `robust` or
+    /// `challenge`.
+    pub(super) fn key(&self) -> String {
+        match self {
+            Part::Title => "title".to_string(),
+            Part::Base => "base".to_string(),
+            Part::Allow(field) => format!("allow.{field}"),
+            Part::Need(figure) => format!("need.{figure}"),
+            Part::Criteria => "need".to_string(),
+            Part::Vary => "vary".to_string(),
+            Part::Robust => "robust".to_string(),
+            Part::Whole => "challenge".to_string(),
         }
-        (None, false) => {
-            return Err(ChallengeError::malformed(
-                "field 'robust': there are no variants (add vary=)",
-            ))
-        }
-        _ => {}
     }
-    let challenge = Challenge {
-        title,
-        base: base.encode(),
-        allow,
-        need,
-        vary,
-        robust,
-    };
-    Ok((challenge, tries))
+}
+
+/// A challenge read part by part: the base first, then the allowed fields and the criteria in
+/// the order given, then the variants. The codec and the composer both build through it, so
+/// each part is checked by one rule whichever way it comes.
+pub(super) struct Draft {
+    title: String,
+    base: Scenario,
+    allow: Vec<Allow>,
+    need: Vec<Criterion>,
+}
+
+impl Draft {
+    /// A draft on the base scenario `base` (its text, decoded); `title` already checked.
+    pub(super) fn new(title: String, base: &str) -> Result<Draft, ChallengeError> {
+        let base = Scenario::parse(base)
+            .map_err(|e| ChallengeError::malformed(format!("field 'base': {e}")))?;
+        Ok(Draft {
+            title,
+            base,
+            allow: Vec::new(),
+            need: Vec::new(),
+        })
+    }
+
+    /// `allow.FIELD=VALUE`, the value as the codec writes it.
+    pub(super) fn allow(&mut self, field: &str, value: &str) -> Result<(), ChallengeError> {
+        self.allow.push(parse_allow(&self.base, field, value)?);
+        Ok(())
+    }
+
+    /// `need.FIGURE=OP`, the op as the codec writes it.
+    pub(super) fn need(&mut self, figure: &str, value: &str) -> Result<(), ChallengeError> {
+        self.need.push(parse_need(&self.base, figure, value)?);
+        Ok(())
+    }
+
+    /// The challenge, with `vary` and `robust` as the codec writes them (the overrides of a list
+    /// percent-encoded); an error comes with the part it is about.
+    pub(super) fn finish(
+        self,
+        vary: Option<&str>,
+        robust: Option<&str>,
+    ) -> Result<Challenge, (Part, ChallengeError)> {
+        let Draft {
+            title,
+            base,
+            mut allow,
+            need,
+        } = self;
+        sort_small(&mut allow, |a| field_order(&base, &a.field));
+        if need.is_empty() {
+            return Err((
+                Part::Criteria,
+                ChallengeError::malformed("no criteria: add at least one need.FIGURE=OP"),
+            ));
+        }
+        if need.len() > MAX_CRITERIA {
+            return Err((
+                Part::Criteria,
+                ChallengeError::malformed(format!(
+                    "{} criteria, more than the {MAX_CRITERIA} allowed",
+                    need.len()
+                )),
+            ));
+        }
+        let vary = vary
+            .map(|v| parse_vary(&base, v))
+            .transpose()
+            .map_err(|e| (Part::Vary, e))?;
+        let robust = match robust {
+            None => Vec::new(),
+            Some(v) => parse_robust(&need, v).map_err(|e| (Part::Robust, e))?,
+        };
+        match (&vary, robust.is_empty()) {
+            (Some(_), true) => {
+                return Err((
+                    Part::Vary,
+                    ChallengeError::malformed(
+                        "field 'vary': no criterion uses the variants (name them in robust=)",
+                    ),
+                ))
+            }
+            (None, false) => {
+                return Err((
+                    Part::Robust,
+                    ChallengeError::malformed("field 'robust': there are no variants (add vary=)"),
+                ))
+            }
+            _ => {}
+        }
+        Ok(Challenge {
+            title,
+            base: base.encode(),
+            allow,
+            need,
+            vary,
+            robust,
+        })
+    }
 }
 
 /// `allow.FIELD=VALUE`.

@@ -20,16 +20,20 @@
 //!
 //! [`Challenge::encode`] writes the keys in a fixed order (allowed fields in the scenario's field
 //! order, criteria as written), so one challenge has one text. A submission is that text
-//! followed by `&try.FIELD=VALUE` for the fields set (see [`Submission`]).
+//! followed by `&try.FIELD=VALUE` for the fields set (see [`Submission`]). Only the core writes
+//! these texts: [`Challenge::compose`] from a lecturer's parts, [`Challenge::submit`] from a
+//! student's values, and [`Challenge::from_link`] opens any of them.
 
 mod brief;
 mod builtin;
 mod codec;
+mod compose;
 mod judge;
 mod submission;
 
 pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
+pub use compose::{AllowPart, ChallengeParts, ComposeError, List, NeedPart, Text};
 pub use judge::{
     figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
@@ -37,7 +41,7 @@ pub use submission::Submission;
 
 use crate::quote::excerpt;
 use crate::scenario::Scenario;
-use codec::{parse_parts, pct_encode};
+use codec::{builtin_named, check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
 use std::fmt;
 
@@ -236,6 +240,23 @@ impl Challenge {
             )));
         }
         Ok(challenge)
+    }
+
+    /// Opens the challenge of any link the address bar may hold: a challenge link, a submission
+    /// link (its `try.*` parts are left out unread), `challenge=NAME` for a built-in one, or a
+    /// built-in's name; each bare or in a URL. The challenge is read by [`Challenge::parse`].
+    pub fn from_link(text: &str) -> Result<Challenge, ChallengeError> {
+        check_length(text)?;
+        let kept: Vec<&str> = query_of(text)
+            .split('&')
+            .filter(|p| !p.is_empty() && !p.starts_with("try."))
+            .collect();
+        if let [only] = kept[..] {
+            if let Some(name) = only.strip_prefix("challenge=") {
+                return builtin_named(name);
+            }
+        }
+        Challenge::parse(&kept.join("&"))
     }
 
     /// The canonical text: `c`, `title`, `base`, `allow.*` (field order), `need.*` (as

@@ -1,7 +1,7 @@
 //! A student's answer: a challenge with the values they set, checked against what it allows, and
 //! the scenarios its runs take.
 
-use super::codec::{apply_overrides, number, parse_parts, sort_small};
+use super::codec::{apply_overrides, number, parse_parts, pct_encode, sort_small};
 use super::{Allowed, Challenge, ChallengeError};
 use crate::quote::excerpt;
 use crate::scenario::{short, Scenario};
@@ -79,11 +79,12 @@ impl Submission {
         })
     }
 
-    /// The canonical text: the challenge's, then `try.FIELD=VALUE` in allow order.
+    /// The canonical text: the challenge's, then `try.FIELD=VALUE` in allow order, each value
+    /// percent-encoded as the codec encodes text.
     pub fn encode(&self) -> String {
         let mut out = self.challenge.encode();
         for (f, v) in &self.tries {
-            out.push_str(&format!("&try.{f}={v}"));
+            out.push_str(&format!("&try.{f}={}", pct_encode(v)));
         }
         out
     }
@@ -107,5 +108,27 @@ impl Submission {
             }
         }
         Ok(out)
+    }
+}
+
+impl Challenge {
+    /// The submission of a student's values, `tries` as [field, value] pairs in any order (the
+    /// values as typed): the canonical submission link, read back by [`Challenge::submission`]
+    /// as the codec reads any link, so a field not allowed, a value out of range or a field
+    /// given twice is refused with the same message.
+    pub fn submit(&self, tries: &[(String, String)]) -> Result<Submission, ChallengeError> {
+        let mut text = self.encode();
+        for (field, value) in tries {
+            // Only an allowed field's name goes into the text as it is: the allowed fields are
+            // scenario keys, which need no encoding.
+            if !self.allow.iter().any(|a| &a.field == field) {
+                return Err(ChallengeError::refused(format!(
+                    "field '{}' is not allowed",
+                    excerpt(field)
+                )));
+            }
+            text.push_str(&format!("&try.{field}={}", pct_encode(value)));
+        }
+        self.submission(&text)
     }
 }

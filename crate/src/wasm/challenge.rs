@@ -129,6 +129,23 @@ impl Challenge {
         Ok(Challenge { inner })
     }
 
+    /// Opens the challenge of any link the address bar may hold: a challenge link (`c=1&…`), a
+    /// submission link (its `&try.FIELD=VALUE` parts are left out unread), `challenge=NAME` or a
+    /// built-in's name, each a bare query or a URL (`?` before it and `#…` after it are
+    /// ignored); throws the message naming the offending key or field.
+    pub fn from_link(text: &str) -> Result<Challenge, JsValue> {
+        let inner = crate::challenge::Challenge::from_link(text).map_err(js_error)?;
+        Ok(Challenge { inner })
+    }
+
+    /// The challenge's parts, as [`challenge_compose`] takes them: `{title, base, allow: [{field,
+    /// lo, hi} | {field, options: [name]}], need: [{figure, op, bound}], vary, robust: [figure]}`
+    /// with numbers as the codec writes them (strings), `bound` left out for `band`, and `vary`
+    /// `"seeds:A..B"`, an array of override strings, or null.
+    pub fn parts(&self) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.parts())
+    }
+
     /// The canonical challenge link (query string).
     pub fn encode(&self) -> String {
         self.inner.encode()
@@ -228,17 +245,15 @@ impl Challenge {
         to_js(&view)
     }
 
-    /// The submission link of the student's settings: `tries` is an array of [field, value]
-    /// pairs (strings); throws the refusal (a field not allowed, a value out of range).
+    /// The canonical submission link of the student's settings (the challenge's link, then
+    /// `&try.FIELD=VALUE` in allow order, each value percent-encoded as the codec encodes text):
+    /// `tries` is an array of [field, value] pairs (strings, any order); throws the status of
+    /// the refusal, e.g. "refused: k1=5000 is outside 300..3000".
     pub fn submit(&self, tries: JsValue) -> Result<String, JsValue> {
         let tries: Vec<(String, String)> = from_js(tries)?;
-        let mut text = self.inner.encode();
-        for (f, v) in &tries {
-            text.push_str(&format!("&try.{f}={v}"));
-        }
         let s = self
             .inner
-            .submission(&text)
+            .submit(&tries)
             .map_err(|e| js_error(e.status()))?;
         Ok(s.encode())
     }
@@ -288,4 +303,49 @@ pub fn challenge_builtins() -> Result<JsValue, JsValue> {
 #[wasm_bindgen]
 pub fn challenge_figures() -> Result<JsValue, JsValue> {
     to_js(&crate::challenge::figures().collect::<Vec<_>>())
+}
+
+/// What [`challenge_compose`] gives: the link and the task in words, or the part at fault.
+#[derive(Serialize)]
+struct Composed {
+    /// The canonical challenge link (query string), or null.
+    encoded: Option<String>,
+    /// The task in words, or null.
+    brief: Option<String>,
+    /// `{key, message}` when the parts make no challenge, else null.
+    error: Option<crate::challenge::ComposeError>,
+}
+
+/// A challenge from the composer's parts, encoded and checked by the codec's rules part by
+/// part. `parts` is
+///
+/// ```text
+/// {title: string, base: string (a scenario string),
+///  allow: [{field, lo, hi} (a range; numbers or their text) | {field, options} (choices:
+///          an array of names, or one string "a|b")],
+///  need: [{figure, op: "max" | "min" | "abs" | "band", bound (number or text; none for band)}],
+///  vary: "seeds:A..B" | "OVERRIDES|OVERRIDES…" | [override strings] | "" | null,
+///  robust: [figure]}
+/// ```
+///
+/// (missing members are empty; text is trimmed). Never throws for parts of that shape: returns
+/// `{encoded, brief, error: null}`, or `{encoded: null, brief: null, error: {key, message}}`
+/// where `key` names the part at fault: `title`, `base`, `allow.FIELD`, `need.FIGURE`, `need`
+/// (no criterion, or too many), `vary`, `robust`, or `challenge` (the whole link too long).
+#[wasm_bindgen]
+pub fn challenge_compose(parts: JsValue) -> Result<JsValue, JsValue> {
+    let parts: crate::challenge::ChallengeParts = from_js(parts)?;
+    let view = match crate::challenge::Challenge::compose(&parts) {
+        Ok(c) => Composed {
+            encoded: Some(c.encode()),
+            brief: Some(c.brief()),
+            error: None,
+        },
+        Err(e) => Composed {
+            encoded: None,
+            brief: None,
+            error: Some(e),
+        },
+    };
+    to_js(&view)
 }
