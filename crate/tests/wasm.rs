@@ -264,6 +264,28 @@ fn challenge_links_are_written_and_opened_by_the_core() {
     );
     let e = error_text(c.submit(pairs(&[("k1", "9000")])).unwrap_err());
     assert_eq!(e, "refused: k1=9000 is outside 300..5000");
+    // The same as the view a submission link gives, without the link.
+    #[derive(Deserialize)]
+    struct View {
+        kind: String,
+        message: String,
+        encoded: String,
+        scenarios: Vec<String>,
+    }
+    let view = |v| -> View { serde_wasm_bindgen::from_value(v).unwrap() };
+    let of = view(
+        c.submission_of(pairs(&[("k1", "2000"), ("k2", "2000")]))
+            .unwrap(),
+    );
+    assert_eq!(
+        (of.kind.as_str(), of.encoded.as_str()),
+        ("ok", link.as_str())
+    );
+    assert_eq!(of.scenarios, view(c.submission(&link).unwrap()).scenarios);
+    let refused = view(c.submission_of(pairs(&[("k1", "9000")])).unwrap());
+    assert_eq!(refused.kind, "refused");
+    assert_eq!(refused.message, "k1=9000 is outside 300..5000");
+    assert!(refused.encoded.is_empty() && refused.scenarios.is_empty());
     // The composer: the challenge's parts compose to its link and brief, and an error names the
     // part at fault.
     #[derive(Deserialize)]

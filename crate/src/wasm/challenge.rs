@@ -220,29 +220,16 @@ impl Challenge {
     /// A submission link of this challenge (bare query or URL): never throws; returns
     /// `{kind, status, message, encoded, tries, scenarios}` (see the fields' docs).
     pub fn submission(&self, text: &str) -> Result<JsValue, JsValue> {
-        let read = self
-            .inner
-            .submission(text)
-            .and_then(|s| s.scenarios().map(|runs| (s, runs)));
-        let view = match read {
-            Ok((s, runs)) => SubmissionView {
-                kind: SubmissionKind::Ok,
-                status: "ok".to_string(),
-                message: String::new(),
-                encoded: s.encode(),
-                tries: s.tries.clone(),
-                scenarios: runs.iter().map(Scenario::encode).collect(),
-            },
-            Err(e) => SubmissionView {
-                kind: e.kind.into(),
-                status: e.status(),
-                message: e.message.clone(),
-                encoded: String::new(),
-                tries: Vec::new(),
-                scenarios: Vec::new(),
-            },
-        };
-        to_js(&view)
+        to_js(&submission_view(self.inner.submission(text)))
+    }
+
+    /// The submission of the student's settings, as [`Challenge::submission`] reads its
+    /// canonical link (see [`Challenge::submit`]): `tries` is an array of [field, value] pairs
+    /// (strings, any order); never throws for pairs of strings; returns `{kind, status, message,
+    /// encoded, tries, scenarios}`, `encoded` the canonical submission link when `kind` is "ok".
+    pub fn submission_of(&self, tries: JsValue) -> Result<JsValue, JsValue> {
+        let tries: Vec<(String, String)> = from_js(tries)?;
+        to_js(&submission_view(self.inner.submit(&tries)))
     }
 
     /// The canonical submission link of the student's settings (the challenge's link, then
@@ -265,6 +252,30 @@ impl Challenge {
         let runs: Vec<crate::challenge::Measures> = from_js(runs)?;
         let verdict = crate::challenge::judge(&self.inner, &runs).map_err(js_error)?;
         to_js(&verdict)
+    }
+}
+
+/// What a submission read gives the page: its status and, when it can run, its scenarios.
+fn submission_view(
+    read: Result<crate::challenge::Submission, crate::challenge::ChallengeError>,
+) -> SubmissionView {
+    match read.and_then(|s| s.scenarios().map(|runs| (s, runs))) {
+        Ok((s, runs)) => SubmissionView {
+            kind: SubmissionKind::Ok,
+            status: "ok".to_string(),
+            message: String::new(),
+            encoded: s.encode(),
+            tries: s.tries.clone(),
+            scenarios: runs.iter().map(Scenario::encode).collect(),
+        },
+        Err(e) => SubmissionView {
+            kind: e.kind.into(),
+            status: e.status(),
+            message: e.message.clone(),
+            encoded: String::new(),
+            tries: Vec::new(),
+            scenarios: Vec::new(),
+        },
     }
 }
 
