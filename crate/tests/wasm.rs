@@ -232,7 +232,7 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
 
 #[wasm_bindgen_test]
 fn challenge_links_are_written_and_opened_by_the_core() {
-    use imlab::challenge::{self, ChallengeParts, NeedPart, Text};
+    use imlab::challenge::{self, ChallengeParts, FormNumber, NeedPart};
     use imlab::wasm::{challenge_compose, Challenge};
     use serde::Deserialize;
     let b = challenge::builtin("step-tune").unwrap();
@@ -309,7 +309,7 @@ fn challenge_links_are_written_and_opened_by_the_core() {
         need: vec![NeedPart {
             figure: "peak".to_string(),
             op: "max".to_string(),
-            bound: Some(Text::Number(4.0)),
+            bound: Some(FormNumber::Number(4.0)),
         }],
         ..ChallengeParts::default()
     };

@@ -12,19 +12,19 @@ use std::fmt;
 /// A number as a form holds it: text as typed, or a number.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
-pub enum Text {
+pub enum FormNumber {
     /// A number.
     Number(f64),
     /// Text, read as the codec reads a number.
     Text(String),
 }
 
-impl Text {
+impl FormNumber {
     /// The codec text: a number as Rust writes it, text trimmed.
     fn text(&self) -> String {
         match self {
-            Text::Number(v) => format!("{v}"),
-            Text::Text(t) => t.trim().to_string(),
+            FormNumber::Number(v) => format!("{v}"),
+            FormNumber::Text(t) => t.trim().to_string(),
         }
     }
 }
@@ -32,19 +32,19 @@ impl Text {
 /// Several names, or several strings: a list, or one text with `|` between them.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
-pub enum List {
+pub enum FormList {
     /// One string each.
     Items(Vec<String>),
     /// One text, `a|b|…`.
     Text(String),
 }
 
-impl List {
+impl FormList {
     /// The items, each trimmed.
     fn items(&self) -> Vec<String> {
         match self {
-            List::Items(items) => items.iter().map(|i| i.trim().to_string()).collect(),
-            List::Text(text) => text.split('|').map(|i| i.trim().to_string()).collect(),
+            FormList::Items(items) => items.iter().map(|i| i.trim().to_string()).collect(),
+            FormList::Text(text) => text.split('|').map(|i| i.trim().to_string()).collect(),
         }
     }
 }
@@ -57,13 +57,13 @@ pub struct AllowPart {
     pub field: String,
     /// Smallest value of a range.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub lo: Option<Text>,
+    pub lo: Option<FormNumber>,
     /// Largest value of a range.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub hi: Option<Text>,
+    pub hi: Option<FormNumber>,
     /// The names the student may choose from.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub options: Option<List>,
+    pub options: Option<FormList>,
 }
 
 /// One criterion: a figure, how it is bounded (`max`, `min`, `abs` or `band`) and the bound
@@ -77,7 +77,7 @@ pub struct NeedPart {
     pub op: String,
     /// The bound, in the figure's unit.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub bound: Option<Text>,
+    pub bound: Option<FormNumber>,
 }
 
 /// The parts of a challenge as a lecturer fills them in. `vary` is `seeds:A..B`, override strings
@@ -94,7 +94,7 @@ pub struct ChallengeParts {
     /// The criteria, in order.
     pub need: Vec<NeedPart>,
     /// The robustness variants.
-    pub vary: Option<List>,
+    pub vary: Option<FormList>,
     /// The figures of the criteria that must hold on every variant too.
     pub robust: Vec<String>,
 }
@@ -138,7 +138,7 @@ fn twice(part: &Part) -> ComposeError {
 impl AllowPart {
     /// The codec's value: `LO..HI` or `a|b`.
     fn text(&self, part: &Part) -> Result<String, ComposeError> {
-        let show = |t: &Option<Text>| t.as_ref().map_or(String::new(), Text::text);
+        let show = |t: &Option<FormNumber>| t.as_ref().map_or(String::new(), FormNumber::text);
         match &self.options {
             Some(_) if self.lo.is_some() || self.hi.is_some() => Err(ComposeError {
                 key: part.key(),
@@ -160,19 +160,19 @@ impl NeedPart {
         if op == "band" {
             return op.to_string();
         }
-        let bound = self.bound.as_ref().map_or(String::new(), Text::text);
+        let bound = self.bound.as_ref().map_or(String::new(), FormNumber::text);
         format!("{op}:{bound}")
     }
 }
 
 /// The codec's `vary`: `seeds:A..B` as written, or the overrides percent-encoded and joined by
 /// `|`; None for no variants.
-fn vary_text(vary: &Option<List>) -> Option<String> {
+fn vary_text(vary: &Option<FormList>) -> Option<String> {
     match vary {
         None => None,
-        Some(List::Text(t)) if t.trim().is_empty() => None,
-        Some(List::Items(items)) if items.is_empty() => None,
-        Some(List::Text(t)) if t.trim().starts_with("seeds:") => Some(t.trim().to_string()),
+        Some(FormList::Text(t)) if t.trim().is_empty() => None,
+        Some(FormList::Items(items)) if items.is_empty() => None,
+        Some(FormList::Text(t)) if t.trim().starts_with("seeds:") => Some(t.trim().to_string()),
         Some(list) => Some(
             list.items()
                 .iter()
@@ -224,7 +224,7 @@ impl Challenge {
     /// The challenge's parts, as [`Challenge::compose`] takes them: numbers as the codec writes
     /// them, choices and overrides as lists, seeds as `seeds:A..B`.
     pub fn parts(&self) -> ChallengeParts {
-        let text = |v: f64| Some(Text::Text(format!("{v}")));
+        let text = |v: f64| Some(FormNumber::Text(format!("{v}")));
         ChallengeParts {
             title: self.title.clone(),
             base: self.base.clone(),
@@ -242,7 +242,7 @@ impl Challenge {
                         field: a.field.clone(),
                         lo: None,
                         hi: None,
-                        options: Some(List::Items(options.clone())),
+                        options: Some(FormList::Items(options.clone())),
                     },
                 })
                 .collect(),
@@ -264,8 +264,8 @@ impl Challenge {
                 })
                 .collect(),
             vary: self.vary.as_ref().map(|v| match v {
-                Variants::Seeds { first, last } => List::Text(format!("seeds:{first}..{last}")),
-                Variants::List { overrides } => List::Items(overrides.clone()),
+                Variants::Seeds { first, last } => FormList::Text(format!("seeds:{first}..{last}")),
+                Variants::List { overrides } => FormList::Items(overrides.clone()),
             }),
             robust: self.robust.clone(),
         }

@@ -33,7 +33,7 @@ mod submission;
 
 pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
-pub use compose::{AllowPart, ChallengeParts, ComposeError, List, NeedPart, Text};
+pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use judge::{
     figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
