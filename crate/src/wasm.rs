@@ -11,6 +11,12 @@ use serde::Serialize;
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
+mod challenge;
+
+pub use challenge::{
+    challenge_builtins, challenge_compose, challenge_figures, challenge_measure, Challenge,
+};
+
 thread_local! {
     /// The text of the last Rust panic, kept for the worker to report after the trap it causes.
     static LAST_PANIC: std::cell::RefCell<Option<String>> = const { std::cell::RefCell::new(None) };
@@ -189,7 +195,10 @@ impl Simulation {
         to_js(&self.inner.stability())
     }
 
-    /// RMS tracking and estimation errors, mean NIS and saturation of the run.
+    /// RMS tracking and estimation errors, mean NIS and saturation of the run, by the report's
+    /// names where it gives the figure too: `{transient_end, tracking_rms, tracking_peak,
+    /// speed_estimate_error_rms, flux_estimate_error_rms, mean_nis, saturated_share}`, or null
+    /// when nothing is recorded.
     pub fn metrics(&self) -> Result<JsValue, JsValue> {
         to_js(&self.inner.metrics())
     }
@@ -375,7 +384,9 @@ pub fn excerpt(text: &str) -> String {
     crate::quote::excerpt(text)
 }
 
-/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces.
+/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces:
+/// `{result: {seed, tracking_rms, speed_estimate_error_rms, tracking_peak, failure}, t, error,
+/// estimate}`.
 #[wasm_bindgen]
 pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
@@ -573,244 +584,4 @@ impl Comparison {
             .map(|c| Float64Array::from(c.as_slice()))
             .collect())
     }
-}
-
-/// A design challenge, parsed once: its description, the scenarios a submission runs and the
-/// verdict on their measures. The page runs each scenario in a worker (`new Simulation(text)`,
-/// stepped to the end), measures it there with [`challenge_measure`] and judges the measures
-/// here, so only small JSON crosses between workers.
-#[wasm_bindgen]
-pub struct Challenge {
-    inner: crate::challenge::Challenge,
-}
-
-/// An allowed field as the page shows it.
-#[derive(Serialize)]
-struct AllowView {
-    field: String,
-    /// "range" or "choice".
-    kind: &'static str,
-    lo: Option<f64>,
-    hi: Option<f64>,
-    options: Vec<String>,
-    unit: &'static str,
-    doc: &'static str,
-    /// The base scenario's value, as the codec writes it.
-    value: Option<String>,
-}
-
-/// A criterion as the page shows it.
-#[derive(Serialize)]
-struct NeedView {
-    figure: String,
-    label: &'static str,
-    unit: &'static str,
-    /// "max", "min", "abs" or "band".
-    op: &'static str,
-    bound: Option<f64>,
-    /// Whether it must hold on every variant too.
-    robust: bool,
-}
-
-#[derive(Serialize)]
-struct ChallengeView {
-    title: String,
-    base: String,
-    encoded: String,
-    allow: Vec<AllowView>,
-    need: Vec<NeedView>,
-    /// Each variant's override string (`seed=2`, `model.j=0.016`).
-    variants: Vec<String>,
-    brief: String,
-}
-
-/// What a submission link gives: its status and, when it can run, the scenarios to run.
-#[derive(Serialize)]
-struct SubmissionView {
-    /// "ok", "malformed", "refused" or "another".
-    kind: &'static str,
-    /// "ok", or the grading status: "malformed: …", "refused: …", "another challenge".
-    status: String,
-    /// The error's message ("" when ok).
-    message: String,
-    /// The canonical submission link ("" unless ok).
-    encoded: String,
-    /// The fields set, [field, value] in allow order.
-    tries: Vec<(String, String)>,
-    /// Scenario strings: the nominal run first, then one per variant (empty unless ok).
-    scenarios: Vec<String>,
-}
-
-#[wasm_bindgen]
-impl Challenge {
-    /// Parses a challenge link (bare query, or a URL whose query it is) or a built-in's name;
-    /// throws the message naming the offending key or field.
-    #[wasm_bindgen(constructor)]
-    pub fn new(text: &str) -> Result<Challenge, JsValue> {
-        let inner = crate::challenge::Challenge::parse(text).map_err(js_error)?;
-        Ok(Challenge { inner })
-    }
-
-    /// The canonical challenge link (query string).
-    pub fn encode(&self) -> String {
-        self.inner.encode()
-    }
-
-    /// The task as plain text.
-    pub fn brief(&self) -> String {
-        self.inner.brief()
-    }
-
-    /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
-    /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief}`.
-    pub fn describe(&self) -> Result<JsValue, JsValue> {
-        use crate::challenge::{figure_info, Allowed, Op};
-        let c = &self.inner;
-        let fields = c.base_scenario().describe();
-        let allow = c
-            .allow
-            .iter()
-            .map(|a| {
-                let f = fields.iter().find(|f| f.key == a.field).expect("checked");
-                let (kind, lo, hi, options) = match &a.allowed {
-                    Allowed::Range { lo, hi } => ("range", Some(*lo), Some(*hi), Vec::new()),
-                    Allowed::Choice { options } => ("choice", None, None, options.clone()),
-                };
-                AllowView {
-                    field: a.field.clone(),
-                    kind,
-                    lo,
-                    hi,
-                    options,
-                    unit: f.unit,
-                    doc: f.doc,
-                    value: f.value.clone(),
-                }
-            })
-            .collect();
-        let need = c
-            .need
-            .iter()
-            .map(|n| {
-                let f = figure_info(&n.figure).expect("checked");
-                let (op, bound) = match n.op {
-                    Op::Max(b) => ("max", Some(b)),
-                    Op::Min(b) => ("min", Some(b)),
-                    Op::Abs(b) => ("abs", Some(b)),
-                    Op::Band => ("band", None),
-                };
-                NeedView {
-                    figure: n.figure.clone(),
-                    label: f.label,
-                    unit: f.unit,
-                    op,
-                    bound,
-                    robust: c.is_robust(&n.figure),
-                }
-            })
-            .collect();
-        to_js(&ChallengeView {
-            title: c.title.clone(),
-            base: c.base.clone(),
-            encoded: c.encode(),
-            allow,
-            need,
-            variants: c.run_labels().into_iter().skip(1).collect(),
-            brief: c.brief(),
-        })
-    }
-
-    /// A submission link of this challenge (bare query or URL): never throws; returns
-    /// `{kind, status, message, encoded, tries, scenarios}` (see the fields' docs).
-    pub fn submission(&self, text: &str) -> Result<JsValue, JsValue> {
-        use crate::challenge::ErrorKind;
-        let read = self
-            .inner
-            .submission(text)
-            .and_then(|s| s.scenarios().map(|runs| (s, runs)));
-        let view = match read {
-            Ok((s, runs)) => SubmissionView {
-                kind: "ok",
-                status: "ok".to_string(),
-                message: String::new(),
-                encoded: s.encode(),
-                tries: s.tries.clone(),
-                scenarios: runs.iter().map(Scenario::encode).collect(),
-            },
-            Err(e) => SubmissionView {
-                kind: match e.kind {
-                    ErrorKind::Malformed => "malformed",
-                    ErrorKind::Refused => "refused",
-                    ErrorKind::Another => "another",
-                },
-                status: e.status(),
-                message: e.message.clone(),
-                encoded: String::new(),
-                tries: Vec::new(),
-                scenarios: Vec::new(),
-            },
-        };
-        to_js(&view)
-    }
-
-    /// The submission link of the student's settings: `tries` is an array of [field, value]
-    /// pairs (strings); throws the refusal (a field not allowed, a value out of range).
-    pub fn submit(&self, tries: JsValue) -> Result<String, JsValue> {
-        let tries: Vec<(String, String)> = from_js(tries)?;
-        let mut text = self.inner.encode();
-        for (f, v) in &tries {
-            text.push_str(&format!("&try.{f}={v}"));
-        }
-        let s = self
-            .inner
-            .submission(&text)
-            .map_err(|e| js_error(e.status()))?;
-        Ok(s.encode())
-    }
-
-    /// Judges the measures of the runs (`runs[0]` the nominal run, then one per variant, each
-    /// what [`challenge_measure`] returned): `{criteria: [{figure, label, bound, value, unit, run,
-    /// pass, reason}], pass}`; throws when the count of runs is wrong.
-    pub fn judge(&self, runs: JsValue) -> Result<JsValue, JsValue> {
-        let runs: Vec<crate::challenge::Measures> = from_js(runs)?;
-        let verdict = crate::challenge::judge(&self.inner, &runs).map_err(js_error)?;
-        to_js(&verdict)
-    }
-}
-
-/// The measures of a finished run for judging a challenge: `{figures: [{name, value, unit,
-/// settled}], failure}` (`value` may be Infinity: a load never recovered from; `failure` a
-/// message when the run failed or ran away, else null).
-#[wasm_bindgen]
-pub fn challenge_measure(sim: &Simulation) -> Result<JsValue, JsValue> {
-    to_js(&crate::challenge::measure(&sim.inner))
-}
-
-/// The built-in challenges: `[{name, summary, text, solution}]` (`text` the canonical link;
-/// `solution` a passing `field=value&…`).
-#[wasm_bindgen]
-pub fn challenge_builtins() -> Result<JsValue, JsValue> {
-    #[derive(Serialize)]
-    struct View {
-        name: &'static str,
-        summary: &'static str,
-        text: &'static str,
-        solution: &'static str,
-    }
-    let list: Vec<View> = crate::challenge::BUILTINS
-        .iter()
-        .map(|b| View {
-            name: b.name,
-            summary: b.summary,
-            text: b.text,
-            solution: b.solution,
-        })
-        .collect();
-    to_js(&list)
-}
-
-/// The figures a challenge's criteria may name: `[{name, label, unit}]`.
-#[wasm_bindgen]
-pub fn challenge_figures() -> Result<JsValue, JsValue> {
-    to_js(&crate::challenge::figures().collect::<Vec<_>>())
 }

@@ -5,8 +5,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{
-    figure_info, judge, measure, Challenge, ErrorKind, Measure, Measures, Submission, Verdict,
-    BUILTINS, LOAD_RECOVERY,
+    builtin, figure_info, judge, measure, Challenge, ChallengeParts, ErrorKind, Measure, Measures,
+    Submission, Verdict, BUILTINS, LOAD_RECOVERY,
 };
 use imlab::sim::Simulation;
 use std::process::{Command, Stdio};
@@ -563,5 +563,338 @@ fn grade_writes_one_row_per_link_with_status_and_pass() {
             .output()
             .unwrap();
         assert_eq!(out.status.code(), Some(2), "{args:?}");
+    }
+}
+
+/// SMALL's canonical text.
+const SMALL_CANONICAL: &str = "c=1&title=Quick%20step&base=v%3D1%26preset%3Dstep%26duration%3D0.08\
+     &allow.k1=300..3000&allow.k2=300..3000&allow.ekf=euler|rk4\
+     &need.settling_time=max:0.006&need.current_peak=max:4&need.mean_nis=band\
+     &vary=model.j%3D0.016|model.j%3D0.024&robust=current_peak";
+
+/// Parts as the page's composer sends them: text as typed, numbers or their text, choices and
+/// variants as one text each.
+fn form_parts(json: &str) -> ChallengeParts {
+    serde_json::from_str(json).unwrap()
+}
+
+#[test]
+fn composed_parts_give_the_canonical_link_the_codec_reads_back() {
+    let parts = form_parts(
+        r#"{"title": " Quick step ", "base": "v=1&preset=step&duration=0.08",
+            "allow": [{"field": "k2", "lo": "300", "hi": "3000"}, {"field": "k1", "lo": 300, "hi": 3e3},
+                      {"field": "ekf", "options": "rk4 | euler"}],
+            "need": [{"figure": "settling_time", "op": "max", "bound": "0.006"},
+                     {"figure": "current_peak", "op": "max", "bound": 4},
+                     {"figure": "mean_nis", "op": "band", "bound": ""}],
+            "vary": " model.j=0.016 | model.j=0.024", "robust": ["current_peak"]}"#,
+    );
+    let c = Challenge::compose(&parts).unwrap();
+    assert_eq!(c.encode(), SMALL_CANONICAL);
+    assert_eq!(Challenge::parse(&c.encode()).unwrap(), c);
+    assert_eq!(c, Challenge::parse(SMALL).unwrap());
+    // Seeds, no variants at all, and text that needs encoding.
+    let parts = form_parts(
+        r#"{"title": "Ümlaut & co: 50 %", "base": "step",
+            "need": [{"figure": "current_peak", "op": "abs", "bound": "4"}],
+            "vary": "seeds:2..4", "robust": ["current_peak"]}"#,
+    );
+    let c = Challenge::compose(&parts).unwrap();
+    assert_eq!(c.title, "Ümlaut & co: 50 %");
+    assert_eq!(c.run_labels(), ["nominal", "seed=2", "seed=3", "seed=4"]);
+    assert_eq!(Challenge::parse(&c.encode()).unwrap(), c);
+    for vary in [r#""""#, "null", "[]"] {
+        let parts = form_parts(&format!(
+            r#"{{"base": "step", "need": [{{"figure": "current_peak", "op": "max", "bound": 4}}], "vary": {vary}}}"#
+        ));
+        let c = Challenge::compose(&parts).unwrap();
+        assert_eq!(c.vary, None, "{vary}");
+        assert_eq!(Challenge::parse(&c.encode()).unwrap(), c);
+    }
+    // Overrides as a list, one of them with a value the codec must encode.
+    let parts = form_parts(
+        r#"{"base": "step", "need": [{"figure": "current_peak", "op": "max", "bound": 4}],
+            "vary": ["model.j=0.016&k1=1500", "model.j=0.024"], "robust": ["current_peak"]}"#,
+    );
+    let c = Challenge::compose(&parts).unwrap();
+    // Each override canonical: its fields in the codec's order.
+    assert!(
+        c.encode()
+            .contains("&vary=k1%3D1500%26model.j%3D0.016|model.j%3D0.024&"),
+        "{}",
+        c.encode()
+    );
+    assert_eq!(Challenge::parse(&c.encode()).unwrap(), c);
+}
+
+#[test]
+fn each_built_in_taken_apart_and_composed_again_is_its_text() {
+    for b in BUILTINS {
+        let c = b.challenge();
+        let parts = c.parts();
+        assert_eq!(
+            Challenge::compose(&parts).unwrap().encode(),
+            b.text,
+            "{}",
+            b.name
+        );
+        // Through the JSON the bindings hand to the page and take back.
+        let json = serde_json::to_string(&parts).unwrap();
+        let again: ChallengeParts = serde_json::from_str(&json).unwrap();
+        assert_eq!(again, parts, "{json}");
+        assert_eq!(Challenge::compose(&again).unwrap(), c, "{}", b.name);
+    }
+    // The shape the page reads.
+    let json = serde_json::to_value(builtin("load-observer").unwrap().challenge().parts()).unwrap();
+    assert_eq!(
+        json["allow"][0],
+        serde_json::json!({"field": "ekf", "options": ["euler", "rk4"]})
+    );
+    assert_eq!(
+        json["allow"][1],
+        serde_json::json!({"field": "ekf.q", "lo": "0.000001", "hi": "1"})
+    );
+    assert_eq!(
+        json["need"][1],
+        serde_json::json!({"figure": "mean_nis", "op": "band"})
+    );
+    assert_eq!(json["vary"], "seeds:2..3");
+    assert_eq!(json["robust"], serde_json::json!(["speed_error_final"]));
+}
+
+#[test]
+fn a_composer_error_names_the_part_at_fault() {
+    let base = r#""base": "v=1&preset=step""#;
+    let need = r#""need": [{"figure": "current_peak", "op": "max", "bound": 4}]"#;
+    let cases: &[(String, &str, &str)] = &[
+        (
+            format!(r#"{{"title": "{}", {base}, {need}}}"#, "x".repeat(121)),
+            "title",
+            "121 characters long",
+        ),
+        (
+            format!(r#"{{"base": "v=1&preset=nope", {need}}}"#),
+            "base",
+            "field 'base': field 'preset'",
+        ),
+        (format!(r#"{{"base": "", {need}}}"#), "base", "field 'base'"),
+        (
+            format!(
+                r#"{{{base}, {need}, "allow": [{{"field": "k1", "lo": "2000", "hi": "300"}}]}}"#
+            ),
+            "allow.k1",
+            "field 'allow.k1' = '2000..300': expected LO..HI",
+        ),
+        (
+            format!(
+                r#"{{{base}, {need}, "allow": [{{"field": "k1", "lo": "fast", "hi": "300"}}]}}"#
+            ),
+            "allow.k1",
+            "expected LO..HI",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "allow": [{{"field": "k1"}}]}}"#),
+            "allow.k1",
+            "field 'allow.k1' = '..'",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "allow": [{{"field": "kk", "lo": 1, "hi": 2}}]}}"#),
+            "allow.kk",
+            "'kk' is not a scenario field",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "allow": [{{"field": "ekf", "options": "euler|rk5"}}]}}"#),
+            "allow.ekf",
+            "expected distinct names from euler|rk4",
+        ),
+        (
+            format!(
+                r#"{{{base}, {need}, "allow": [{{"field": "ekf", "options": ["rk4"], "lo": 1}}]}}"#
+            ),
+            "allow.ekf",
+            "not both",
+        ),
+        (
+            format!(
+                r#"{{{base}, {need}, "allow": [{{"field": "k1", "lo": 1, "hi": 2}}, {{"field": "k1", "lo": 1, "hi": 3}}]}}"#
+            ),
+            "allow.k1",
+            "field 'allow.k1' is given more than once",
+        ),
+        (
+            format!(r#"{{{base}, "need": [{{"figure": "peak", "op": "max", "bound": 4}}]}}"#),
+            "need.peak",
+            "'peak' is not a figure",
+        ),
+        (
+            format!(
+                r#"{{{base}, "need": [{{"figure": "current_peak", "op": "most", "bound": 4}}]}}"#
+            ),
+            "need.current_peak",
+            "field 'need.current_peak' = 'most:4'",
+        ),
+        (
+            format!(r#"{{{base}, "need": [{{"figure": "current_peak", "op": "max"}}]}}"#),
+            "need.current_peak",
+            "field 'need.current_peak' = 'max:'",
+        ),
+        (
+            format!(r#"{{{base}, "need": [{{"figure": "current_peak", "op": "band"}}]}}"#),
+            "need.current_peak",
+            "only mean_nis has a band",
+        ),
+        (
+            format!(
+                r#"{{{base}, "need": [{{"figure": "load_recovery_time", "op": "max", "bound": 1}}]}}"#
+            ),
+            "need.load_recovery_time",
+            "the base has no load step",
+        ),
+        (format!(r#"{{{base}}}"#), "need", "no criteria"),
+        (
+            format!(r#"{{{base}, {need}, "vary": "seeds:1..30", "robust": ["current_peak"]}}"#),
+            "vary",
+            "field 'vary' = 'seeds:1..30'",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "vary": "k1=-1", "robust": ["current_peak"]}}"#),
+            "vary",
+            "field 'vary', variant 1: field 'k1'",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "vary": "model.j=0.016|", "robust": ["current_peak"]}}"#),
+            "vary",
+            "field 'vary', variant 2 is empty",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "vary": "seed=2"}}"#),
+            "vary",
+            "no criterion uses the variants",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "robust": ["current_peak"]}}"#),
+            "robust",
+            "there are no variants",
+        ),
+        (
+            format!(r#"{{{base}, {need}, "vary": "seed=2", "robust": ["mean_nis"]}}"#),
+            "robust",
+            "'mean_nis' is not the figure of a criterion",
+        ),
+        (
+            format!(
+                r#"{{{base}, {need}, "vary": "{}", "robust": ["current_peak"]}}"#,
+                vec![format!("k1=1000.{}", "0".repeat(900)); 20].join("|")
+            ),
+            "challenge",
+            "16384 bytes (16 KiB) allowed",
+        ),
+    ];
+    for (json, key, needle) in cases {
+        let e = Challenge::compose(&form_parts(json)).expect_err(json);
+        assert_eq!(e.key, *key, "{json}: {e}");
+        assert!(e.message.contains(needle), "{json}: {e}");
+    }
+}
+
+#[test]
+fn any_link_of_a_challenge_opens_it() {
+    let c = Challenge::parse(SMALL).unwrap();
+    let step_tune = builtin("step-tune").unwrap().challenge();
+    for link in [
+        SMALL.to_string(),
+        SMALL_CANONICAL.to_string(),
+        format!("{SMALL}&try.k1=2000&try.ekf=rk4"),
+        // The tries are left out unread: a bad or repeated one does not stop the challenge.
+        format!("{SMALL}&try.k1=%ZZ&try.k1=2&try.=x"),
+        format!("https://lab.example/im/?{SMALL}&try.k1=2000#results"),
+        format!("?try.k2=900&{SMALL}"),
+    ] {
+        assert_eq!(Challenge::from_link(&link).unwrap(), c, "{link}");
+    }
+    for link in [
+        "step-tune",
+        "challenge=step-tune",
+        "?challenge=step-tune",
+        "https://lab.example/im/?challenge=step-tune#top",
+    ] {
+        assert_eq!(Challenge::from_link(link).unwrap(), step_tune, "{link}");
+    }
+    let refused = |link: &str| Challenge::from_link(link).unwrap_err().message;
+    assert!(refused("challenge=nope").contains("'nope' is neither a challenge link nor a built-in"));
+    assert!(refused("v=1&preset=step").contains("field 'c' is missing"));
+    assert!(refused(&format!("{SMALL}&need.bogus=max:1")).contains("'need.bogus'"));
+    assert!(refused(&format!("{SMALL}&try.k1={}", "9".repeat(20_000))).contains("16 KiB"));
+}
+
+#[test]
+fn a_submission_written_from_values_is_the_canonical_link_and_reads_back() {
+    let c = Challenge::parse(SMALL).unwrap();
+    let tries = |pairs: &[(&str, &str)]| -> Vec<(String, String)> {
+        pairs
+            .iter()
+            .map(|(f, v)| (f.to_string(), v.to_string()))
+            .collect()
+    };
+    let s = c
+        .submit(&tries(&[("ekf", "rk4"), ("k1", "2000.0")]))
+        .unwrap();
+    assert_eq!(
+        s.encode(),
+        format!("{SMALL_CANONICAL}&try.k1=2000&try.ekf=rk4")
+    );
+    assert_eq!(c.submission(&s.encode()).unwrap(), s);
+    assert_eq!(Submission::parse(&s.encode()).unwrap(), s);
+    // No values: the challenge's own link.
+    let none = c.submit(&[]).unwrap();
+    assert_eq!(none.encode(), SMALL_CANONICAL);
+    assert_eq!(c.submission(&none.encode()).unwrap(), none);
+    // A value is encoded, so it cannot add parts of its own to the link.
+    let e = c.submit(&tries(&[("k1", "1&try.k2=5")])).unwrap_err();
+    assert_eq!(e.kind, ErrorKind::Malformed);
+    assert!(
+        e.message.contains("'try.k1' = '1&try.k2=5': not a number"),
+        "{e}"
+    );
+    // Refusals as the codec words them.
+    for (pairs, kind, needle) in [
+        (
+            &[("k3", "500")][..],
+            ErrorKind::Refused,
+            "field 'k3' is not allowed",
+        ),
+        (
+            &[("k1", "5000")][..],
+            ErrorKind::Refused,
+            "k1=5000 is outside 300..3000",
+        ),
+        (
+            &[("ekf", "rk5")][..],
+            ErrorKind::Refused,
+            "ekf=rk5 is not one of euler|rk4",
+        ),
+        (
+            &[("k1", "1000"), ("k1", "2000")][..],
+            ErrorKind::Malformed,
+            "'try.k1' is given more than once",
+        ),
+    ] {
+        let e = c.submit(&tries(pairs)).unwrap_err();
+        assert_eq!(e.kind, kind, "{pairs:?}: {e}");
+        assert!(e.message.contains(needle), "{pairs:?}: {e}");
+    }
+    // Every built-in's solution, written from its values, is the link its solution reads as.
+    for b in BUILTINS {
+        let pairs: Vec<(String, String)> = b
+            .solution
+            .split('&')
+            .map(|p| {
+                let (f, v) = p.split_once('=').unwrap();
+                (f.to_string(), v.to_string())
+            })
+            .collect();
+        let s = b.challenge().submit(&pairs).unwrap();
+        assert_eq!(s, b.solved(), "{}", b.name);
+        assert_eq!(s.encode(), b.solved().encode(), "{}", b.name);
     }
 }

@@ -1,5 +1,6 @@
 //! Closed-loop figures the paper and the design fix: decay rates, settling, tracking, EKF health.
 
+use imlab::record::StabilityCause;
 use imlab::scenario::{preset, Scenario, PRESETS};
 use imlab::sim::{SimError, Simulation};
 use nalgebra::SymmetricEigen;
@@ -315,36 +316,44 @@ fn lyapunov_function_meets_the_bound_up_to_the_sampling_error() {
         "V exceeds the bound by {e50} at 20 kHz"
     );
     assert!(e25 < 0.6 * e50, "excess {e25} at 25 µs vs {e50} at 50 µs");
-    assert_eq!(coarse.stability().unwrap().cause, "sampling");
+    assert_eq!(coarse.stability().unwrap().cause, StabilityCause::Sampling);
     // With the EKF (d̃ ≠ 0) and no robust term the ε = 0 bound cannot hold, and it does not.
     let with_ekf = run("step").stability().unwrap();
     assert!(
-        with_ekf.outside > 0 && with_ekf.cause == "estimation_errors",
+        with_ekf.outside > 0 && with_ekf.cause == StabilityCause::EstimationErrors,
         "{with_ekf:?}"
     );
     // Where the voltage limit is active most of the time, saturation is named.
-    assert_eq!(run("high-gain").stability().unwrap().cause, "saturation");
+    assert_eq!(
+        run("high-gain").stability().unwrap().cause,
+        StabilityCause::Saturation
+    );
 }
 
 #[test]
 fn metrics_summarise_the_trace_and_show_the_observer_limit_at_200_hz() {
     let euler = run("sine200");
     let m = euler.metrics().unwrap();
-    let from = m.from;
+    let from = m.transient_end;
     // The window is the run's figures' own: one value for one figure wherever it is shown.
     assert_eq!(from, euler.transient_end().t);
     let strip = euler.figures().unwrap();
-    let strip_rms = strip
-        .iter()
-        .find(|f| f.name == "tracking_rms")
-        .unwrap()
-        .value;
-    assert_eq!(m.tracking_rms, strip_rms);
+    let strip_value = |name: &str| strip.iter().find(|f| f.name == name).unwrap().value;
+    // A figure the report gives too has its name and its value.
+    for (name, value) in [
+        ("transient_end", m.transient_end),
+        ("tracking_rms", m.tracking_rms),
+        ("tracking_peak", m.tracking_peak),
+        ("saturated_share", m.saturated_share),
+    ] {
+        assert_eq!(value, strip_value(name), "{name}");
+    }
+    assert!((m.mean_nis - strip_value("mean_nis")).abs() < 1e-12 * m.mean_nis);
     assert!((m.tracking_rms - tracking_rms(&euler, from, 1.0)).abs() < 1e-12);
     let rk4 = run("sine200-rk4").metrics().unwrap();
     // Same controller and seed; only the predictor differs.
     assert!(rk4.tracking_rms < 0.5 * m.tracking_rms, "{rk4:?} vs {m:?}");
-    assert!(rk4.speed_estimate_rms < 0.1 * m.speed_estimate_rms);
+    assert!(rk4.speed_estimate_error_rms < 0.1 * m.speed_estimate_error_rms);
     assert!(m.mean_nis > 10.0 && (NIS_BAND.0..NIS_BAND.1).contains(&rk4.mean_nis));
 }
 

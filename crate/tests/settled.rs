@@ -4,7 +4,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{judge, measure, Submission, BUILTINS};
-use imlab::record::{Figure, Report, Trend, WarningKind};
+use imlab::record::{Figure, Report, Trend, TrendState, WarningKind};
 use imlab::scenario::Scenario;
 use imlab::sim::Simulation;
 use std::process::Command;
@@ -71,7 +71,7 @@ fn a_slow_decay_that_moves_little_over_the_last_tenth_is_still_changing() {
                 (t.rate * t.over).abs() < t.tolerance && t.settled_in_last_tenth,
                 "{link} {name}: the last tenth alone would not tell: {t:?}"
             );
-            assert_eq!(t.state, "changing", "{link} {name}: {t:?}");
+            assert_eq!(t.state, TrendState::Changing, "{link} {name}: {t:?}");
             assert!(!t.settled);
             // What the approach has to go is the decay still to come.
             let to_go = t.to_go.expect("the means approach a value");
@@ -104,7 +104,11 @@ fn a_settled_value_with_noise_on_it_is_settled_on_every_seed_and_ends_there() {
             for name in FINALS {
                 let t = trend(&r, name);
                 let (value, later) = (figure(&r, name).value, figure(&longer, name).value);
-                assert_eq!(t.state, "settled", "{link} {name} = {value}: {t:?}");
+                assert_eq!(
+                    t.state,
+                    TrendState::Settled,
+                    "{link} {name} = {value}: {t:?}"
+                );
                 assert!(t.settled);
                 assert!(
                     (value - later).abs() <= t.tolerance,
@@ -129,7 +133,11 @@ fn a_run_that_ran_away_has_no_settled_final_value() {
     assert!(trend(&r, "flux_error_final").settled_in_last_tenth);
     for name in FINALS {
         let t = trend(&r, name);
-        assert_eq!((t.state, t.settled), ("ran away", false), "{name}: {t:?}");
+        assert_eq!(
+            (t.state, t.settled),
+            (TrendState::RanAway, false),
+            "{name}: {t:?}"
+        );
     }
     // The command prints no final value as settled.
     let out = Command::new(env!("CARGO_BIN_EXE_imlab"))
@@ -217,4 +225,50 @@ fn a_challenge_judges_final_values_by_the_last_tenth_as_its_brief_states() {
         .find(|c| c.figure == "speed_error_final")
         .unwrap();
     assert_eq!((c.pass, c.reason.as_str()), (false, "beyond the bound"));
+}
+
+#[test]
+fn states_causes_and_kinds_reach_the_page_by_their_names() {
+    assert_eq!(
+        [
+            TrendState::Settled,
+            TrendState::Changing,
+            TrendState::Fluctuating,
+            TrendState::RanAway
+        ]
+        .map(|s| json(&s)),
+        [
+            "\"settled\"",
+            "\"changing\"",
+            "\"fluctuating\"",
+            "\"ran away\""
+        ]
+    );
+    use imlab::record::StabilityCause as C;
+    assert_eq!(
+        [
+            C::None,
+            C::Saturation,
+            C::Sampling,
+            C::EstimationErrors,
+            C::EpsOrSampling
+        ]
+        .map(|c| json(&c)),
+        [
+            "\"none\"",
+            "\"saturation\"",
+            "\"sampling\"",
+            "\"estimation_errors\"",
+            "\"eps_or_sampling\""
+        ]
+    );
+    assert_eq!(
+        [WarningKind::Runaway, WarningKind::Inconsistent].map(|k| json(&k)),
+        ["\"runaway\"", "\"inconsistent\""]
+    );
+}
+
+/// `value` as JSON, as the bindings hand it to the page.
+fn json(value: &impl serde::Serialize) -> String {
+    serde_json::to_string(value).unwrap()
 }

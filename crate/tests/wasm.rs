@@ -229,3 +229,100 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
     let e = error_text(robust_plan(scenario, "k1=1..2:2").unwrap_err());
     assert!(e.contains("not a motor or model parameter"), "{e}");
 }
+
+#[wasm_bindgen_test]
+fn challenge_links_are_written_and_opened_by_the_core() {
+    use imlab::challenge::{self, ChallengeParts, FormNumber, NeedPart};
+    use imlab::wasm::{challenge_compose, Challenge};
+    use serde::Deserialize;
+    let b = challenge::builtin("step-tune").unwrap();
+    // A submission link in a URL opens its challenge; its tries are not read.
+    let c =
+        Challenge::from_link(&format!("https://lab.example/?{}&try.k1=%ZZ#top", b.text)).unwrap();
+    assert_eq!(c.encode(), b.text);
+    assert_eq!(
+        Challenge::from_link("?challenge=step-tune")
+            .unwrap()
+            .encode(),
+        b.text
+    );
+    // The student's values give the canonical submission link, which reads back as it is.
+    let pairs = |p: &[(&str, &str)]| serde_wasm_bindgen::to_value(p).unwrap();
+    let link = c
+        .submit(pairs(&[("k2", "2000"), ("k1", "2000.0")]))
+        .unwrap();
+    assert_eq!(link, format!("{}&try.k1=2000&try.k2=2000", b.text));
+    #[derive(Deserialize)]
+    struct Sub {
+        kind: String,
+        encoded: String,
+    }
+    let sub: Sub = serde_wasm_bindgen::from_value(c.submission(&link).unwrap()).unwrap();
+    assert_eq!(
+        (sub.kind.as_str(), sub.encoded.as_str()),
+        ("ok", link.as_str())
+    );
+    let e = error_text(c.submit(pairs(&[("k1", "9000")])).unwrap_err());
+    assert_eq!(e, "refused: k1=9000 is outside 300..5000");
+    // The same as the view a submission link gives, without the link.
+    #[derive(Deserialize)]
+    struct View {
+        kind: String,
+        message: String,
+        encoded: String,
+        scenarios: Vec<String>,
+    }
+    let view = |v| -> View { serde_wasm_bindgen::from_value(v).unwrap() };
+    let of = view(
+        c.submission_of(pairs(&[("k1", "2000"), ("k2", "2000")]))
+            .unwrap(),
+    );
+    assert_eq!(
+        (of.kind.as_str(), of.encoded.as_str()),
+        ("ok", link.as_str())
+    );
+    assert_eq!(of.scenarios, view(c.submission(&link).unwrap()).scenarios);
+    let refused = view(c.submission_of(pairs(&[("k1", "9000")])).unwrap());
+    assert_eq!(refused.kind, "refused");
+    assert_eq!(refused.message, "k1=9000 is outside 300..5000");
+    assert!(refused.encoded.is_empty() && refused.scenarios.is_empty());
+    // The composer: the challenge's parts compose to its link and brief, and an error names the
+    // part at fault.
+    #[derive(Deserialize)]
+    struct Fault {
+        key: String,
+        message: String,
+    }
+    #[derive(Deserialize)]
+    struct Composed {
+        encoded: Option<String>,
+        brief: Option<String>,
+        error: Option<Fault>,
+    }
+    let made: Composed =
+        serde_wasm_bindgen::from_value(challenge_compose(c.parts().unwrap()).unwrap()).unwrap();
+    assert_eq!(made.encoded.as_deref(), Some(b.text));
+    assert_eq!(made.brief, Some(b.challenge().brief()));
+    assert!(made.error.is_none());
+    let parts = ChallengeParts {
+        base: "step".to_string(),
+        need: vec![NeedPart {
+            figure: "peak".to_string(),
+            op: "max".to_string(),
+            bound: Some(FormNumber::Number(4.0)),
+        }],
+        ..ChallengeParts::default()
+    };
+    let bad: Composed = serde_wasm_bindgen::from_value(
+        challenge_compose(serde_wasm_bindgen::to_value(&parts).unwrap()).unwrap(),
+    )
+    .unwrap();
+    assert!(bad.encoded.is_none() && bad.brief.is_none());
+    let fault = bad.error.unwrap();
+    assert_eq!(fault.key, "need.peak");
+    assert!(
+        fault.message.contains("'peak' is not a figure"),
+        "{}",
+        fault.message
+    );
+}

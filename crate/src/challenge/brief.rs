@@ -1,7 +1,9 @@
 //! A challenge as plain text for a slide, an LMS page or the terminal.
 
-use super::judge::{figure_info, recovery_band, LOAD_RECOVERY};
-use super::{field_info, Allowed, Challenge, Op, Variants};
+use super::codec::field_info;
+use super::judge::figure_info;
+use super::{Allowed, Challenge, Op, Variants};
+use crate::record::{recovery_band, LOAD_RECOVERY};
 use std::fmt::Write;
 
 impl Challenge {

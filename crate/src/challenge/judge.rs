@@ -1,37 +1,20 @@
 //! Measuring a run for a challenge and judging the criteria on the measures of its runs.
 //!
 //! [`measure`] reads a finished [`Simulation`] through its public API: the figures of
-//! [`crate::record::report`] and one measure of its own, [`LOAD_RECOVERY`]. [`judge`] needs only
-//! the measures, so runs can be measured wherever they ran (a worker each, in the page).
+//! [`crate::record::report`] and the load-recovery time ([`crate::record::load_recovery`]).
+//! [`judge`] needs only the measures, so runs can be measured wherever they ran (a worker each,
+//! in the page).
 
 use super::{Challenge, Op};
-use crate::record::{FigureInfo, WarningKind, FIGURE_INFO};
+use crate::record::{
+    load_recovery, FigureInfo, WarningKind, FIGURE_INFO, LOAD_RECOVERY, LOAD_RECOVERY_INFO,
+};
 use crate::sim::Simulation;
 use serde::{Deserialize, Serialize};
-
-/// The load-recovery measure: seconds from `load.time` until |ω − ω_d| stays within
-/// [`recovery_band`] to the end of the run. 0 when it never leaves the band after the step;
-/// infinite ("not recovered") when it is outside the band at the last sample. The same rule as
-/// the lessons' `recovery(run, from, band)` in `tests/claims.mjs`: the time of the first sample
-/// after the last one outside the band, less `load.time`.
-pub const LOAD_RECOVERY: &str = "load_recovery_time";
-
-/// The band of [`LOAD_RECOVERY`] (rad/s): 1 % of |ω_d| at the load step or 0.5 rad/s, whichever
-/// is larger (0.5 rad/s at the load presets' 50 rad/s, as the lessons read it).
-pub fn recovery_band(reference_at_step: f64) -> f64 {
-    (0.01 * reference_at_step.abs()).max(0.5)
-}
 
 /// The report's figures a criterion may not name: the ends of the NIS band (a criterion asks
 /// for the band with `band`) and the rating itself.
 const NOT_CRITERIA: [&str; 3] = ["mean_nis_low", "mean_nis_high", "current_rated"];
-
-/// [`LOAD_RECOVERY`], in words.
-const LOAD_RECOVERY_INFO: FigureInfo = FigureInfo {
-    name: LOAD_RECOVERY,
-    label: "load recovery time after the load step",
-    unit: "s",
-};
 
 /// The figures criteria may name: those of [`crate::record::report`] (its table, with its labels
 /// and units) but the band's ends and the rating, then [`LOAD_RECOVERY`].
@@ -95,16 +78,13 @@ pub fn measure(sim: &Simulation) -> Measures {
             settled: f.trend.map(|t| t.settled_in_last_tenth),
         })
         .collect();
-    let s = sim.scenario();
-    if s.load_step.torque != 0.0 && !sim.is_empty() {
-        if let Some(value) = load_recovery(sim) {
-            figures.push(Measure {
-                name: LOAD_RECOVERY.to_string(),
-                value,
-                unit: "s".to_string(),
-                settled: None,
-            });
-        }
+    if let Some(value) = load_recovery(sim.scenario(), sim) {
+        figures.push(Measure {
+            name: LOAD_RECOVERY.to_string(),
+            value,
+            unit: LOAD_RECOVERY_INFO.unit.to_string(),
+            settled: None,
+        });
     }
     let failure = if let Some(e) = sim.failure() {
         Some(format!("{e}"))
@@ -117,26 +97,6 @@ pub fn measure(sim: &Simulation) -> Measures {
             .map(|w| w.text.clone())
     };
     Measures { figures, failure }
-}
-
-/// [`LOAD_RECOVERY`] of a run; None when the run ended before the load step.
-fn load_recovery(sim: &Simulation) -> Option<f64> {
-    let from = sim.scenario().load_step.time;
-    let len = sim.len();
-    let start = (0..len).find(|&i| sim.time(i) >= from)?;
-    let band = recovery_band(sim.row(start)?.omega_ref);
-    let mut last_out = None;
-    sim.visit(start, len, &mut |i, r| {
-        if r.omega_err.abs() > band || !r.omega_err.is_finite() {
-            last_out = Some(i);
-        }
-        true
-    });
-    Some(match last_out {
-        None => 0.0,
-        Some(i) if i + 1 >= len => f64::INFINITY,
-        Some(i) => sim.time(i + 1) - from,
-    })
 }
 
 /// The verdict on one criterion.

@@ -14,28 +14,35 @@
 //!   may set.
 //! - `need.FIGURE=OP`, in the order written: `max:B` (value ≤ B), `min:B` (≥ B), `abs:B`
 //!   (|value| ≤ B), `band` (mean NIS inside its 95 % band). The figures are those of
-//!   [`crate::record::report`] and [`judge::LOAD_RECOVERY`].
+//!   [`crate::record::report`] and [`crate::record::LOAD_RECOVERY`].
 //! - `vary`: robustness variants, `|`-separated override strings (applied after the student's
 //!   fields), or `seeds:A..B`; `robust`: the criteria that must also hold on every variant.
 //!
 //! [`Challenge::encode`] writes the keys in a fixed order (allowed fields in the scenario's field
 //! order, criteria as written), so one challenge has one text. A submission is that text
-//! followed by `&try.FIELD=VALUE` for the fields set (see [`Submission`]).
+//! followed by `&try.FIELD=VALUE` for the fields set (see [`Submission`]). Only the core writes
+//! these texts: [`Challenge::compose`] from a lecturer's parts, [`Challenge::submit`] from a
+//! student's values, and [`Challenge::from_link`] opens any of them.
 
 mod brief;
 mod builtin;
+mod codec;
+mod compose;
 mod judge;
+mod submission;
 
+pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
+pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use judge::{
-    figure_info, figures, judge, measure, recovery_band, CriterionVerdict, Measure, Measures,
-    Verdict, LOAD_RECOVERY,
+    figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
+pub use submission::Submission;
 
 use crate::quote::excerpt;
-use crate::scenario::{short, FieldInfo, Scenario, MAX_SEED};
+use crate::scenario::Scenario;
+use codec::{builtin_named, check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
-use std::collections::HashSet;
 use std::fmt;
 
 /// Version of the challenge codec.
@@ -222,134 +229,6 @@ pub struct Challenge {
     pub robust: Vec<String>,
 }
 
-/// A challenge with the values a student set.
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Submission {
-    /// The challenge answered.
-    pub challenge: Challenge,
-    /// The fields set and their values (canonical codec text), in the challenge's allow order.
-    pub tries: Vec<(String, String)>,
-}
-
-/// The query of `text`: a bare query string, or the part of a URL after `?` without `#…`.
-fn query_of(text: &str) -> &str {
-    let text = text.trim();
-    let text = text.split_once('#').map_or(text, |(q, _)| q);
-    text.split_once('?').map_or(text, |(_, q)| q)
-}
-
-/// Decodes `%XX` escapes and `+` (a space); `key` names the value in the error.
-fn pct_decode(key: &str, value: &str) -> Result<String, ChallengeError> {
-    let bad = || {
-        ChallengeError::malformed(format!(
-            "field '{}' = '{}': not valid percent-encoded UTF-8",
-            excerpt(key),
-            excerpt(value)
-        ))
-    };
-    let bytes = value.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        match bytes[i] {
-            b'%' => {
-                let hex = value.get(i + 1..i + 3).ok_or_else(bad)?;
-                out.push(u8::from_str_radix(hex, 16).map_err(|_| bad())?);
-                i += 3;
-            }
-            b'+' => {
-                out.push(b' ');
-                i += 1;
-            }
-            b => {
-                out.push(b);
-                i += 1;
-            }
-        }
-    }
-    String::from_utf8(out).map_err(|_| bad())
-}
-
-/// Percent-encodes everything but the unreserved characters `A–Z a–z 0–9 - . _ ~`.
-fn pct_encode(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for b in text.bytes() {
-        if b.is_ascii_alphanumeric() || matches!(b, b'-' | b'.' | b'_' | b'~') {
-            out.push(char::from(b));
-        } else {
-            out.push_str(&format!("%{b:02X}"));
-        }
-    }
-    out
-}
-
-/// A plain decimal number (the scenario codec's: no `inf`, `nan` or `+`), finite.
-fn number(text: &str) -> Option<f64> {
-    crate::scenario::parse_number(text).filter(|v| v.is_finite())
-}
-
-/// The scenario field `key`, described on `base`.
-fn field_info(base: &Scenario, key: &str) -> Option<FieldInfo> {
-    base.describe().into_iter().find(|f| f.key == key)
-}
-
-/// The position of scenario field `key` in the field table (the codec's order).
-fn field_order(base: &Scenario, key: &str) -> usize {
-    base.describe()
-        .iter()
-        .position(|f| f.key == key)
-        .unwrap_or(usize::MAX)
-}
-
-/// The `key=value` pieces of a query, refusing pieces without `=`, duplicates and an
-/// over-long text.
-fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
-    if text.len() > MAX_CHALLENGE_BYTES {
-        return Err(ChallengeError::malformed(format!(
-            "the challenge is {} bytes long, more than the {MAX_CHALLENGE_BYTES} bytes ({} KiB) allowed",
-            text.len(),
-            MAX_CHALLENGE_BYTES / 1024
-        )));
-    }
-    let mut seen = HashSet::new();
-    let mut out = Vec::new();
-    for piece in query_of(text).split('&').filter(|p| !p.is_empty()) {
-        let (k, v) = piece.split_once('=').ok_or_else(|| {
-            ChallengeError::malformed(format!("'{}' is not of the form key=value", excerpt(piece)))
-        })?;
-        if !seen.insert(k) {
-            return Err(ChallengeError::malformed(format!(
-                "field '{}' is given more than once",
-                excerpt(k)
-            )));
-        }
-        out.push((k, v));
-    }
-    Ok(out)
-}
-
-/// The key and value of one `key=value` piece of an override string; `what` names the override
-/// in the error.
-fn key_value<'a>(piece: &'a str, what: &str) -> Result<(&'a str, &'a str), ChallengeError> {
-    piece.split_once('=').ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "{what}: '{}' is not of the form key=value",
-            excerpt(piece)
-        ))
-    })
-}
-
-/// A scenario override string (`key=value&…`) applied to `s`, each field checked; `what`
-/// names the override in errors.
-fn apply_overrides(s: &mut Scenario, text: &str, what: &str) -> Result<(), ChallengeError> {
-    for piece in text.split('&').filter(|p| !p.is_empty()) {
-        let (k, v) = key_value(piece, what)?;
-        s.set(k, v)
-            .map_err(|e| ChallengeError::malformed(format!("{what}: {e}")))?;
-    }
-    Ok(())
-}
-
 impl Challenge {
     /// Parses a challenge: its text (bare or in a URL) or the name of a built-in one.
     pub fn parse(text: &str) -> Result<Challenge, ChallengeError> {
@@ -361,6 +240,23 @@ impl Challenge {
             )));
         }
         Ok(challenge)
+    }
+
+    /// Opens the challenge of any link the address bar may hold: a challenge link, a submission
+    /// link (its `try.*` parts are left out unread), `challenge=NAME` for a built-in one, or a
+    /// built-in's name; each bare or in a URL. The challenge is read by [`Challenge::parse`].
+    pub fn from_link(text: &str) -> Result<Challenge, ChallengeError> {
+        check_length(text)?;
+        let kept: Vec<&str> = query_of(text)
+            .split('&')
+            .filter(|p| !p.is_empty() && !p.starts_with("try."))
+            .collect();
+        if let [only] = kept[..] {
+            if let Some(name) = only.strip_prefix("challenge=") {
+                return builtin_named(name);
+            }
+        }
+        Challenge::parse(&kept.join("&"))
     }
 
     /// The canonical text: `c`, `title`, `base`, `allow.*` (field order), `need.*` (as
@@ -424,415 +320,5 @@ impl Challenge {
             out.extend(v.overrides());
         }
         out
-    }
-}
-
-impl Submission {
-    /// Parses a submission (bare or in a URL) against its own challenge text.
-    pub fn parse(text: &str) -> Result<Submission, ChallengeError> {
-        let (challenge, tries) = parse_parts(text)?;
-        Submission::check(challenge, &tries)
-    }
-
-    /// The tries checked against the challenge: allowed, well-formed, in range.
-    fn check(
-        challenge: Challenge,
-        tries: &[(String, String)],
-    ) -> Result<Submission, ChallengeError> {
-        let base = challenge.base_scenario();
-        let mut out = Vec::new();
-        for (field, value) in tries {
-            let allow = challenge
-                .allow
-                .iter()
-                .find(|a| &a.field == field)
-                .ok_or_else(|| {
-                    ChallengeError::refused(format!("field '{}' is not allowed", excerpt(field)))
-                })?;
-            let text = match &allow.allowed {
-                Allowed::Range { lo, hi } => {
-                    let v = number(value).ok_or_else(|| {
-                        ChallengeError::malformed(format!(
-                            "field 'try.{field}' = '{}': not a number",
-                            excerpt(value)
-                        ))
-                    })?;
-                    if v < *lo || v > *hi {
-                        return Err(ChallengeError::refused(format!(
-                            "{field}={} is outside {lo}..{hi}",
-                            short(v)
-                        )));
-                    }
-                    format!("{v}")
-                }
-                Allowed::Choice { options } => {
-                    if !options.iter().any(|o| o == value) {
-                        return Err(ChallengeError::refused(format!(
-                            "{field}={} is not one of {}",
-                            excerpt(value),
-                            options.join("|")
-                        )));
-                    }
-                    value.clone()
-                }
-            };
-            // The field's own rules (whole numbers, say) on the base.
-            base.clone()
-                .set(field, &text)
-                .map_err(|e| ChallengeError::refused(e.to_string()))?;
-            out.push((field.clone(), text));
-        }
-        let order = |f: &str| challenge.allow.iter().position(|a| a.field == f);
-        sort_small(&mut out, |(f, _)| order(f));
-        Ok(Submission {
-            challenge,
-            tries: out,
-        })
-    }
-
-    /// The canonical text: the challenge's, then `try.FIELD=VALUE` in allow order.
-    pub fn encode(&self) -> String {
-        let mut out = self.challenge.encode();
-        for (f, v) in &self.tries {
-            out.push_str(&format!("&try.{f}={v}"));
-        }
-        out
-    }
-
-    /// The scenarios to run: the nominal one (base + tries) first, then each variant
-    /// (nominal + the variant's overrides).
-    pub fn scenarios(&self) -> Result<Vec<Scenario>, ChallengeError> {
-        let mut nominal = self.challenge.base_scenario();
-        for (f, v) in &self.tries {
-            nominal
-                .set(f, v)
-                .map_err(|e| ChallengeError::refused(e.to_string()))?;
-        }
-        let mut out = vec![nominal.clone()];
-        if let Some(vary) = &self.challenge.vary {
-            for o in vary.overrides() {
-                let mut s = nominal.clone();
-                apply_overrides(&mut s, &o, &format!("variant '{}'", excerpt(&o)))
-                    .map_err(|e| ChallengeError::refused(e.message))?;
-                out.push(s);
-            }
-        }
-        Ok(out)
-    }
-}
-
-/// Parses the challenge part of `text` (or a built-in's name) and returns it with the raw
-/// `try.*` pairs.
-fn parse_parts(text: &str) -> Result<(Challenge, Vec<(String, String)>), ChallengeError> {
-    let trimmed = text.trim();
-    if !trimmed.contains('=') {
-        let b = builtin(trimmed).ok_or_else(|| {
-            ChallengeError::malformed(format!(
-                "'{}' is neither a challenge link nor a built-in challenge ({})",
-                excerpt(trimmed),
-                BUILTINS
-                    .iter()
-                    .map(|b| b.name)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ))
-        })?;
-        return Ok((b.challenge(), Vec::new()));
-    }
-    let pairs = pieces(text)?;
-    let get = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
-    let version = get("c").ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "field 'c' is missing (a challenge starts with c={CHALLENGE_VERSION})"
-        ))
-    })?;
-    if version != CHALLENGE_VERSION.to_string() {
-        return Err(ChallengeError::malformed(format!(
-            "field 'c' = '{}': unsupported challenge version, allowed: {CHALLENGE_VERSION}",
-            excerpt(version)
-        )));
-    }
-    // Unknown keys first, in the order written.
-    for (k, _) in &pairs {
-        let known = matches!(*k, "c" | "title" | "base" | "vary" | "robust")
-            || ["allow.", "need.", "try."]
-                .iter()
-                .any(|p| k.strip_prefix(p).is_some_and(|rest| !rest.is_empty()));
-        if !known {
-            return Err(ChallengeError::malformed(format!(
-                "field '{}' is not a challenge field (c, title, base, allow.FIELD, need.FIGURE, vary, robust, try.FIELD)",
-                excerpt(k)
-            )));
-        }
-    }
-    let title = pct_decode("title", get("title").unwrap_or(""))?;
-    if title.chars().count() > MAX_TITLE_CHARS {
-        return Err(ChallengeError::malformed(format!(
-            "field 'title' is {} characters long, more than the {MAX_TITLE_CHARS} allowed",
-            title.chars().count()
-        )));
-    }
-    let base_text = pct_decode(
-        "base",
-        get("base").ok_or_else(|| ChallengeError::malformed("field 'base' is missing"))?,
-    )?;
-    let base = Scenario::parse(&base_text)
-        .map_err(|e| ChallengeError::malformed(format!("field 'base': {e}")))?;
-    let mut allow = Vec::new();
-    let mut need = Vec::new();
-    let mut tries = Vec::new();
-    for (k, v) in &pairs {
-        if let Some(field) = k.strip_prefix("allow.") {
-            allow.push(parse_allow(&base, field, v)?);
-        } else if let Some(figure) = k.strip_prefix("need.") {
-            need.push(parse_need(&base, figure, v)?);
-        } else if let Some(field) = k.strip_prefix("try.") {
-            tries.push((field.to_string(), pct_decode(k, v)?));
-        }
-    }
-    sort_small(&mut allow, |a| field_order(&base, &a.field));
-    if need.is_empty() {
-        return Err(ChallengeError::malformed(
-            "no criteria: add at least one need.FIGURE=OP",
-        ));
-    }
-    if need.len() > MAX_CRITERIA {
-        return Err(ChallengeError::malformed(format!(
-            "{} criteria, more than the {MAX_CRITERIA} allowed",
-            need.len()
-        )));
-    }
-    let vary = get("vary").map(|v| parse_vary(&base, v)).transpose()?;
-    let robust = match get("robust") {
-        None => Vec::new(),
-        Some(v) => parse_robust(&need, v)?,
-    };
-    match (&vary, robust.is_empty()) {
-        (Some(_), true) => {
-            return Err(ChallengeError::malformed(
-                "field 'vary': no criterion uses the variants (name them in robust=)",
-            ))
-        }
-        (None, false) => {
-            return Err(ChallengeError::malformed(
-                "field 'robust': there are no variants (add vary=)",
-            ))
-        }
-        _ => {}
-    }
-    let challenge = Challenge {
-        title,
-        base: base.encode(),
-        allow,
-        need,
-        vary,
-        robust,
-    };
-    Ok((challenge, tries))
-}
-
-/// `allow.FIELD=VALUE`.
-fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, ChallengeError> {
-    let key = format!("allow.{field}");
-    let info = field_info(base, field).ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "field '{}': '{}' is not a scenario field",
-            excerpt(&key),
-            excerpt(field)
-        ))
-    })?;
-    let allowed = if info.options.is_empty() {
-        let bad = || {
-            ChallengeError::malformed(format!(
-                "field '{key}' = '{}': expected LO..HI, two numbers with LO ≤ HI",
-                excerpt(value)
-            ))
-        };
-        let (lo, hi) = value.split_once("..").ok_or_else(bad)?;
-        let (lo, hi) = (number(lo).ok_or_else(bad)?, number(hi).ok_or_else(bad)?);
-        if lo > hi {
-            return Err(bad());
-        }
-        // Both ends must be values of the field.
-        for end in [lo, hi] {
-            base.clone().set(field, &format!("{end}")).map_err(|e| {
-                ChallengeError::malformed(format!("field '{key}' = '{}': {e}", excerpt(value)))
-            })?;
-        }
-        Allowed::Range { lo, hi }
-    } else {
-        let mut options: Vec<String> = Vec::new();
-        for o in value.split('|') {
-            if !info.options.contains(&o) || options.iter().any(|x| x == o) {
-                return Err(ChallengeError::malformed(format!(
-                    "field '{key}' = '{}': expected distinct names from {}, separated by |",
-                    excerpt(value),
-                    info.options.join("|")
-                )));
-            }
-            options.push(o.to_string());
-        }
-        // Canonical: in the field's own order.
-        sort_small(&mut options, |o| info.options.iter().position(|x| x == o));
-        Allowed::Choice { options }
-    };
-    Ok(Allow {
-        field: field.to_string(),
-        allowed,
-    })
-}
-
-/// `need.FIGURE=OP`.
-fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, ChallengeError> {
-    let key = format!("need.{figure}");
-    if figure_info(figure).is_none() {
-        return Err(ChallengeError::malformed(format!(
-            "field '{}': '{}' is not a figure ({})",
-            excerpt(&key),
-            excerpt(figure),
-            figures().map(|f| f.name).collect::<Vec<_>>().join(", ")
-        )));
-    }
-    let op = if value == "band" {
-        if figure != "mean_nis" {
-            return Err(ChallengeError::malformed(format!(
-                "field '{key}' = 'band': only mean_nis has a band"
-            )));
-        }
-        Op::Band
-    } else {
-        let bad = || {
-            ChallengeError::malformed(format!(
-                "field '{key}' = '{}': expected max:B, min:B, abs:B or band",
-                excerpt(value)
-            ))
-        };
-        let (op, bound) = value.split_once(':').ok_or_else(bad)?;
-        let b = number(bound).ok_or_else(bad)?;
-        match op {
-            "max" => Op::Max(b),
-            "min" => Op::Min(b),
-            "abs" if b >= 0.0 => Op::Abs(b),
-            _ => return Err(bad()),
-        }
-    };
-    if figure == LOAD_RECOVERY && base.load_step.torque == 0.0 {
-        return Err(ChallengeError::malformed(format!(
-            "field '{key}': the base has no load step (load.torque = 0)"
-        )));
-    }
-    Ok(Criterion {
-        figure: figure.to_string(),
-        op,
-    })
-}
-
-/// `vary=seeds:A..B` or `vary=OVERRIDES|OVERRIDES…`.
-fn parse_vary(base: &Scenario, value: &str) -> Result<Variants, ChallengeError> {
-    if let Some(range) = value.strip_prefix("seeds:") {
-        let bad = || {
-            ChallengeError::malformed(format!(
-                "field 'vary' = '{}': expected seeds:A..B, whole numbers with A ≤ B ≤ {MAX_SEED} and at most {MAX_VARIANTS} seeds",
-                excerpt(value)
-            ))
-        };
-        let (a, b) = range.split_once("..").ok_or_else(bad)?;
-        let (first, last) = (
-            a.parse::<u64>().map_err(|_| bad())?,
-            b.parse::<u64>().map_err(|_| bad())?,
-        );
-        if first > last || last > MAX_SEED || last - first >= MAX_VARIANTS as u64 {
-            return Err(bad());
-        }
-        return Ok(Variants::Seeds { first, last });
-    }
-    let raw: Vec<&str> = value.split('|').collect();
-    if raw.len() > MAX_VARIANTS {
-        return Err(ChallengeError::malformed(format!(
-            "field 'vary': {} variants, more than the {MAX_VARIANTS} allowed",
-            raw.len()
-        )));
-    }
-    let mut overrides = Vec::new();
-    for (i, r) in raw.iter().enumerate() {
-        let text = pct_decode("vary", r)?;
-        let what = format!("field 'vary', variant {}", i + 1);
-        let mut pairs: Vec<(String, String)> = Vec::new();
-        for piece in text.split('&').filter(|p| !p.is_empty()) {
-            let (k, v) = key_value(piece, &what)?;
-            if pairs.iter().any(|(x, _)| x == k) {
-                return Err(ChallengeError::malformed(format!(
-                    "{what}: field '{}' is given more than once",
-                    excerpt(k)
-                )));
-            }
-            pairs.push((k.to_string(), v.to_string()));
-        }
-        if pairs.is_empty() {
-            return Err(ChallengeError::malformed(format!("{what} is empty")));
-        }
-        sort_small(&mut pairs, |(k, _)| field_order(base, k));
-        let canonical = pairs
-            .iter()
-            .map(|(k, v)| format!("{k}={v}"))
-            .collect::<Vec<_>>()
-            .join("&");
-        apply_overrides(&mut base.clone(), &canonical, &what)?;
-        overrides.push(canonical);
-    }
-    Ok(Variants::List { overrides })
-}
-
-/// `robust=FIGURE,FIGURE…`: figures of criteria, in criterion order.
-fn parse_robust(need: &[Criterion], value: &str) -> Result<Vec<String>, ChallengeError> {
-    let mut out: Vec<String> = Vec::new();
-    for f in value.split(',') {
-        if !need.iter().any(|c| c.figure == f) || out.iter().any(|x| x == f) {
-            return Err(ChallengeError::malformed(format!(
-                "field 'robust' = '{}': '{}' is not the figure of a criterion (or is named twice)",
-                excerpt(value),
-                excerpt(f)
-            )));
-        }
-        out.push(f.to_string());
-    }
-    sort_small(&mut out, |f| need.iter().position(|c| &c.figure == f));
-    Ok(out)
-}
-
-/// Sorts the few items of a challenge's lists by `key`, keeping equal keys in order: an insertion
-/// sort, a few hundred bytes of WASM where the standard library's stable sort takes about ten
-/// kilobytes for each type it sorts.
-fn sort_small<T, K: Ord>(items: &mut [T], key: impl Fn(&T) -> K) {
-    for i in 1..items.len() {
-        let mut j = i;
-        while j > 0 && key(&items[j - 1]) > key(&items[j]) {
-            items.swap(j - 1, j);
-            j -= 1;
-        }
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn percent_coding_round_trips() {
-        let text = "v=1&preset=step&k1=2000 ü|%";
-        assert_eq!(pct_decode("x", &pct_encode(text)).unwrap(), text);
-        assert!(pct_decode("title", "%ZZ")
-            .unwrap_err()
-            .message
-            .contains("'title'"));
-        assert!(pct_decode("title", "%FF").is_err());
-        assert_eq!(pct_decode("t", "a+b").unwrap(), "a b");
-    }
-
-    #[test]
-    fn urls_give_their_query() {
-        assert_eq!(query_of(" https://h/p/?c=1&x=2#frag "), "c=1&x=2");
-        assert_eq!(query_of("c=1&x=2"), "c=1&x=2");
-        assert_eq!(query_of("?c=1"), "c=1");
     }
 }

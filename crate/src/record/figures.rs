@@ -68,15 +68,31 @@ pub struct Trend {
     /// |rate| × the window after the transient (the figure's unit); None when their changes
     /// reverse or do not shrink.
     pub to_go: Option<f64>,
-    /// "settled", "changing", "fluctuating" or "ran away" (see [`Trend`]).
-    pub state: &'static str,
-    /// state == "settled".
+    /// Whether it had settled, and if not how (see [`Trend`]).
+    pub state: TrendState,
+    /// state == [`TrendState::Settled`].
     pub settled: bool,
     /// Whether it counts as settled by the last tenth alone: its line changes over the tenth by
     /// at most `tolerance` or twice the scatter, and the scatter is at most `tolerance`. This is
     /// the rule a version-1 challenge's brief states ("a value still changing over the last
     /// tenth of the run fails"), so a challenge judges by it.
     pub settled_in_last_tenth: bool,
+}
+
+/// How a value read at the last sample was still moving (see [`Trend`]); the page and the JSON
+/// see it as "settled", "changing", "fluctuating" or "ran away".
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum TrendState {
+    /// Neither changing nor scattered beyond its tolerance.
+    Settled,
+    /// Its line, or the approach its tenths trace, still moves it by more than its tolerance.
+    Changing,
+    /// Not changing, but its samples scatter about the line by more than its tolerance.
+    Fluctuating,
+    /// The run ran away, so no value of it is final.
+    #[serde(rename = "ran away")]
+    RanAway,
 }
 
 /// A final speed error has settled when it still changes by at most this, or by at most
@@ -304,13 +320,13 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         let moves_in_tenth = visible && change > tolerance;
         let fluctuating = scatter > tolerance;
         let state = if ran_away {
-            "ran away"
+            TrendState::RanAway
         } else if moves_in_tenth || visible && to_go.is_some_and(|r| r > tolerance) {
-            "changing"
+            TrendState::Changing
         } else if fluctuating {
-            "fluctuating"
+            TrendState::Fluctuating
         } else {
-            "settled"
+            TrendState::Settled
         };
         rate.is_finite().then_some(Trend {
             rate,
@@ -319,7 +335,7 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
             scatter,
             to_go,
             state,
-            settled: state == "settled",
+            settled: state == TrendState::Settled,
             settled_in_last_tenth: !(moves_in_tenth || fluctuating),
         })
     };

@@ -7,28 +7,30 @@ use super::transient::transient;
 use crate::scenario::Scenario;
 use serde::Serialize;
 
-/// Summary figures of a run, for comparing variants.
+/// Summary figures of a run, for comparing variants. A figure [`super::report`] gives too has
+/// the report's name here.
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Metrics {
-    /// Start of the window the figures cover (s): the end of the start-up transient, the window
-    /// of the run's figures ([`super::report`]), so that a figure has one value wherever it is shown.
-    pub from: f64,
+    /// The end of the start-up transient (s), where the window the figures cover starts: the
+    /// window of the run's figures ([`super::report`]), so that a figure has one value wherever
+    /// it is shown.
+    pub transient_end: f64,
     /// RMS of ω − ω_d (rad/s).
     pub tracking_rms: f64,
     /// Largest |ω − ω_d| (rad/s).
-    pub tracking_max: f64,
-    /// RMS of ω − ω̂ (rad/s).
-    pub speed_estimate_rms: f64,
-    /// RMS of |φ| − |φ̂| (Wb).
-    pub flux_estimate_rms: f64,
+    pub tracking_peak: f64,
+    /// RMS of the speed-estimate error ω − ω̂ (rad/s).
+    pub speed_estimate_error_rms: f64,
+    /// RMS of the flux-estimate error |φ| − |φ̂| (Wb).
+    pub flux_estimate_error_rms: f64,
     /// Mean NIS (2 for a consistent filter).
     pub mean_nis: f64,
-    /// Fraction of samples with a commanded voltage beyond the limit.
-    pub saturated: f64,
+    /// Share of samples with a commanded voltage beyond the limit.
+    pub saturated_share: f64,
 }
 
 /// RMS errors, mean NIS and saturation of the rows `rows` recorded from scenario `s` after the
-/// start-up transient (see [`Metrics::from`]); None when nothing is recorded.
+/// start-up transient (see [`Metrics::transient_end`]); None when nothing is recorded.
 pub fn metrics(s: &Scenario, rows: &dyn Samples) -> Option<Metrics> {
     let len = rows.count();
     if len == 0 {
@@ -51,12 +53,12 @@ pub fn metrics(s: &Scenario, rows: &dyn Samples) -> Option<Metrics> {
         true
     });
     Some(Metrics {
-        from: rows.time(from),
+        transient_end: rows.time(from),
         tracking_rms: (sums[0] / n).sqrt(),
-        tracking_max: max,
-        speed_estimate_rms: (sums[1] / n).sqrt(),
-        flux_estimate_rms: (sums[2] / n).sqrt(),
+        tracking_peak: max,
+        speed_estimate_error_rms: (sums[1] / n).sqrt(),
+        flux_estimate_error_rms: (sums[2] / n).sqrt(),
         mean_nis: sums[3] / n,
-        saturated: saturated as f64 / n,
+        saturated_share: saturated as f64 / n,
     })
 }

@@ -29,9 +29,25 @@ pub struct Stability {
     pub saturated: usize,
     /// First time V is above the bound (s).
     pub first_outside: Option<f64>,
-    /// Most likely reason V leaves the bound: "none", "saturation", "sampling" (perfect observer),
-    /// "estimation_errors" (ε = 0 with the robust terms off) or "eps_or_sampling".
-    pub cause: &'static str,
+    /// Most likely reason V leaves the bound.
+    pub cause: StabilityCause,
+}
+
+/// Why V(t) most likely leaves the bound (59); the page and the JSON see it as "none",
+/// "saturation", "sampling", "estimation_errors" or "eps_or_sampling".
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum StabilityCause {
+    /// V stays under the bound.
+    None,
+    /// Most samples above the bound had the voltage limit active.
+    Saturation,
+    /// The observer is perfect (d̃ = 0): only the sampled loop departs from the continuous design.
+    Sampling,
+    /// ε = 0 with the robust terms off: nothing bounds the estimation errors' terms.
+    EstimationErrors,
+    /// The robust terms' ε, or the sampling.
+    EpsOrSampling,
 }
 
 /// Where V(t) leaves the bound (59), counted row by row from the first (whose V is V(0)).
@@ -87,15 +103,15 @@ impl StabilityTally {
         // the sampled loop when the observer is perfect (d̃ = 0); otherwise the unbounded
         // estimation errors when ε = 0; otherwise ε or the sampling.
         let cause = if outside == 0 {
-            "none"
+            StabilityCause::None
         } else if 2 * self.outside_saturated > outside {
-            "saturation"
+            StabilityCause::Saturation
         } else if perfect {
-            "sampling"
+            StabilityCause::Sampling
         } else if bound.eps == 0.0 {
-            "estimation_errors"
+            StabilityCause::EstimationErrors
         } else {
-            "eps_or_sampling"
+            StabilityCause::EpsOrSampling
         };
         Some(Stability {
             bound,

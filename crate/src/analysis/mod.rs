@@ -1,0 +1,15 @@
+//! Analysis over many runs: closed-loop frequency response (sweeps of sinusoidal speed
+//! references) and seed sweeps. Each run is an ordinary `Simulation`, so the CLI, the browser's
+//! parallel workers and the tests share these functions.
+
+mod seeds;
+mod sweep;
+
+pub use seeds::{
+    seed_bands, seed_range, seed_run, seeds_csv, Band, SeedBands, SeedResult, SeedRun,
+    MAX_SEED_RUNS,
+};
+pub use sweep::{
+    checked_grid, log_grid, summarise, sweep_csv, sweep_point, SweepPoint, SweepSettings,
+    SweepSummary, SETTLED_GAIN_DB, SETTLED_PHASE_DEG, SWEEP_AMP_TOL,
+};

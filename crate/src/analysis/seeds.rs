@@ -1,0 +1,208 @@
+//! Seed sweeps: one run per noise seed, each run's figures, and the mean and min–max bands of the
+//! error traces over the seeds.
+
+use crate::scenario::{Scenario, ScenarioError, MAX_SEED};
+use crate::sim::Simulation;
+use serde::{Deserialize, Serialize};
+
+/// Figures of one seed's run: those of its [`crate::record::Metrics`], by their names.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SeedResult {
+    /// The noise seed.
+    pub seed: u64,
+    /// RMS of ω − ω_d over the samples from the end of the start-up transient on (the window of
+    /// the run's figures, see [`crate::record::transient`]) (rad/s); NaN when nothing was
+    /// recorded.
+    pub tracking_rms: f64,
+    /// RMS of the speed-estimate error ω − ω̂ over the same window (rad/s).
+    pub speed_estimate_error_rms: f64,
+    /// Largest |ω − ω_d| over the same window (rad/s).
+    pub tracking_peak: f64,
+    /// Why the run stopped early, if it did.
+    pub failure: Option<String>,
+}
+
+/// One seed's run: its figures and its decimated error traces.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SeedRun {
+    /// Figures of the run.
+    pub result: SeedResult,
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// ω − ω_d at those times (rad/s).
+    pub error: Vec<f64>,
+    /// ω − ω̂ at those times (rad/s).
+    pub estimate: Vec<f64>,
+}
+
+/// Most seeds one seed sweep runs.
+pub const MAX_SEED_RUNS: u64 = 10_000;
+
+/// The seeds of a seed sweep, `first` to `first + count − 1`, after checking that there are 1 to
+/// [`MAX_SEED_RUNS`] of them and that the last is a seed ([`MAX_SEED`] at most): a range that
+/// would run past it is refused before any run, naming the range.
+pub fn seed_range(first: u64, count: u64) -> Result<std::ops::RangeInclusive<u64>, String> {
+    if !(1..=MAX_SEED_RUNS).contains(&count) {
+        return Err(format!("{count} seeds: expected 1 to {MAX_SEED_RUNS} runs"));
+    }
+    // In u128: first + count − 1 may pass u64.
+    let last = u128::from(first) + u128::from(count) - 1;
+    if last > u128::from(MAX_SEED) {
+        return Err(format!(
+            "seeds {first} to {last} ({count} from {first}): past the largest seed, {MAX_SEED} \
+             (2^53 − 1); start at {} at most",
+            MAX_SEED.saturating_sub(count - 1)
+        ));
+    }
+    Ok(first..=first + (count - 1))
+}
+
+/// Runs `base` with noise seed `seed`; the figures use every sample, the traces keep every
+/// `every`-th one.
+pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, ScenarioError> {
+    let mut s = base.clone();
+    s.seed = seed;
+    s.validate()?;
+    let mut sim = Simulation::new(&s, 1)?;
+    let failure = sim.run().err().map(|e| e.to_string());
+    // The figures are the run's own metrics; a run that recorded nothing has none.
+    let m = sim.metrics();
+    let figure = |f: fn(&crate::record::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
+    let rows = sim.recorder().rows();
+    Ok(SeedRun {
+        result: SeedResult {
+            seed,
+            tracking_rms: figure(|m| m.tracking_rms),
+            speed_estimate_error_rms: figure(|m| m.speed_estimate_error_rms),
+            tracking_peak: figure(|m| m.tracking_peak),
+            failure,
+        },
+        t: rows.iter().step_by(every.max(1)).map(|r| r.t).collect(),
+        error: rows
+            .iter()
+            .step_by(every.max(1))
+            .map(|r| r.omega_err)
+            .collect(),
+        estimate: rows
+            .iter()
+            .step_by(every.max(1))
+            .map(|r| r.omega_est_err)
+            .collect(),
+    })
+}
+
+/// Mean, minimum and maximum over runs at each sample.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Band {
+    /// Mean over the runs.
+    pub mean: Vec<f64>,
+    /// Minimum over the runs.
+    pub min: Vec<f64>,
+    /// Maximum over the runs.
+    pub max: Vec<f64>,
+}
+
+impl Band {
+    /// Statistics of `traces` (in the order given) over their common length.
+    pub fn of<'a>(traces: impl Iterator<Item = &'a [f64]> + Clone) -> Band {
+        let n = traces.clone().map(<[f64]>::len).min().unwrap_or(0);
+        let count = traces.clone().count() as f64;
+        let mut band = Band {
+            mean: vec![0.0; n],
+            min: vec![f64::INFINITY; n],
+            max: vec![f64::NEG_INFINITY; n],
+        };
+        for trace in traces {
+            for (i, &v) in trace.iter().take(n).enumerate() {
+                band.mean[i] += v;
+                band.min[i] = band.min[i].min(v);
+                band.max[i] = band.max[i].max(v);
+            }
+        }
+        band.mean.iter_mut().for_each(|m| *m /= count);
+        band
+    }
+}
+
+/// Seed-sweep statistics: the speed error and the estimation error over every completed run.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct SeedBands {
+    /// Sample times (s).
+    pub t: Vec<f64>,
+    /// ω − ω_d over the seeds.
+    pub error: Band,
+    /// ω − ω̂ over the seeds.
+    pub estimate: Band,
+    /// Runs included (those that did not stop early).
+    pub runs: usize,
+}
+
+/// Statistics of completed seed runs; grouping the runs differently gives the same bits as long
+/// as they come in seed order. Refuses a run whose times and traces differ in length (only runs
+/// from outside, through the bindings, can).
+pub fn seed_bands(runs: &[SeedRun]) -> Result<SeedBands, String> {
+    if let Some(r) = runs
+        .iter()
+        .find(|r| r.t.len() != r.error.len() || r.t.len() != r.estimate.len())
+    {
+        return Err(format!(
+            "seed run {}: {} times for {} speed errors and {} estimation errors; expected as many of each",
+            r.result.seed,
+            r.t.len(),
+            r.error.len(),
+            r.estimate.len()
+        ));
+    }
+    let ok: Vec<&SeedRun> = runs.iter().filter(|r| r.result.failure.is_none()).collect();
+    let error = Band::of(ok.iter().map(|r| r.error.as_slice()));
+    Ok(SeedBands {
+        t: ok
+            .first()
+            .map(|r| r.t[..error.mean.len()].to_vec())
+            .unwrap_or_default(),
+        estimate: Band::of(ok.iter().map(|r| r.estimate.as_slice())),
+        error,
+        runs: ok.len(),
+    })
+}
+
+/// Per-seed figures as CSV.
+pub fn seeds_csv(results: &[SeedResult]) -> String {
+    let mut out =
+        String::from("seed,tracking_rms,speed_estimate_error_rms,tracking_peak,failure\n");
+    for r in results {
+        let failure = r.failure.as_deref().unwrap_or("").replace(',', ";");
+        out += &format!(
+            "{},{},{},{},{failure}\n",
+            r.seed, r.tracking_rms, r.speed_estimate_error_rms, r.tracking_peak
+        );
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn band_statistics_do_not_depend_on_how_runs_are_produced() {
+        let base = crate::scenario::preset("step").unwrap();
+        let runs: Vec<SeedRun> = (5..9)
+            .map(|seed| seed_run(&base, seed, 50).unwrap())
+            .collect();
+        let again: Vec<SeedRun> = (5..9)
+            .rev()
+            .map(|seed| seed_run(&base, seed, 50).unwrap())
+            .rev()
+            .collect();
+        assert_eq!(seed_bands(&runs), seed_bands(&again));
+        let b = seed_bands(&runs).unwrap();
+        assert_eq!(b.runs, 4);
+        assert!((0..b.t.len())
+            .all(|i| b.error.min[i] <= b.error.mean[i] && b.error.mean[i] <= b.error.max[i]));
+        assert!(
+            runs[0].result.tracking_rms != runs[1].result.tracking_rms,
+            "seeds change the noise"
+        );
+    }
+}

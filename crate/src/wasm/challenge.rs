@@ -1,0 +1,362 @@
+//! The challenge bindings: a challenge parsed once, its description, submissions, the measures of
+//! a run and the verdict on them.
+
+use super::{from_js, js_error, to_js, Simulation};
+use crate::challenge::ErrorKind;
+use crate::scenario::Scenario;
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// A design challenge, parsed once: its description, the scenarios a submission runs and the
+/// verdict on their measures. The page runs each scenario in a worker (`new Simulation(text)`,
+/// stepped to the end), measures it there with [`challenge_measure`] and judges the measures
+/// here, so only small JSON crosses between workers.
+#[wasm_bindgen]
+pub struct Challenge {
+    inner: crate::challenge::Challenge,
+}
+
+/// What kind of values an allowed field takes; the page sees "range" or "choice".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum AllowKind {
+    /// A number from `lo` to `hi`.
+    Range,
+    /// One of `options`.
+    Choice,
+}
+
+/// An allowed field as the page shows it.
+#[derive(Serialize)]
+struct AllowView {
+    field: String,
+    kind: AllowKind,
+    lo: Option<f64>,
+    hi: Option<f64>,
+    options: Vec<String>,
+    unit: &'static str,
+    doc: &'static str,
+    /// The base scenario's value, as the codec writes it.
+    value: Option<String>,
+}
+
+/// How a criterion bounds its figure; the page sees "max", "min", "abs" or "band".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum OpKind {
+    /// value ≤ bound.
+    Max,
+    /// value ≥ bound.
+    Min,
+    /// |value| ≤ bound.
+    Abs,
+    /// Inside the mean NIS's 95 % band (no bound).
+    Band,
+}
+
+/// A criterion as the page shows it.
+#[derive(Serialize)]
+struct NeedView {
+    figure: String,
+    label: &'static str,
+    unit: &'static str,
+    op: OpKind,
+    bound: Option<f64>,
+    /// Whether it must hold on every variant too.
+    robust: bool,
+}
+
+#[derive(Serialize)]
+struct ChallengeView {
+    title: String,
+    base: String,
+    encoded: String,
+    allow: Vec<AllowView>,
+    need: Vec<NeedView>,
+    /// Each variant's override string (`seed=2`, `model.j=0.016`).
+    variants: Vec<String>,
+    brief: String,
+}
+
+/// Whether a submission link can be graded, or why not; the page sees "ok", "malformed",
+/// "refused" or "another".
+#[derive(Clone, Copy, Serialize)]
+#[serde(rename_all = "lowercase")]
+enum SubmissionKind {
+    /// It can run.
+    Ok,
+    /// See [`ErrorKind::Malformed`].
+    Malformed,
+    /// See [`ErrorKind::Refused`].
+    Refused,
+    /// See [`ErrorKind::Another`].
+    Another,
+}
+
+impl From<ErrorKind> for SubmissionKind {
+    fn from(kind: ErrorKind) -> Self {
+        match kind {
+            ErrorKind::Malformed => SubmissionKind::Malformed,
+            ErrorKind::Refused => SubmissionKind::Refused,
+            ErrorKind::Another => SubmissionKind::Another,
+        }
+    }
+}
+
+/// What a submission link gives: its status and, when it can run, the scenarios to run.
+#[derive(Serialize)]
+struct SubmissionView {
+    kind: SubmissionKind,
+    /// "ok", or the grading status: "malformed: …", "refused: …", "another challenge".
+    status: String,
+    /// The error's message ("" when ok).
+    message: String,
+    /// The canonical submission link ("" unless ok).
+    encoded: String,
+    /// The fields set, [field, value] in allow order.
+    tries: Vec<(String, String)>,
+    /// Scenario strings: the nominal run first, then one per variant (empty unless ok).
+    scenarios: Vec<String>,
+}
+
+#[wasm_bindgen]
+impl Challenge {
+    /// Parses a challenge link (bare query, or a URL whose query it is) or a built-in's name;
+    /// throws the message naming the offending key or field.
+    #[wasm_bindgen(constructor)]
+    pub fn new(text: &str) -> Result<Challenge, JsValue> {
+        let inner = crate::challenge::Challenge::parse(text).map_err(js_error)?;
+        Ok(Challenge { inner })
+    }
+
+    /// Opens the challenge of any link the address bar may hold: a challenge link (`c=1&…`), a
+    /// submission link (its `&try.FIELD=VALUE` parts are left out unread), `challenge=NAME` or a
+    /// built-in's name, each a bare query or a URL (`?` before it and `#…` after it are
+    /// ignored); throws the message naming the offending key or field.
+    pub fn from_link(text: &str) -> Result<Challenge, JsValue> {
+        let inner = crate::challenge::Challenge::from_link(text).map_err(js_error)?;
+        Ok(Challenge { inner })
+    }
+
+    /// The challenge's parts, as [`challenge_compose`] takes them: `{title, base, allow: [{field,
+    /// lo, hi} | {field, options: [name]}], need: [{figure, op, bound}], vary, robust: [figure]}`
+    /// with numbers as the codec writes them (strings), `bound` left out for `band`, and `vary`
+    /// `"seeds:A..B"`, an array of override strings, or null.
+    pub fn parts(&self) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.parts())
+    }
+
+    /// The canonical challenge link (query string).
+    pub fn encode(&self) -> String {
+        self.inner.encode()
+    }
+
+    /// The task as plain text.
+    pub fn brief(&self) -> String {
+        self.inner.brief()
+    }
+
+    /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
+    /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief}`.
+    pub fn describe(&self) -> Result<JsValue, JsValue> {
+        use crate::challenge::{figure_info, Allowed, Op};
+        let c = &self.inner;
+        let fields = c.base_scenario().describe();
+        let allow = c
+            .allow
+            .iter()
+            .map(|a| {
+                let f = fields.iter().find(|f| f.key == a.field).expect("checked");
+                let (kind, lo, hi, options) = match &a.allowed {
+                    Allowed::Range { lo, hi } => {
+                        (AllowKind::Range, Some(*lo), Some(*hi), Vec::new())
+                    }
+                    Allowed::Choice { options } => (AllowKind::Choice, None, None, options.clone()),
+                };
+                AllowView {
+                    field: a.field.clone(),
+                    kind,
+                    lo,
+                    hi,
+                    options,
+                    unit: f.unit,
+                    doc: f.doc,
+                    value: f.value.clone(),
+                }
+            })
+            .collect();
+        let need = c
+            .need
+            .iter()
+            .map(|n| {
+                let f = figure_info(&n.figure).expect("checked");
+                let (op, bound) = match n.op {
+                    Op::Max(b) => (OpKind::Max, Some(b)),
+                    Op::Min(b) => (OpKind::Min, Some(b)),
+                    Op::Abs(b) => (OpKind::Abs, Some(b)),
+                    Op::Band => (OpKind::Band, None),
+                };
+                NeedView {
+                    figure: n.figure.clone(),
+                    label: f.label,
+                    unit: f.unit,
+                    op,
+                    bound,
+                    robust: c.is_robust(&n.figure),
+                }
+            })
+            .collect();
+        to_js(&ChallengeView {
+            title: c.title.clone(),
+            base: c.base.clone(),
+            encoded: c.encode(),
+            allow,
+            need,
+            variants: c.run_labels().into_iter().skip(1).collect(),
+            brief: c.brief(),
+        })
+    }
+
+    /// A submission link of this challenge (bare query or URL): never throws; returns
+    /// `{kind, status, message, encoded, tries, scenarios}` (see the fields' docs).
+    pub fn submission(&self, text: &str) -> Result<JsValue, JsValue> {
+        to_js(&submission_view(self.inner.submission(text)))
+    }
+
+    /// The submission of the student's settings, as [`Challenge::submission`] reads its
+    /// canonical link (see [`Challenge::submit`]): `tries` is an array of [field, value] pairs
+    /// (strings, any order); never throws for pairs of strings; returns `{kind, status, message,
+    /// encoded, tries, scenarios}`, `encoded` the canonical submission link when `kind` is "ok".
+    pub fn submission_of(&self, tries: JsValue) -> Result<JsValue, JsValue> {
+        let tries: Vec<(String, String)> = from_js(tries)?;
+        to_js(&submission_view(self.inner.submit(&tries)))
+    }
+
+    /// The canonical submission link of the student's settings (the challenge's link, then
+    /// `&try.FIELD=VALUE` in allow order, each value percent-encoded as the codec encodes text):
+    /// `tries` is an array of [field, value] pairs (strings, any order); throws the status of
+    /// the refusal, e.g. "refused: k1=5000 is outside 300..3000".
+    pub fn submit(&self, tries: JsValue) -> Result<String, JsValue> {
+        let tries: Vec<(String, String)> = from_js(tries)?;
+        let s = self
+            .inner
+            .submit(&tries)
+            .map_err(|e| js_error(e.status()))?;
+        Ok(s.encode())
+    }
+
+    /// Judges the measures of the runs (`runs[0]` the nominal run, then one per variant, each
+    /// what [`challenge_measure`] returned): `{criteria: [{figure, label, bound, value, unit, run,
+    /// pass, reason}], pass}`; throws when the count of runs is wrong.
+    pub fn judge(&self, runs: JsValue) -> Result<JsValue, JsValue> {
+        let runs: Vec<crate::challenge::Measures> = from_js(runs)?;
+        let verdict = crate::challenge::judge(&self.inner, &runs).map_err(js_error)?;
+        to_js(&verdict)
+    }
+}
+
+/// What a submission read gives the page: its status and, when it can run, its scenarios.
+fn submission_view(
+    read: Result<crate::challenge::Submission, crate::challenge::ChallengeError>,
+) -> SubmissionView {
+    match read.and_then(|s| s.scenarios().map(|runs| (s, runs))) {
+        Ok((s, runs)) => SubmissionView {
+            kind: SubmissionKind::Ok,
+            status: "ok".to_string(),
+            message: String::new(),
+            encoded: s.encode(),
+            tries: s.tries.clone(),
+            scenarios: runs.iter().map(Scenario::encode).collect(),
+        },
+        Err(e) => SubmissionView {
+            kind: e.kind.into(),
+            status: e.status(),
+            message: e.message.clone(),
+            encoded: String::new(),
+            tries: Vec::new(),
+            scenarios: Vec::new(),
+        },
+    }
+}
+
+/// The measures of a finished run for judging a challenge: `{figures: [{name, value, unit,
+/// settled}], failure}` (`value` may be Infinity: a load never recovered from; `failure` a
+/// message when the run failed or ran away, else null).
+#[wasm_bindgen]
+pub fn challenge_measure(sim: &Simulation) -> Result<JsValue, JsValue> {
+    to_js(&crate::challenge::measure(&sim.inner))
+}
+
+/// The built-in challenges: `[{name, summary, text, solution}]` (`text` the canonical link;
+/// `solution` a passing `field=value&…`).
+#[wasm_bindgen]
+pub fn challenge_builtins() -> Result<JsValue, JsValue> {
+    #[derive(Serialize)]
+    struct View {
+        name: &'static str,
+        summary: &'static str,
+        text: &'static str,
+        solution: &'static str,
+    }
+    let list: Vec<View> = crate::challenge::BUILTINS
+        .iter()
+        .map(|b| View {
+            name: b.name,
+            summary: b.summary,
+            text: b.text,
+            solution: b.solution,
+        })
+        .collect();
+    to_js(&list)
+}
+
+/// The figures a challenge's criteria may name: `[{name, label, unit}]`.
+#[wasm_bindgen]
+pub fn challenge_figures() -> Result<JsValue, JsValue> {
+    to_js(&crate::challenge::figures().collect::<Vec<_>>())
+}
+
+/// What [`challenge_compose`] gives: the link and the task in words, or the part at fault.
+#[derive(Serialize)]
+struct Composed {
+    /// The canonical challenge link (query string), or null.
+    encoded: Option<String>,
+    /// The task in words, or null.
+    brief: Option<String>,
+    /// `{key, message}` when the parts make no challenge, else null.
+    error: Option<crate::challenge::ComposeError>,
+}
+
+/// A challenge from the composer's parts, encoded and checked by the codec's rules part by
+/// part. `parts` is
+///
+/// ```text
+/// {title: string, base: string (a scenario string),
+///  allow: [{field, lo, hi} (a range; numbers or their text) | {field, options} (choices:
+///          an array of names, or one string "a|b")],
+///  need: [{figure, op: "max" | "min" | "abs" | "band", bound (number or text; none for band)}],
+///  vary: "seeds:A..B" | "OVERRIDES|OVERRIDES…" | [override strings] | "" | null,
+///  robust: [figure]}
+/// ```
+///
+/// (missing members are empty; text is trimmed). Never throws for parts of that shape: returns
+/// `{encoded, brief, error: null}`, or `{encoded: null, brief: null, error: {key, message}}`
+/// where `key` names the part at fault: `title`, `base`, `allow.FIELD`, `need.FIGURE`, `need`
+/// (no criterion, or too many), `vary`, `robust`, or `challenge` (the whole link too long).
+#[wasm_bindgen]
+pub fn challenge_compose(parts: JsValue) -> Result<JsValue, JsValue> {
+    let parts: crate::challenge::ChallengeParts = from_js(parts)?;
+    let view = match crate::challenge::Challenge::compose(&parts) {
+        Ok(c) => Composed {
+            encoded: Some(c.encode()),
+            brief: Some(c.brief()),
+            error: None,
+        },
+        Err(e) => Composed {
+            encoded: None,
+            brief: None,
+            error: Some(e),
+        },
+    };
+    to_js(&view)
+}
