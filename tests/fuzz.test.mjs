@@ -241,8 +241,8 @@ function junk(depth = 0) {
       result: {
         seed: rng.int(0, 9),
         tracking_rms: rng.next(),
-        estimate_rms: rng.pick(ODD_ARGS),
-        tracking_max: 1,
+        speed_estimate_error_rms: rng.pick(ODD_ARGS),
+        tracking_peak: 1,
         failure: rng.pick([null, 'x']),
       },
       t: values(rng.chance(0.8) ? n : rng.int(0, 5)),
@@ -415,7 +415,7 @@ test(`${STRINGS} generated inputs through every binding: clean errors, never a t
 });
 
 test('seed_bands refuses seed runs whose times and traces differ in length', () => {
-  const result = { seed: 1, tracking_rms: 0, estimate_rms: 0, tracking_max: 0, failure: null };
+  const result = { seed: 1, tracking_rms: 0, speed_estimate_error_rms: 0, tracking_peak: 0, failure: null };
   assert.throws(
     () => seed_bands([{ result, t: [], error: [0.1], estimate: [0.1] }]),
     (e) => !(e instanceof WebAssembly.RuntimeError),

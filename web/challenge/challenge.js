@@ -186,8 +186,7 @@ export function createChallenge({ client, state, relayout }) {
       const tries = desc.allow
         .map((a) => [a.field, fieldValue(info, a.field)])
         .filter(([f, v]) => v !== null && v !== desc.allow.find((a) => a.field === f).value);
-      const text = desc.encoded + tries.map(([f, v]) => `&try.${f}=${encodeURIComponent(v)}`).join('');
-      const sub = await client.job('challenge-submission', { text: desc.encoded, submission: text });
+      const sub = await client.job('challenge-tries', { text: desc.encoded, tries });
       if (me !== grading) return;
       if (sub.kind !== 'ok') {
         showRefusal(sub);

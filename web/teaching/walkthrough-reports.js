@@ -30,10 +30,10 @@ export function comparison(results) {
     rows.push([
       r.predictor,
       m.tracking_rms.toPrecision(3),
-      m.speed_estimate_rms.toPrecision(3),
-      m.flux_estimate_rms.toPrecision(3),
+      m.speed_estimate_error_rms.toPrecision(3),
+      m.flux_estimate_error_rms.toPrecision(3),
       m.mean_nis.toPrecision(3),
-      `${m.saturated.toPrecision(3)} of samples`,
+      `${m.saturated_share.toPrecision(3)} of samples`,
     ]);
   }
   // The first row names the columns, the first column the predictor.
@@ -54,7 +54,7 @@ export function comparison(results) {
   );
   return [
     el('p', {
-      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.from.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
+      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.transient_end.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
     }),
     table,
   ];

@@ -12,19 +12,14 @@ export function scenarioFromUrl() {
 
 /**
  * The challenge in the address bar, or null: `?c=1&…` is a challenge link (with `&try.FIELD=…`
- * a submission), `?challenge=NAME` a built-in. Returns {challenge, submission}: the challenge's
- * text (its `try.` parts left out, or the built-in's name) and the whole submission text.
+ * a submission), `?challenge=NAME` a built-in. Returns {challenge, submission}: the link the core
+ * opens the challenge from (it reads no `try.` part) and the whole submission text, if any.
  */
 export function challengeFromUrl() {
   const text = location.search.replace(/^\?/, '');
-  const name = /^challenge=([A-Za-z0-9_-]+)$/.exec(text);
-  if (name) return { challenge: name[1], submission: null };
+  if (/^challenge=[A-Za-z0-9_-]+$/.test(text)) return { challenge: text, submission: null };
   if (!/^c=/.test(text)) return null;
-  const challenge = text
-    .split('&')
-    .filter((p) => !p.startsWith('try.'))
-    .join('&');
-  return { challenge, submission: text };
+  return { challenge: text, submission: text };
 }
 
 // While a challenge is open the address holds its link (then the student's submission link),

@@ -2,11 +2,21 @@
 // the challenge text it is given (the core's Challenge), so any worker of a pool can take any of
 // them. Every check and figure comes from the core. A bad challenge throws the core's message,
 // which the worker returns as the job's error.
-import { Challenge, challenge_builtins, challenge_figures, challenge_measure, Simulation } from '../../pkg/imlab.js';
+import {
+  Challenge,
+  challenge_builtins,
+  challenge_compose,
+  challenge_figures,
+  challenge_measure,
+  Simulation,
+} from '../../pkg/imlab.js';
 
-/** `f(challenge)` on the challenge parsed from `text`, freed afterwards. */
+/**
+ * `f(challenge)` on the challenge `text` opens (a challenge link, a submission link, a built-in's
+ * name), freed afterwards.
+ */
 function withChallenge(text, f) {
-  const challenge = new Challenge(text);
+  const challenge = Challenge.from_link(text);
   try {
     return f(challenge);
   } finally {
@@ -39,6 +49,8 @@ function measureRun(scenario) {
 export const CHALLENGE_JOBS = {
   challenge: (d) => withChallenge(d.text, (c) => c.describe()),
   'challenge-submission': (d) => withChallenge(d.text, (c) => c.submission(d.submission)),
+  'challenge-tries': (d) => withChallenge(d.text, (c) => c.submission_of(d.tries)),
+  'challenge-compose': (d) => challenge_compose(d.parts),
   'challenge-judge': (d) => withChallenge(d.text, (c) => c.judge(d.runs)),
   'challenge-run': (d) => measureRun(d.scenario),
   'challenge-builtins': () => challenge_builtins(),

@@ -102,8 +102,11 @@ export {};
  * - 'map-plan': the model-error map `text` over `scenario` (its cells and seeds) and the figures
  *   it keeps; 'map-run' one cell's scenario with one seed; 'map-cells' the cells of `runs`;
  *   'map-csv' the map's CSV.
- * - 'challenge': a challenge's description; 'challenge-submission' a submission link read
- *   against it; 'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
+ * - 'challenge': the description of the challenge a link opens (a challenge link, a submission
+ *   link, a built-in's name); 'challenge-submission' a submission link read against it;
+ *   'challenge-tries' the submission of a student's values ([field, value] pairs), its link
+ *   written by the core; 'challenge-compose' a challenge composed from a lecturer's parts (its
+ *   link and brief, or the part at fault); 'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
  *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
  *   built-in challenges and the figures a criterion may name.
  * @typedef {{
@@ -121,6 +124,8 @@ export {};
  *   'map-csv': {req: {map: any, cells: any[]}, result: string},
  *   challenge: {req: {text: string}, result: any},
  *   'challenge-submission': {req: {text: string, submission: string}, result: any},
+ *   'challenge-tries': {req: {text: string, tries: [string, string][]}, result: any},
+ *   'challenge-compose': {req: {parts: any}, result: {encoded: string | null, brief: string | null, error: {key: string, message: string} | null}},
  *   'challenge-judge': {req: {text: string, runs: any[]}, result: any},
  *   'challenge-run': {req: {scenario: string}, result: any},
  *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},

@@ -1,0 +1,166 @@
+// The compose form's rows: the fields a student may change with their ranges, the criteria on
+// the run's figures with their bounds, and the robustness variants. Their defaults are a
+// starting point for the lecturer; the core checks and writes the challenge they describe.
+import { fieldValue } from '../run/controls.js';
+import { el } from '../ui/dom.js';
+
+/** `x` to two significant digits, as the codec writes numbers. */
+const round2 = (x) => Number(x.toPrecision(2));
+
+// Final values are bounded on both sides; the mean NIS by its band.
+const ABS = new Set(['speed_error_final', 'flux_error_final', 'speed_estimate_error_final']);
+
+/** A range around the field's value: half to twice it, within the field's own range. */
+function rangeAround(f) {
+  const v = Number(f.value);
+  if (f.integer && f.min === 0 && f.max === 1) return [0, 1];
+  let [lo, hi] = v > 0 ? [v / 2, v * 2] : v < 0 ? [v * 2, v / 2] : [f.min, f.max];
+  lo = Math.max(lo, f.min);
+  hi = Math.min(hi, f.max);
+  if (f.integer) [lo, hi] = [Math.ceil(lo), Math.floor(hi)];
+  const nice = (x) => (Number.isFinite(x) && x !== 0 ? Number(x.toPrecision(3)) : x);
+  return [nice(lo), nice(hi)];
+}
+
+/** A button that calls `onClick`. */
+export function button(id, text, onClick) {
+  const b = el('button', { type: 'button', id, textContent: text });
+  b.addEventListener('click', onClick);
+  return b;
+}
+
+/** The fields a student may change: a picker and a row for each field added. */
+export function allowSet(info) {
+  const fields = info.fields.filter((f) => f.value !== null && f.acts && f.key !== 'seed');
+  const picker = el(
+    'select',
+    { id: 'compose-field' },
+    fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })),
+  );
+  const rows = el('div', { id: 'compose-allow' });
+  const add = button('compose-add', 'Add', () => {
+    const f = fields.find((x) => x.key === picker.value);
+    if (f && !rows.querySelector(`[data-key="allow.${CSS.escape(f.key)}"]`)) rows.append(allowRow(f));
+  });
+  return el('fieldset', { className: 'compose-set' }, [
+    el('legend', { textContent: 'Fields the student may change' }),
+    el('div', { className: 'buttons' }, [el('label', { htmlFor: 'compose-field', textContent: 'Field' }), picker, add]),
+    rows,
+  ]);
+}
+
+function allowRow(f) {
+  const row = el('div', { className: 'compose-row' });
+  row.dataset.key = `allow.${f.key}`;
+  row.dataset.field = f.key;
+  const id = `compose-allow-${f.key}`;
+  const remove = button(`${id}-remove`, 'Remove', () => row.remove());
+  remove.setAttribute('aria-label', `Remove ${f.key}`);
+  const unit = f.unit ? ` ${f.unit}` : '';
+  if (f.options.length) {
+    row.append(
+      el('label', { htmlFor: id, textContent: `${f.key}: choices (a|b)` }),
+      el('input', { id, name: 'options', value: f.options.join('|') }),
+    );
+  } else {
+    const [lo, hi] = rangeAround(f);
+    row.append(
+      el('span', { className: 'key', textContent: f.key }),
+      el('label', { htmlFor: `${id}-lo`, textContent: 'from' }),
+      el('input', { id: `${id}-lo`, name: 'lo', value: lo, size: 8, inputMode: 'decimal' }),
+      el('label', { htmlFor: `${id}-hi`, textContent: 'to' }),
+      el('input', { id: `${id}-hi`, name: 'hi', value: hi, size: 8, inputMode: 'decimal' }),
+      el('span', { className: 'range', textContent: `${unit.trim()} (now ${f.value})` }),
+    );
+  }
+  row.append(remove);
+  return row;
+}
+
+/**
+ * The criteria: a row for each figure the core lets a criterion name (`figures`), prefilled from
+ * the run's `measures` when there are some.
+ */
+export function needSet(figures, measures) {
+  const rows = el('div', { id: 'compose-need' });
+  for (const fig of figures) {
+    const m = measures?.figures.find((x) => x.name === fig.name);
+    if (measures && !m) continue; // this scenario does not measure it (no step, no load step)
+    rows.append(needRow(fig, m));
+  }
+  return el('fieldset', { className: 'compose-set' }, [
+    el('legend', { textContent: 'Criteria: the figures of this run' }),
+    el('p', {
+      className: 'hint',
+      textContent: '“All runs” makes the criterion hold on every variant too (the worst run counts).',
+    }),
+    rows,
+  ]);
+}
+
+function needRow(fig, m) {
+  const id = `compose-need-${fig.name}`;
+  const row = el('div', { className: 'compose-row' });
+  row.dataset.key = `need.${fig.name}`;
+  row.dataset.figure = fig.name;
+  const unit = fig.unit ? ` ${fig.unit}` : '';
+  const now = m ? ` — now ${m.value === Infinity ? '∞' : Number(m.value.toPrecision(4))}${unit}` : '';
+  const band = fig.name === 'mean_nis';
+  const op = el(
+    'select',
+    { id: `${id}-op`, name: 'op' },
+    (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) =>
+      el('option', {
+        value: o,
+        textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o],
+      }),
+    ),
+  );
+  if (ABS.has(fig.name)) op.value = 'abs';
+  const bound = el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' });
+  if (m && Number.isFinite(m.value)) bound.value = round2((op.value === 'min' ? 1.2 : 0.8) * Math.abs(m.value));
+  const syncBound = () => {
+    bound.disabled = op.value === 'band';
+  };
+  op.addEventListener('change', syncBound);
+  syncBound();
+  row.append(
+    el('label', { className: 'need-label' }, [
+      el('input', { type: 'checkbox', id, name: 'use' }),
+      ` ${fig.label} (${fig.name})${now}`,
+    ]),
+    el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: `${fig.name}: how it is bounded` }),
+    op,
+    el('label', { htmlFor: `${id}-bound`, className: 'sr-only', textContent: `${fig.name}: bound${unit}` }),
+    bound,
+    el('span', { className: 'range', textContent: unit.trim() }),
+    el('label', {}, [el('input', { type: 'checkbox', id: `${id}-robust`, name: 'robust' }), ' all runs']),
+  );
+  return row;
+}
+
+/** The robustness variants: seeds, or settings applied on top of the student's. */
+export function varySet(info) {
+  const vary = el('input', {
+    id: 'compose-vary',
+    size: 40,
+    placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024',
+  });
+  const j = Number(fieldValue(info, 'model.j'));
+  const seeds = button('compose-seeds', 'Seeds 2 to 10', () => {
+    vary.value = 'seeds:2..10';
+  });
+  const inertia = button('compose-inertia', 'model.j ±20 %', () => {
+    vary.value = `model.j=${round2(0.8 * j)}|model.j=${round2(1.2 * j)}`;
+  });
+  inertia.disabled = !(j > 0);
+  return el('fieldset', { className: 'compose-set' }, [
+    el('legend', { textContent: 'Robustness variants (optional)' }),
+    el('label', {
+      htmlFor: 'compose-vary',
+      textContent: 'Variants: seeds:A..B, or settings applied on top of the student’s, separated by |',
+    }),
+    vary,
+    el('div', { className: 'buttons' }, [seeds, inertia]),
+  ]);
+}
