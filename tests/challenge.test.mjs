@@ -172,12 +172,19 @@ for (const [tamper, refusal] of [
   });
 }
 
-test('a value outside the allowed range is refused at the check, never passed', () =>
+test('a value outside the allowed range is refused before it runs: the address keeps naming the run on screen', () =>
   withPage('?challenge=step-tune', async (page) => {
     await graded(page);
-    assert.equal(await tryValues(page, { k1: '6000' }), 'refused');
-    assert.match(await page.textContent('#challenge-error'), /k1=6000 is outside 300\.\.5000/);
+    const before = await page.evaluate(() => ({ started: document.body.dataset.started, address: location.search }));
+    await page.fill('#challenge-k1', '6000');
+    await page.click('#challenge-run');
+    await page.waitForFunction(() => document.body.dataset.challenge === 'refused');
+    assert.match(await page.textContent('#challenge-error'), /k1=6000 is outside 300\.\.5000.*Not run/);
     assert.equal(await page.isDisabled('#challenge-copy'), true);
+    const after = await page.evaluate(() => ({ started: document.body.dataset.started, address: location.search }));
+    assert.deepEqual(after, before, 'a run started, or the address moved');
+    // Back in range, it runs and is graded again.
+    assert.equal(await tryValues(page, { k1: '1200' }), 'fail');
   }));
 
 test('a malformed challenge link says so and the page falls back to the default scenario', () =>

@@ -20,7 +20,7 @@ import { createPresentation } from './ui/presentation.js';
 import { wireShare } from './ui/share.js';
 import { createSweeps } from './analysis/sweeps.js';
 import { createRobust } from './analysis/robust.js';
-import { createChallenge } from './challenge/challenge.js';
+import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
 
@@ -106,7 +106,7 @@ const robust = createRobust({
     settings.load(scenario);
   },
 });
-const challenge = createChallenge({
+const challenge = new ChallengePanel({
   client,
   state,
   relayout: () => plotSets.forEach((p) => p.resize()),
@@ -139,7 +139,8 @@ const settings = createSettings({
   markUnrun: run.markUnrun,
   openSettings: presentation.openSettings,
   first: () => (lessonFromUrl() ? null : challenge.open()),
-  described: challenge.described,
+  described: (info) => challenge.described(info),
+  mayRun: (info) => challenge.mayRun(info),
 });
 const lessons = new LessonPanel({
   panel: $('lesson-panel'),

@@ -11,6 +11,9 @@ import { el } from '../ui/dom.js';
 import { plural, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 
+/** The page's state attributes, which the tests wait on. */
+const body = () => document.body.dataset;
+
 /** The panel's parts that outlive a render: the checklist, the check's progress and the copy. */
 function panelParts() {
   const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
@@ -34,22 +37,31 @@ function panelParts() {
  * The student's side of a challenge; `client` is the page's worker, `relayout()` sizes the plots
  * to the room the panel leaves them.
  */
-export function createChallenge({ client, state, relayout }) {
-  const panel = $('challenge-panel');
-  const link = challengeFromUrl();
-  let desc = null; // the core's description of the open challenge
-  let refused = null; // why the link's submission was refused, until the student runs their own
-  let grading = 0; // checks started: a newer one supersedes the one under way
-  let pool = null; // workers for the variants, started at the first check that has some
-  const knobs = new Map(); // field → the panel's control
-  const body = document.body.dataset;
+export class ChallengePanel {
+  constructor({ client, state, relayout }) {
+    this.client = client;
+    this.state = state;
+    this.relayout = relayout;
+    this.panel = $('challenge-panel');
+    this.link = challengeFromUrl();
+    this.desc = null; // the core's description of the open challenge
+    this.refused = null; // why the link's submission was refused, until the student runs their own
+    this.grading = 0; // checks started: a newer one supersedes the one under way
+    /** @type {Pool | null} workers for the variants, started at the first check that has some */
+    this.pool = null;
+    this.knobs = new Map(); // field → the panel's control
+    this.parts = panelParts();
+  }
 
-  const { checklist, verdict, progress, cancel, copy, copied, alert } = panelParts();
+  /** Whether a challenge is open. */
+  active() {
+    return this.link !== null && this.desc !== null;
+  }
 
   /** Shows the error `text` in the panel (empty clears it). */
-  function fail(text) {
-    alert.textContent = text;
-    alert.hidden = !text;
+  fail(text) {
+    this.parts.alert.textContent = text;
+    this.parts.alert.hidden = !text;
   }
 
   /**
@@ -57,55 +69,51 @@ export function createChallenge({ client, state, relayout }) {
    * its nominal run (the link's settings, or the base's when they are refused). Without a
    * challenge (or with one the core rejects) it resolves with the address's scenario.
    */
-  async function open() {
-    if (!link) return scenarioFromUrl();
+  async open() {
+    if (!this.link) return scenarioFromUrl();
     try {
-      return await openLink();
+      return await this.openLink();
     } catch (e) {
-      fail(`The challenge could not be opened: ${e.message}. The page shows the default scenario instead.`);
-      body.challenge = 'failed';
-      desc = null;
+      this.fail(`The challenge could not be opened: ${e.message}. The page shows the default scenario instead.`);
+      body().challenge = 'failed';
+      this.desc = null;
       return scenarioFromUrl();
     }
   }
 
-  async function openLink() {
+  async openLink() {
+    const { client, link } = this;
     document.body.classList.add('with-challenge');
-    panel.hidden = false;
-    body.challenge = 'loading';
-    panel.replaceChildren(el('h2', { textContent: 'Challenge' }), alert);
+    this.panel.hidden = false;
+    body().challenge = 'loading';
+    this.panel.replaceChildren(el('h2', { textContent: 'Challenge' }), this.parts.alert);
     try {
-      desc = await client.job('challenge', { text: link.challenge });
+      this.desc = await client.job('challenge', { text: link.challenge });
     } catch (e) {
-      fail(`This challenge link was rejected: ${e.message}. The page shows the default scenario instead.`);
-      body.challenge = 'malformed';
+      this.fail(`This challenge link was rejected: ${e.message}. The page shows the default scenario instead.`);
+      body().challenge = 'malformed';
       return scenarioFromUrl();
     }
-    let sub = await client.job('challenge-submission', {
-      text: desc.encoded,
-      submission: link.submission ?? desc.encoded,
-    });
+    const text = this.desc.encoded;
+    let sub = await client.job('challenge-submission', { text, submission: link.submission ?? text });
     if (sub.kind !== 'ok') {
-      refused =
+      this.refused =
         sub.kind === 'another'
           ? 'This submission link belongs to another challenge (its challenge part was edited): it was not graded.'
           : `This submission link was ${sub.kind === 'refused' ? 'refused' : 'rejected'}: ${sub.message}. It was not graded; the task starts from its base settings.`;
-      sub = await client.job('challenge-submission', { text: desc.encoded, submission: desc.encoded });
+      sub = await client.job('challenge-submission', { text, submission: text });
     }
-    holdAddress(refused ? location.search.slice(1) : sub.encoded);
-    render();
-    if (refused) {
-      fail(refused);
-      body.challenge = 'refused';
-    } else body.challenge = 'open';
+    holdAddress(this.refused ? location.search.slice(1) : sub.encoded);
+    this.render();
+    if (this.refused) {
+      this.fail(this.refused);
+      body().challenge = 'refused';
+    } else body().challenge = 'open';
     return sub.scenarios[0];
   }
 
-  function render() {
-    const task = el('details', { className: 'brief', open: true }, [
-      el('summary', { textContent: 'The task in full' }),
-      el('div', { className: 'brief-text', textContent: desc.brief.split('\n').slice(2).join('\n').trim() }),
-    ]);
+  render() {
+    const { desc, parts, knobs } = this;
     const run = el('button', { type: 'button', id: 'challenge-run', textContent: 'Run and check' });
     run.addEventListener('click', () => {
       for (const [field, control] of knobs) copyToForm(field, control);
@@ -113,126 +121,155 @@ export function createChallenge({ client, state, relayout }) {
     });
     const knobBox = el('div', { className: 'knobs challenge-knobs' });
     for (const a of desc.allow) knobBox.append(knob(a, knobs));
-    copy.addEventListener('click', copySubmission);
-    cancel.addEventListener('click', () => pool?.cancel());
-    panel.replaceChildren(
+    parts.copy.addEventListener('click', () => this.copySubmission());
+    parts.cancel.addEventListener('click', () => this.pool?.cancel());
+    this.panel.replaceChildren(
       el('p', { className: 'lesson-count', textContent: 'Challenge' }),
       el('h2', { textContent: desc.title, tabIndex: -1 }),
-      alert,
+      parts.alert,
       el('h3', { textContent: 'Your settings' }),
       el('p', {
         className: 'hint',
         textContent: `Only ${desc.allow.map((a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.`,
       }),
       knobBox,
-      el('div', { className: 'buttons' }, [run, cancel]),
-      progress,
+      el('div', { className: 'buttons' }, [run, parts.cancel]),
+      parts.progress,
       el('h3', { textContent: 'Checklist' }),
-      verdict,
-      checklist,
-      el('div', { className: 'buttons' }, [copy]),
-      copied,
-      task,
+      parts.verdict,
+      parts.checklist,
+      el('div', { className: 'buttons' }, [parts.copy]),
+      parts.copied,
+      el('details', { className: 'brief', open: true }, [
+        el('summary', { textContent: 'The task in full' }),
+        el('div', { className: 'brief-text', textContent: desc.brief.split('\n').slice(2).join('\n').trim() }),
+      ]),
     );
-    relayout();
-    verdict.textContent = 'Not checked yet: the first run is being computed.';
-    checklist.replaceChildren(
+    this.relayout();
+    parts.verdict.textContent = 'Not checked yet: the first run is being computed.';
+    parts.checklist.replaceChildren(
       ...desc.need.map((n) => el('li', { textContent: `${n.label} (${n.figure}): not checked yet` })),
     );
   }
 
   /** After each description of the form: only the allowed fields stay editable, and the panel follows the form. */
-  function described(info) {
-    if (!desc) return;
+  described(info) {
+    if (!this.desc) return;
     ui.preset.disabled = true;
-    const allowed = new Set(desc.allow.map((a) => a.field));
+    const allowed = new Set(this.desc.allow.map((a) => a.field));
     const controls = /** @type {NodeListOf<HTMLInputElement | HTMLSelectElement>} */ (
       document.querySelectorAll(
         '#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select',
       )
     );
-    for (const c of controls) {
-      c.disabled = !allowed.has(c.name);
-    }
-    for (const [field, control] of knobs) {
+    for (const c of controls) c.disabled = !allowed.has(c.name);
+    for (const [field, control] of this.knobs) {
       if (control !== document.activeElement) control.value = fieldValue(info, field) ?? '';
     }
   }
 
+  /** The student's values of the allowed fields in `info` that differ from the base's. */
+  tries(info) {
+    return this.desc.allow
+      .map((a) => [a.field, fieldValue(info, a.field)])
+      .filter(([f, v]) => v !== null && v !== this.desc.allow.find((a) => a.field === f).value);
+  }
+
+  /**
+   * Whether the scenario `info` may run: with a challenge open, only as a valid answer (the
+   * address then names the run on screen); a value outside the allowed range is refused before
+   * any run, and said.
+   */
+  async mayRun(info) {
+    if (!this.desc) return true;
+    const sub = await this.client.job('challenge-tries', { text: this.desc.encoded, tries: this.tries(info) });
+    if (sub.kind === 'ok') return true;
+    this.grading++; // a check under way is of the settings before this edit
+    this.showRefusal(sub, 'Not run');
+    return false;
+  }
+
   /** The description of the scenario run last (the form's, unless it has been edited since). */
-  const ranInfo = () => (state.info.encoded === state.ranScenario ? state.info : client.describe(state.ranScenario));
+  ranInfo() {
+    const { state } = this;
+    return state.info.encoded === state.ranScenario ? state.info : this.client.describe(state.ranScenario);
+  }
 
   /**
    * Checks the run that just ended: the student's settings as a submission, the measures of the
    * nominal run (this run's, when it is the one the challenge asks for) and of each variant, and
    * the core's verdict on them.
    */
-  async function check() {
-    if (!desc) return;
-    const me = ++grading;
-    const runId = state.runId;
-    if (refused && runId === 1) {
+  async check() {
+    if (!this.desc) return;
+    const me = ++this.grading;
+    const runId = this.state.runId;
+    const { verdict, progress, cancel } = this.parts;
+    if (this.refused && runId === 1) {
       verdict.textContent =
         '✗ Not graded: the settings in the link were refused (see above). Change the allowed settings and run.';
-      body.challengeChecked = runId;
+      body().challengeChecked = String(runId);
       return;
     }
-    refused = null;
-    fail('');
-    pool?.cancel();
-    body.challenge = 'checking';
+    this.refused = null;
+    this.fail('');
+    this.pool?.cancel();
+    body().challenge = 'checking';
     try {
-      const info = await ranInfo();
-      const tries = desc.allow
-        .map((a) => [a.field, fieldValue(info, a.field)])
-        .filter(([f, v]) => v !== null && v !== desc.allow.find((a) => a.field === f).value);
-      const sub = await client.job('challenge-tries', { text: desc.encoded, tries });
-      if (me !== grading) return;
-      if (sub.kind !== 'ok') {
-        showRefusal(sub);
-        return;
-      }
-      const held = sub.scenarios[0] === state.ranScenario ? await client.measure(runId) : null;
-      body.challengeNominal = held ? 'page' : 'pool';
-      const measured = await measureRuns(held ? sub.scenarios.slice(1) : sub.scenarios, held !== null);
-      if (me !== grading) return;
-      const result = await client.job('challenge-judge', {
-        text: desc.encoded,
-        runs: held ? [held, ...measured] : measured,
-      });
-      if (me !== grading) return;
-      showVerdict({ verdict, checklist }, result, sub);
-      if (!held)
-        verdict.append(
-          ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
-        );
-      holdAddress(sub.encoded);
-      copy.disabled = false;
-      body.challenge = result.pass ? 'pass' : 'fail';
+      await this.grade(me, runId);
     } catch (e) {
-      if (me !== grading) return;
+      if (me !== this.grading) return;
       const cancelled = e.message === 'cancelled';
       verdict.textContent = cancelled
         ? '✗ Check cancelled: not graded. Run again to check.'
         : `✗ The check failed: ${e.message}. Not graded.`;
-      body.challenge = cancelled ? 'cancelled' : 'failed';
+      body().challenge = cancelled ? 'cancelled' : 'failed';
     } finally {
-      if (me === grading) {
+      if (me === this.grading) {
         progress.hidden = true;
         cancel.disabled = true;
-        body.challengeChecked = runId;
+        body().challengeChecked = String(runId);
       }
     }
+  }
+
+  /** The check `me` of run `runId`: its submission, its runs measured, and the core's verdict. */
+  async grade(me, runId) {
+    const { client, desc, state, parts } = this;
+    const sub = await client.job('challenge-tries', { text: desc.encoded, tries: this.tries(await this.ranInfo()) });
+    if (me !== this.grading) return;
+    if (sub.kind !== 'ok') {
+      this.showRefusal(sub, 'Not graded');
+      return;
+    }
+    const held = sub.scenarios[0] === state.ranScenario ? await client.measure(runId) : null;
+    body().challengeNominal = held ? 'page' : 'pool';
+    const measured = await this.measureRuns(held ? sub.scenarios.slice(1) : sub.scenarios, held !== null);
+    if (me !== this.grading) return;
+    const result = await client.job('challenge-judge', {
+      text: desc.encoded,
+      runs: held ? [held, ...measured] : measured,
+    });
+    if (me !== this.grading) return;
+    showVerdict(parts, result, sub);
+    if (!held)
+      parts.verdict.append(
+        ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
+      );
+    holdAddress(sub.encoded);
+    parts.copy.disabled = false;
+    body().challenge = result.pass ? 'pass' : 'fail';
   }
 
   /**
    * Measures `scenarios` in the pool with progress (the nominal run is the first of them unless
    * the page `held` it); rejects with 'cancelled' on Cancel.
    */
-  async function measureRuns(scenarios, held) {
+  async measureRuns(scenarios, held) {
     if (!scenarios.length) return [];
-    pool ??= new Pool(1);
-    pool.size = Math.max(1, Math.min(scenarios.length, 4, navigator.hardwareConcurrency || 2));
+    const { progress, cancel, verdict } = this.parts;
+    this.pool ??= new Pool(1);
+    this.pool.size = Math.max(1, Math.min(scenarios.length, 4, navigator.hardwareConcurrency || 2));
     progress.hidden = false;
     progress.value = 0;
     cancel.disabled = false;
@@ -242,23 +279,25 @@ export function createChallenge({ client, state, relayout }) {
       verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
     };
     tell(0);
-    return pool.run(
+    return this.pool.run(
       scenarios.map((scenario) => ({ kind: 'challenge-run', scenario })),
       tell,
     );
   }
 
-  function showRefusal(sub) {
+  /** Says why the student's settings are no answer (`what`: not run, or not graded). */
+  showRefusal(sub, what) {
     const text = `Your settings are not a valid answer: ${sub.message}.`;
-    fail(text);
-    verdict.textContent = `✗ Not graded. ${text}`;
-    checklist.replaceChildren();
-    copy.disabled = true;
-    body.challenge = 'refused';
+    this.fail(`${text} ${what}.`);
+    this.parts.verdict.textContent = `✗ ${what}. ${text}`;
+    this.parts.checklist.replaceChildren();
+    this.parts.copy.disabled = true;
+    body().challenge = 'refused';
   }
 
-  async function copySubmission() {
+  async copySubmission() {
     const url = `${location.origin}${location.pathname}${location.search}`;
+    const { copied } = this.parts;
     try {
       await navigator.clipboard.writeText(url);
       copied.textContent = 'Submission link copied: it replays these runs bit for bit.';
@@ -266,6 +305,4 @@ export function createChallenge({ client, state, relayout }) {
       copied.textContent = `Copy this submission link: ${url}`;
     }
   }
-
-  return { open, described, check, active: () => link !== null && desc !== null };
 }

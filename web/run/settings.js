@@ -44,7 +44,8 @@ async function describeLoaded(client, state, text) {
  * The settings; `startRun()` and `markUnrun(unrun)` are the run's, `openSettings(open)` opens the
  * settings drawer. The worker's `ready` message (`handlers`) lists the presets and loads the
  * scenario `first()` resolves with (the address's, unless a challenge gives it). `described(info)`
- * follows every description the form takes.
+ * follows every description the form takes; `mayRun(info)` is asked before every run (an open
+ * challenge refuses a value outside its ranges).
  */
 export function createSettings({
   client,
@@ -55,8 +56,13 @@ export function createSettings({
   openSettings,
   first = /** @type {() => string | null | Promise<string>} */ (scenarioFromUrl),
   described = /** @type {(info: any) => void} */ (() => {}),
+  mayRun = /** @type {(info: any) => Promise<boolean>} */ (async () => true),
 }) {
   let presets = []; // the core's presets: {name, description}
+  // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why).
+  const startChecked = async () => {
+    if (await mayRun(state.info)) startRun();
+  };
   let composed = null; // the scenario the form held when last checked
   let checking = Promise.resolve(true); // that check: whether the core accepted it
   const knobs = knobMaker(state); // the walkthrough's knobs, with unique ids
@@ -99,7 +105,7 @@ export function createSettings({
     }
     applyDescription(info);
     showScenario(info.encoded);
-    if (run) startRun();
+    if (run) await startChecked();
   }
 
   /** Checks the form's scenario with the core; resolves with whether it is valid. An invalid value
@@ -137,14 +143,14 @@ export function createSettings({
   /** A walkthrough knob was edited: check it and re-run, so its section's plots follow. */
   async function knobChanged(control) {
     forwardKnob(ui.form, control);
-    if (await formChanged()) startRun();
+    if (await formChanged()) await startChecked();
   }
 
   // An edit still being checked by the core must land before the run starts.
   async function runForm() {
     const fresh = composeScenario(ui.form, ui.preset.value) !== composed;
     if (!(await (fresh ? formChanged() : checking))) return;
-    if (!ui.run.disabled) startRun();
+    if (!ui.run.disabled) await startChecked();
   }
 
   pickPresets(ui.preset, (name) => load(`v=1&preset=${name}`));
