@@ -19,7 +19,7 @@ const WINDOWS = [0.01, 0.001];
 // Where the windows sit, as fractions of the run: in or near the start-up transient, the middle
 // and near the end.
 const PLACES = [0.1, 0.5, 0.9];
-// The most decades a log axis spans (plots.js, logRange).
+// The most decades a log axis spans (plots/ranges.js, logRange).
 const LOG_DECADES = 14;
 
 const suite = browserSuite();

@@ -87,3 +87,34 @@ test('a setting edited far down the form says "not run yet" within the window, w
       `the note spans ${at.note.top}–${at.note.bottom} px`,
     );
   }));
+
+for (const plots of ['speed', 'speed,speed-error', 'speed,speed-error,current']) {
+  const n = plots.split(',').length;
+  test(`an embed of ${n} plot${n > 1 ? 's' : ''} is whole in the copied frame from 640 px wide, and never squashed in a smaller one`, async () => {
+    // The copied snippet's height: 140 px, then 300 px a plot (share.js).
+    for (const [width, height, whole] of [
+      [640, 140 + 300 * n, true],
+      [960, 140 + 300 * n, true],
+      [400, 300, false],
+    ]) {
+      const context = await suite.browser.newContext({ viewport: { width, height } });
+      const page = await context.newPage();
+      try {
+        await page.goto(`${suite.server.url}?v=1&preset=step#embed=${plots}`);
+        await settled(page);
+        const at = await page.$$eval('#plots .plot.embedded', (list) =>
+          list.map((p) => ({
+            bottom: p.getBoundingClientRect().bottom,
+            area: p.querySelector('.u-over').clientHeight,
+          })),
+        );
+        assert.equal(at.length, n);
+        const bottom = Math.max(...at.map((p) => p.bottom));
+        if (whole) assert.ok(bottom <= height, `${width}×${height}: the plots end at ${bottom} px`);
+        for (const p of at) assert.ok(p.area >= 100, `${width}×${height}: a plot area of ${p.area} px`);
+      } finally {
+        await context.close();
+      }
+    }
+  });
+}

@@ -6,8 +6,9 @@ import { PLOTS } from '../plots/plots.js';
 import { excerpt, fragment, setFragment } from './url.js';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
-// The least height of an embedded plot, however small its frame (px).
-const EMBED_MIN_HEIGHT = 120;
+// The least height of an embedded chart, however small its frame (px): a plot area of about
+// 110 px under its time axis; a smaller frame scrolls rather than squash the plots.
+const EMBED_MIN_HEIGHT = 200;
 const EMBED_MARGIN = 8;
 // Presentation mode draws plot text and lines this much larger: 14 px ticks become 21 px.
 const PRESENT_SCALE = 1.5;
