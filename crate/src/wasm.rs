@@ -12,10 +12,12 @@ use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
 mod challenge;
+mod grade;
 
 pub use challenge::{
     challenge_builtins, challenge_compose, challenge_figures, challenge_measure, Challenge,
 };
+pub use grade::{grade_class, grade_link};
 
 thread_local! {
     /// The text of the last Rust panic, kept for the worker to report after the trap it causes.

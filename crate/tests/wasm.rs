@@ -326,3 +326,110 @@ fn challenge_links_are_written_and_opened_by_the_core() {
         fault.message
     );
 }
+
+#[wasm_bindgen_test]
+fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
+    use imlab::challenge::{grade, Challenge};
+    use imlab::wasm::{grade_class, grade_link, Challenge as JsChallenge};
+    use serde::{Deserialize, Serialize};
+    const QUICK: &str = "c=1&title=Quick&base=v%3D1%26preset%3Dstep%26duration%3D0.06\
+                         &allow.k1=300..3000&need.current_peak=max:4";
+    #[derive(Deserialize)]
+    struct Read {
+        header: String,
+        columns: Vec<String>,
+        link_column: Option<String>,
+        rows: Vec<grade::ClassRow>,
+        error: Option<String>,
+    }
+    let read = |challenge: &str, bytes: &[u8]| -> Read {
+        serde_wasm_bindgen::from_value(grade_class(challenge, bytes).unwrap()).unwrap()
+    };
+    let mut bytes = format!(
+        "Name,Link\r\n\"Lovelace, Ada\",{QUICK}&try.k1=1200\r\n=cmd,=1+1?{QUICK}&try.k1=9000\r\n"
+    )
+    .into_bytes();
+    bytes.extend(b"Eve \xff,c=1&x\r\n");
+    let js = read(QUICK, &bytes);
+    let c = Challenge::parse(QUICK).unwrap();
+    let class = grade::read_class(&bytes).unwrap();
+    assert_eq!(js.error, None);
+    assert_eq!(js.header, grade::csv_header(&c, &class));
+    assert_eq!(
+        (js.columns, js.link_column, &js.rows),
+        (
+            class.columns.clone(),
+            class.link_column.clone(),
+            &class.rows
+        )
+    );
+    // Each row graded in one call gives the core's CSV line.
+    #[derive(Deserialize)]
+    struct Graded {
+        line: usize,
+        status: String,
+        pass: bool,
+        csv: String,
+    }
+    let grade = |row: wasm_bindgen::JsValue| -> Graded {
+        serde_wasm_bindgen::from_value(grade_link(QUICK, row).unwrap()).unwrap()
+    };
+    let (mut csv, mut expected) = (js.header.clone(), js.header.clone());
+    for row in &js.rows {
+        let g = grade(serde_wasm_bindgen::to_value(row).unwrap());
+        assert_eq!(g.line, row.line);
+        csv.push_str(&g.csv);
+        expected.push_str(&grade::csv_row(&c, row, &grade::grade_row(&c, row)));
+    }
+    assert_eq!(csv, expected);
+    assert!(
+        csv.contains("\nEve \u{fffd},4,c=1&x,malformed: line 4 is not valid UTF-8,,0,0\n"),
+        "{csv}"
+    );
+    assert!(csv.contains("\n'=cmd,3,'=1+1?c=1&"), "{csv}");
+    // A single link, without carried cells or status.
+    #[derive(Serialize)]
+    struct Single {
+        line: usize,
+        link: String,
+    }
+    let single = grade(
+        serde_wasm_bindgen::to_value(&Single {
+            line: 1,
+            link: format!("{QUICK}&try.k1=1200"),
+        })
+        .unwrap(),
+    );
+    assert!(single.pass && single.status == "ok");
+    // A file or challenge refused whole.
+    let utf16: Vec<u8> = "c=1&x\n"
+        .encode_utf16()
+        .flat_map(u16::to_le_bytes)
+        .collect();
+    let refused = read(QUICK, &utf16);
+    assert_eq!(
+        refused.error.as_deref(),
+        Some("the file is UTF-16 without a byte-order mark; save it as UTF-8")
+    );
+    assert!(refused.header.is_empty() && refused.rows.is_empty());
+    assert!(read("nope", b"").error.unwrap().starts_with("challenge: "));
+    // The description gives the fingerprint and the built-in an edited challenge passes for.
+    #[derive(Deserialize)]
+    struct Described {
+        fingerprint: String,
+        edited_from: Option<String>,
+    }
+    let describe = |text: &str| -> Described {
+        let c = JsChallenge::new(text).unwrap();
+        serde_wasm_bindgen::from_value(c.describe().unwrap()).unwrap()
+    };
+    let b = imlab::challenge::builtin("step-tune").unwrap();
+    let original = describe(b.name);
+    assert_eq!(
+        (original.fingerprint.as_str(), original.edited_from),
+        ("DSY0-PQ6T", None)
+    );
+    let edited = describe(&b.text.replace("max:4", "max:40"));
+    assert_ne!(edited.fingerprint, "DSY0-PQ6T");
+    assert_eq!(edited.edited_from.as_deref(), Some("step-tune"));
+}

@@ -6,14 +6,15 @@ use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
 };
-use imlab::challenge::{judge, measure, Challenge, Measures, Verdict, BUILTINS};
+use imlab::challenge::grade::{self, ClassRow, Graded};
+use imlab::challenge::{builtin, Challenge, BUILTINS};
 use imlab::record::{Figure, Unreached, WarningKind};
 use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::fmt;
-use std::fs::File;
-use std::io::{self, BufWriter, ErrorKind, Write};
+use std::fs::{File, OpenOptions};
+use std::io::{self, BufWriter, ErrorKind, Read, Seek, SeekFrom, Write};
 use std::process::ExitCode;
 
 /// Run IM Lab scenarios: speed-sensorless induction-motor control (Zhang et al. 2015).
@@ -174,14 +175,23 @@ enum Command {
     },
     /// Grade a file of submission links and print one CSV row each
     ///
-    /// Each link (one a line of FILE; blank lines and # comments skipped) is re-run, nominal and
-    /// variants, on all cores. The CSV is line,link,status,<criterion>,<criterion>_pass,...,pass
-    /// where status is ok, malformed: …, refused: …, another challenge or run failed: ….
+    /// Each link is re-run, nominal and variants, on all cores, and its row written as soon as it
+    /// and every row before it are graded. The CSV is
+    /// [<carried>,...]line,link,status,<criterion>,<criterion>_pass,...,pass where status is ok,
+    /// malformed: …, refused: …, another challenge or run failed: …. Text from FILE is shown
+    /// with its invisible characters escaped, and a cell a spreadsheet would run as a formula
+    /// starts with '.
     Grade {
         /// A built-in challenge's name or a challenge link
         challenge: String,
-        /// File of submission links, one a line (blank lines and # comments skipped); - for stdin
+        /// File of submission links (UTF-8, or UTF-16 with a byte-order mark): one a line (blank
+        /// lines and # comments skipped), or a CSV export with a header whose other columns are
+        /// carried to the grades first; - for stdin
         file: String,
+        /// Append the grades to OUT, an earlier output of this command cut off anywhere (or
+        /// missing), after the rows it holds, instead of writing them to stdout
+        #[arg(long, value_name = "OUT", allow_hyphen_values = true)]
+        resume: Option<String>,
     },
 }
 
@@ -347,7 +357,11 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             Some(text) if !list => show_challenge(&text, out),
             _ => list_challenges(out).map_err(stdout_stop),
         },
-        Command::Grade { challenge, file } => grade(&challenge, &file, out),
+        Command::Grade {
+            challenge,
+            file,
+            resume,
+        } => grade(&challenge, &file, resume.as_deref(), out),
     }
 }
 
@@ -640,145 +654,142 @@ fn list_challenges(out: &mut impl Write) -> io::Result<()> {
     Ok(())
 }
 
-/// Writes the challenge's canonical link, then its brief.
+/// Writes the challenge's canonical link, its fingerprint (and the built-in it passes for while
+/// differing from it), then its brief.
 fn show_challenge(text: &str, out: &mut impl Write) -> Result<(), Stop> {
     let c = Challenge::parse(text).map_err(|e| format!("challenge: {e}"))?;
-    writeln!(out, "{}\n\n{}", c.encode(), c.brief().trim_end()).map_err(stdout_stop)
-}
-
-/// One graded line: its number, the link, and the status with the verdict (None unless the
-/// runs were judged).
-struct Graded {
-    line: usize,
-    link: String,
-    status: String,
-    verdict: Option<Verdict>,
-}
-
-/// Reads, re-runs and judges one submission link.
-fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
-    let mut graded = Graded {
-        line,
-        link: link.to_string(),
-        status: "ok".to_string(),
-        verdict: None,
-    };
-    let scenarios = match c.submission(link).and_then(|s| s.scenarios()) {
-        Ok(s) => s,
-        Err(e) => {
-            graded.status = e.status();
-            return graded;
-        }
-    };
-    let mut runs: Vec<Measures> = Vec::new();
-    for s in &scenarios {
-        let m = match Simulation::traced(s) {
-            Ok(mut sim) => {
-                let _ = sim.run();
-                measure(&sim)
-            }
-            Err(e) => Measures {
-                figures: Vec::new(),
-                failure: Some(e.to_string()),
-            },
-        };
-        if let Some(f) = &m.failure {
-            graded.status = format!("run failed: {f}");
-            return graded;
-        }
-        runs.push(m);
+    let mut head = format!("{}\nfingerprint: {}\n", c.encode(), c.fingerprint());
+    if let Some(name) = c.edited_builtin() {
+        let original = builtin(name).expect("a built-in").challenge();
+        head.push_str(&format!(
+            "edited: not the built-in {name} (fingerprint {}), whose title it carries\n",
+            original.fingerprint()
+        ));
     }
-    match judge(c, &runs) {
-        Ok(v) => graded.verdict = Some(v),
-        Err(e) => graded.status = format!("run failed: {e}"),
-    }
-    graded
+    writeln!(out, "{head}\n{}", c.brief().trim_end()).map_err(stdout_stop)
 }
 
-/// `text` as one CSV field: quoted (with inner quotes doubled) when it holds a comma, a quote
-/// or a line break.
-fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
-/// Grades each submission link of `file` against the challenge, in parallel, and writes one CSV
-/// row per link in input order; progress on stderr.
-fn grade(challenge: &str, file: &str, out: &mut impl Write) -> Result<(), Stop> {
+/// Grades each submission of `file` against the challenge and writes the grades as CSV to
+/// `out`, or with `resume` appended to that file after the rows it already holds; progress on
+/// stderr.
+fn grade(
+    challenge: &str,
+    file: &str,
+    resume: Option<&str>,
+    out: &mut impl Write,
+) -> Result<(), Stop> {
     let c = Challenge::parse(challenge).map_err(|e| format!("challenge: {e}"))?;
-    let text = if file == "-" {
-        io::read_to_string(io::stdin()).map_err(|e| format!("stdin: {e}"))?
+    let (name, bytes) = if file == "-" {
+        let mut bytes = Vec::new();
+        let read = io::stdin().read_to_end(&mut bytes).map(|_| bytes);
+        ("stdin".to_string(), read)
     } else {
-        std::fs::read_to_string(file).map_err(|e| format!("'{}': {e}", excerpt(file)))?
+        (format!("'{}'", excerpt(file)), std::fs::read(file))
     };
-    let lines: Vec<(usize, String)> = text
-        .lines()
-        .enumerate()
-        .map(|(i, l)| (i + 1, l.trim().to_string()))
-        .filter(|(_, l)| !l.is_empty() && !l.starts_with('#'))
-        .collect();
+    let bytes = bytes.map_err(|e| format!("{name}: {e}"))?;
+    let class = grade::read_class(&bytes).map_err(|e| format!("{name}: {e}"))?;
+    let header = grade::csv_header(&c, &class);
+    let Some(path) = resume else {
+        return grade_rows(&c, &class.rows, 0, &header, |text| {
+            out.write_all(text.as_bytes())
+                .and_then(|()| out.flush())
+                .map_err(stdout_stop)
+        });
+    };
+    let failed = |e: io::Error| Stop::Failed(format!("--resume '{}': {e}", excerpt(path)));
+    let previous = match std::fs::read(path) {
+        Ok(bytes) => bytes,
+        Err(e) if e.kind() == ErrorKind::NotFound => Vec::new(),
+        Err(e) => return Err(failed(e)),
+    };
+    let from = grade::resume(&c, &class, &previous)
+        .map_err(|e| format!("--resume '{}': {e}", excerpt(path)))?;
+    let mut file = OpenOptions::new()
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .open(path)
+        .map_err(failed)?;
+    file.set_len(from.keep as u64)
+        .and_then(|()| file.seek(SeekFrom::End(0)))
+        .map_err(failed)?;
+    let header = if from.keep == 0 { &header[..] } else { "" };
+    grade_rows(&c, &class.rows, from.done, header, |text| {
+        file.write_all(text.as_bytes()).map_err(failed)
+    })
+}
+
+/// Writes `header`, then grades `rows[done..]` on all cores and writes each one's CSV line as
+/// soon as it and every row before it are graded, through `write` (which must flush: an
+/// interrupted grading keeps the rows it finished); progress on stderr.
+fn grade_rows(
+    c: &Challenge,
+    rows: &[ClassRow],
+    done: usize,
+    header: &str,
+    mut write: impl FnMut(&str) -> Result<(), Stop>,
+) -> Result<(), Stop> {
+    write(header)?;
+    let todo = &rows[done..];
+    let total = rows.len();
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
-        .min(lines.len().max(1));
+        .min(todo.len().max(1));
     let next = std::sync::atomic::AtomicUsize::new(0);
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let results = std::sync::Mutex::new(Vec::with_capacity(lines.len()));
+    let stop = std::sync::atomic::AtomicBool::new(false);
+    let (send, receive) = std::sync::mpsc::channel::<(usize, Graded)>();
     std::thread::scope(|scope| {
         for _ in 0..threads {
-            scope.spawn(|| loop {
+            let send = send.clone();
+            let (next, stop) = (&next, &stop);
+            scope.spawn(move || loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some((line, link)) = lines.get(i) else {
+                let Some(row) = todo.get(i) else {
                     break;
                 };
-                // A panic in one run is that line's failure, not the end of the grading.
-                let graded = std::panic::catch_unwind(|| grade_one(&c, *line, link))
-                    .unwrap_or_else(|_| Graded {
-                        line: *line,
-                        link: link.clone(),
-                        status: "run failed: internal error".to_string(),
-                        verdict: None,
+                if stop.load(std::sync::atomic::Ordering::Relaxed) {
+                    break;
+                }
+                // A panic in one run is that row's failure, not the end of the grading.
+                let graded =
+                    std::panic::catch_unwind(|| grade::grade_row(c, row)).unwrap_or_else(|_| {
+                        Graded::failed(row.line, &row.link, "run failed: internal error")
                     });
-                results.lock().expect("no panic holds it").push((i, graded));
-                let n = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-                if lines.len() > 4 {
-                    to_stderr(format_args!(
-                        "\rimlab grade: graded {n} of {}   ",
-                        lines.len()
-                    ));
+                if send.send((i, graded)).is_err() {
+                    break;
                 }
             });
         }
-    });
-    if lines.len() > 4 {
-        to_stderr(format_args!("\n"));
-    }
-    let mut results = results.into_inner().expect("no panic holds it");
-    results.sort_by_key(|(i, _)| *i);
-    let mut header = "line,link,status".to_string();
-    for n in &c.need {
-        header.push_str(&format!(",{0},{0}_pass", n.figure));
-    }
-    header.push_str(",pass");
-    writeln!(out, "{header}").map_err(stdout_stop)?;
-    for (_, g) in results {
-        let mut row = format!("{},{},{}", g.line, csv_field(&g.link), csv_field(&g.status));
-        match &g.verdict {
-            Some(v) => {
-                for cv in &v.criteria {
-                    let value = cv.value.map_or(String::new(), |x| format!("{x}"));
-                    row.push_str(&format!(",{value},{}", u8::from(cv.pass)));
+        drop(send);
+        let mut graded: Vec<Option<Graded>> = vec![None; todo.len()];
+        let (mut written, mut finished) = (0, done);
+        let result = (|| {
+            for (i, g) in receive.iter() {
+                graded[i] = Some(g);
+                finished += 1;
+                if total > 4 {
+                    to_stderr(format_args!(
+                        "\rimlab grade: graded {finished} of {total}   "
+                    ));
                 }
-                row.push_str(&format!(",{}", u8::from(v.pass)));
+                while let Some(g) = graded.get_mut(written).and_then(Option::take) {
+                    if total > 4 {
+                        // Clears the progress line, so that on a terminal the row starts a line.
+                        to_stderr(format_args!("\r{:40}\r", ""));
+                    }
+                    write(&grade::csv_row(c, &todo[written], &g))?;
+                    written += 1;
+                }
             }
-            None => {
-                row.push_str(&",,0".repeat(c.need.len()));
-                row.push_str(",0");
-            }
+            Ok(())
+        })();
+        if result.is_err() {
+            stop.store(true, std::sync::atomic::Ordering::Relaxed);
         }
-        writeln!(out, "{row}").map_err(stdout_stop)?;
-    }
-    Ok(())
+        if total > 4 {
+            // Ends the progress line, so that an error message starts a line of its own.
+            to_stderr(format_args!("\n"));
+        }
+        result
+    })
 }

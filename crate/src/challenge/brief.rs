@@ -3,19 +3,22 @@
 use super::codec::field_info;
 use super::judge::figure_info;
 use super::{Allowed, Challenge, Op, Variants};
+use crate::quote::escape_invisible;
 use crate::record::{recovery_band, LOAD_RECOVERY};
 use std::fmt::Write;
 
 impl Challenge {
-    /// The task in words: the title, the scenario to start from, what may change (with ranges,
-    /// units and the base's values), each criterion with its bound and unit, and the variants.
+    /// The task in words: the title (its invisible characters, line breaks among them, escaped
+    /// by [`escape_invisible`], so it stays one line and shows what it holds), the scenario to
+    /// start from, what may change (with ranges, units and the base's values), each criterion
+    /// with its bound and unit, and the variants.
     pub fn brief(&self) -> String {
         let base = self.base_scenario();
         let mut out = String::new();
         let title = if self.title.is_empty() {
-            "Design challenge"
+            "Design challenge".to_string()
         } else {
-            &self.title
+            escape_invisible(&self.title)
         };
         let _ = writeln!(out, "{title}");
         let _ = writeln!(out, "\nStart from the scenario {}", self.base);

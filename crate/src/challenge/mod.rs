@@ -28,6 +28,7 @@ mod brief;
 mod builtin;
 mod codec;
 mod compose;
+pub mod grade;
 mod judge;
 mod submission;
 
@@ -311,6 +312,44 @@ impl Challenge {
     /// Whether criterion `figure` must hold on every variant.
     pub fn is_robust(&self, figure: &str) -> bool {
         self.robust.iter().any(|r| r == figure)
+    }
+
+    /// A short code of the canonical text ([`Challenge::encode`]) to tell challenges apart at a
+    /// glance: the top 40 bits of its 64-bit FNV-1a hash in Crockford's base 32 (digits and
+    /// capitals but I, L, O and U), two groups of four, e.g. `7KQ2-M9XD`. Two challenges with
+    /// the same code are the same challenge but for a chance of about one in a million million.
+    pub fn fingerprint(&self) -> String {
+        const ALPHABET: &[u8; 32] = b"0123456789ABCDEFGHJKMNPQRSTVWXYZ";
+        let hash = self
+            .encode()
+            .bytes()
+            .fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
+                (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+            });
+        let mut out = String::with_capacity(9);
+        for i in 0..8 {
+            if i == 4 {
+                out.push('-');
+            }
+            let digit = (hash >> (59 - 5 * i)) & 31;
+            out.push(char::from(ALPHABET[digit as usize]));
+        }
+        out
+    }
+
+    /// The name of the built-in challenge this one passes for while it differs from it: its
+    /// title is the built-in's title or name (compared trimmed, in any case) but its canonical
+    /// text is not the built-in's. None for a built-in itself and for any other title.
+    pub fn edited_builtin(&self) -> Option<&'static str> {
+        let claimed = self.title.trim().to_lowercase();
+        let text = self.encode();
+        BUILTINS
+            .iter()
+            .find(|b| {
+                let title = b.challenge().title.to_lowercase();
+                (claimed == title || claimed == b.name) && text != b.text
+            })
+            .map(|b| b.name)
     }
 
     /// Labels of the runs: `nominal`, then each variant's overrides.

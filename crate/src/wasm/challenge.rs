@@ -76,6 +76,11 @@ struct ChallengeView {
     /// Each variant's override string (`seed=2`, `model.j=0.016`).
     variants: Vec<String>,
     brief: String,
+    /// [`crate::challenge::Challenge::fingerprint`]: `7KQ2-M9XD`.
+    fingerprint: String,
+    /// The built-in this challenge passes for while it differs from it
+    /// ([`crate::challenge::Challenge::edited_builtin`]), or null.
+    edited_from: Option<&'static str>,
 }
 
 /// Whether a submission link can be graded, or why not; the page sees "ok", "malformed",
@@ -157,7 +162,10 @@ impl Challenge {
     }
 
     /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
-    /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief}`.
+    /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief, fingerprint,
+    /// edited_from}`: `fingerprint` a short code of the canonical link to compare at a glance
+    /// (`7KQ2-M9XD`), `edited_from` the name of the built-in whose title (or name) the challenge
+    /// carries while its link differs from the built-in's, else null.
     pub fn describe(&self) -> Result<JsValue, JsValue> {
         use crate::challenge::{figure_info, Allowed, Op};
         let c = &self.inner;
@@ -214,6 +222,8 @@ impl Challenge {
             need,
             variants: c.run_labels().into_iter().skip(1).collect(),
             brief: c.brief(),
+            fingerprint: c.fingerprint(),
+            edited_from: c.edited_builtin(),
         })
     }
 

@@ -1,0 +1,417 @@
+//! A class's file of submissions, read as the grader reads it: the text decoded, the shape told
+//! (one link a line, or a course platform's CSV export), and one row per submission with its line
+//! in the file.
+//!
+//! - **Encoding.** UTF-8, with or without a byte-order mark, or UTF-16 (little- or big-endian)
+//!   with one. A file with NUL bytes and no byte-order mark is refused whole: as UTF-16 without a
+//!   byte-order mark when its NULs fall on every other byte, else as not text. A line that does
+//!   not decode spoils only itself: its row is graded `malformed: line N is not valid UTF-8`
+//!   (or UTF-16), its text shown with `�` for the bytes at fault.
+//! - **Lines** end with LF, CRLF or a lone CR.
+//! - **Shape.** The first line that is neither blank nor a `#` comment decides. It is the header
+//!   of a CSV export when it has two or more fields (separated by commas, semicolons or tabs,
+//!   whichever gives the most) none of which holds `=` (every link holds one), or when it is the
+//!   single word `link`, `url` or `submission`. Otherwise the file is one link a line: blank lines
+//!   and `#` comments are skipped, each other line (trimmed) is a link.
+//! - **CSV export.** RFC 4180 fields: quoted fields may hold the separator, doubled quotes and
+//!   line breaks. The links are the column headed `link`, `url` or `submission` (any case), or
+//!   else the one column with a cell holding `c=1` or `challenge=`; two candidates, or none, are
+//!   refused with the columns named. The other columns are carried to the grades in order.
+//!   Records with every field blank are skipped. A record with more fields than the header gives
+//!   the extra ones to its link, which was written unquoted and split at its own commas
+//!   (`robust=a,b`); one with fewer fields, or without a link, is a row graded `malformed: …`.
+
+use crate::quote::excerpt;
+use serde::{Deserialize, Serialize};
+
+/// A class's file, read: the submissions to grade, in file order.
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Class {
+    /// The headers of the columns carried to the grades (those of a CSV export but the links'),
+    /// in order; empty for a file of one link a line.
+    pub columns: Vec<String>,
+    /// The header of a CSV export's column of links; None for a file of one link a line.
+    pub link_column: Option<String>,
+    /// The submissions, in file order.
+    pub rows: Vec<ClassRow>,
+}
+
+/// One submission of a class's file.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct ClassRow {
+    /// The line of the file it starts on (the first is 1).
+    pub line: usize,
+    /// The link, trimmed.
+    pub link: String,
+    /// The cells of the carried columns, in the order of [`Class::columns`].
+    #[serde(default)]
+    pub carried: Vec<String>,
+    /// The status of a row that is graded as it is read, without a run (`malformed: line 4 is
+    /// not valid UTF-8`); None for a row whose link is to be graded.
+    #[serde(default)]
+    pub status: Option<String>,
+}
+
+/// One line of the file, decoded.
+struct Line {
+    /// Its number (the first is 1).
+    number: usize,
+    /// Its text, `�` where it did not decode.
+    text: String,
+    /// Whether it decoded without error.
+    valid: bool,
+}
+
+/// The text, decoded, and the name of its encoding.
+type Decoded = (Vec<Line>, &'static str);
+
+/// Reads a class's file (see the module's documentation for the shapes it takes); refuses a
+/// file that is not text, or whose CSV header names no single column of links, with a message
+/// saying why.
+pub fn read_class(bytes: &[u8]) -> Result<Class, String> {
+    let (lines, encoding) = decode(bytes)?;
+    let Some(first) = lines.iter().position(|l| !skipped(&l.text)) else {
+        return Ok(Class::default());
+    };
+    match header(&lines, first) {
+        Some((delimiter, record)) => csv_class(&lines, record, delimiter, encoding),
+        None => Ok(one_a_line(&lines, encoding)),
+    }
+}
+
+/// Whether a line of a file of one link a line is skipped: blank, or a `#` comment.
+fn skipped(text: &str) -> bool {
+    let text = text.trim();
+    text.is_empty() || text.starts_with('#')
+}
+
+/// The status of a row whose line `number` did not decode.
+fn undecoded(number: usize, encoding: &str) -> String {
+    format!("malformed: line {number} is not valid {encoding}")
+}
+
+/// The lines of the file, by its byte-order mark or, without one, as UTF-8.
+fn decode(bytes: &[u8]) -> Result<Decoded, String> {
+    if let Some(rest) = bytes.strip_prefix(b"\xef\xbb\xbf") {
+        return Ok((utf8_lines(rest), "UTF-8"));
+    }
+    for (bom, from_bytes) in [
+        (b"\xff\xfe", u16::from_le_bytes as fn([u8; 2]) -> u16),
+        (b"\xfe\xff", u16::from_be_bytes),
+    ] {
+        if let Some(rest) = bytes.strip_prefix(bom) {
+            let lines = utf16_lines(rest, from_bytes);
+            if lines.iter().any(|l| l.text.contains('\0')) {
+                return Err(NOT_TEXT.to_string());
+            }
+            return Ok((lines, "UTF-16"));
+        }
+    }
+    if bytes.contains(&0) {
+        return Err(if looks_like_utf16(bytes) {
+            "the file is UTF-16 without a byte-order mark; save it as UTF-8".to_string()
+        } else {
+            NOT_TEXT.to_string()
+        });
+    }
+    Ok((utf8_lines(bytes), "UTF-8"))
+}
+
+/// Why a file with NUL bytes is refused.
+const NOT_TEXT: &str = "the file is not text (it holds NUL bytes: a spreadsheet or a document?); \
+                        save it as a text file of links, one a line, or as CSV";
+
+/// Whether a file with NUL bytes is UTF-16 without a byte-order mark: in its first 4 KiB, a
+/// quarter or more of the bytes at even (or odd) offsets are NUL, and at most a sixteenth as many
+/// at the others, as in text of mostly ASCII characters.
+fn looks_like_utf16(bytes: &[u8]) -> bool {
+    let sample = &bytes[..bytes.len().min(4096)];
+    let nuls = |from: usize| {
+        sample
+            .iter()
+            .skip(from)
+            .step_by(2)
+            .filter(|&&b| b == 0)
+            .count()
+    };
+    let (even, odd) = (nuls(0), nuls(1));
+    let (many, few) = (even.max(odd), even.min(odd));
+    many > 0 && many * 4 >= sample.len() / 2 && few * 16 <= many
+}
+
+/// The lines of UTF-8 text; an invalid sequence decodes to `�` and spoils its line.
+fn utf8_lines(bytes: &[u8]) -> Vec<Line> {
+    split_lines(bytes.utf8_chunks().flat_map(|chunk| {
+        let bad = (!chunk.invalid().is_empty()).then_some(None);
+        chunk.valid().chars().map(Some).chain(bad)
+    }))
+}
+
+/// The lines of UTF-16 text, each unit read from two bytes by `from_bytes`; an unpaired
+/// surrogate, or the odd last byte of a cut-off file, decodes to `�` and spoils its line.
+fn utf16_lines(bytes: &[u8], from_bytes: fn([u8; 2]) -> u16) -> Vec<Line> {
+    let pairs = bytes.chunks_exact(2);
+    let odd = (!pairs.remainder().is_empty()).then_some(None);
+    let units = pairs.map(|p| from_bytes([p[0], p[1]]));
+    split_lines(char::decode_utf16(units).map(Result::ok).chain(odd))
+}
+
+/// Splits decoded characters (None where the text did not decode) into lines at LF, CRLF and
+/// lone CR; a last line without a line end counts, an empty one after the last line end does
+/// not.
+fn split_lines(chars: impl Iterator<Item = Option<char>>) -> Vec<Line> {
+    let mut lines = Vec::new();
+    let (mut text, mut valid, mut after_cr) = (String::new(), true, false);
+    let mut end = |text: &mut String, valid: &mut bool| {
+        lines.push(Line {
+            number: lines.len() + 1,
+            text: std::mem::take(text),
+            valid: std::mem::replace(valid, true),
+        });
+    };
+    for c in chars {
+        if after_cr && c == Some('\n') {
+            after_cr = false;
+            continue;
+        }
+        after_cr = c == Some('\r');
+        match c {
+            Some('\n' | '\r') => end(&mut text, &mut valid),
+            Some(c) => text.push(c),
+            None => {
+                text.push('\u{fffd}');
+                valid = false;
+            }
+        }
+    }
+    if !text.is_empty() || !valid {
+        end(&mut text, &mut valid);
+    }
+    lines
+}
+
+/// The rows of a file of one link a line.
+fn one_a_line(lines: &[Line], encoding: &str) -> Class {
+    let rows = lines
+        .iter()
+        .filter(|l| !skipped(&l.text))
+        .map(|l| ClassRow {
+            line: l.number,
+            link: l.text.trim().to_string(),
+            carried: Vec::new(),
+            status: (!l.valid).then(|| undecoded(l.number, encoding)),
+        })
+        .collect();
+    Class {
+        columns: Vec::new(),
+        link_column: None,
+        rows,
+    }
+}
+
+/// One CSV record: its fields and where it is in the file.
+struct Record {
+    /// The fields, unquoted; a line break inside quotes is `\n`.
+    fields: Vec<String>,
+    /// The index (in the lines) of its first line.
+    first: usize,
+    /// The index of the line after it.
+    next: usize,
+    /// The number of its first line that did not decode, if one did not.
+    undecoded: Option<usize>,
+    /// Whether a quoted field was still open at the end of the file.
+    open: bool,
+}
+
+/// The CSV record starting at `lines[first]`, fields separated by `delimiter`. Lenient where
+/// RFC 4180 is strict: a quote inside an unquoted field, or text after a closing quote, is kept
+/// as it is.
+fn record(lines: &[Line], first: usize, delimiter: char) -> Record {
+    let (mut fields, mut field) = (Vec::new(), String::new());
+    let (mut quoted, mut at_start) = (false, true);
+    let mut undecoded = None;
+    let mut i = first;
+    loop {
+        let line = &lines[i];
+        if !line.valid && undecoded.is_none() {
+            undecoded = Some(line.number);
+        }
+        let mut chars = line.text.chars().peekable();
+        while let Some(c) = chars.next() {
+            match c {
+                '"' if quoted && chars.peek() == Some(&'"') => {
+                    field.push('"');
+                    chars.next();
+                }
+                '"' if quoted => quoted = false,
+                '"' if at_start => quoted = true,
+                c if c == delimiter && !quoted => {
+                    fields.push(std::mem::take(&mut field));
+                    at_start = true;
+                    continue;
+                }
+                c => field.push(c),
+            }
+            at_start = false;
+        }
+        i += 1;
+        if !quoted || i == lines.len() {
+            break;
+        }
+        field.push('\n');
+    }
+    fields.push(field);
+    Record {
+        fields,
+        first,
+        next: i,
+        undecoded,
+        open: quoted,
+    }
+}
+
+/// The names a column of links is known by (compared trimmed, in any case).
+const LINK_HEADERS: [&str; 3] = ["link", "url", "submission"];
+
+/// Whether a header names the column of links.
+fn is_link_header(name: &str) -> bool {
+    LINK_HEADERS.contains(&name.trim().to_lowercase().as_str())
+}
+
+/// Whether a cell looks like a challenge or submission link.
+fn looks_like_link(cell: &str) -> bool {
+    cell.contains("c=1") || cell.contains("challenge=")
+}
+
+/// The separator and header record of a CSV export whose header is at `lines[first]`, or None
+/// when that line is a link (see the module's documentation).
+fn header(lines: &[Line], first: usize) -> Option<(char, Record)> {
+    let best = [',', ';', '\t']
+        .into_iter()
+        .map(|d| (d, record(lines, first, d)))
+        .fold(None::<(char, Record)>, |best, (d, r)| match best {
+            Some(b) if b.1.fields.len() >= r.fields.len() => Some(b),
+            _ => Some((d, r)),
+        })?;
+    let fields = &best.1.fields;
+    let is_header = match fields.len() {
+        1 => is_link_header(&fields[0]),
+        _ => !fields.iter().any(|f| f.contains('=')),
+    };
+    is_header.then_some(best)
+}
+
+/// The columns, quoted for a message: `'Name', 'Link'`.
+fn names(header: &[String], columns: impl Iterator<Item = usize>) -> String {
+    columns
+        .map(|i| format!("'{}'", excerpt(header[i].trim())))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The rows of a CSV export whose header is `head`.
+fn csv_class(
+    lines: &[Line],
+    head: Record,
+    delimiter: char,
+    encoding: &str,
+) -> Result<Class, String> {
+    if let Some(n) = head.undecoded {
+        return Err(format!("line {n}, the CSV header, is not valid {encoding}"));
+    }
+    let header = head.fields;
+    let mut records = Vec::new();
+    let mut i = head.next;
+    while i < lines.len() {
+        let r = record(lines, i, delimiter);
+        i = r.next;
+        if r.fields.iter().any(|f| !f.trim().is_empty()) {
+            records.push(r);
+        }
+    }
+    let all = || 0..header.len();
+    let named: Vec<usize> = all().filter(|&c| is_link_header(&header[c])).collect();
+    let column = match named[..] {
+        [c] => c,
+        [] => {
+            let linked: Vec<usize> = all()
+                .filter(|&c| {
+                    records
+                        .iter()
+                        .any(|r| r.fields.get(c).is_some_and(|f| looks_like_link(f)))
+                })
+                .collect();
+            match linked[..] {
+                [c] => c,
+                [] => {
+                    return Err(format!(
+                        "no column of links in this CSV export (its columns: {}); head the \
+                         column of links 'link'",
+                        names(&header, all())
+                    ))
+                }
+                _ => {
+                    return Err(format!(
+                        "the columns {} all hold links; head the one to grade 'link'",
+                        names(&header, linked.into_iter())
+                    ))
+                }
+            }
+        }
+        _ => {
+            return Err(format!(
+                "the columns {} are all headed as links; keep one",
+                names(&header, named.into_iter())
+            ))
+        }
+    };
+    let rows = records
+        .into_iter()
+        .map(|mut r| {
+            let number = lines[r.first].number;
+            // The fields past the header's count belong to the link: one written unquoted
+            // splits at its own commas (`robust=a,b`).
+            let extra = r.fields.len().saturating_sub(header.len());
+            if extra > 0 {
+                let parts: Vec<String> = r.fields.drain(column..=column + extra).collect();
+                r.fields.insert(column, parts.join(&delimiter.to_string()));
+            }
+            let status = if let Some(n) = r.undecoded {
+                Some(undecoded(n, encoding))
+            } else if r.open {
+                Some(format!(
+                    "malformed: line {number}: a quoted field is not closed by the end of the file"
+                ))
+            } else if r.fields.len() != header.len() {
+                Some(format!(
+                    "malformed: line {number} has {} fields, the header {}",
+                    r.fields.len(),
+                    header.len()
+                ))
+            } else {
+                None
+            };
+            let link = r.fields.get(column).map_or("", |f| f.trim()).to_string();
+            let status = status.or_else(|| link.is_empty().then(|| "malformed: no link".into()));
+            let carried = all()
+                .filter(|&c| c != column)
+                .map(|c| r.fields.get(c).cloned().unwrap_or_default())
+                .collect();
+            ClassRow {
+                line: number,
+                link,
+                carried,
+                status,
+            }
+        })
+        .collect();
+    let columns = all()
+        .filter(|&c| c != column)
+        .map(|c| header[c].clone())
+        .collect();
+    Ok(Class {
+        columns,
+        link_column: Some(header[column].clone()),
+        rows,
+    })
+}

@@ -1,0 +1,233 @@
+//! Grading a class: its file read ([`read_class`]), each submission re-run and judged
+//! ([`grade_one`]), and the grades written as CSV ([`csv_header`], [`csv_row`]). `imlab grade`
+//! and the page's bindings both grade through these, so their CSVs are the same bytes.
+//!
+//! Every cell of text that comes from the file or from a student (the link, the carried
+//! columns and their headers, the status that quotes a link) is written safe to open:
+//!
+//! - characters that do not show or that reorder the text around them (controls, bidi
+//!   embeddings, overrides and isolates, line separators) are escaped visibly by
+//!   [`escape_invisible`], as in every message, so neither a spreadsheet nor a terminal receives
+//!   them raw;
+//! - a cell starting with `=`, `+`, `-`, `@`, a tab or a carriage return (or the full-width
+//!   `＝`, `＋`, `－`, `＠`) gets a leading `'`, so that a spreadsheet shows it as text rather
+//!   than run it as a formula (OWASP's advice on CSV injection);
+//! - then the usual quoting: a cell holding a comma or a quote is quoted, inner quotes doubled.
+//!
+//! The numbers the grader computes (line numbers, values, pass flags) are written as they are.
+
+mod class;
+
+pub use class::{read_class, Class, ClassRow};
+
+use super::{judge, measure, Challenge, Measures, Verdict};
+use crate::quote::{escape_invisible, excerpt};
+use crate::sim::Simulation;
+use serde::Serialize;
+
+/// One graded submission: its line, the link, and the status with the verdict (None unless the
+/// runs were judged).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Graded {
+    /// The line of the class's file the submission starts on.
+    pub line: usize,
+    /// The link.
+    pub link: String,
+    /// `ok`, `malformed: …`, `refused: …`, `another challenge` or `run failed: …`.
+    pub status: String,
+    /// The verdict, when the runs were judged.
+    pub verdict: Option<Verdict>,
+}
+
+impl Graded {
+    /// A submission graded `status` without a verdict.
+    pub fn failed(line: usize, link: &str, status: &str) -> Graded {
+        Graded {
+            line,
+            link: link.to_string(),
+            status: status.to_string(),
+            verdict: None,
+        }
+    }
+
+    /// Whether the submission was judged and meets every criterion.
+    pub fn pass(&self) -> bool {
+        self.verdict.as_ref().is_some_and(|v| v.pass)
+    }
+}
+
+/// Reads, re-runs (nominal run and variants, one after the other) and judges one submission
+/// link of line `line`.
+pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
+    let mut graded = Graded::failed(line, link, "ok");
+    let scenarios = match c.submission(link).and_then(|s| s.scenarios()) {
+        Ok(s) => s,
+        Err(e) => {
+            graded.status = e.status();
+            return graded;
+        }
+    };
+    let mut runs: Vec<Measures> = Vec::new();
+    for s in &scenarios {
+        let m = match Simulation::traced(s) {
+            Ok(mut sim) => {
+                let _ = sim.run();
+                measure(&sim)
+            }
+            Err(e) => Measures {
+                figures: Vec::new(),
+                failure: Some(e.to_string()),
+            },
+        };
+        if let Some(f) = &m.failure {
+            graded.status = format!("run failed: {f}");
+            return graded;
+        }
+        runs.push(m);
+    }
+    match judge(c, &runs) {
+        Ok(v) => graded.verdict = Some(v),
+        Err(e) => graded.status = format!("run failed: {e}"),
+    }
+    graded
+}
+
+/// Grades one row of a class's file: its status when it was graded as it was read (a line that
+/// did not decode, say), else its link by [`grade_one`].
+pub fn grade_row(c: &Challenge, row: &ClassRow) -> Graded {
+    match &row.status {
+        Some(status) => Graded::failed(row.line, &row.link, status),
+        None => grade_one(c, row.line, &row.link),
+    }
+}
+
+/// `text` as one CSV field: quoted (with inner quotes doubled) when it holds a comma, a quote
+/// or a line break.
+fn csv_field(text: &str) -> String {
+    if text.contains([',', '"', '\n', '\r']) {
+        format!("\"{}\"", text.replace('"', "\"\""))
+    } else {
+        text.to_string()
+    }
+}
+
+/// The characters a spreadsheet may take as the start of a formula.
+const FORMULA_STARTS: [char; 10] = [
+    '=', '+', '-', '@', '\t', '\r', '\u{ff1d}', '\u{ff0b}', '\u{ff0d}', '\u{ff20}',
+];
+
+/// A cell of text from the class's file or a student, as the grades write it: invisible
+/// characters escaped, a `'` before a formula's start, then quoted as a CSV field.
+pub fn text_cell(text: &str) -> String {
+    let shown = escape_invisible(text);
+    if text.starts_with(FORMULA_STARTS) {
+        csv_field(&format!("'{shown}"))
+    } else {
+        csv_field(&shown)
+    }
+}
+
+/// The CSV header of the grades, with its line end: the carried columns of the class's file,
+/// then `line,link,status`, `<figure>,<figure>_pass` for each criterion, and `pass`.
+pub fn csv_header(c: &Challenge, class: &Class) -> String {
+    let mut out = String::new();
+    for name in &class.columns {
+        out.push_str(&text_cell(name));
+        out.push(',');
+    }
+    out.push_str("line,link,status");
+    for n in &c.need {
+        out.push_str(&format!(",{0},{0}_pass", n.figure));
+    }
+    out.push_str(",pass\n");
+    out
+}
+
+/// The start of a row's CSV line: its carried cells, line and link, each followed by a comma.
+fn row_start(row: &ClassRow) -> String {
+    let mut out = String::new();
+    for cell in &row.carried {
+        out.push_str(&text_cell(cell));
+        out.push(',');
+    }
+    out.push_str(&format!("{},{},", row.line, text_cell(&row.link)));
+    out
+}
+
+/// The CSV line of a graded row, with its line end: the row's carried cells, line and link, the
+/// status, each criterion's value (empty when not measured) and pass (1 or 0), and pass.
+pub fn csv_row(c: &Challenge, row: &ClassRow, graded: &Graded) -> String {
+    let mut out = row_start(row);
+    out.push_str(&text_cell(&graded.status));
+    match &graded.verdict {
+        Some(v) => {
+            for cv in &v.criteria {
+                let value = cv.value.map_or(String::new(), |x| format!("{x}"));
+                out.push_str(&format!(",{value},{}", u8::from(cv.pass)));
+            }
+            out.push_str(&format!(",{}", u8::from(v.pass)));
+        }
+        None => {
+            out.push_str(&",,0".repeat(c.need.len()));
+            out.push_str(",0");
+        }
+    }
+    out.push('\n');
+    out
+}
+
+/// Where an interrupted grading picks up: what to keep of its output, and how many rows it holds.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Resume {
+    /// The bytes of the output to keep: its complete lines (a cut-off last line is dropped).
+    pub keep: usize,
+    /// The rows of the class it holds, graded: the grading goes on from the next.
+    pub done: usize,
+}
+
+/// Where the grading of `class` against `c` resumes from `previous`, an earlier output of the
+/// same grading cut off anywhere (empty: from the start). Its complete lines must be the
+/// grades' header and then rows of the class's first submissions, in order (each row's carried
+/// cells, line and link as they would be written); anything else is refused with what differs,
+/// as the output of another grading.
+pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, String> {
+    let keep = previous
+        .iter()
+        .rposition(|&b| b == b'\n')
+        .map_or(0, |i| i + 1);
+    if keep == 0 {
+        return Ok(Resume { keep, done: 0 });
+    }
+    let text = std::str::from_utf8(&previous[..keep])
+        .map_err(|_| "it is not UTF-8 text, so not the grades of this class".to_string())?;
+    let mut lines = text.split_inclusive('\n');
+    let header = csv_header(c, class);
+    let found = lines.next().unwrap_or_default();
+    if found != header {
+        return Err(format!(
+            "its first line is not this grading's header '{}': it holds the grades of another \
+             challenge or class file",
+            header.trim_end()
+        ));
+    }
+    let mut done = 0;
+    for found in lines {
+        let Some(row) = class.rows.get(done) else {
+            return Err(format!(
+                "it holds more rows than the class file's {} submissions",
+                class.rows.len()
+            ));
+        };
+        if !found.starts_with(&row_start(row)) {
+            return Err(format!(
+                "its row {} is not that of line {} ('{}') of the class file: it holds the \
+                 grades of another class file",
+                done + 1,
+                row.line,
+                excerpt(&row.link)
+            ));
+        }
+        done += 1;
+    }
+    Ok(Resume { keep, done })
+}

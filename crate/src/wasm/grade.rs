@@ -1,0 +1,102 @@
+//! The grading bindings: a class's file read, one submission graded and its CSV row written, all
+//! by the core's grader ([`crate::challenge::grade`]), so that the page's grades are the bytes
+//! `imlab grade` writes: the header of [`grade_class`], then each row's `csv` from
+//! [`grade_link`], in the rows' order.
+
+use super::{from_js, js_error, to_js};
+use crate::challenge::grade::{self, ClassRow};
+use crate::challenge::{Challenge, Verdict};
+use serde::Serialize;
+use wasm_bindgen::prelude::*;
+
+/// What [`grade_class`] gives the page.
+#[derive(Serialize)]
+struct ClassView {
+    /// The CSV header line, with its line end ("" when the file is refused).
+    header: String,
+    /// The headers of the carried columns.
+    columns: Vec<String>,
+    /// The header of a CSV export's column of links, or null.
+    link_column: Option<String>,
+    /// The submissions, in file order.
+    rows: Vec<ClassRow>,
+    /// Why the challenge or the file is refused whole, or null.
+    error: Option<String>,
+}
+
+/// Reads a class's file against a challenge: `challenge` is a challenge link or a built-in's
+/// name, `bytes` (a `Uint8Array`) the file as it is (UTF-8 or UTF-16, one link a line or a CSV
+/// export; see the core's `challenge::grade` documentation). Never throws; returns
+///
+/// ```text
+/// {header: string (the CSV header line, "\n" included; "" on error),
+///  columns: [string] (the carried columns' headers), link_column: string | null,
+///  rows: [{line: number, link: string, carried: [string], status: string | null}],
+///  error: string | null (why the challenge or the file is refused whole)}
+/// ```
+///
+/// where a row's `status` is set when it is graded as it is read ("malformed: line 4 is not
+/// valid UTF-8"). Each row goes as it is to [`grade_link`].
+#[wasm_bindgen]
+pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<JsValue, JsValue> {
+    let read = Challenge::parse(challenge)
+        .map_err(|e| format!("challenge: {e}"))
+        .and_then(|c| Ok((grade::read_class(bytes)?, c)));
+    let view = match read {
+        Ok((class, c)) => ClassView {
+            header: grade::csv_header(&c, &class),
+            columns: class.columns,
+            link_column: class.link_column,
+            rows: class.rows,
+            error: None,
+        },
+        Err(e) => ClassView {
+            header: String::new(),
+            columns: Vec::new(),
+            link_column: None,
+            rows: Vec::new(),
+            error: Some(e),
+        },
+    };
+    to_js(&view)
+}
+
+/// What [`grade_link`] gives the page.
+#[derive(Serialize)]
+struct GradedView {
+    line: usize,
+    link: String,
+    status: String,
+    pass: bool,
+    verdict: Option<Verdict>,
+    /// The row's CSV line, "\n" included.
+    csv: String,
+}
+
+/// Grades one row completely in one call (it runs the nominal run and every variant, so the page
+/// calls it in a worker): `challenge` as for [`grade_class`], `row` one of its rows, `{line,
+/// link, carried?, status?}` (a single link: `{line: 1, link}`). Returns
+///
+/// ```text
+/// {line: number, link: string,
+///  status: "ok" | "malformed: …" | "refused: …" | "another challenge" | "run failed: …",
+///  pass: boolean (judged and every criterion met),
+///  verdict: {criteria: [{figure, label, bound, value, unit, run, pass, reason}], pass} | null,
+///  csv: string (the row's CSV line, "\n" included, as `imlab grade` writes it)}
+/// ```
+///
+/// Throws when the challenge does not parse or `row` is not of that shape.
+#[wasm_bindgen]
+pub fn grade_link(challenge: &str, row: JsValue) -> Result<JsValue, JsValue> {
+    let c = Challenge::parse(challenge).map_err(js_error)?;
+    let row: ClassRow = from_js(row)?;
+    let graded = grade::grade_row(&c, &row);
+    to_js(&GradedView {
+        csv: grade::csv_row(&c, &row, &graded),
+        pass: graded.pass(),
+        line: graded.line,
+        link: graded.link,
+        status: graded.status,
+        verdict: graded.verdict,
+    })
+}
