@@ -5,7 +5,10 @@
 // the CLI's: the page's checklist shows what `imlab grade` prints for the same link.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
 import { browserSuite, settled, violations } from './browser.mjs';
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 
 // The server and the browser of this file; pages here need contexts of their own.
 const suite = browserSuite();
@@ -207,6 +210,25 @@ test('the built-in challenges open from the Lessons tab', () =>
     // No variants: the nominal run alone, measured where it ran.
     assert.match(await page.textContent('#challenge-verdict'), /criteria met\.$/);
   }));
+
+test('the panel shows the challenge’s fingerprint, as imlab challenge prints it, and an edited built-in says so', async () => {
+  const cliFingerprint = (text) => /fingerprint: (\S+)/.exec(execFileSync(cli, ['challenge', text]).toString())[1];
+  await withPage('?challenge=step-tune', async (page) => {
+    await graded(page);
+    assert.equal(await page.textContent('#challenge-fingerprint'), cliFingerprint('step-tune'));
+    assert.equal(await page.isVisible('#challenge-edited'), false);
+  });
+  const text = execFileSync(cli, ['challenge', 'step-tune']).toString().split('\n')[0];
+  const edited = text.replace('need.current_peak=max:4', 'need.current_peak=max:40');
+  assert.notEqual(edited, text);
+  await withPage(`?${edited}`, async (page) => {
+    await graded(page);
+    assert.equal(await page.textContent('#challenge-fingerprint'), cliFingerprint(edited));
+    assert.notEqual(cliFingerprint(edited), cliFingerprint('step-tune'));
+    assert.match(await page.textContent('#challenge-edited'), /step-tune/);
+    assert.match(await page.textContent('#challenge-verdict'), /not the built-in step-tune/);
+  });
+});
 
 test('a published scenario link opens no challenge', () =>
   withPage('?v=1&preset=step', async (page) => {

@@ -23,6 +23,7 @@ import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
+import { createGrading } from './challenge/grade.js';
 
 // What the page's parts share; in brackets, the parts that write each field.
 const state = {
@@ -112,6 +113,7 @@ const challenge = new ChallengePanel({
   relayout: () => plotSets.forEach((p) => p.resize()),
 });
 createCompose({ client, state });
+createGrading({ client });
 const run = createRun({
   client,
   state,

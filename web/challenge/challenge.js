@@ -11,6 +11,14 @@ import { el } from '../ui/dom.js';
 import { plural, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 
+/** Says that a link claims built-in challenge `name` with other terms. */
+const editedNote = (name) =>
+  el('p', {
+    id: 'challenge-edited',
+    className: 'warning',
+    textContent: `Edited: this link carries the built-in challenge ${name}’s title, but not its terms. It is graded as the challenge it is, not as ${name}.`,
+  });
+
 /** The page's state attributes, which the tests wait on. */
 const body = () => document.body.dataset;
 
@@ -126,6 +134,12 @@ export class ChallengePanel {
     this.panel.replaceChildren(
       el('p', { className: 'lesson-count', textContent: 'Challenge' }),
       el('h2', { textContent: desc.title, tabIndex: -1 }),
+      // What a lecturer compares at a glance with `imlab challenge`'s: the challenge's terms.
+      el('p', { className: 'fingerprint hint' }, [
+        'Fingerprint ',
+        el('code', { id: 'challenge-fingerprint', textContent: desc.fingerprint }),
+      ]),
+      ...(desc.edited_from ? [editedNote(desc.edited_from)] : []),
       parts.alert,
       el('h3', { textContent: 'Your settings' }),
       el('p', {
@@ -252,6 +266,7 @@ export class ChallengePanel {
     });
     if (me !== this.grading) return;
     showVerdict(parts, result, sub);
+    if (desc.edited_from) parts.verdict.append(` This is not the built-in ${desc.edited_from}: its terms were edited.`);
     if (!held)
       parts.verdict.append(
         ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',

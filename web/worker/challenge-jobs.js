@@ -8,6 +8,8 @@ import {
   challenge_compose,
   challenge_figures,
   challenge_measure,
+  grade_class,
+  grade_link,
   Simulation,
 } from '../../pkg/imlab.js';
 
@@ -55,4 +57,6 @@ export const CHALLENGE_JOBS = {
   'challenge-run': (d) => measureRun(d.scenario),
   'challenge-builtins': () => challenge_builtins(),
   'challenge-figures': () => challenge_figures(),
+  'grade-class': (d) => grade_class(d.text, d.bytes),
+  'grade-link': (d) => grade_link(d.text, d.row),
 };

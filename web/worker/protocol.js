@@ -109,6 +109,9 @@ export {};
  *   link and brief, or the part at fault); 'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
  *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
  *   built-in challenges and the figures a criterion may name.
+ * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
+ *   CSV's header and the submissions; 'grade-link' one submission graded, its runs run and its
+ *   CSV row written. The CSV is the header and then each row's `csv`, in file order.
  * @typedef {{
  *   sweep: {req: {scenario: string, changes: [string, string][], freq: number, amp: number, duration: number, offset: number}, result: any},
  *   seed: {req: {scenario: string, seed: number, every: number}, result: any},
@@ -130,7 +133,26 @@ export {};
  *   'challenge-run': {req: {scenario: string}, result: any},
  *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},
  *   'challenge-figures': {req: {}, result: {name: string, label: string, unit: string}[]},
+ *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassFile},
+ *   'grade-link': {req: {text: string, row: ClassRow}, result: Graded},
  * }} Jobs
+ */
+
+/**
+ * A submission of a class's file: its line, its link, the cells carried from a CSV export, and a
+ * status when it was graded as it was read (a line that is not text).
+ * @typedef {{line: number, link: string, carried: string[], status: string | null}} ClassRow
+ */
+/**
+ * A class's file read: the CSV header line (with its line end), the carried columns, the column
+ * of links, the submissions; `error` when the challenge or the file is refused whole.
+ * @typedef {{header: string, columns: string[], link_column: string | null, rows: ClassRow[],
+ *   error: string | null}} ClassFile
+ */
+/**
+ * A graded submission: its status ("ok", or why it was not judged), whether it passed, the
+ * core's verdict, and its CSV row (with its line end).
+ * @typedef {{line: number, link: string, status: string, pass: boolean, verdict: any, csv: string}} Graded
  */
 
 /**

@@ -1,0 +1,123 @@
+// Grading a class in the page: the CSV the page downloads is the one `imlab grade` writes for the
+// same challenge and class file, byte for byte, on a class that mixes passing, failing, refused,
+// edited, malformed and formula-like links, in both shapes of class file; a cancelled grading is
+// kept, and Grade goes on from where it stopped, after a reload too.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { browserSuite, settled } from './browser.mjs';
+import { initSync } from '../dist/pkg/imlab.js';
+import { CHALLENGE_JOBS as jobs } from '../dist/web/worker/challenge-jobs.js';
+
+initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
+
+const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+const suite = browserSuite();
+const dir = mkdtempSync(join(tmpdir(), 'imlab-grading-'));
+
+const builtin = jobs['challenge-builtins']({}).find((b) => b.name === 'step-tune');
+const tries = (pairs) => pairs.map((p) => `&try.${p}`).join('');
+const solved = `${builtin.text}${tries(builtin.solution.split('&'))}`;
+// The same title with a looser bound: another challenge, which claims the built-in's name.
+const edited = `${builtin.text.replace('need.current_peak=max:4', 'need.current_peak=max:40')}${tries(builtin.solution.split('&'))}`;
+
+/** A class of `n` links: passing, failing, refused, edited, malformed and formula-like ones. */
+function classLinks(n) {
+  const kinds = [
+    solved,
+    builtin.text,
+    `${builtin.text}&try.k1=9999`,
+    edited,
+    'not a link at all',
+    `=1+1?${solved}`,
+    `${builtin.text}&try.k2=600`,
+  ];
+  return Array.from({ length: n }, (_, i) => kinds[i % kinds.length]);
+}
+
+/** Writes `text` to a file of the test's folder; returns its path. */
+function file(name, text) {
+  const path = join(dir, name);
+  writeFileSync(path, text);
+  return path;
+}
+
+/** `imlab grade step-tune PATH`'s CSV. */
+const cliGrade = (path) =>
+  execFileSync(cli, ['grade', 'step-tune', path], { stdio: ['ignore', 'pipe', 'ignore'] }).toString();
+
+/** Opens the Challenge tab's grading with `path` chosen and `step-tune` named. */
+async function openGrading(page, path) {
+  await settled(page);
+  await page.click('#tab-challenge');
+  await page.fill('#grade-challenge', 'step-tune');
+  await page.setInputFiles('#grade-file', path);
+}
+
+/** Downloads the page's CSV. */
+async function downloaded(page) {
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#grade-csv')]);
+  return readFileSync(await download.path(), 'utf8');
+}
+
+for (const [shape, name, text] of [
+  ['one link a line, with CRLF line ends', 'class.txt', `${classLinks(7).join('\r\n')}\r\n`],
+  [
+    'a CSV export with a column of names, with a byte-order mark',
+    'class.csv',
+    `\ufeffname,link\r\n${classLinks(7)
+      .map((l, i) => `"Student ${i + 1}, A.","${l.replaceAll('"', '""')}"`)
+      .join('\r\n')}\r\n`,
+  ],
+]) {
+  test(`the page's grading of a class (${shape}) is the CSV imlab grade writes`, () =>
+    suite.withPage('?v=1&preset=step', async (page) => {
+      const path = file(name, text);
+      await openGrading(page, path);
+      await page.click('#grade-run');
+      await page.waitForFunction(() => document.body.dataset.grading === 'done', null, { timeout: 120_000 });
+      const csv = await downloaded(page);
+      assert.equal(csv, cliGrade(path));
+      // Every kind of line is there, and no cell can start a formula.
+      for (const status of ['ok', 'refused', 'another challenge', 'malformed'])
+        assert.ok(csv.includes(status), `no '${status}' row`);
+      for (const line of csv.split('\n')) assert.doesNotMatch(line, /(^|,)"?[=+@]/);
+      assert.match(await page.textContent('#grade-status'), /^Graded 7 of 7: \d+ passed\./);
+      assert.equal(await page.locator('#grade-table tbody tr').count(), 7);
+    }));
+}
+
+test('a cancelled grading is kept: after a reload, Grade goes on where it stopped and gives the same CSV', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    const path = file('large.txt', `${classLinks(28).join('\n')}\n`);
+    await openGrading(page, path);
+    await page.click('#grade-run');
+    await page.waitForFunction(() => document.querySelectorAll('#grade-table tr[data-pass]').length >= 3);
+    await page.click('#grade-cancel');
+    await page.waitForFunction(() => document.body.dataset.grading === 'cancelled');
+    const kept = await page.locator('#grade-table tr[data-pass]').count();
+    assert.match(await page.textContent('#grade-status'), /^Cancelled: \d+ of 28 graded and kept/);
+    await page.reload();
+    await openGrading(page, path);
+    await page.click('#grade-run');
+    await page.waitForFunction(() =>
+      /kept from the last grading/.test(document.getElementById('grade-status').textContent),
+    );
+    await page.waitForFunction(() => document.body.dataset.grading === 'done', null, { timeout: 120_000 });
+    assert.ok(kept >= 3);
+    assert.equal(await downloaded(page), cliGrade(path));
+  }));
+
+test('a class file the core refuses whole is said, and nothing is graded', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    // UTF-16 without a byte-order mark.
+    const path = file('utf16.txt', Buffer.from(`${solved}\n`, 'utf16le'));
+    await openGrading(page, path);
+    await page.click('#grade-run');
+    await page.waitForFunction(() => document.body.dataset.grading === 'refused');
+    assert.match(await page.textContent('#grade-status'), /UTF-16 without a byte-order mark/);
+    assert.equal(await page.isDisabled('#grade-csv'), true);
+  }));
