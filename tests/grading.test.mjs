@@ -99,7 +99,7 @@ test('a cancelled grading is kept: after a reload, Grade goes on where it stoppe
     await page.click('#grade-cancel');
     await page.waitForFunction(() => document.body.dataset.grading === 'cancelled');
     const kept = await page.locator('#grade-table tr[data-pass]').count();
-    assert.match(await page.textContent('#grade-status'), /^Cancelled: \d+ of 28 graded and kept/);
+    assert.match(await page.textContent('#grade-status'), /^Cancelled: \d+ of 28 graded, kept in this browser/);
     await page.reload();
     await openGrading(page, path);
     await page.click('#grade-run');
@@ -120,4 +120,17 @@ test('a class file the core refuses whole is said, and nothing is graded', () =>
     await page.waitForFunction(() => document.body.dataset.grading === 'refused');
     assert.match(await page.textContent('#grade-status'), /UTF-16 without a byte-order mark/);
     assert.equal(await page.isDisabled('#grade-csv'), true);
+  }));
+
+test('a class file with no submission is said, and the controls are free again', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.click('#tab-challenge');
+    await page.fill('#grade-challenge', 'step-tune');
+    await page.fill('#grade-paste', '# the class of Monday\n\n');
+    await page.click('#grade-run');
+    await page.waitForFunction(() => document.body.dataset.grading === 'refused');
+    assert.match(await page.textContent('#grade-status'), /no submission/);
+    assert.equal(await page.isEnabled('#grade-run'), true);
+    assert.equal(await page.isDisabled('#grade-cancel'), true);
   }));

@@ -198,7 +198,11 @@ export class ChallengePanel {
     if (!this.desc) return true;
     const sub = await this.client.job('challenge-tries', { text: this.desc.encoded, tries: this.tries(info) });
     if (sub.kind === 'ok') return true;
-    this.grading++; // a check under way is of the settings before this edit
+    // A check under way is of the settings before this edit: it ends here.
+    this.grading++;
+    this.pool?.cancel();
+    this.parts.progress.hidden = true;
+    this.parts.cancel.disabled = true;
     this.showRefusal(sub, 'Not run');
     return false;
   }
@@ -289,7 +293,9 @@ export class ChallengePanel {
     progress.value = 0;
     cancel.disabled = false;
     const total = scenarios.length + (held ? 1 : 0);
+    const me = this.grading;
     const tell = (done) => {
+      if (me !== this.grading) return;
       progress.value = (done + (held ? 1 : 0)) / total;
       verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
     };

@@ -2,29 +2,40 @@
 // course platform's CSV export with a column of links) graded against a challenge in a pool of
 // workers, with progress and Cancel, shown as a table and downloaded as the CSV `imlab grade`
 // writes for the same files, byte for byte: the core reads the file, grades each link and writes
-// each row. Nothing leaves the browser. What was graded is kept in the browser's storage, so that
-// a cancelled or interrupted grading goes on where it stopped.
+// each row. Nothing leaves the browser. What was graded is kept in the browser's storage (until
+// the next grading), so that a cancelled or interrupted grading goes on where it stopped.
 import { $ } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
+import { download } from '../run/export.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
 const STORE = 'imlab-grading';
+// The kept grading is written at most this often while it goes (ms), and at its end.
+const KEEP_EVERY_MS = 1000;
 
-/** The grading kept from the last time (or null): {key, header, results: {index: result}}. */
-function kept() {
+/**
+ * A grading: the challenge's canonical link, the class file's name, header and submissions, and
+ * each submission's result by index (only what the table and the CSV need).
+ * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
+ *   rows: P.ClassRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
+ */
+
+/** The results kept from the last grading of `key` (none for another grading). */
+function kept(key) {
   try {
-    return JSON.parse(localStorage.getItem(STORE) ?? 'null');
+    const record = JSON.parse(localStorage.getItem(STORE) ?? 'null');
+    return record?.key === key ? record.results : {};
   } catch {
-    return null;
+    return {};
   }
 }
 
-/** Keeps `record` for the next time; says whether the browser's storage took it. */
-function keep(record) {
+/** Keeps `job`'s results for the next time; says whether the browser's storage took them. */
+function keep(job) {
   try {
-    localStorage.setItem(STORE, JSON.stringify(record));
+    localStorage.setItem(STORE, JSON.stringify({ key: job.key, results: job.results }));
     return true;
   } catch {
     return false;
@@ -34,18 +45,23 @@ function keep(record) {
 /** The class file's bytes: the chosen file, or else the pasted text (as UTF-8). */
 async function classBytes() {
   const file = $('grade-file').files[0];
-  if (file) return { bytes: new Uint8Array(await file.arrayBuffer()), name: file.name };
-  return { bytes: new TextEncoder().encode($('grade-paste').value), name: 'pasted links' };
+  if (file) return { bytes: new Uint8Array(await file.arrayBuffer()), name: file.name.replace(/\.\w+$/, '') };
+  return { bytes: new TextEncoder().encode($('grade-paste').value), name: 'pasted' };
 }
 
-/** Starts a download of `text` as `name`. */
-function download(text, name) {
-  const a = el('a', { href: URL.createObjectURL(new Blob([text], { type: 'text/csv' })), download: name });
-  a.click();
-  setTimeout(() => URL.revokeObjectURL(a.href), 0);
+/**
+ * The CSV of `job` as far as it is graded without a gap, in the class file's order (as `imlab
+ * grade` writes it, so that `imlab grade --resume` can finish it); and whether it is whole.
+ * @param {Grading} job
+ */
+function csvOf(job) {
+  let text = job.header;
+  let i = 0;
+  for (; i < job.rows.length && job.results[i]; i++) text += job.results[i].csv;
+  return { text, whole: i === job.rows.length, rows: i };
 }
 
-/** Draws the grading `job` in `table`: a row for each submission, graded or not yet. */
+/** Draws `job` in `table`: a row for each submission, graded or not yet. */
 function drawTable(table, job) {
   const names = [...job.columns, 'line', 'link', 'status', 'pass'];
   const head = el(
@@ -81,89 +97,111 @@ function rowOf(job, row, i) {
 /** The Grade section of the Challenge tab; `client` is the page's worker. */
 export function createGrading({ client }) {
   const status = $('grade-status');
+  const count = $('grade-count');
   const progress = $('grade-progress');
   const table = $('grade-table');
   const body = document.body.dataset;
-  let pool = null;
-  /** @type {{key: string, header: string, columns: string[], rows: P.ClassRow[], results: Record<number, P.Graded>, name: string} | null} the grading shown */
+  const pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
+  /** @type {Grading | null} the grading shown */
   let job = null;
 
-  /** The CSV of what was graded, in the class file's order. */
-  const csv = () => job.header + job.rows.map((_, i) => job.results[i]?.csv ?? '').join('');
-
-  function say(text) {
-    status.textContent = text;
-  }
-
-  function update(i) {
-    table.tBodies[0].rows[i].replaceWith(rowOf(job, job.rows[i], i));
+  /** Reads the class file against the challenge; returns the grading, or null having said why not. */
+  async function read() {
+    const text = $('grade-challenge').value.trim();
+    if (!text) throw new Error('name a challenge: a built-in’s name or a challenge link');
+    const { bytes, name } = await classBytes();
+    if (bytes.length === 0) throw new Error('choose a class file, or paste the links, one a line');
+    // The challenge by its canonical link, whichever way it was named.
+    const { encoded } = await client.job('challenge', { text });
+    const plan = await client.job('grade-class', { text: encoded, bytes });
+    if (plan.error) throw new Error(plan.error);
+    if (plan.rows.length === 0) throw new Error('the file holds no submission');
+    // A grading is kept for the same challenge and the same submissions, however they were given.
+    const key = JSON.stringify([encoded, plan.header, plan.rows]);
+    return {
+      key,
+      challenge: encoded,
+      name,
+      header: plan.header,
+      columns: plan.columns,
+      rows: plan.rows,
+      results: kept(key),
+    };
   }
 
   async function grade() {
-    const challenge = $('grade-challenge').value.trim();
-    if (!challenge) return say('Name a challenge: a built-in’s name or a challenge link.');
-    const { bytes, name } = await classBytes();
-    if (bytes.length === 0) return say('Choose a class file, or paste the links, one a line.');
+    $('grade-run').disabled = true;
+    $('grade-cancel').disabled = false;
+    $('grade-cancel').focus();
     body.grading = 'reading';
-    const plan = await client.job('grade-class', { text: challenge, bytes });
-    if (plan.error) {
+    status.textContent = 'Reading the class file…';
+    try {
+      job = await read();
+    } catch (e) {
       body.grading = 'refused';
-      return say(`Not graded: ${plan.error}.`);
+      status.textContent = `Not graded: ${e.message}.`;
+      return done();
     }
-    // A grading is kept for the same challenge and the same submissions, however they were given.
-    const key = JSON.stringify([challenge, plan.header, plan.rows]);
-    const before = kept();
-    const results = before?.key === key ? before.results : {};
-    job = { key, header: plan.header, columns: plan.columns, rows: plan.rows, results, name };
     drawTable(table, job);
-    const todo = plan.rows.map((r, i) => i).filter((i) => !results[i]);
-    const from = plan.rows.length - todo.length;
-    $('grade-csv').disabled = from === 0;
-    await run(challenge, todo, from);
+    await run(job);
+    done();
   }
 
-  async function run(challenge, todo, from) {
-    const total = job.rows.length;
-    pool ??= new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
+  /** Ends a grading's controls: Grade again, no Cancel, Download when a row is graded. */
+  function done() {
+    progress.hidden = true;
+    count.textContent = '';
+    $('grade-cancel').disabled = true;
+    $('grade-run').disabled = false;
+    if (document.activeElement === document.body || document.activeElement === $('grade-cancel'))
+      $('grade-run').focus();
+    $('grade-csv').disabled = !job || csvOf(job).rows === 0;
+  }
+
+  /** Grades what `mine` lacks, keeping each result as it comes. */
+  async function run(mine) {
+    const todo = mine.rows.map((_, i) => i).filter((i) => !mine.results[i]);
+    const total = mine.rows.length;
+    const from = total - todo.length;
     progress.hidden = false;
-    $('grade-cancel').disabled = false;
-    $('grade-run').disabled = true;
     body.grading = 'running';
+    status.textContent = `Grading ${total} submissions${from ? `, ${from} kept from the last grading` : ''}…`;
+    let keptAt = 0;
     const tell = (done) => {
       progress.value = (from + done) / total;
-      say(`Graded ${from + done} of ${total}${from ? ` (${from} kept from the last grading)` : ''}…`);
+      count.textContent = `Graded ${from + done} of ${total}`;
     };
     tell(0);
-    let stored = true;
     try {
       await pool.run(
-        todo.map((i) => ({ kind: 'grade-link', text: challenge, row: job.rows[i] })),
+        todo.map((i) => ({ kind: 'grade-link', text: mine.challenge, row: mine.rows[i] })),
         (done, index, result) => {
+          if (job !== mine) return;
           const i = todo[index];
-          job.results[i] = result;
-          stored = keep({ key: job.key, results: job.results }) && stored;
-          update(i);
-          $('grade-csv').disabled = false;
+          mine.results[i] = { status: result.status, pass: result.pass, csv: result.csv };
+          table.tBodies[0].rows[i].replaceWith(rowOf(mine, mine.rows[i], i));
+          if (performance.now() - keptAt > KEEP_EVERY_MS) {
+            keep(mine);
+            keptAt = performance.now();
+          }
           tell(done);
         },
       );
-      const passed = Object.values(job.results).filter((r) => r.pass).length;
-      say(
-        `Graded ${total} of ${total}: ${passed} passed.${stored ? '' : ' (The browser’s storage is full: this grading is not kept.)'}`,
-      );
+      const stored = keep(mine);
+      const passed = Object.values(mine.results).filter((r) => r.pass).length;
+      status.textContent = `Graded ${total} of ${total}: ${passed} passed.${stored ? '' : ' The browser’s storage did not take this grading: download it now.'}`;
       body.grading = 'done';
     } catch (e) {
-      const n = Object.keys(job.results).length;
-      say(
+      const stored = keep(mine);
+      const n = Object.keys(mine.results).length;
+      const where = stored
+        ? 'kept in this browser; Grade goes on from there'
+        : 'not kept (the browser’s storage refused them)';
+      status.textContent =
         e.message === 'cancelled'
-          ? `Cancelled: ${n} of ${total} graded and kept; Grade goes on from there.`
-          : `The grading stopped: ${e.message}. ${n} of ${total} graded and kept; Grade goes on from there.`,
-      );
+          ? `Cancelled: ${n} of ${total} graded, ${where}.`
+          : `The grading stopped: ${e.message}. ${n} of ${total} graded, ${where}.`;
       body.grading = e.message === 'cancelled' ? 'cancelled' : 'failed';
-    } finally {
-      progress.hidden = true;
-      $('grade-cancel').disabled = true;
-      $('grade-run').disabled = false;
     }
   }
 
@@ -172,10 +210,16 @@ export function createGrading({ client }) {
     const builtins = await client.job('challenge-builtins').catch(() => []);
     $('grade-builtins').replaceChildren(...builtins.map((b) => el('option', { value: b.name, label: b.summary })));
   }
+
   $('grade-challenge').addEventListener('focus', offerBuiltins, { once: true });
   $('grade-run').addEventListener('click', grade);
-  $('grade-cancel').addEventListener('click', () => pool?.cancel());
-  $('grade-csv').addEventListener('click', () => download(csv(), `imlab-grade-${job.name.replace(/\.\w+$/, '')}.csv`));
+  $('grade-cancel').addEventListener('click', () => pool.cancel());
+  $('grade-csv').addEventListener('click', () => {
+    const { text, whole, rows } = csvOf(job);
+    download(new Blob([text], { type: 'text/csv' }), `imlab-grade-${job.name}${whole ? '' : '-partial'}.csv`);
+    if (!whole)
+      status.textContent = `Downloaded the first ${rows} of ${job.rows.length} rows, in order: Grade goes on from where it stopped, and imlab grade --resume can finish the file.`;
+  });
   // A class file dropped anywhere on the section is the one graded.
   const zone = $('grade-section');
   zone.addEventListener('dragover', (e) => e.preventDefault());

@@ -173,7 +173,9 @@ export function createPins({ client, state, plots }) {
   /** Unpins every run (a lesson starts from its own state). */
   function clear() {
     shared = null;
-    if (state.pins.length) client.post({ type: 'unpin-all' });
+    setFragment('pins', null);
+    if (state.pinning) client.post({ type: 'pin-cancel' });
+    client.post({ type: 'unpin-all' });
   }
 
   return { show, afterRun, clear, handlers };
