@@ -144,6 +144,7 @@ export function createGrading({ client }) {
     }
     drawTable(table, job);
     await run(job);
+    pool.close(); // the next grading starts its workers afresh
     done();
   }
 

@@ -105,6 +105,12 @@ export class Pool {
     return results;
   }
 
+  /** Ends every worker of the pool (a later run starts fresh ones): a pool used now and then holds no core meanwhile. */
+  close() {
+    this.generation++;
+    for (const m of this.members.splice(0)) m.fail('closed', new Error('cancelled'));
+  }
+
   /**
    * Stops the jobs under way at once: a job runs in one call, so the workers that hold one are
    * terminated (the next run starts fresh ones) rather than waited for.
