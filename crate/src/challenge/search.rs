@@ -27,6 +27,7 @@
 
 use super::codec::{field_info, number};
 use super::{Allowed, Challenge};
+use crate::analysis::log_grid;
 use crate::scenario::Scenario;
 
 /// Values tried across a range field (ends included) when the full grid does not fit.
@@ -67,28 +68,44 @@ fn depth(i: usize, n: usize) -> u32 {
     }
 }
 
-/// `v` to three significant digits: the number its text `d.dde±x` reads as.
+/// `v` to three significant digits: the number nearest the decimal `d.dd·10ˣ`, so that the codec
+/// writes it with three digits at most.
 fn three_digits(v: f64) -> f64 {
-    format!("{v:.2e}").parse().unwrap_or(v)
+    if v == 0.0 || !v.is_finite() {
+        return v;
+    }
+    // Powers of ten up to 10²² are exact, so the division rounds once, to the decimal's nearest.
+    let e = libm::log10(v.abs()).floor() as i32 - 2;
+    if e >= 0 {
+        (v / 10f64.powi(e)).round() * 10f64.powi(e)
+    } else {
+        (v * 10f64.powi(-e)).round() / 10f64.powi(-e)
+    }
 }
 
 /// The `n` values spanning `lo..=hi`, with their depths, in order; `integer` rounds them to
-/// whole numbers.
+/// whole numbers. Geometric spacing is the frequency sweeps' ([`log_grid`]): the same numbers in
+/// the browser as in the CLI.
 fn spanning(lo: f64, hi: f64, n: usize, integer: bool) -> Vec<(f64, u32)> {
-    let geometric = lo > 0.0 && hi >= 10.0 * lo;
-    (0..n)
-        .map(|i| {
-            let t = i as f64 / (n - 1) as f64;
+    let grid = if lo > 0.0 && hi >= 10.0 * lo {
+        log_grid(lo, hi, n)
+    } else {
+        (0..n)
+            .map(|i| lo + (hi - lo) * i as f64 / (n - 1) as f64)
+            .collect()
+    };
+    grid.into_iter()
+        .enumerate()
+        .map(|(i, v)| {
             let v = if i == 0 {
                 lo
             } else if i == n - 1 {
                 hi
-            } else if geometric {
-                lo * (hi / lo).powf(t)
+            } else if integer {
+                v.round()
             } else {
-                lo + (hi - lo) * t
+                three_digits(v)
             };
-            let v = if integer { v.round() } else { three_digits(v) };
             (v.clamp(lo, hi), depth(i, n))
         })
         .collect()
