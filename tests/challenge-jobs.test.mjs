@@ -1,6 +1,7 @@
 // The worker's challenge jobs (web/worker/challenge-jobs.js) in Node, on the core the page ships: each
 // built-in's known solution passes on every run and its untouched base fails; a submission
-// outside the challenge is refused naming the field; a bad challenge throws the core's message.
+// outside the challenge is refused naming the field; a bad challenge throws the core's message; a
+// composer's check gets its designs from the core.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -55,4 +56,14 @@ test('a run that runs away fails every criterion, with the reason, however lenie
   assert.match(verdict.criteria[0].reason, /ran away/);
   const figures = jobs['challenge-figures']({});
   assert.ok(figures.some((f) => f.name === 'load_recovery_time'));
+});
+
+test('a check’s designs: [field, value] pairs within the allowed ranges, the base first, as many as asked', () => {
+  const text = jobs.challenge({ text: 'step-tune' }).encoded;
+  const designs = jobs['challenge-designs']({ text, max: 40 });
+  assert.equal(designs.length, 40);
+  assert.deepEqual(designs[0], []);
+  assert.deepEqual(designs.slice(1, 3), [[['k1', '300']], [['k1', '5000']]]);
+  for (const tries of designs) assert.equal(jobs['challenge-tries']({ text, tries }).kind, 'ok');
+  assert.deepEqual(jobs['challenge-designs']({ text, max: 40 }), designs);
 });

@@ -155,6 +155,61 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
   });
 });
 
+/** Makes the compose form's challenge link and waits for its check to end; returns the outcome. */
+async function makeAndCheck(page) {
+  await page.evaluate(() => delete document.body.dataset.composeCheck);
+  await page.click('#compose-make');
+  await page.waitForFunction(
+    () => ['solvable', 'unsolved', 'cancelled', 'failed'].includes(document.body.dataset.composeCheck),
+    null,
+    { timeout: 120_000 },
+  );
+  return page.evaluate(() => document.body.dataset.composeCheck);
+}
+
+test('the composer checks that a design within the allowed ranges passes, and says when none of those tried does', () =>
+  withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    await page.click('#tab-challenge');
+    await page.waitForFunction(() => document.body.dataset.compose === 'filled');
+    await page.selectOption('#compose-field', 'k1');
+    await page.click('#compose-add');
+    await page.check('#compose-need-current_peak');
+    // Nine seeds a design: the check is long enough to cancel.
+    await page.fill('#compose-need-current_peak-bound', '0.1');
+    await page.check('#compose-need-current_peak-robust');
+    await page.fill('#compose-vary', 'seeds:2..10');
+    await page.click('#compose-make');
+    await page.waitForFunction(() => document.body.dataset.composeCheck === 'running');
+    await page.click('#compose-check-cancel');
+    await page.waitForFunction(() => document.body.dataset.composeCheck !== 'running');
+    assert.equal(await page.evaluate(() => document.body.dataset.composeCheck), 'cancelled');
+    assert.match(await page.textContent('#compose-check'), /Check cancelled/);
+
+    // Out of reach: no k1 from 600 to 2400 keeps |i_s| within 0.1 A (the base's is 2.87 A).
+    await page.uncheck('#compose-need-current_peak-robust');
+    await page.fill('#compose-vary', '');
+    assert.equal(await makeAndCheck(page), 'unsolved');
+    assert.match(
+      await page.textContent('#compose-check'),
+      /^✗ No design of the 33 tried passes: the bounds may be out of reach; the closest was k1=\d+ \(current_peak: [\d.]+ A vs ≤ 0\.1 A\)\.$/,
+    );
+    const details = await page.textContent('#compose-check-details');
+    assert.match(details, /^The base \(no field changed\) fails: current_peak: 2\.873 A vs ≤ 0\.1 A\. /);
+    assert.match(details, /The check tried 33 designs in 33 runs \(at most 300 runs\)/);
+    assert.equal(await page.isHidden('#compose-check-progress'), true);
+
+    // Within reach: the base fails 2.85 A, a higher k1 meets it.
+    await page.fill('#compose-need-current_peak-bound', '2.85');
+    assert.equal(await makeAndCheck(page), 'solvable');
+    assert.match(
+      await page.textContent('#compose-check'),
+      /^✓ A design within the allowed ranges passes: k1=2400 \(\d+ of 33 designs tried pass\)\.$/,
+    );
+    assert.match(await page.textContent('#compose-check-details'), /^The base \(no field changed\) fails/);
+    assert.deepEqual(await violations(page), [], 'compose check');
+  }));
+
 for (const [tamper, refusal] of [
   ['&try.k1=6000', /k1=6000 is outside 300\.\.5000/],
   ['&try.ekf=rk4', /field 'ekf' is not allowed/],

@@ -1,11 +1,52 @@
 // The Challenge tab, for the lecturer: composes a challenge from the scenario in the form (its
 // base), the fields a student may change with their ranges, criteria on the figures of the
 // current run with their bounds, and robustness variants. The core checks the link and writes
-// it and the task in words, both to copy; its message names the field at fault.
+// it and the task in words, both to copy; its message names the field at fault. Then the page
+// checks that a design within the allowed ranges passes (compose-check.js) and says so.
 import { $ } from '../ui/page.js';
 import { presetNamed } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
+import { createCheck } from './compose-check.js';
+
+/**
+ * What "Make the challenge link" shows for the core's `desc` ({encoded, brief}): the link and the
+ * task in words, each with its copy button, and `checkBox` (the check's) beside the link.
+ */
+function made(desc, checkBox) {
+  const url = `${location.origin}${location.pathname}?${desc.encoded}`;
+  const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
+  const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
+  const copied = el('p', { className: 'hint', role: 'status' });
+  const copier = (id, label, what, text2) =>
+    button(id, label, async () => {
+      try {
+        await navigator.clipboard.writeText(text2);
+        copied.textContent = `${what} copied.`;
+      } catch {
+        copied.textContent = `Select the ${what.toLowerCase()} above and copy it.`;
+      }
+    });
+  return [
+    el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }),
+    linkBox,
+    el('div', { className: 'buttons' }, [
+      copier('compose-copy-link', 'Copy challenge link', 'The challenge link', url),
+      el('a', {
+        href: `?${desc.encoded}`,
+        id: 'compose-open',
+        textContent: 'Open as a student',
+        target: '_blank',
+        rel: 'noopener',
+      }),
+    ]),
+    checkBox,
+    el('label', { htmlFor: 'compose-brief', textContent: 'The task in words (for a slide or the course page)' }),
+    briefBox,
+    el('div', { className: 'buttons' }, [copier('compose-copy-brief', 'Copy the task', 'The task', desc.brief)]),
+    copied,
+  ];
+}
 
 /** The compose form in `box`; `client` is the page's worker and `state` the page's state. */
 export function createCompose({ client, state }) {
@@ -15,6 +56,7 @@ export function createCompose({ client, state }) {
   const output = el('div', { id: 'compose-output', hidden: true });
   let figures = null; // what criteria may name, from the core
   let base = null; // the scenario the form was filled from
+  const checker = createCheck({ client });
 
   async function fill() {
     const info = state.info;
@@ -25,6 +67,7 @@ export function createCompose({ client, state }) {
     if (state.ranScenario === info.encoded && !state.running && state.runId > 0)
       measures = await client.measure(state.runId).catch(() => null);
     base = info;
+    checker.stop();
     output.hidden = true;
     fail('');
     box.replaceChildren(
@@ -86,43 +129,15 @@ export function createCompose({ client, state }) {
     if (desc.error) {
       fail(`The challenge is not valid: ${desc.error.message}`, desc.error.key);
       output.hidden = true;
+      checker.stop();
       document.body.dataset.compose = 'invalid';
       return;
     }
     fail('');
-    const url = `${location.origin}${location.pathname}?${desc.encoded}`;
-    const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
-    const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
-    const copied = el('p', { className: 'hint', role: 'status' });
-    const copier = (id, label, what, text2) =>
-      button(id, label, async () => {
-        try {
-          await navigator.clipboard.writeText(text2);
-          copied.textContent = `${what} copied.`;
-        } catch {
-          copied.textContent = `Select the ${what.toLowerCase()} above and copy it.`;
-        }
-      });
-    output.replaceChildren(
-      el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }),
-      linkBox,
-      el('div', { className: 'buttons' }, [
-        copier('compose-copy-link', 'Copy challenge link', 'The challenge link', url),
-        el('a', {
-          href: `?${desc.encoded}`,
-          id: 'compose-open',
-          textContent: 'Open as a student',
-          target: '_blank',
-          rel: 'noopener',
-        }),
-      ]),
-      el('label', { htmlFor: 'compose-brief', textContent: 'The task in words (for a slide or the course page)' }),
-      briefBox,
-      el('div', { className: 'buttons' }, [copier('compose-copy-brief', 'Copy the task', 'The task', desc.brief)]),
-      copied,
-    );
+    output.replaceChildren(...made(desc, checker.box));
     output.hidden = false;
     document.body.dataset.compose = 'made';
+    checker.check(desc.encoded);
   }
 
   let filled = false;

@@ -4,7 +4,7 @@ import { excerpt } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 
 /** A measured value as the checklist writes it. */
-function formatValue(value, unit) {
+export function formatValue(value, unit) {
   if (value === null || value === undefined) return 'not measured';
   if (value === Infinity) return 'never (∞)';
   const u = unit ? ` ${unit}` : '';

@@ -53,6 +53,7 @@ export const CHALLENGE_JOBS = {
   'challenge-submission': (d) => withChallenge(d.text, (c) => c.submission(d.submission)),
   'challenge-tries': (d) => withChallenge(d.text, (c) => c.submission_of(d.tries)),
   'challenge-compose': (d) => challenge_compose(d.parts),
+  'challenge-designs': (d) => withChallenge(d.text, (c) => c.search_designs(d.max)),
   'challenge-judge': (d) => withChallenge(d.text, (c) => c.judge(d.runs)),
   'challenge-run': (d) => measureRun(d.scenario),
   'challenge-builtins': () => challenge_builtins(),

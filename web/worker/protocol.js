@@ -106,7 +106,9 @@ export {};
  *   link, a built-in's name); 'challenge-submission' a submission link read against it;
  *   'challenge-tries' the submission of a student's values ([field, value] pairs), its link
  *   written by the core; 'challenge-compose' a challenge composed from a lecturer's parts (its
- *   link and brief, or the part at fault); 'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
+ *   link and brief, or the part at fault); 'challenge-designs' at most `max` designs within its
+ *   allowed ranges for a check to try (each [field, value] pairs, the base's empty one first);
+ *   'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
  *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
  *   built-in challenges and the figures a criterion may name.
  * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
@@ -129,6 +131,7 @@ export {};
  *   'challenge-submission': {req: {text: string, submission: string}, result: any},
  *   'challenge-tries': {req: {text: string, tries: [string, string][]}, result: any},
  *   'challenge-compose': {req: {parts: any}, result: {encoded: string | null, brief: string | null, error: {key: string, message: string} | null}},
+ *   'challenge-designs': {req: {text: string, max: number}, result: [string, string][][]},
  *   'challenge-judge': {req: {text: string, runs: any[]}, result: any},
  *   'challenge-run': {req: {scenario: string}, result: any},
  *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},

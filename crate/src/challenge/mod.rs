@@ -22,7 +22,8 @@
 //! order, criteria as written), so one challenge has one text. A submission is that text
 //! followed by `&try.FIELD=VALUE` for the fields set (see [`Submission`]). Only the core writes
 //! these texts: [`Challenge::compose`] from a lecturer's parts, [`Challenge::submit`] from a
-//! student's values, and [`Challenge::from_link`] opens any of them.
+//! student's values, and [`Challenge::from_link`] opens any of them. [`Challenge::search_designs`]
+//! lists the designs a check tries before a challenge is set, to tell whether any passes.
 
 mod brief;
 mod builtin;
@@ -30,6 +31,7 @@ mod codec;
 mod compose;
 pub mod grade;
 mod judge;
+mod search;
 mod submission;
 
 pub use crate::record::LOAD_RECOVERY;
@@ -38,6 +40,7 @@ pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber,
 pub use judge::{
     figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
+pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
 
 use crate::quote::excerpt;

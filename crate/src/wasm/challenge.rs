@@ -255,6 +255,15 @@ impl Challenge {
         Ok(s.encode())
     }
 
+    /// The designs a check of the challenge tries, at most `max` (and at most 10 000): an array
+    /// of designs, each an array of [field, value] pairs (strings: the fields set, in allow order,
+    /// each value as the codec writes it), for [`Challenge::submission_of`]. The base comes first
+    /// (an empty array), then the designs that change the fewest fields, coarsest first; the full
+    /// grid when it fits (see [`crate::challenge::Challenge::search_designs`] for the rule).
+    pub fn search_designs(&self, max: u32) -> Result<JsValue, JsValue> {
+        to_js(&self.inner.search_designs(max as usize))
+    }
+
     /// Judges the measures of the runs (`runs[0]` the nominal run, then one per variant, each
     /// what [`challenge_measure`] returned): `{criteria: [{figure, label, bound, value, unit, run,
     /// pass, reason}], pass}`; throws when the count of runs is wrong.

@@ -1,0 +1,208 @@
+// The check of a composed challenge, for the lecturer: before the link goes out, the core lists
+// designs within the allowed ranges (the base first, then those that change the fewest fields;
+// the full grid when it fits), each is run and judged as a student's submission would be, in a
+// pool of workers with progress and Cancel, and the form says whether one passes, or how close
+// the closest came. A check takes at most RUN_BUDGET runs.
+import { el } from '../ui/dom.js';
+import { Pool } from '../client/pool.js';
+import { formatValue, plural } from './checklist.js';
+
+/** The most runs a check takes: as many designs as fit, each with its nominal run and variants. */
+export const RUN_BUDGET = 300;
+
+/** A design in words: `k1=600, k2=1200`, or the base. */
+const designText = (tries) =>
+  tries.length ? tries.map(([field, value]) => `${field}=${value}`).join(', ') : 'the base, with no field changed';
+
+/** The criteria a verdict fails, in words: `current_peak: 3.21 A vs ≤ 0.1 A`. */
+function failures(verdict) {
+  return verdict.criteria
+    .filter((c) => !c.pass)
+    .map((c) => {
+      if (c.value === null) return `${c.figure}: ${c.reason}`;
+      const still = c.reason === 'still changing' ? ', still changing' : '';
+      return `${c.figure}: ${formatValue(c.value, c.unit)} vs ${c.bound}${still}`;
+    })
+    .join('; ');
+}
+
+/**
+ * How far failing criterion `c` (verdict) of `need` is beyond its bound, relative to the bound
+ * (for the mean NIS, to its band's width on `run`, the measures of the run judged).
+ */
+function excess(c, need, run) {
+  if (c.value === null || !Number.isFinite(c.value)) return Infinity;
+  const rel = (over, scale) => Math.max(0, over / (Math.abs(scale) || 1));
+  if (need.op === 'max') return rel(c.value - need.bound, need.bound);
+  if (need.op === 'min') return rel(need.bound - c.value, need.bound);
+  if (need.op === 'abs') return rel(Math.abs(c.value) - need.bound, need.bound);
+  const band = (name) => run?.figures.find((f) => f.name === name)?.value;
+  const [lo, hi] = [band('mean_nis_low'), band('mean_nis_high')];
+  return lo === undefined || hi === undefined ? 1 : rel(Math.max(lo - c.value, c.value - hi), hi - lo);
+}
+
+/**
+ * How far a tried design is from passing, to find the closest: the criteria it fails, then the
+ * largest relative excess among them.
+ */
+function shortfall(tried, desc, labels) {
+  const failed = tried.verdict.criteria.filter((c) => !c.pass);
+  const worst = failed.map((c) =>
+    excess(
+      c,
+      desc.need.find((n) => n.figure === c.figure),
+      tried.runs[labels.indexOf(c.run)],
+    ),
+  );
+  return [failed.length, Math.max(0, ...worst)];
+}
+
+/** The first of `tried` with the smallest shortfall. */
+function closest(tried, desc, labels) {
+  let best = null;
+  let bestKey = null;
+  for (const t of tried) {
+    const key = shortfall(t, desc, labels);
+    if (!best || key[0] < bestKey[0] || (key[0] === bestKey[0] && key[1] < bestKey[1])) {
+      best = t;
+      bestKey = key;
+    }
+  }
+  return best;
+}
+
+/** What a finished check found, in words: the verdict line and the details (the base, the bound). */
+function findings({ desc, labels, tried, runs }) {
+  const m = tried.length;
+  const passing = tried.filter((t) => t.verdict.pass);
+  const base = tried.find((t) => t.tries.length === 0);
+  const baseLine = !base
+    ? ''
+    : base.verdict.pass
+      ? 'The base passes as it is: a student who changes nothing passes. '
+      : `The base (no field changed) fails: ${failures(base.verdict)}. `;
+  const bound = `The check tried ${plural(m, 'design')} in ${plural(runs, 'run')} (at most ${RUN_BUDGET} runs): the base first, then those that change the fewest fields, from the ends of the ranges inward (every combination, when they fit).`;
+  if (passing.length) {
+    const shown = passing.find((t) => t.tries.length) ?? passing[0];
+    return {
+      solvable: true,
+      line: `✓ A design within the allowed ranges passes: ${designText(shown.tries)} (${passing.length} of ${m} designs tried pass).`,
+      details: baseLine + bound,
+    };
+  }
+  const near = closest(tried, desc, labels);
+  return {
+    solvable: false,
+    line: `✗ No design of the ${m} tried passes: the bounds may be out of reach; the closest was ${designText(near.tries)} (${failures(near.verdict)}).`,
+    details: baseLine + bound,
+  };
+}
+
+/**
+ * The check's part of the compose form: `box` to show beside the link, `check(text)` to check the
+ * challenge `text` (a newer check supersedes one under way) and `stop()` to cancel it.
+ * `client` is the page's worker.
+ */
+export function createCheck({ client }) {
+  const line = el('p', { id: 'compose-check', className: 'verdict', role: 'status' });
+  const details = el('p', { id: 'compose-check-details', className: 'hint' });
+  const progress = el('progress', { id: 'compose-check-progress', max: 1, value: 0, hidden: true });
+  progress.setAttribute('aria-label', 'Challenge check: runs done');
+  const cancel = el('button', {
+    type: 'button',
+    id: 'compose-check-cancel',
+    textContent: 'Cancel check',
+    disabled: true,
+  });
+  const box = el('div', { className: 'compose-check' }, [
+    line,
+    el('div', { className: 'buttons' }, [progress, cancel]),
+    details,
+  ]);
+  const state = document.body.dataset;
+  /** @type {Pool | null} */
+  let pool = null;
+  let current = null; // the check under way: {cancelled}
+
+  function stop() {
+    if (current) current.cancelled = true;
+    pool?.cancel();
+  }
+  cancel.addEventListener('click', stop);
+
+  /** Runs `jobs` in the pool, unless check `me` was cancelled. */
+  async function inPool(me, jobs, onDone) {
+    if (me.cancelled) throw new Error('cancelled');
+    pool ??= new Pool(1);
+    pool.size = Math.max(1, Math.min(jobs.length, 4, navigator.hardwareConcurrency || 2));
+    const results = await pool.run(jobs, onDone);
+    if (me.cancelled) throw new Error('cancelled');
+    return results;
+  }
+
+  /** Check `me` of challenge `text`: its designs, each one's runs measured, and their verdicts. */
+  async function search(me, text) {
+    const desc = await client.job('challenge', { text });
+    const labels = ['nominal', ...desc.variants];
+    const max = Math.max(1, Math.floor(RUN_BUDGET / labels.length));
+    const designs = await client.job('challenge-designs', { text, max });
+    const subs = await inPool(
+      me,
+      designs.map((tries) => ({ kind: 'challenge-tries', text, tries })),
+    );
+    const scenarios = subs.flatMap((s) => s.scenarios);
+    const tell = (done) => {
+      progress.value = done / scenarios.length;
+      line.textContent = `Checking whether a design within the allowed ranges passes: ${done} of ${plural(scenarios.length, 'run')} (${plural(designs.length, 'design')})…`;
+    };
+    tell(0);
+    const measures = await inPool(
+      me,
+      scenarios.map((scenario) => ({ kind: 'challenge-run', scenario })),
+      tell,
+    );
+    let at = 0;
+    const tried = designs
+      .map((tries, i) => ({ tries, runs: measures.slice(at, (at += subs[i].scenarios.length)), verdict: null }))
+      .filter((t) => t.runs.length > 0);
+    const verdicts = await inPool(
+      me,
+      tried.map((t) => ({ kind: 'challenge-judge', text, runs: t.runs })),
+    );
+    tried.forEach((t, i) => (t.verdict = verdicts[i]));
+    return { desc, labels, tried, runs: scenarios.length };
+  }
+
+  async function check(text) {
+    stop();
+    const me = { cancelled: false };
+    current = me;
+    state.composeCheck = 'running';
+    line.textContent = 'Checking whether a design within the allowed ranges passes…';
+    details.textContent = '';
+    progress.hidden = false;
+    progress.value = 0;
+    cancel.disabled = false;
+    try {
+      const found = findings(await search(me, text));
+      if (current !== me) return;
+      line.textContent = found.line;
+      details.textContent = found.details;
+      state.composeCheck = found.solvable ? 'solvable' : 'unsolved';
+    } catch (e) {
+      if (current !== me) return;
+      const cancelled = e.message === 'cancelled';
+      line.textContent = cancelled
+        ? 'Check cancelled: whether a design within the allowed ranges passes is not known. Make the link again to check.'
+        : `The check failed: ${e.message}.`;
+      state.composeCheck = cancelled ? 'cancelled' : 'failed';
+    } finally {
+      if (current === me) {
+        progress.hidden = true;
+        cancel.disabled = true;
+      }
+    }
+  }
+
+  return { box, check, stop };
+}
