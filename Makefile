@@ -11,8 +11,8 @@ wasm: setup
 	rm -f dist/pkg/.gitignore
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
-# The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one module,
-# dist/web/main.js: a load asks for one file, not one per module found level by level. The worker's
+# The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one minified
+# module, dist/web/main.js: a load asks for one file, not one per module found level by level. The worker's
 # modules stay apart, in dist/web/worker/ (the core's glue finds the WASM module beside itself).
 dist: wasm
 	rm -rf dist/web
@@ -23,7 +23,7 @@ dist: wasm
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
 	cp node_modules/uplot/dist/uPlot.d.ts dist/vendor/uPlot.esm.d.ts
 	cp node_modules/katex/types/katex.d.ts dist/vendor/katex/katex.d.mts
-	node_modules/.bin/esbuild dist/web/main.js --bundle --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js
+	node_modules/.bin/esbuild dist/web/main.js --bundle --minify --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js
 	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
 	scripts/docs_html.py dist/docs
 
