@@ -2,7 +2,7 @@
 // time slices like a run, and the overlay of one column across them.
 import { Comparison, Simulation } from '../../pkg/imlab.js';
 import { heldSim, held } from './run.js';
-import { post, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
+import { post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */
 
@@ -110,6 +110,6 @@ export function overlay({ id, column, t0, t1, buckets }) {
       data.map((a) => a.buffer),
     );
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    refuse(e, id);
   }
 }

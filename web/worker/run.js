@@ -2,7 +2,7 @@
 // page asks of it once run (views, the CSV in chunks, a snapshot at one time, the predictors'
 // comparison, a challenge's measures).
 import { challenge_measure, Simulation, variant } from '../../pkg/imlab.js';
-import { isCrashed, post, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
+import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */
 
@@ -76,7 +76,7 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
   try {
     sim = new Simulation(scenario);
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    refuse(e, id);
     return;
   }
   const me = { id, sim, cancelled: false };
@@ -87,7 +87,7 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
     // With runs pinned, the overlay's column is kept as it runs: the overlay replays no run.
     if (overlay) sim.keep_column(overlay);
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    refuse(e, id);
     return;
   }
   let failure = null;
@@ -150,7 +150,7 @@ export function viewOf({ id, set, groups, t0, t1, buckets }) {
     const v = view(me, groups, t0, t1, buckets);
     post({ type: 'view', id, set, view: v }, v);
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    refuse(e, id);
   }
 }
 
@@ -161,7 +161,7 @@ export function inspect({ id, t }) {
   try {
     post({ type: 'inspected', id, t, snapshot: me.sim.inspect(t) });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+    refuse(e, id);
   }
 }
 

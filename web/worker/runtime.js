@@ -62,6 +62,16 @@ export function trapped(e) {
   return true;
 }
 
+/**
+ * Tells the page that the core refused run `id`'s request with `e`, or reports a crash when `e`
+ * is a trap.
+ * @param {unknown} e
+ * @param {number} id
+ */
+export function refuse(e, id) {
+  if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+}
+
 self.addEventListener('unhandledrejection', (e) => {
   e.preventDefault();
   crash(e.reason);
