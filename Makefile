@@ -6,30 +6,33 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 setup:
 	@scripts/setup.sh
 
+# Two builds of the core: pkg-run/ runs a scenario (the page's first fetch), pkg/ adds the tools'
+# bindings (challenges, grading, sweeps, maps; fetched on the first tool used, and the Node tests').
 wasm: setup
-	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-pack -- --no-default-features
-	rm -f dist/pkg/.gitignore
+	wasm-pack build crate --release --target web --out-dir ../dist/pkg --no-pack -- --no-default-features --features tools
+	wasm-pack build crate --release --target web --out-dir ../dist/pkg-run --no-pack -- --no-default-features
+	rm -f dist/pkg/.gitignore dist/pkg-run/.gitignore
 
 # A self-contained static folder that any static host can serve, with the guides in dist/docs/.
-# The page's module graph (web/main.js, its imports, uPlot and KaTeX) is bundled into one minified
-# module, dist/web/main.js: a load asks for one file, not one per module found level by level. The worker's
-# modules stay apart, in dist/web/worker/ (the core's glue finds the WASM module beside itself).
+# scripts/bundle.mjs builds the page: each file it loads before its first plot minified and named by
+# its content's hash (the page's modules in one, the worker's and the core's glue in another, KaTeX
+# in a chunk fetched when an equation is first shown). scripts/compress.mjs writes a brotli and a
+# gzip copy beside each file. The core's module and glue stay in dist/pkg/ too, for the Node tests.
 dist: wasm
-	rm -rf dist/web
-	mkdir -p dist/web dist/vendor/katex/fonts
-	cp static/*.html static/*.css static/*.js dist/
-	cp -r web/. dist/web/
+	mkdir -p dist/vendor/katex/fonts
+	cp static/sw.js dist/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
 	cp node_modules/uplot/dist/uPlot.d.ts dist/vendor/uPlot.esm.d.ts
 	cp node_modules/katex/types/katex.d.ts dist/vendor/katex/katex.d.mts
-	node_modules/.bin/esbuild dist/web/main.js --bundle --minify --format=esm --log-level=warning --allow-overwrite --outfile=dist/web/main.js
 	cp node_modules/katex/dist/fonts/*.woff2 dist/vendor/katex/fonts/
+	node scripts/bundle.mjs dist
 	scripts/docs_html.py dist/docs
+	node scripts/compress.mjs dist
 
+# Serves dist/ as a static host would: precompressed files, content types, cache headers.
 serve: dist
-	@echo "IM Lab is at http://localhost:$(PORT)/  (Ctrl-C stops it)"
-	cd dist && python3 -m http.server $(PORT) --bind 127.0.0.1
+	node scripts/serve.mjs --port $(PORT)
 
 test: dist
 	node_modules/.bin/prettier --check --log-level=warn .
@@ -39,9 +42,10 @@ test: dist
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --release -- -D warnings
 	cargo clippy --lib --target wasm32-unknown-unknown --no-default-features -- -D warnings
+	cargo clippy --lib --target wasm32-unknown-unknown --no-default-features --features tools -- -D warnings
 	cargo build --release
 	cargo test --release
-	wasm-pack test --node crate --no-default-features
+	wasm-pack test --node crate --no-default-features --features tools
 	node --test --test-concurrency=1 tests/*.test.mjs
 
 # Criterion benchmarks (about 2 minutes after the build), the speed against the floor

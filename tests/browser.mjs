@@ -1,12 +1,11 @@
-// Shared helpers for the browser tests and the browser benchmark: a static server for dist/
-// on loopback and headless Debian Chromium through playwright-core.
-import { execFileSync, spawn } from 'node:child_process';
-import { once } from 'node:events';
+// Shared helpers for the browser tests and the browser benchmark: dist/ served on loopback as
+// `make serve` serves it (scripts/serve.mjs) and headless Debian Chromium through playwright-core.
+import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import net from 'node:net';
 import { after, before } from 'node:test';
 import assert from 'node:assert/strict';
 import { chromium } from 'playwright-core';
+import { listen } from '../scripts/serve.mjs';
 
 const ROOT = new URL('../dist/', import.meta.url).pathname;
 export const CHROMIUM_ARGS = [
@@ -20,31 +19,13 @@ export const CHROMIUM_ARGS = [
   '--disable-quic',
 ];
 
-async function freePort() {
-  const srv = net.createServer().listen(0, '127.0.0.1');
-  await once(srv, 'listening');
-  const { port } = srv.address();
-  srv.close();
-  return port;
-}
-
-/** Serves `root` (dist/ unless given) on a free loopback port; returns {url, close}. */
+/**
+ * Serves `root` (dist/ unless given) on a free loopback port as `make serve` does (precompressed
+ * files, cache headers); returns {url, close}.
+ */
 export async function serve(root = ROOT) {
-  const port = await freePort();
-  const proc = spawn('python3', ['-m', 'http.server', String(port), '--bind', '127.0.0.1'], {
-    cwd: root,
-    stdio: 'ignore',
-  });
-  const url = `http://127.0.0.1:${port}/`;
-  for (let i = 0; i < 100; i++) {
-    try {
-      if ((await fetch(url)).ok) break;
-    } catch {
-      /* not up yet */
-    }
-    await new Promise((r) => setTimeout(r, 50));
-  }
-  return { url, close: () => proc.kill() };
+  const { server, url } = await listen(root);
+  return { url, close: () => server.close() };
 }
 
 export async function launch() {

@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { initSync } from '../dist/pkg/imlab.js';
-import { CHALLENGE_JOBS as jobs } from '../dist/web/worker/challenge-jobs.js';
+import { CHALLENGE_JOBS as jobs } from '../dist/.src/worker/challenge-jobs.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 

@@ -1,14 +1,21 @@
-// Native and wasm32 give bit-identical runs: the wasm build's CSV equals `imlab run` byte for byte.
+// Native and wasm32 give bit-identical runs: the CSV of each WASM build (the page's run module,
+// dist/pkg-run/, and the module with the tools, dist/pkg/) equals `imlab run` byte for byte.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
-import { initSync, presets, Simulation } from '../dist/pkg/imlab.js';
+import * as full from '../dist/pkg/imlab.js';
+import * as run from '../dist/pkg-run/imlab.js';
 
-initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
+const { presets } = full;
+for (const [core, dir] of [
+  [full, 'pkg'],
+  [run, 'pkg-run'],
+])
+  core.initSync({ module: readFileSync(new URL(`../dist/${dir}/imlab_bg.wasm`, import.meta.url)) });
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 
-function wasmCsv(scenario) {
+function wasmCsv(Simulation, scenario) {
   const sim = new Simulation(scenario);
   while (!sim.finished) sim.step(50_000);
   // In chunks of rows, as the page exports it.
@@ -30,6 +37,7 @@ for (const s of scenarios) {
   test(`wasm CSV equals native CLI CSV: ${s}`, () => {
     const native = execFileSync(cli, ['run', s], { maxBuffer: 1 << 30 }).toString();
     assert.ok(native.split('\n').length > 100);
-    assert.equal(wasmCsv(s), native);
+    assert.equal(wasmCsv(run.Simulation, s), native, 'the run module');
+    assert.equal(wasmCsv(full.Simulation, s), native, 'the module with the tools');
   });
 }

@@ -5,10 +5,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { LESSONS, SECTIONS } from '../web/teaching/teaching.js';
+import { LESSONS } from '../web/teaching/teaching.js';
+import { SECTIONS, STABILITY_CAUSES } from '../web/teaching/walkthrough-text.js';
 import { Core, checkText, numbersIn } from './claims.mjs';
 import { SEEDS, unnoticedSwaps, withSeed as onSeed } from './claims.mjs';
-import { STABILITY_CAUSES } from '../web/teaching/teaching.js';
 import * as claims from './claims.mjs';
 
 const core = new Core();
@@ -34,6 +34,26 @@ const MAP_STEP = 'v=1&preset=step&duration=1';
 const MAP_50 = 'v=1&preset=rr-mismatch&plant.rr=4.95&duration=3';
 /** rr-mismatch with the exact model holding `speed` (rad/s) for 3 s. */
 const atSpeed = (speed) => `v=1&preset=rr-mismatch&plant.rr=4.95&ref.value=${speed}&duration=3`;
+
+/** Field `key` of `run` as `imlab describe` prints it. */
+const fieldOf = (m, run, key) =>
+  Number(
+    m
+      .described(run)
+      .find((l) => l.startsWith(`${key} `))
+      .split('=')[1]
+      .trim()
+      .split(/\s+/)[0],
+  );
+
+/** a7 + a8 of the model of `run` (1/s), from the motor parameters by the lumped forms of (2). */
+function a7PlusA8(m, run) {
+  const p = (key) => fieldOf(m, run, `model.${key}`);
+  const sigma = p('ls') - p('m') ** 2 / p('lr');
+  const alpha = p('rr') / p('lr');
+  const beta = p('m') / (sigma * p('lr'));
+  return p('rs') / sigma + alpha * beta * p('m') + alpha;
+}
 
 /** high-gain with all four gains at `k` (1/s). */
 const gains = (k) => `${HIGH}&k1=${k}&k2=${k}&k3=${k}&k4=${k}`;
@@ -1885,7 +1905,7 @@ const DECAY_HALF = `${DECAY}&ts=0.000025`;
 const SIN_NO_LIMIT = 'v=1&preset=sine200&vmax=100000';
 
 const SECTION_SPECS = {
-  model: { givens: ['contains 1/J', 'a1 = 3n_pM/(2JL_r)'], checks: [] },
+  model: { givens: ['contains 1/J', 'a1 = 3n_pM/(2JL_r)', 'σ = 1 − M²/(L_sL_r)'], checks: [] },
   ekf: {
     givens: [
       'forward Euler (10)',
@@ -1895,6 +1915,10 @@ const SECTION_SPECS = {
       'averaging 2',
       'Section 3.1 names',
       'their ±2σ bands from P',
+      'Printed (13)',
+      'u_{k|k−1}',
+      'u_{k−1}, which (10) uses',
+      'the covariance update (19)',
     ],
     checks: [
       [
@@ -1913,10 +1937,80 @@ const SECTION_SPECS = {
       ],
     ],
   },
-  step1: { givens: ['Step 1', 'Printed (31)'], checks: [] },
-  step2: { givens: ['Step 2 makes', '(32) as printed', 'of (36) counts it', 'h2²z2/(4ε2)'], checks: [] },
+  bridge: {
+    givens: [
+      'the general form (4)',
+      'the model (2)',
+      '(5)',
+      'Subtracting (4) from (2)',
+      'in step 2 (ż2 holds',
+      'in step 4 (ż4 holds',
+      'Steps 1 and 3',
+      'with x̃1 = x̃4 = x̃5 = 0',
+    ],
+    checks: [],
+  },
+  step1: {
+    givens: [
+      'Step 1',
+      'Printed (31)',
+      'the first line of (4)',
+      'the open loop (23)',
+      'the shortfall z2 (24)',
+      'Then (25) holds',
+      'v1 = v1a + v1s (26)',
+      'The feedforward v1a (27)',
+      'v1s = −k1s1·z1 (28)',
+      'leaves (29)',
+      'Along (29)',
+      'Steps 1 and 2',
+      'steps 3 and 4',
+      'which step 2 cancels',
+      'Step 2 needs',
+      'Differentiate (30)',
+      '(section 3)',
+    ],
+    checks: [],
+  },
+  step2: {
+    givens: [
+      'Step 2 makes',
+      '(32) as printed',
+      'of (36) counts it',
+      'h2²z2/(4ε2)',
+      'Differentiate (24)',
+      'are those of (4)',
+      'is (31)',
+      '(32) follows',
+      'only through d̃2 (33)',
+      'with a projection (8)',
+      'v2 = v2a + v2s (34)',
+      'v2s = −k2s1·z2 + v2s2 (36)',
+      '(38) dominates',
+      'V2 = ½(z1² + z2²) (39)',
+      '+ ε2 (40)',
+      'Printed (35)',
+    ],
+    checks: [
+      ['For the paper’s motor a7 + a8 = [232.7] /s', 0.05, (m) => a7PlusA8(m, STEP)],
+      ['so k2s1 = [967.3] /s when k2 = 1200 /s', 0.05, (m) => fieldOf(m, STEP, 'k2') - a7PlusA8(m, STEP)],
+    ],
+  },
   step3: {
-    givens: ['Step 3', 'virtual control is 2a10(x2·x̂4 + x3·x̂5)', 'from 15 ms on (after the start-up)'],
+    givens: [
+      'Step 3',
+      'the virtual control 2a10(x2·x̂4 + x3·x̂5)',
+      'from 15 ms on (after the start-up)',
+      '− ψ_d (42)',
+      'needs only (4)',
+      'ż3 = 2x̂4·x̂̇4 + 2x̂5·x̂̇5',
+      'from ψ3 (43)',
+      'v3 = −ψ3 − k3·z3 (45)',
+      'z4 (46)',
+      'step 4 cancels',
+      'the next error z4 (44)',
+      '(42) subtracts ψ_d',
+    ],
     checks: [
       [
         'the recorded z3 misses it by [71] to [73] % of the RMS of ż3 over seeds 1–10',
@@ -1942,6 +2036,8 @@ const SECTION_SPECS = {
         { tol: 0.05, seeds: SEEDS },
         (m, seed) => step3Miss(m, variant(STEP, 'perfect=1', seed), 0.015),
       ],
+      ['psi_d = [0.5] Wb²', 0, (m) => fieldOf(m, STEP, 'psi_d')],
+      ['a flux modulus |φ| = [0.707] Wb', 0.0005, (m) => Math.sqrt(fieldOf(m, STEP, 'psi_d'))],
       [
         'whose miss halves with Ts',
         'claim',
@@ -1955,6 +2051,14 @@ const SECTION_SPECS = {
   step4: {
     givens: [
       'Step 4 drives',
+      'Differentiate ż3 of (43)',
+      'the printed (47) holds with L̇ = 0',
+      '2(l41·x̂4 + l51·x̂5) and 2(l42·x̂4 + l52·x̂5)',
+      '(section 3)',
+      '+ v4s2 (49)–(51)',
+      'and (52) follows',
+      'the printed (47) regrouped',
+      'writes 2a10(l21·x̃2·x̂4 + …) for 2a10(x̂4·si2 + x̂5·si3)',
       'v4 = 2a10·b(x̂4·u1 + x̂5·u2)',
       'the decoupling matrix (54)',
       'not zero (55)',
@@ -1988,7 +2092,16 @@ const SECTION_SPECS = {
     ],
   },
   stability: {
-    givens: ['the bound (59)', 'With the EKF’s 10 % initial error', 'sine200 with vmax=100000'],
+    givens: [
+      'With the EKF’s 10 % initial error',
+      'sine200 with vmax=100000',
+      'z4²) (58)',
+      '+ z4(v4s2 + d̃4) (60)',
+      'Assumption 4.2',
+      'h2²z2²/(4ε2)',
+      'Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V',
+      'integrating from 0 to t gives (59)',
+    ],
     checks: [
       [
         'the run ends [6,100] to [6,500] rad/s off, on either side',
@@ -2032,7 +2145,7 @@ const SECTION_SPECS = {
 
 for (const section of SECTIONS) {
   test(`walkthrough: ${section.title}`, () => {
-    const text = [...section.prose, section.note ?? ''].join('\n');
+    const text = [...section.prose, section.note ?? '', ...(section.shows ?? [])].join('\n');
     assert.deepEqual(checkText(text, SECTION_SPECS[section.id], core), []);
   });
 }
@@ -2261,7 +2374,11 @@ test('a number moved to another place fails', () => {
       [l.title, l.look, l.question, l.hint, l.answer].join('\n'),
       SPECS[l.title],
     ]),
-    ...SECTIONS.map((s) => [`walkthrough: ${s.title}`, [...s.prose, s.note ?? ''].join('\n'), SECTION_SPECS[s.id]]),
+    ...SECTIONS.map((s) => [
+      `walkthrough: ${s.title}`,
+      [...s.prose, s.note ?? '', ...(s.shows ?? [])].join('\n'),
+      SECTION_SPECS[s.id],
+    ]),
     ...Object.entries(NOTE_SPECS).map(([cause, spec]) => [`stability note: ${cause}`, STABILITY_CAUSES[cause], spec]),
     ...presetList().map(([name, description]) => [`preset: ${name}`, description, PRESET_SPECS[name]]),
   ];

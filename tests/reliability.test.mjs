@@ -25,28 +25,37 @@ const CRASH_MESSAGE = /^The simulation worker failed \(.+\)\. It was restarted; 
 const simulationWorker = (page) => page.workers()[0];
 
 /**
- * Makes the worker's next slice of a run exhaust the core's memory: `Simulation.prototype.step_for`
- * (the binding the worker calls, shared through the one module instance; `step` too) is replaced
- * by one that allocates long runs with a kept column until the allocator fails. That is a real trap of the core
- * (Rust aborts on a failed allocation with `unreachable`), reached on the next run whatever the
- * memory the worker has freed or the garbage collector has released meanwhile.
+ * Opens `path` in a fresh page whose worker keeps the core's WASM exports on `self.core`, as a
+ * copy the test may change: the worker's bundle is served with a line before it that wraps
+ * `WebAssembly.instantiateStreaming`. The test's way into the one WASM instance the bundled worker
+ * holds; the page and the worker are otherwise as served.
+ */
+async function pageWithCore(path, errors) {
+  const page = await newPage(suite.browser, errors);
+  await page.context().route('**/web/worker-*.js', async (route) => {
+    const response = await route.fetch();
+    const keep =
+      '{ const instantiate = WebAssembly.instantiateStreaming; WebAssembly.instantiateStreaming = async (...a) => { const r = await instantiate(...a); self.core = { ...r.instance.exports }; return { module: r.module, instance: { exports: self.core } }; }; }\n';
+    await route.fulfill({ response, body: keep + (await response.text()) });
+  });
+  await page.goto(`${suite.server.url}${path}`);
+  return page;
+}
+
+/**
+ * Makes the worker's next slice of a run exhaust the core's memory: the core's `step_for` is
+ * wrapped by one that first allocates 8 MB blocks, never freed, until the allocator fails. That is
+ * a real trap of the core (Rust aborts on a failed allocation with `unreachable`), reached in the
+ * worker's next run.
  */
 function trapOnNextStep(worker) {
-  return worker.evaluate(async (largest) => {
-    // The same module URL gives the page's worker module, so the same WASM instance.
-    const m = await import(new URL('../../pkg/imlab.js', self.location.href));
-    const hoard = [];
-    const exhaust = function exhaust() {
-      // Each run keeps a column of its 1,064,963 samples, about 8.5 MB; WASM32 memory ends at 4 GiB.
-      for (;;) {
-        const sim = new m.Simulation(largest);
-        sim.keep_column('omega');
-        hoard.push(sim);
-      }
+  return worker.evaluate(() => {
+    // The allocator the glue passes strings with (wasm-bindgen names it __wbindgen_export).
+    const malloc = self.core.__wbindgen_export;
+    self.core.simulation_step_for = () => {
+      for (;;) malloc(1 << 23, 1);
     };
-    m.Simulation.prototype.step = exhaust;
-    m.Simulation.prototype.step_for = exhaust;
-  }, LARGEST);
+  });
 }
 
 /** Checks that the page has the run's plots and figures. */
@@ -64,7 +73,8 @@ test('the page runs its first run on the one worker started with it', () =>
     assert.equal(page.workers().length, 1);
   }));
 
-for (const blocked of ['web/worker/worker.js', 'pkg/imlab_bg.wasm']) {
+// The worker's bundle and the core's module, by their hashed names (scripts/bundle.mjs).
+for (const blocked of ['web/worker-*.js', 'web/imlab_bg-*.wasm']) {
   test(`a worker that cannot load (${blocked} unreachable) is reported as not started`, async () => {
     const errors = [];
     const page = await newPage(suite.browser, errors);
@@ -87,8 +97,10 @@ for (const blocked of ['web/worker/worker.js', 'pkg/imlab_bg.wasm']) {
   });
 }
 
-test('a trap in the worker is reported, the worker is replaced, and the next run works', () =>
-  withPage('?v=1&preset=step', async (page) => {
+test('a trap in the worker is reported, the worker is replaced, and the next run works', async () => {
+  const errors = [];
+  const page = await pageWithCore('?v=1&preset=step', errors);
+  try {
     assert.equal(await settled(page), 'done');
     await trapOnNextStep(simulationWorker(page));
     assert.equal(await startRun(page, () => page.click('#run')), 'crashed');
@@ -101,7 +113,11 @@ test('a trap in the worker is reported, the worker is replaced, and the next run
     assert.equal(run.state, 'done');
     await assertDrawn(page);
     assert.equal(await page.textContent('#message'), '');
-  }));
+  } finally {
+    await page.context().close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+});
 
 test('an unhandled rejection or an uncaught error in the worker reaches the page, which recovers', () =>
   withPage('?v=1&preset=step', async (page) => {

@@ -22,7 +22,7 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
         rendered: s.querySelectorAll('.equation > .katex-display').length,
       })),
     );
-    assert.equal(sections.length, 7);
+    assert.equal(sections.length, 8);
     for (const s of sections) {
       assert.ok(s.equations >= 2, `${s.id} has ${s.equations} equations`);
       assert.equal(s.rendered, s.equations, `${s.id}: rendered ${s.rendered} of ${s.equations}`);

@@ -4,9 +4,11 @@
 // what it said and any failure meanwhile. A classic script loaded async, so that it runs as soon
 // as it arrives, waiting neither for the stylesheets nor for the page to be parsed; should the
 // page's modules start first (they cannot in practice), the run client has started the worker
-// and left `imlabBoot` null, and nothing is done here.
+// and left `imlabBoot` null, and nothing is done here. The worker's address is on this script's
+// element (`data-worker`), where the build writes the name of the worker's bundle.
 if (globalThis.imlabBoot === undefined) {
-  const boot = { worker: new Worker('web/worker/worker.js', { type: 'module' }), early: [], failure: null };
+  const address = /** @type {HTMLScriptElement} */ (document.currentScript).dataset.worker;
+  const boot = { worker: new Worker(address, { type: 'module' }), early: [], failure: null };
   boot.worker.onmessage = ({ data }) => boot.early.push(data);
   boot.worker.onerror = (e) => {
     e.preventDefault();

@@ -5,6 +5,7 @@ import { fieldValue } from './run/controls.js';
 import { challengeFromUrl, excerpt, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
 import { Analysis } from './analysis/analysis.js';
 import { Walkthrough } from './teaching/walkthrough.js';
+import { loadTex } from './teaching/tex.js';
 import { LessonPanel } from './teaching/lessons.js';
 import { LESSONS } from './teaching/teaching.js';
 import { $, say, ui } from './ui/page.js';
@@ -24,6 +25,18 @@ import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
 import { createGrading } from './challenge/grade.js';
+
+/**
+ * Lists the built-in challenges in the Lessons tab, once: after the first run or when the tab is
+ * first opened, whichever comes first (their listing loads the core's tools, which the first run
+ * does not need).
+ */
+let challengesListed = false;
+function listChallenges() {
+  if (challengesListed) return;
+  challengesListed = true;
+  listBuiltins(client, $('challenges'));
+}
 
 // What the page's parts share; in brackets, the parts that write each field.
 const state = {
@@ -97,6 +110,11 @@ const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
 const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthroughView });
+// KaTeX is fetched when an equation is first shown; a pointer over the walkthrough's tab, or the
+// keyboard's focus on it, starts the fetch a moment sooner.
+for (const event of ['pointerenter', 'focus'])
+  $('tab-walkthrough').addEventListener(event, () => loadTex().catch(() => {}), { once: true });
+$('tab-lessons').addEventListener('click', listChallenges, { once: true });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
 const robust = createRobust({
   state,
@@ -124,13 +142,11 @@ const run = createRun({
   exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
+    listChallenges();
     pins.afterRun();
     sweeps.afterRun();
     robust.afterRun();
     challenge.check();
-    // So that the walkthrough's first showing need not typeset every equation at once (an embed
-    // never shows it).
-    if (!document.body.classList.contains('embed')) walkthrough.typesetWhenIdle();
   },
 });
 const settings = createSettings({
@@ -207,9 +223,6 @@ window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
-listBuiltins(client, $('challenges'));
-// While the worker loads the core, the main plots are laid out, empty, and their drawing code is
-// compiled.
+// While the worker loads the core, the main plots are laid out, empty.
 plots.prepare();
-plots.warm();
 navigator.serviceWorker?.register('sw.js');

@@ -10,7 +10,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { launch, serve, settled } from '../browser.mjs';
 import { initSync } from '../../dist/pkg/imlab.js';
-import { CHALLENGE_JOBS as jobs } from '../../dist/web/worker/challenge-jobs.js';
+import { CHALLENGE_JOBS as jobs } from '../../dist/.src/worker/challenge-jobs.js';
 
 initSync({ module: readFileSync(new URL('../../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 const cli = new URL('../../target/release/imlab', import.meta.url).pathname;

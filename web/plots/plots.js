@@ -141,33 +141,6 @@ export class Plots {
       this.create((plot) => [[], ...plot.series.map(() => []), ...(plot.constants ?? []).map(() => [])]);
   }
 
-  /**
-   * Draws each empty chart `rounds` times with made-up data of a run's size (four points a pixel
-   * column, as an envelope has), then empties it again in the same task, so that nothing of it is
-   * painted: the first run's plots are then drawn by compiled code, not by the interpreter. One
-   * chart a task, so that the page stays responsive; stops once a run is shown.
-   */
-  warm(rounds = 2) {
-    const n = 4 * this.width();
-    const t = Float64Array.from({ length: n }, (_, i) => i / n);
-    const wave = Float64Array.from(t, (x, i) => Math.sin(40 * x) + (i % 4) * 0.1);
-    const jobs = this.charts.flatMap((c) => Array.from({ length: rounds }, () => c));
-    const next = async () => {
-      const c = jobs.shift();
-      if (!c || this.full !== null) return;
-      if (!this.charts.includes(c)) return next(); // replaced meanwhile (presentation mode)
-      const empty = c.data;
-      this.syncing = true;
-      c.setData([t, ...empty.slice(1).map(() => wave)], true);
-      await Promise.resolve(); // uPlot draws in a microtask: this one comes after it
-      c.setData(empty, true);
-      await Promise.resolve();
-      this.syncing = false;
-      setTimeout(next, 0);
-    };
-    setTimeout(next, 0);
-  }
-
   /** Creates a chart for each plot, with the data `data(plot)`. */
   create(data) {
     const width = this.width();

@@ -1,18 +1,54 @@
-// The walkthrough's equations: our own TeX typeset by KaTeX, now or while the page is idle, and
-// the plain-text reading of a short label for screen readers.
-import katex from '../../vendor/katex/katex.mjs';
+// The walkthrough's equations: our own TeX typeset by KaTeX, and the plain-text reading of a short
+// label for screen readers. KaTeX, its stylesheet and its fonts are fetched when an equation is
+// first shown (the walkthrough opened, a sample inspected), not with the page: the first plot
+// needs none of them.
 import { el } from '../ui/dom.js';
 
+/** KaTeX once loaded, else null. @type {typeof import('../../vendor/katex/katex.mjs').default | null} */
+let katex = null;
+/** @type {Promise<void> | null} */
+let loading = null;
+
+/** Fetches KaTeX and its stylesheet, once; resolves when both are in. */
+export function loadTex() {
+  if (loading) return loading;
+  const link = el('link', { rel: 'stylesheet', href: 'vendor/katex/katex.min.css' });
+  loading = Promise.all([
+    import('../../vendor/katex/katex.mjs'),
+    new Promise((resolve, reject) => {
+      link.addEventListener('load', resolve);
+      link.addEventListener('error', () => reject(new Error('the equations’ stylesheet could not be loaded')));
+      document.head.append(link);
+    }),
+  ]).then(
+    ([module]) => {
+      katex = module.default;
+    },
+    (e) => {
+      // Tried again when an equation is next shown.
+      link.remove();
+      loading = null;
+      throw e;
+    },
+  );
+  return loading;
+}
+
 /** A KaTeX-rendered equation (our own TeX, never text from the URL). `label`, if given, is its
- * plain-text name for screen readers (a table header needs one: axe does not read MathML). */
+ * plain-text name for screen readers (a table header needs one: axe does not read MathML). Until
+ * KaTeX is in, the span shows the plain-text reading. */
 export function tex(source, displayMode = true, label = null) {
-  const span = el('span', { className: displayMode ? 'equation' : 'math' });
-  typeset(span, source, displayMode);
-  if (label) {
-    const math = span.querySelector('.katex');
-    math.setAttribute('role', 'math');
-    math.setAttribute('aria-label', label);
-  }
+  const span = el('span', { className: displayMode ? 'equation' : 'math', textContent: plain(source) });
+  const done = () => {
+    typeset(span, source, displayMode);
+    if (label) {
+      const math = span.querySelector('.katex');
+      math.setAttribute('role', 'math');
+      math.setAttribute('aria-label', label);
+    }
+  };
+  if (katex) done();
+  else loadTex().then(done, () => {});
   return span;
 }
 
@@ -21,19 +57,20 @@ function typeset(span, source, displayMode) {
   katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
 }
 
-/** A display equation typeset later, while the page is idle or when the walkthrough is first
- * shown (see `Walkthrough.typesetWhenIdle` and `Walkthrough.shown`): typesetting all of them
- * takes KaTeX longer than anything else at page load. */
+/** A display equation typeset when it is first shown (see `Walkthrough.shown`). */
 export function laterTex(source) {
   const span = el('span', { className: 'equation' });
   span.dataset.tex = source;
   return span;
 }
 
-/** Typesets an equation made by `laterTex`. */
-export function typesetWaiting(span) {
-  typeset(span, span.dataset.tex, true);
-  delete span.dataset.tex;
+/** Typesets the equations made by `laterTex` inside `container`, once KaTeX is in. */
+export async function typesetWaiting(container) {
+  await loadTex();
+  for (const span of container.querySelectorAll('.equation[data-tex]')) {
+    typeset(span, span.dataset.tex, true);
+    delete span.dataset.tex;
+  }
 }
 
 /** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */

@@ -1,7 +1,7 @@
 // What a run's results say in the walkthrough: the stability report (V against its bound) and the
 // table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
 import { el } from '../ui/dom.js';
-import { STABILITY_CAUSES } from './teaching.js';
+import { STABILITY_CAUSES } from './walkthrough-text.js';
 
 /** The stability report `st` of a run, in words. */
 export function stabilityText(st) {

@@ -1,7 +1,7 @@
 // The walkthrough's sections as the page shows them: each one's prose, equations, knobs and plots,
 // the lumped-parameter table, and the note that the IFOC baseline drives the motor.
 import { el } from '../ui/dom.js';
-import { SECTIONS } from './teaching.js';
+import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
 
@@ -37,6 +37,14 @@ export function sectionElement(s, onCompare) {
   for (const p of s.prose) div.append(el('p', { textContent: p }));
   s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
   if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
+  // The numbers a run gives, apart from the derivation they illustrate.
+  if (s.shows)
+    div.append(
+      el('div', { className: 'run-shows' }, [
+        el('h3', { textContent: 'What the run shows' }),
+        ...s.shows.map((p) => el('p', { textContent: p })),
+      ]),
+    );
   if (s.lumped)
     div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
   if (s.stability)
@@ -50,9 +58,11 @@ export function sectionElement(s, onCompare) {
     button.addEventListener('click', onCompare);
     div.append(button, scrollBox(el('div', { className: 'compare-result' }), 'Euler and RK4 predictors compared'));
   }
-  const knobs = el('div', { className: 'knobs' });
-  knobs.dataset.keys = s.knobs.join(' ');
-  div.append(el('h3', { textContent: 'Design knobs' }), knobs);
+  if (s.knobs.length) {
+    const knobs = el('div', { className: 'knobs' });
+    knobs.dataset.keys = s.knobs.join(' ');
+    div.append(el('h3', { textContent: 'Design knobs' }), knobs);
+  }
   const plots = el('div', { className: 'section-plots' });
   div.append(plots);
   return [div, plots];

@@ -2,13 +2,14 @@
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
 // Every number shown here comes from the core (through the worker); the page only formats it.
 import { Plots } from '../plots/plots.js';
-import { SECTIONS } from './teaching.js';
+import { SECTIONS } from './walkthrough-text.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
 import { fillInspect } from './inspect-panel.js';
 import { ifocNote, lumpedTable, plotDefs, sectionElement, syncKnobs } from './walkthrough-sections.js';
 import { comparison, stabilityText } from './walkthrough-reports.js';
 import { el } from '../ui/dom.js';
+import { say } from '../ui/page.js';
 
 export { tex } from './tex.js';
 
@@ -39,7 +40,6 @@ export class Walkthrough {
     this.stale = false; // the plots wait for the view of the last run
     this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
     this.opened = false; // whether the walkthrough has been shown
-    this.typesetting = false; // whether equations are being typeset while the page is idle
     for (const s of SECTIONS) {
       const [section, plots] = sectionElement(s, onCompare);
       this.sectionDivs[s.id] = plots;
@@ -82,32 +82,6 @@ export class Walkthrough {
     return rendered(this.container);
   }
 
-  /** Typesets the equations still waiting a few at a time while the page is idle, so that the
-   * walkthrough's first showing need not typeset them all at once; `shown` does what is left. */
-  typesetWhenIdle() {
-    if (this.typesetting) return;
-    // Where the browser lacks idle callbacks: 10 ms slices 50 ms apart.
-    const idle =
-      globalThis.requestIdleCallback ??
-      ((f) =>
-        setTimeout(() => {
-          const end = performance.now() + 10;
-          f({ didTimeout: false, timeRemaining: () => end - performance.now() });
-        }, 50));
-    const some = (deadline) => {
-      for (const span of this.container.querySelectorAll('.equation[data-tex]')) {
-        if (deadline.timeRemaining() <= 0) {
-          idle(some);
-          return;
-        }
-        typesetWaiting(span);
-      }
-      this.typesetting = false;
-    };
-    this.typesetting = true;
-    idle(some);
-  }
-
   /** Whether its plots show the last run (they can take a zoom window then). */
   drawn() {
     return !this.stale && this.pending === null;
@@ -117,8 +91,12 @@ export class Walkthrough {
    * whether they scroll, and a waiting view is drawn. */
   shown() {
     this.opened = true;
-    for (const span of this.container.querySelectorAll('.equation[data-tex]')) typesetWaiting(span);
-    markScrollable([...this.container.querySelectorAll('.scroll-box')]);
+    // The equations are typeset once KaTeX is in (fetched now the first time): then they learn
+    // whether they scroll. Should KaTeX fail to load (the network gone), the page says so.
+    typesetWaiting(this.container).then(
+      () => markScrollable([...this.container.querySelectorAll('.scroll-box')]),
+      () => say('The equations could not be loaded: check the connection and open the walkthrough again.'),
+    );
     if (this.pending) {
       this.plots.show(this.pending, { ifoc: this.ifoc });
       this.pending = null;

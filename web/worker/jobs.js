@@ -1,7 +1,9 @@
 // The worker's stateless jobs, by kind (see Jobs in protocol.js): each takes its fields and
-// returns what the core computed, so any worker of a pool can take any of them.
-import {
+// returns what the core computed, so any worker of a pool can take any of them. They run on the
+// core built with its tools (pkg/), which the worker loads with this module on its first job.
+import initTools, {
   log_grid,
+  panic_message,
   robust_cells,
   robust_csv,
   robust_figures,
@@ -17,6 +19,8 @@ import {
   variant,
 } from '../../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
+
+export { initTools, panic_message };
 
 /** @typedef {import('./protocol.js').Jobs} Jobs */
 

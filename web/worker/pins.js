@@ -1,6 +1,6 @@
 // The worker's pins: finished runs kept beside the current one (the core's Comparison), run in
 // time slices like a run, and the overlay of one column across them.
-import { Comparison, Simulation } from '../../pkg/imlab.js';
+import { Comparison, Simulation } from '../../pkg-run/imlab.js';
 import { heldSim, held } from './run.js';
 import { post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 

@@ -1,7 +1,7 @@
 // The worker's run: the one simulation it holds, run in time slices with progress, and what the
 // page asks of it once run (views, the CSV in chunks, a snapshot at one time, the predictors'
 // comparison, a challenge's measures).
-import { challenge_measure, Simulation, variant } from '../../pkg/imlab.js';
+import { challenge_measure, Simulation, variant } from '../../pkg-run/imlab.js';
 import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */

@@ -1,6 +1,6 @@
 // The worker's runtime: how it posts to the page, yields to the page's messages between slices
 // of work, and reports a crash of the core once.
-import { panic_message } from '../../pkg/imlab.js';
+import { panic_message } from '../../pkg-run/imlab.js';
 
 /** @typedef {import('./protocol.js').FromWorker} FromWorker */
 /** @typedef {import('./protocol.js').View} View */
@@ -11,6 +11,12 @@ import { panic_message } from '../../pkg/imlab.js';
 export const SLICE_MS = 4;
 
 let crashed = false;
+
+/** Where a panic's text is read after a trap: the run's core, and the tools' once loaded. */
+const panicSources = [panic_message];
+
+/** Adds a module whose last panic a crash report reads (the tools' core, when it is loaded). */
+export const addPanicSource = (/** @type {() => string | undefined} */ source) => void panicSources.push(source);
 
 /** Whether the core has trapped: from then on nothing calls it. */
 export const isCrashed = () => crashed;
@@ -39,10 +45,12 @@ export function crash(error) {
   if (crashed) return;
   crashed = true;
   let panic;
-  try {
-    panic = panic_message();
-  } catch {
-    // The instance is too broken to read the message; the trap's own text still tells.
+  for (const source of panicSources) {
+    try {
+      panic ??= source();
+    } catch {
+      // The instance is too broken to read the message; the trap's own text still tells.
+    }
   }
   let message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
   // A Rust allocation failure aborts without a panic, as an 'unreachable' trap.

@@ -4,17 +4,18 @@
 //
 // The run worker holds one run (run.js) and the pins (pins.js). A pool's worker (`?role=pool`)
 // answers jobs only (jobs.js): it holds no pins and skips the warm-up for a run's first slices.
-import init, { describe, nis_band, presets, recover } from '../../pkg/imlab.js';
-import { JOBS } from './jobs.js';
+import init, { describe, nis_band, presets, recover } from '../../pkg-run/imlab.js';
 import { cancelPins, holdPins, overlay, pinAll, unpin, unpinAll } from './pins.js';
 import { cancel, compare, csvAnswer, exportCsv, inspect, measure, run, viewOf, warmUp } from './run.js';
-import { isCrashed, post, trapped } from './runtime.js';
+import { addPanicSource, isCrashed, post, trapped } from './runtime.js';
+import { TOOLS_WASM_URL, WASM_URL } from './wasm-url.js';
 
 /** @import * as P from './protocol.js' */
 
 const POOL = new URLSearchParams(self.location.search).get('role') === 'pool';
 
-const ready = init().then(() => {
+// Compiled while it streams in (the core's glue uses WebAssembly.instantiateStreaming).
+const ready = init({ module_or_path: WASM_URL }).then(() => {
   if (!POOL) {
     holdPins();
     warmUp();
@@ -40,10 +41,43 @@ function describeScenario({ type, req, scenario }) {
   }
 }
 
+/**
+ * The jobs and the core built with its tools, fetched and compiled on the first job (the first
+ * run needs neither); tried again on the next job should the fetch fail.
+ * @type {Promise<typeof import('./jobs.js').JOBS> | null}
+ */
+let tools = null;
+function loadTools() {
+  tools ??= import('./jobs.js').then(
+    async ({ JOBS, initTools, panic_message }) => {
+      await initTools({ module_or_path: TOOLS_WASM_URL });
+      addPanicSource(panic_message);
+      return JOBS;
+    },
+    (e) => {
+      tools = null;
+      throw e;
+    },
+  );
+  return tools;
+}
+
 /** @param {P.JobMessage} request */
-function job(request) {
+async function job(request) {
+  let jobs;
   try {
-    const jobOf = /** @type {(d: any) => any} */ (JOBS[request.kind]);
+    jobs = await loadTools();
+  } catch (e) {
+    post({
+      type: 'job',
+      job: request.job,
+      error: `The tools could not be loaded (${e}): check the connection and try again.`,
+    });
+    return;
+  }
+  if (isCrashed()) return;
+  try {
+    const jobOf = /** @type {(d: any) => any} */ (jobs[request.kind]);
     post({ type: 'job', job: request.job, result: jobOf(request) });
   } catch (e) {
     if (!trapped(e)) post({ type: 'job', job: request.job, error: String(e) });
@@ -79,7 +113,7 @@ self.onmessage = async ({ data }) => {
     case 'overlay':
       return overlay(data);
     case 'job':
-      return job(data);
+      return void job(data);
     case 'challenge-measure':
       return measure(data);
     case 'csv':

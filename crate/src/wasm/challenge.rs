@@ -1,7 +1,7 @@
 //! The challenge bindings: a challenge parsed once, its description, submissions, the measures of
 //! a run and the verdict on them.
 
-use super::{from_js, js_error, to_js, Simulation};
+use super::{from_js, js_error, to_js};
 use crate::challenge::ErrorKind;
 use crate::scenario::Scenario;
 use serde::Serialize;
@@ -296,14 +296,6 @@ fn submission_view(
             scenarios: Vec::new(),
         },
     }
-}
-
-/// The measures of a finished run for judging a challenge: `{figures: [{name, value, unit,
-/// settled}], failure}` (`value` may be Infinity: a load never recovered from; `failure` a
-/// message when the run failed or ran away, else null).
-#[wasm_bindgen]
-pub fn challenge_measure(sim: &Simulation) -> Result<JsValue, JsValue> {
-    to_js(&crate::challenge::measure(&sim.inner))
 }
 
 /// The built-in challenges: `[{name, summary, text, solution}]` (`text` the canonical link;

@@ -1,0 +1,146 @@
+//! The bindings of the analysis tools: frequency sweeps, seed sweeps and model-error maps. Built
+//! only with the `tools` feature, into the module the page fetches when a tool is first used;
+//! the first run needs none of them.
+
+use super::{from_js, js_error, to_js};
+use crate::analysis;
+use crate::robust;
+use crate::scenario::{Scenario, MAX_SEED};
+use wasm_bindgen::prelude::*;
+
+/// The closed-loop response of `scenario` at `freq` (Hz): `{freq, gain, phase, gain_hat, ...}`.
+#[wasm_bindgen]
+pub fn sweep_point(
+    scenario: &str,
+    freq: f64,
+    amp: f64,
+    duration: f64,
+    offset: f64,
+) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let settings = analysis::SweepSettings {
+        amp,
+        duration,
+        offset,
+    };
+    to_js(&analysis::sweep_point(&s, freq, &settings).map_err(js_error)?)
+}
+
+/// `count` log-spaced frequencies from `lo` to `hi` (Hz); throws for a bad grid.
+#[wasm_bindgen]
+pub fn log_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, JsValue> {
+    analysis::checked_grid(lo, hi, count).map_err(js_error)
+}
+
+/// `{bandwidth, phase_at_200}` of sweep points sorted by frequency.
+#[wasm_bindgen]
+pub fn sweep_summary(points: JsValue) -> Result<JsValue, JsValue> {
+    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+    to_js(&analysis::summarise(&points))
+}
+
+/// Sweep points as the CSV `imlab sweep` prints.
+#[wasm_bindgen]
+pub fn sweep_csv(points: JsValue) -> Result<String, JsValue> {
+    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+    Ok(analysis::sweep_csv(&points))
+}
+
+/// The seeds of a seed sweep of `count` seeds from `first`, in order; throws, naming the range,
+/// when it would run past the largest seed (2^53 − 1), before any run.
+#[wasm_bindgen]
+pub fn seed_range(first: f64, count: f64) -> Result<Vec<f64>, JsValue> {
+    let range = analysis::seed_range(whole("first seed", first)?, whole("seeds", count)?)
+        .map_err(js_error)?;
+    // Every seed is at most 2^53 − 1, so each is a JavaScript number exactly.
+    Ok(range.map(|seed| seed as f64).collect())
+}
+
+/// One seed's run of `scenario`, keeping every `every`-th sample of its error traces:
+/// `{result: {seed, tracking_rms, speed_estimate_error_rms, tracking_peak, failure}, t, error,
+/// estimate}`.
+#[wasm_bindgen]
+pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let seed = whole("seed", seed)?;
+    to_js(&analysis::seed_run(&s, seed, every).map_err(js_error)?)
+}
+
+/// Mean and min–max bands over seed runs (in seed order).
+#[wasm_bindgen]
+pub fn seed_bands(runs: JsValue) -> Result<JsValue, JsValue> {
+    let runs: Vec<analysis::SeedRun> = from_js(runs)?;
+    to_js(&analysis::seed_bands(&runs).map_err(js_error)?)
+}
+
+/// Per-seed figures as the CSV `imlab seeds` prints.
+#[wasm_bindgen]
+pub fn seeds_csv(results: JsValue) -> Result<String, JsValue> {
+    let results: Vec<analysis::SeedResult> = from_js(results)?;
+    Ok(analysis::seeds_csv(&results))
+}
+
+/// The model-error map `text` (`AXIS[;AXIS][;seeds=A..B]`, as `imlab robust` reads its
+/// options) of `scenario`, checked and bounded before any run: its axes, cells and seeds.
+#[wasm_bindgen]
+pub fn robust_plan(scenario: &str, text: &str) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    to_js(&robust::Map::parse(&s, text).map_err(js_error)?)
+}
+
+/// One run of a map's cell: its scenario as the plan wrote it, with noise seed `seed`.
+#[wasm_bindgen]
+pub fn robust_run(scenario: &str, seed: f64) -> Result<JsValue, JsValue> {
+    to_js(&robust::map_run(scenario, whole("seed", seed)?).map_err(js_error)?)
+}
+
+/// The rows of a map's cells from its runs, cell after cell, each cell's seeds in the map's order.
+#[wasm_bindgen]
+pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
+    let map: robust::Map = from_js(map)?;
+    let runs: Vec<robust::MapRun> = from_js(runs)?;
+    let per = map.seeds.len();
+    if per == 0 || runs.len() != map.cells.len() * per {
+        return Err(js_error(format!(
+            "{} runs for {} cells × {per} seeds",
+            runs.len(),
+            map.cells.len()
+        )));
+    }
+    let cells: Vec<robust::Cell> = map
+        .cells
+        .iter()
+        .zip(runs.chunks(per))
+        .map(|(c, r)| robust::summarise(c, r))
+        .collect();
+    to_js(&cells)
+}
+
+/// A map's rows as the CSV `imlab robust` prints; `cells` may be some of `map`'s (a stopped map),
+/// which the CSV then says.
+#[wasm_bindgen]
+pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
+    let map: robust::Map = from_js(map)?;
+    let cells: Vec<robust::Cell> = from_js(cells)?;
+    Ok(robust::map_csv(&map, &cells))
+}
+
+/// The figures a map keeps of each run, in its order: `[{name, label, unit}]`.
+#[wasm_bindgen]
+pub fn robust_figures() -> Result<JsValue, JsValue> {
+    let info: Vec<_> = robust::MAP_FIGURES
+        .iter()
+        .map(|f| crate::record::figure_info(f).expect("a map's figures are report figures"))
+        .collect();
+    to_js(&info)
+}
+
+/// `value` as a seed, or a message naming it as `what`.
+fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
+    if !(0.0..=MAX_SEED as f64).contains(&value) || value.fract() != 0.0 {
+        return Err(js_error(format!(
+            "{what} {value}: expected a whole number from 0 to 2^53 − 1"
+        )));
+    }
+    Ok(value as u64)
+}

@@ -1,0 +1,154 @@
+// Builds the served page in a dist/ folder that already holds the core (pkg-run/, pkg/) and the vendored
+// libraries (vendor/): every file the page loads before its first plot is minified and named by its
+// content's hash, so that a browser keeps it as long as it is unchanged (scripts/serve.mjs says so).
+//
+//   web/worker-HASH.js      the worker and the run core's glue, one module, and a chunk with the
+//                           jobs and the tools core's glue, fetched on the first job
+//   web/imlab_bg-HASH.wasm  the two builds of the core (dist/pkg-run/, dist/pkg/), each fetched
+//                           and compiled while it streams by the worker
+//   web/main-HASH.js        the page's modules and uPlot, one module; KaTeX in a chunk of its own,
+//                           fetched when an equation is first shown (web/teaching/tex.js)
+//   web/boot-HASH.js        the script that starts the worker early (web/boot.js)
+//   style-HASH.css          uPlot's stylesheet and the page's, one file
+//   index.html              static/index.html, pointing at the above
+//
+//   node scripts/bundle.mjs DIST
+import { createHash } from 'node:crypto';
+import { cpSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { basename, join, relative } from 'node:path';
+import * as esbuild from 'esbuild';
+
+const dist = process.argv[2];
+if (!dist) {
+  console.error('bundle: give the dist folder to build into');
+  process.exit(2);
+}
+const out = join(dist, 'web');
+// The sources, staged where their relative imports of ../pkg and ../vendor resolve; kept for the
+// Node tests of the worker's jobs (a dot folder: scripts/serve.mjs does not serve it).
+const src = join(dist, '.src');
+
+/** The first 40 bits of `bytes`' SHA-256 in base32, as esbuild names its outputs. */
+function hashOf(bytes) {
+  const digest = createHash('sha256').update(bytes).digest();
+  const alphabet = 'ABCDEFGHIJKLMNOPQRSTUVWXYZ234567';
+  let bits = 0n;
+  for (let i = 0; i < 5; i++) bits = (bits << 8n) | BigInt(digest[i]);
+  let name = '';
+  for (let i = 7; i >= 0; i--) name += alphabet[Number((bits >> BigInt(5 * i)) & 31n)];
+  return name;
+}
+
+/** An esbuild plugin that gives the module whose path ends with `suffix` the source `contents`. */
+const replaced = (suffix, contents) => ({
+  name: `replace ${suffix}`,
+  setup(build) {
+    build.onLoad({ filter: new RegExp(`${suffix.replace('.', '\\.')}$`) }, () => ({ contents, loader: 'js' }));
+  },
+});
+
+/** Builds `options` into web/ and returns the outputs' names (relative to web/) by entry point. */
+async function build(options) {
+  const result = await esbuild.build({
+    bundle: true,
+    minify: true,
+    format: 'esm',
+    outdir: out,
+    entryNames: '[name]-[hash]',
+    chunkNames: '[name]-[hash]',
+    metafile: true,
+    logLevel: 'warning',
+    ...options,
+  });
+  const outputs = {};
+  for (const [path, output] of Object.entries(result.metafile.outputs))
+    if (output.entryPoint)
+      outputs[basename(output.entryPoint)] = { name: relative(out, path), imports: output.imports };
+  return outputs;
+}
+
+rmSync(out, { recursive: true, force: true });
+rmSync(src, { recursive: true, force: true });
+for (const old of readdirSync(dist)) if (/^style.*\.css$/.test(old)) rmSync(join(dist, old));
+mkdirSync(out, { recursive: true });
+cpSync('web', src, { recursive: true, filter: (path) => !/(tsconfig\.json|\.d\.ts)$/.test(path) });
+
+/** Copies the core's module in `dist/PKG/` into web/ under its hashed name; returns the name. */
+function hashedWasm(pkg) {
+  const wasm = readFileSync(join(dist, pkg, 'imlab_bg.wasm'));
+  const name = `imlab_bg-${hashOf(wasm)}.wasm`;
+  writeFileSync(join(out, name), wasm);
+  return name;
+}
+const runWasm = hashedWasm('pkg-run');
+const toolsWasm = hashedWasm('pkg');
+
+// The worker with the run's core; its jobs and the tools' core glue in a chunk it imports on the
+// first job.
+const worker = (
+  await build({
+    entryPoints: [join(src, 'worker', 'worker.js')],
+    splitting: true,
+    plugins: [
+      replaced(
+        '/wasm-url.js',
+        `export const WASM_URL = new URL('./${runWasm}', import.meta.url);\n` +
+          `export const TOOLS_WASM_URL = new URL('./${toolsWasm}', import.meta.url);`,
+      ),
+    ],
+  })
+)['worker.js'];
+
+const main = (
+  await build({
+    entryPoints: [join(src, 'main.js')],
+    splitting: true,
+    plugins: [replaced('/worker-url.js', `export const WORKER_URL = new URL('./${worker.name}', import.meta.url);`)],
+  })
+)['main.js'];
+
+const boot = (await build({ entryPoints: [join(src, 'boot.js')], bundle: false, format: undefined }))['boot.js'];
+
+const style = await esbuild.build({
+  stdin: {
+    contents: '@import "./node_modules/uplot/dist/uPlot.min.css";\n@import "./static/style.css";\n',
+    loader: 'css',
+    resolveDir: '.',
+  },
+  bundle: true,
+  minify: true,
+  write: false,
+  logLevel: 'warning',
+});
+const css = style.outputFiles[0].contents;
+const styleName = `style-${hashOf(css)}.css`;
+writeFileSync(join(dist, styleName), css);
+
+/** `text` with `from` replaced by `to`, where `from` must occur exactly once. */
+function once(text, from, to) {
+  const at = text.indexOf(from);
+  if (at < 0 || text.indexOf(from, at + 1) >= 0) throw new Error(`bundle: index.html must hold "${from}" once`);
+  return text.slice(0, at) + to + text.slice(at + from.length);
+}
+// The bundle's static imports (shared chunks) are fetched with it, not after it has been read.
+const preloads = main.imports
+  .filter((i) => i.kind === 'import-statement')
+  .map((i) => `\n  <link rel="modulepreload" href="web/${relative(out, i.path)}">`)
+  .join('');
+let html = readFileSync('static/index.html', 'utf8');
+html = once(
+  html,
+  'src="web/boot.js" data-worker="web/worker/worker.js"',
+  `src="web/${boot.name}" data-worker="web/${worker.name}"`,
+);
+html = once(
+  html,
+  '<link rel="stylesheet" href="vendor/uPlot.min.css">\n  <link rel="stylesheet" href="style.css">',
+  `<link rel="stylesheet" href="${styleName}">`,
+);
+html = once(
+  html,
+  '<script type="module" src="web/main.js"></script>',
+  `<script type="module" src="web/${main.name}"></script>${preloads}`,
+);
+writeFileSync(join(dist, 'index.html'), html);

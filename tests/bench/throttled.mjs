@@ -1,0 +1,169 @@
+// The first plot in a classroom's conditions: from navigation to the first plotted run of the
+// default scenario, in headless Chromium with the DevTools protocol's network and CPU emulation,
+// a fresh browser context for each load (empty cache, no service worker), and then a second load
+// in the same context (the service worker and the HTTP cache warm). Each build's dist/ is served
+// by scripts/serve.mjs twice: plain (no compressed copy) and compressed (its brotli copies; a
+// build without them is given them in a temporary copy, as a static host compresses anything).
+//
+//   node tests/bench/throttled.mjs                  this build (dist/)
+//   BENCH_VS_DIST=DIR node tests/bench/throttled.mjs this build and another build's dist/ side by side
+//
+// Run by `make bench`. Prints, for each build, serving and profile, the median (min–max) of
+// BENCH_REPS (default 5) loads, and the bytes the network sent before the first plot.
+import { cpSync, existsSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { execFileSync } from 'node:child_process';
+import http from 'node:http';
+import { launch } from '../browser.mjs';
+import { staticHandler } from '../../scripts/serve.mjs';
+
+const REPS = Number(process.env.BENCH_REPS ?? 5);
+if (!Number.isInteger(REPS) || REPS < 1)
+  throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
+
+const PROFILES = [
+  { name: 'unthrottled', network: null, cpu: 1 },
+  { name: 'school Wi-Fi (10 Mbit/s, 40 ms, CPU 2×)', network: { down: 10e6, up: 5e6, latency: 40 }, cpu: 2 },
+  { name: 'slow 4G (1.6 Mbit/s, 150 ms, CPU 4×)', network: { down: 1.6e6, up: 750e3, latency: 150 }, cpu: 4 },
+];
+
+// BENCH_PROFILES=slow picks the profiles whose name starts with it (e.g. "slow" or "school");
+// BENCH_SERVING=compressed or plain picks one serving.
+const chosen = (list, env, key) => list.filter((x) => !process.env[env] || key(x).startsWith(process.env[env]));
+
+const ROOT = new URL('../../dist/', import.meta.url).pathname;
+const builds = [['this build', ROOT]];
+if (process.env.BENCH_VS_DIST) builds.push([`other (${process.env.BENCH_VS_DIST})`, process.env.BENCH_VS_DIST]);
+
+/** `dir` itself if it has brotli copies, else a temporary copy given them. */
+function compressedCopy(dir) {
+  const hasBr = (d) =>
+    readdirSync(d, { withFileTypes: true }).some((e) =>
+      e.isDirectory() ? hasBr(join(d, e.name)) : e.name.endsWith('.br'),
+    );
+  if (hasBr(dir)) return { dir, done: () => {} };
+  const copy = mkdtempSync(join(tmpdir(), 'imlab-bench-'));
+  cpSync(dir, copy, { recursive: true });
+  execFileSync('node', [new URL('../../scripts/compress.mjs', import.meta.url).pathname, copy]);
+  return { dir: copy, done: () => rmSync(copy, { recursive: true, force: true }) };
+}
+
+const browser = await launch();
+const errors = [];
+
+/** Applies `profile` to `page` through a CDP session. */
+async function throttle(page, profile) {
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('Network.enable');
+  if (profile.network)
+    await cdp.send('Network.emulateNetworkConditions', {
+      offline: false,
+      latency: profile.network.latency,
+      downloadThroughput: profile.network.down / 8,
+      uploadThroughput: profile.network.up / 8,
+    });
+  await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.cpu });
+}
+
+/**
+ * The bodies the server sends (compressed where it compresses; headers aside), as {at, bytes}:
+ * `at` when the request arrived (ms since the epoch, as the page's performance.timeOrigin counts).
+ * Counted at the server: a worker's requests are not in the page's DevTools session, and the
+ * browser's own accounts of them vary.
+ */
+const sent = [];
+
+/** Bytes of the bodies of the requests that arrived by `ms` after the navigation of `page` began. */
+async function bytesBy(page, ms) {
+  const cutoff = (await page.evaluate(() => performance.timeOrigin)) + ms;
+  return sent.reduce((sum, r) => (r.at <= cutoff ? sum + r.bytes : sum), 0);
+}
+
+/** Serves `root` as scripts/serve.mjs does, recording each response in `sent`. */
+async function counted(root, compressed) {
+  const files = staticHandler(root, { compressed });
+  const server = http.createServer((req, res) => {
+    const at = performance.timeOrigin + performance.now();
+    res.on('finish', () => sent.push({ at, bytes: Number(res.getHeader('Content-Length') ?? 0) }));
+    files(req, res);
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  return { server, url: `http://127.0.0.1:${server.address().port}/` };
+}
+
+/** Navigates to `url` and resolves to the milliseconds to the first plotted run. */
+async function firstPlot(page, url) {
+  await page.goto(url);
+  await page.waitForFunction(() => window.firstPlottedMs !== undefined, null, { timeout: 120_000 });
+  const { ms, state } = await page.evaluate(() => ({ ms: window.firstPlottedMs, state: document.body.dataset.state }));
+  if (state !== 'done') throw new Error(`the first run ended ${state}, not done`);
+  return ms;
+}
+
+/** One fresh load and the second load in the same context. */
+async function loads(url, profile) {
+  const context = await browser.newContext({ viewport: { width: 1280, height: 800 } });
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  await page.addInitScript(() => {
+    new MutationObserver((_, observer) => {
+      if (!['done', 'failed'].includes(document.body?.dataset.state)) return;
+      window.firstPlottedMs = performance.now();
+      observer.disconnect();
+    }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-state'] });
+  });
+  await throttle(page, profile);
+  sent.length = 0;
+  const first = await firstPlot(page, url);
+  const bytes = await bytesBy(page, first);
+  const compute = await page.evaluate(() => Number(document.body.dataset.computeMs));
+  // The service worker controls the page (it claims it once active) before the second load.
+  await page.evaluate(() => navigator.serviceWorker.ready);
+  await page.waitForFunction(() => navigator.serviceWorker.controller !== null);
+  const second = await firstPlot(page, url);
+  await context.close();
+  return { first, bytes, second, compute };
+}
+
+function spread(values, digits = 0) {
+  const s = [...values].sort((a, b) => a - b);
+  const mid = s.length >> 1;
+  const med = s.length % 2 ? s[mid] : (s[mid - 1] + s[mid]) / 2;
+  return `${med.toFixed(digits)} (${s[0].toFixed(digits)}–${s.at(-1).toFixed(digits)})`;
+}
+
+console.log(`Chromium, navigation → first plotted run of the default scenario, median (min–max) of ${REPS} loads`);
+for (const profile of chosen(PROFILES, 'BENCH_PROFILES', (p) => p.name)) {
+  console.log(`\n${profile.name}`);
+  const servings = [
+    ['compressed', true],
+    ['plain', false],
+  ];
+  for (const [servingName, compressed] of chosen(servings, 'BENCH_SERVING', (s) => s[0])) {
+    for (const [buildName, dir] of builds) {
+      if (!existsSync(join(dir, 'index.html'))) throw new Error(`${dir} has no index.html: build it first`);
+      const served = compressed ? compressedCopy(dir) : { dir, done: () => {} };
+      const { server, url } = await counted(served.dir, compressed);
+      const runs = [];
+      // Interleaved with nothing else: each load is its own context, one after another.
+      for (let r = 0; r < REPS; r++) runs.push(await loads(url, profile));
+      server.close();
+      served.done();
+      console.log(
+        `  ${servingName.padEnd(10)} ${buildName.padEnd(12)} first load ${spread(runs.map((r) => r.first))} ms, ` +
+          `${spread(
+            runs.map((r) => r.bytes / 1024),
+            0,
+          )} KiB sent before it (the run's compute ${spread(runs.map((r) => r.compute))} ms); ` +
+          `second load ${spread(runs.map((r) => r.second))} ms`,
+      );
+    }
+  }
+}
+await browser.close();
+if (errors.length) {
+  console.error(`console or page errors:\n${[...new Set(errors)].join('\n')}`);
+  process.exit(1);
+}
