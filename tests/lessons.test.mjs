@@ -10,6 +10,10 @@ import { SECTIONS, STABILITY_CAUSES } from '../web/teaching/walkthrough-text.js'
 import { Core, checkText, numbersIn } from './claims.mjs';
 import { SEEDS, unnoticedSwaps, withSeed as onSeed } from './claims.mjs';
 import * as claims from './claims.mjs';
+import { readFileSync } from 'node:fs';
+import { initSync, Simulation } from '../dist/pkg/imlab.js';
+
+initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 
 const core = new Core();
 
@@ -34,6 +38,28 @@ const MAP_STEP = 'v=1&preset=step&duration=1';
 const MAP_50 = 'v=1&preset=rr-mismatch&plant.rr=4.95&duration=3';
 /** rr-mismatch with the exact model holding `speed` (rad/s) for 3 s. */
 const atSpeed = (speed) => `v=1&preset=rr-mismatch&plant.rr=4.95&ref.value=${speed}&duration=3`;
+
+/**
+ * The peaks of |d̃2| and |d̃4| of `run` from `from` s on, and when |d̃2| peaks, as the core evaluates
+ * them from the simulated truth (`Simulation.disturbances`, the walkthrough's plots); each run once.
+ */
+const peaksOf = new Map();
+function disturbancePeaks(run, from = 0.015) {
+  const key = `${run} ${from}`;
+  if (!peaksOf.has(key)) {
+    const sim = new Simulation(run);
+    while (!sim.finished) sim.step(1_000_000);
+    const [t, d2, d4] = sim.disturbances(from, Number.MAX_VALUE, 1 << 30);
+    sim.free();
+    let peak = { d2: 0, d4: 0, at: NaN };
+    t.forEach((ti, i) => {
+      if (Math.abs(d2[i]) > peak.d2) peak = { ...peak, d2: Math.abs(d2[i]), at: ti };
+      peak.d4 = Math.max(peak.d4, Math.abs(d4[i]));
+    });
+    peaksOf.set(key, peak);
+  }
+  return peaksOf.get(key);
+}
 
 /** Field `key` of `run` as `imlab describe` prints it. */
 const fieldOf = (m, run, key) =>
@@ -1984,6 +2010,7 @@ const SECTION_SPECS = {
       '(32) follows',
       'only through d̃2 (33)',
       'with a projection (8)',
+      'for (38) to dominate it',
       'v2 = v2a + v2s (34)',
       'v2s = −k2s1·z2 + v2s2 (36)',
       '(38) dominates',
@@ -1994,6 +2021,41 @@ const SECTION_SPECS = {
     checks: [
       ['For the paper’s motor a7 + a8 = [232.7] /s', 0.05, (m) => a7PlusA8(m, STEP)],
       ['so k2s1 = [967.3] /s when k2 = 1200 /s', 0.05, (m) => fieldOf(m, STEP, 'k2') - a7PlusA8(m, STEP)],
+      [
+        'from 15 ms on, |d̃2| peaks at [3,900] to [4,700] rad/s³ over seeds 1–10',
+        { range: 50, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(onSeed(STEP, seed)).d2,
+      ],
+      [
+        'at the speed step (t = 0.05 s)',
+        'claim',
+        () => SEEDS.every((seed) => Math.abs(disturbancePeaks(onSeed(STEP, seed)).at - 0.0525) <= 0.0025),
+      ],
+      [
+        'With the motor’s J 20 % above the model’s the peak is [6,400] to [7,400] rad/s³',
+        { range: 100, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(variant(STEP, 'plant.j=0.024', seed)).d2,
+      ],
+      [
+        'with it 20 % below [5,500] to [6,200]',
+        { range: 100, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(variant(STEP, 'plant.j=0.016', seed)).d2,
+      ],
+      [
+        'with the motor’s R_r 10 % below the model’s, [51,000] to [58,000] rad/s³',
+        { range: 1000, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(variant(STEP, 'plant.rr=4.455', seed)).d2,
+      ],
+      [
+        'With R_r 10 % above, the flux runs off, ending at [5.5] to [13.2] Wb',
+        { range: 0.1, seeds: SEEDS },
+        (m, seed) => m.fig(variant(STEP, 'plant.rr=5.445', seed), 'flux_error_final') + Math.SQRT1_2,
+      ],
+      [
+        'and |d̃2| reaches [57] to [590] million rad/s³',
+        { range: 5, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(variant(STEP, 'plant.rr=5.445', seed)).d2 / 1e6,
+      ],
     ],
   },
   step3: {
@@ -2064,8 +2126,14 @@ const SECTION_SPECS = {
       'not zero (55)',
       'the paper’s ±400 V box',
       'Printed (48)',
+      'for (53) to dominate it',
     ],
     checks: [
+      [
+        'peaks at [1,600] to [3,400] Wb²/s² on step with an exact model, from 15 ms on, over seeds 1–10',
+        { range: 50, seeds: SEEDS },
+        (m, seed) => disturbancePeaks(onSeed(STEP, seed)).d4,
+      ],
       [
         'tens of kilovolts',
         'claim',

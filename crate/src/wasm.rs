@@ -181,6 +181,19 @@ impl Simulation {
             .collect())
     }
 
+    /// The unknown terms d̃2, d̃4 of steps 2 and 4 evaluated from the simulated truth over t in
+    /// [t0, t1], as one M4 envelope in `buckets` buckets: `Float64Array`s [t, d̃2, d̃4].
+    pub fn disturbances(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
+        let cols = self
+            .inner
+            .disturbances(t0, t1, buckets as usize)
+            .map_err(js_error)?;
+        Ok(cols
+            .iter()
+            .map(|c| Float64Array::from(c.as_slice()))
+            .collect())
+    }
+
     /// Every recorded value and the Kalman gain at the recorded sample nearest to `t` (s),
     /// replayed from the checkpoint before it.
     pub fn inspect(&self, t: f64) -> Result<JsValue, JsValue> {

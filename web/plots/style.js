@@ -43,6 +43,8 @@ export const STYLE = {
   p_omega: { stroke: '#8c564b' },
   lyapunov: { stroke: '#d62728' },
   lyapunov_bound: BAND,
+  d2_tilde: { stroke: '#d62728' },
+  d4_tilde: { stroke: '#d62728' },
   load_hat: { stroke: '#ff7f0e' },
   load: { stroke: '#1f77b4' },
   load_band: BAND,

@@ -13,7 +13,11 @@ export function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
     for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6].filter(Boolean)) {
-      const constants = plot.nisBand ? [['2.5 % quantile'], ['97.5 % quantile']] : [];
+      const constants = plot.nisBand
+        ? [['2.5 % quantile'], ['97.5 % quantile']]
+        : plot.bound
+          ? [[`+${plot.bound}`], [`−${plot.bound}`]]
+          : [];
       defs.push({
         ...plot,
         id: `${s.id}-${defs.length}`,

@@ -169,6 +169,9 @@ export const SECTIONS = [
       'The robust term v2s2 = −h2²z2/(4ε2) (38) dominates d̃2 if h2 bounds |d̃2|. With V2 = ½(z1² + z2²) (39), V̇2 = −k1z1² − k2z2² + z2(v2s2 + d̃2) ≤ −k1z1² − k2z2² + ε2 (40). No finite h2 does this for a d̃2 that grows without bound: once |d̃2| passes h2, z2(v2s2 + d̃2) can exceed ε2.',
       'Differentiating z2 also gives −(a7 + a8)·z2, the motor’s own damping; (32) as printed drops it, and the k2 = a7 + a8 + k2s1 of (36) counts it.',
     ],
+    shows: [
+      'The plot below evaluates d̃2 from the simulated truth: the motor’s actual ż2 less the terms the controller knows, with the true currents in place of the measured ones. It is evaluated for the five-state EKF without the delay compensation; for an observer with extra states (ekf.load, ekf.rr) or with delay.comp the plot stays empty. On step with an exact model, from 15 ms on, |d̃2| peaks at 3,900 to 4,700 rad/s³ over seeds 1–10, at the speed step (t = 0.05 s): h2 must be at least that for (38) to dominate it. With the motor’s J 20 % above the model’s the peak is 6,400 to 7,400 rad/s³, with it 20 % below 5,500 to 6,200; with the motor’s R_r 10 % below the model’s, 51,000 to 58,000 rad/s³. With R_r 10 % above, the flux runs off, ending at 5.5 to 13.2 Wb, and |d̃2| reaches 57 to 590 million rad/s³: no h2 sized for the exact model covers it.',
+    ],
     equations: [
       t`\dot z_2 = a_1(\dot x_3\hat x_4 - \dot x_2\hat x_5) + a_1(x_3\dot{\hat x}_4 - x_2\dot{\hat x}_5) - \dot v_1`,
       t`\dot z_2 = v_2 + \psi_2 - (a_7 + a_8)z_2 + \tilde d_2\quad (32),\qquad v_2 = b\,a_1(\hat x_4u_2 - \hat x_5u_1)`,
@@ -190,6 +193,12 @@ export const SECTIONS = [
         ['v2s', 'v2s feedback'],
         ['z2', 'z2 (rad/s², right)', 'y2'],
       ],
+    },
+    plot2: {
+      title: 'Step 2: d̃2 evaluated from the simulated truth, against ±h2',
+      unit: 'rad/s³',
+      series: [['d2_tilde', 'd̃2']],
+      bound: 'h2',
     },
     knobs: ['k2', 'robust', 'eps2', 'h2'],
   },
@@ -233,6 +242,7 @@ export const SECTIONS = [
       'Choose v4 = −ψ4 − z3 − k4·z4 + v4s2 (49)–(51): the −z3 cancels the cross term z3z4 of V̇3, and (52) follows. v2 and v4 together fix both voltages through the decoupling matrix (54), invertible while the estimated flux is not zero (55). The voltage limit then acts: the paper’s ±400 V box clips each component, while the circle and the inverter’s hexagon (vlimit) scale the whole vector down, keeping its direction. While it acts, the designed error dynamics no longer hold.',
     ],
     shows: [
+      '|d̃4|, evaluated from the simulated truth as d̃2 is, peaks at 1,600 to 3,400 Wb²/s² on step with an exact model, from 15 ms on, over seeds 1–10; h4 must be at least that for (53) to dominate it.',
       'In the first milliseconds the start-up transient commands tens of kilovolts, 11 to 32 kV at its peak on step and 34 to 166 kV on rr-mismatch over seeds 1–10, and on rr-mismatch it stays beyond the limit for the first 10 to 19 ms; the limit clips it. The plots fit their y-axes to the run after that transient; untick “Fit y-axes after the start-up transient” above the plots to see it.',
     ],
     equations: [
@@ -254,6 +264,12 @@ export const SECTIONS = [
         ['u_a', 'u_sa applied (V)'],
         ['z4', 'z4 (Wb²/s, right)', 'y2'],
       ],
+    },
+    plot2: {
+      title: 'Step 4: d̃4 evaluated from the simulated truth, against ±h4',
+      unit: 'Wb²/s²',
+      series: [['d4_tilde', 'd̃4']],
+      bound: 'h4',
     },
     knobs: ['k4', 'robust', 'eps4', 'h4', 'vmax'],
   },

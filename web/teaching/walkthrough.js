@@ -37,6 +37,7 @@ export class Walkthrough {
     document.addEventListener('focusin', remember, true);
     this.sectionDivs = {};
     this.nisBand = [0, 0];
+    this.info = null; // the core's description of the scenario shown
     this.stale = false; // the plots wait for the view of the last run
     this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
     this.opened = false; // whether the walkthrough has been shown
@@ -51,12 +52,19 @@ export class Walkthrough {
       onPick,
       framing,
       height: 220,
-      constants: (plot) => (plot.nisBand ? this.nisBand : []),
+      constants: (plot) => (plot.nisBand ? this.nisBand : plot.bound ? this.bound(plot.bound) : []),
     });
+  }
+
+  /** ±`key` (h2 or h4) of the scenario described last: the bound the robust term assumes. */
+  bound(key) {
+    const h = Number(this.info?.fields.find((f) => f.key === key)?.value ?? 0);
+    return [h, -h];
   }
 
   /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
   describe(info) {
+    this.info = info;
     const ifoc = info.fields.find((f) => f.key === 'controller')?.value === 'ifoc';
     this.ifoc = ifoc;
     ifocNote(this.container, ifoc);

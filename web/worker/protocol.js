@@ -13,7 +13,9 @@ export {};
 /**
  * The samples of one plot over a window: its times and, by column name, the recorded values
  * (an M4 envelope: every point a recorded sample at its own time). The column
- * 'lyapunov_bound' is the bound (59) evaluated by the core at the plot's times.
+ * 'lyapunov_bound' is the bound (59) evaluated by the core at the plot's times; 'd2_tilde' and
+ * 'd4_tilde', the unknown terms of steps 2 and 4 evaluated from the simulated truth, come alone
+ * in their plot, on the times of their own envelope (none where the core does not evaluate them).
  * @typedef {{t: Float64Array, columns: Record<string, Float64Array>}} PlotView
  */
 

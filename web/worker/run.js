@@ -10,7 +10,11 @@ import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './r
 // of a CSV that can reach 1.3 GB, past what one JS string can hold.
 const CSV_ROWS = 20_000;
 
+// Series that are not recorded columns: the bound (59), evaluated at the plot's times, and the
+// unknown terms d̃2, d̃4 of steps 2 and 4, evaluated from the simulated truth by a replay.
 const BOUND = 'lyapunov_bound';
+const DISTURBANCES = ['d2_tilde', 'd4_tilde'];
+const derived = (/** @type {string} */ c) => c === BOUND || DISTURBANCES.includes(c);
 
 /** @typedef {{id: number, sim: Simulation, cancelled: boolean}} Held */
 
@@ -33,7 +37,11 @@ export const heldSim = () => current?.sim ?? null;
  * The recorded columns of each plot, in the order of `groups`.
  * @param {P.Groups} groups
  */
-const recordedColumns = (groups) => Object.values(groups).map((names) => names.filter((c) => c !== BOUND));
+const recordedColumns = (groups) =>
+  Object.values(groups).map((names) =>
+    // A plot of d̃2, d̃4 asks for the times alone, for when the core does not evaluate them.
+    names.some((c) => DISTURBANCES.includes(c)) ? ['t'] : names.filter((c) => !derived(c)),
+  );
 
 /**
  * One view of the plots `groups`: a single pass of the core over the window (a replay, or the
@@ -50,11 +58,26 @@ function view(run, groups, t0, t1, buckets) {
   /** @type {Record<string, P.PlotView>} */
   const plots = {};
   Object.entries(groups).forEach(([id, names], g) => {
+    // A plot of d̃2, d̃4 shows them alone, on the times of their own envelope.
+    if (names.some((c) => DISTURBANCES.includes(c))) {
+      let cols;
+      try {
+        cols = run.sim.disturbances(t0, t1, buckets);
+      } catch (e) {
+        if (trapped(e)) throw e;
+        // Not evaluated for this scenario (an observer with extra states, the delay
+        // compensation; the walkthrough says so): no sample at the window's times.
+        const t = all[g][0];
+        cols = [t, new Float64Array(t.length).fill(NaN), new Float64Array(t.length).fill(NaN)];
+      }
+      plots[id] = { t: cols[0], columns: Object.fromEntries(DISTURBANCES.map((c, i) => [c, cols[i + 1]])) };
+      return;
+    }
     const cols = all[g];
     /** @type {Record<string, Float64Array>} */
     const columns = {};
     names
-      .filter((c) => c !== BOUND)
+      .filter((c) => !derived(c))
       .forEach((name, i) => {
         columns[name] = cols[i + 1];
       });

@@ -152,6 +152,16 @@ impl Backstepping {
         Backstepping { model, gains }
     }
 
+    /// The lumped parameters of the model the controller assumes.
+    pub fn model(&self) -> &Lumped {
+        &self.model
+    }
+
+    /// The controller's gains.
+    pub fn gains(&self) -> &Gains {
+        &self.gains
+    }
+
     /// Computes every term and the voltage (54) for one sample, with the model's parameters.
     // Inlined into the 20 kHz loop: its terms are not copied out through memory each sample, and
     // the one only a recorded row reads (V) is left out of the samples not recorded.

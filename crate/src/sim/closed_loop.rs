@@ -4,7 +4,9 @@
 //! observer and the controller get the measured currents and the applied voltages (or, with the
 //! `perfect` teaching switch, the truth).
 
-use crate::control::{Adapted, Backstepping, ControlError, ControlInput, Ifoc, RefSample, Terms};
+use crate::control::{
+    self, Adapted, Backstepping, ControlError, ControlInput, Ifoc, RefSample, Terms,
+};
 use crate::inverter::{self, Limit};
 use crate::model::{self, Input, State};
 use crate::observer::{Estimate, Filter};
@@ -237,6 +239,54 @@ impl Loop {
             k: 0,
         };
         Ok((lp, state))
+    }
+
+    /// Why d̃2 and d̃4 cannot be evaluated for this run's controller, if they cannot: they are
+    /// the backstepping's unknown terms for the five-state observer's posterior estimate.
+    pub(super) fn disturbances_refused(&self) -> Option<&'static str> {
+        let s = &self.scenario;
+        if s.ekf.load || s.ekf.rr {
+            Some("d̃2 and d̃4 are evaluated for the five-state EKF: not with ekf.load or ekf.rr")
+        } else if s.drive.delay && s.drive.delay_comp {
+            Some("d̃2 and d̃4 are evaluated for the posterior estimate: not with delay.comp")
+        } else {
+            None
+        }
+    }
+
+    /// [d̃2, d̃4] at the sample `st` has just run and recorded as `row` (see
+    /// [`crate::control::disturbances`]); NaN where the estimated flux is zero.
+    pub(super) fn disturbances_at(&self, st: &LoopState, row: &Row) -> [f64; 2] {
+        let s = &self.scenario;
+        let l = if s.perfect {
+            [[0.0; 2]; 5]
+        } else {
+            with_filter!(&st.ekf, f => f.gain()).map(|r| r.map(|k| k * self.rate))
+        };
+        let x = [row.omega, row.i_sa, row.i_sb, row.phi_ra, row.phi_rb];
+        // The perfect observer gives the controller the true state.
+        let x_hat = if s.perfect {
+            x
+        } else {
+            [
+                row.omega_hat,
+                row.i_sa_hat,
+                row.i_sb_hat,
+                row.phi_ra_hat,
+                row.phi_rb_hat,
+            ]
+        };
+        let sample = control::Sample {
+            plant: &self.plant,
+            x,
+            x_hat,
+            u: [row.u_a, row.u_b],
+            l,
+            extra_load: self.load_step(row.t) / self.plant.j,
+            speed_ref: s.reference.sample(row.t),
+            psi_d: s.psi_d,
+        };
+        control::disturbances(&self.controller, &sample).unwrap_or([f64::NAN; 2])
     }
 
     /// Runs samples `st.k..end`, giving `sink` the rows it wants; stops at the first failure.

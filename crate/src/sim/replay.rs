@@ -119,6 +119,30 @@ impl Simulation {
         Ok(overview.finish())
     }
 
+    /// The unknown terms d̃2 and d̃4 of steps 2 and 4 over the rows with t in [t0, t1], evaluated
+    /// from the simulated truth at each sample (see [`crate::control::disturbances`]), as one M4
+    /// envelope [t, d̃2, d̃4] in `buckets` buckets: a replay of the window. Errs for a run that
+    /// keeps its rows (no replay) or a controller they are not evaluated for.
+    pub fn disturbances(&self, t0: f64, t1: f64, buckets: usize) -> Result<Vec<Vec<f64>>, String> {
+        if let Some(why) = self.lp.disturbances_refused() {
+            return Err(why.to_string());
+        }
+        let Recording::Trace(_) = &self.recording else {
+            return Err("d̃2 and d̃4 are evaluated by a replay of a traced run".to_string());
+        };
+        let (start, end) = self.window(t0, t1);
+        let mut envelope = M4::new(vec![vec![0, 1]], 2, start, end - start, buckets);
+        if start < end {
+            let mut cursor = self.cursor(start);
+            for i in start..end {
+                let row = cursor.next_row();
+                let [d2, d4] = self.lp.disturbances_at(&cursor.state, &row);
+                envelope.push(i, &[row.t, d2, d4]);
+            }
+        }
+        Ok(envelope.finish().pop().expect("one group"))
+    }
+
     /// Column `name` of this run and of `others` (recorded at the same sampling period), then the
     /// differences this − other, over their common rows with t in [t0, t1], as one M4 envelope
     /// [t, this, others..., differences...]. Errs for an unknown column.
