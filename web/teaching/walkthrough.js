@@ -1,4 +1,4 @@
-// The design walkthrough: for each of the seven sections its prose, its equations (KaTeX), its
+// The design walkthrough: for each of the eight sections its prose, its equations (KaTeX), its
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
 // Every number shown here comes from the core (through the worker); the page only formats it.
 import { Plots } from '../plots/plots.js';
