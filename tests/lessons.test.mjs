@@ -1967,6 +1967,8 @@ const SECTION_SPECS = {
     givens: [
       'the general form (4)',
       'the model (2)',
+      'the prior residual y_k − Cx̂_{k|k−1} (15)',
+      '(I − CK_k)(y_k − Cx̂_{k|k−1})',
       '(5)',
       'Subtracting (4) from (2)',
       'in step 2 (ż2 holds',
@@ -2009,12 +2011,13 @@ const SECTION_SPECS = {
       'is (31)',
       '(32) follows',
       'only through d̃2 (33)',
-      'with a projection (8)',
+      'with a projection (7)–(9)',
       'for (38) to dominate it',
       'v2 = v2a + v2s (34)',
       'v2s = −k2s1·z2 + v2s2 (36)',
       '(38) dominates',
-      'V2 = ½(z1² + z2²) (39)',
+      'V_s2 = ½(z1² + z2²) (39)',
+      'x̂̇ is no longer (4), nor ψ2–ψ4',
       '+ ε2 (40)',
       'Printed (35)',
     ],
@@ -2072,6 +2075,10 @@ const SECTION_SPECS = {
       'step 4 cancels',
       'the next error z4 (44)',
       '(42) subtracts ψ_d',
+      'read literally is 0.5 Wb (0.25 Wb²)',
+      'state “ϕ_d = 0.5” as',
+      'as (42) uses it',
+      'initial flux [0.5, 0.5]',
     ],
     checks: [
       [
@@ -2113,7 +2120,7 @@ const SECTION_SPECS = {
   step4: {
     givens: [
       'Step 4 drives',
-      'Differentiate ż3 of (43)',
+      '(the first line of step 3), not in the form (43)',
       'the printed (47) holds with L̇ = 0',
       '2(l41·x̂4 + l51·x̂5) and 2(l42·x̂4 + l52·x̂5)',
       '(section 3)',
@@ -2124,7 +2131,7 @@ const SECTION_SPECS = {
       'v4 = 2a10·b(x̂4·u1 + x̂5·u2)',
       'the decoupling matrix (54)',
       'not zero (55)',
-      'the paper’s ±400 V box',
+      'the paper gives only a 400 V limit; the box (vlimit=box) clips each component to ±400 V',
       'Printed (48)',
       'for (53) to dominate it',
     ],
@@ -2165,10 +2172,11 @@ const SECTION_SPECS = {
       'sine200 with vmax=100000',
       'z4²) (58)',
       '+ z4(v4s2 + d̃4) (60)',
-      'Assumption 4.2',
+      'h2 = δ_d2 of (38), the bound the paper derives for d̃2 from Assumption 4.2’s',
       'h2²z2²/(4ε2)',
       'Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V',
       'integrating from 0 to t gives (59)',
+      'differ too: (59) holds',
     ],
     checks: [
       [

@@ -112,9 +112,9 @@ export const SECTIONS = [
     title: '3. From the observer to the controller: (4) and (5)',
     prose: [
       'The controller never sees the motor’s state, only the observer’s estimate x̂ and the measured currents x2, x3. Write the estimation error x̃ = x − x̂. Two of its components are measured: the current residuals x̃2 = x2 − x̂2 and x̃3 = x3 − x̂3. Three are not: the speed error x̃1 and the flux errors x̃4, x̃5.',
-      'The paper designs the controller against an observer of the general form (4): the model (2) copied with the estimates, plus an injection si_i = l_i1·x̃2 + l_i2·x̃3 (5), a correction that pulls each estimate by the measured residuals. The EKF is of this form: its gain K_k divided by Ts is the observer gain L = K_k/Ts, and the residuals the controller uses are the posterior ones, y_k − Cx̂_{k|k}, after the update of sample k.',
+      'The paper designs the controller against an observer of the general form (4): the model (2) copied with the estimates, plus an injection si_i = l_i1·x̃2 + l_i2·x̃3 (5), a correction that pulls each estimate by the measured residuals. Read as a forward-Euler step, the EKF’s update has this form with L = K_k/Ts and the prior residual y_k − Cx̂_{k|k−1} (15). The controller here uses the posterior residual y_k − Cx̂_{k|k} = (I − CK_k)(y_k − Cx̂_{k|k−1}), which fits x̃ = x − x̂ for the posterior x̂_{k|k} it uses; the two agree only while CK_k is small.',
       'Subtracting (4) from (2) gives the error dynamics below. The controller differentiates the measured residuals (they are in v1 and in ψ3), and their derivatives hold the unmeasured x̃1, x̃4, x̃5. Each such derivative is split in two: the nominal residual dynamics, what ẋ̃2 and ẋ̃3 would be with x̃1 = x̃4 = x̃5 = 0, which the controller computes, and the rest, which it cannot. The design also takes L as constant: L̇ is neglected everywhere below.',
-      'That is the integrated design the paper is named for: the observer’s error dynamics are inside the controller’s design, and the unknown terms appear only where a measured current or a residual is differentiated, in step 2 (ż2 holds ẋ2, ẋ3 and v̇1) and in step 4 (ż4 holds ẋ2, ẋ3 and the derivative of the injections). Steps 1 and 3 have none. There they are collected as d̃2 and d̃4 and treated as bounded disturbances.',
+      'That is the integrated design the paper is named for: the observer’s error dynamics are inside the controller’s design, and the unknown terms appear only where a measured current or a residual is differentiated, in step 2 (ż2 holds ẋ2, ẋ3 and v̇1) and in step 4 (ż4 holds the rates of the injections si4, si5). Steps 1 and 3 have none. There they are collected as d̃2 and d̃4 and treated as bounded disturbances.',
     ],
     equations: [
       t`\dot{\hat x}_1 = a_1(x_3\hat x_4 - x_2\hat x_5) - \hat a_2 - a_3\hat x_1 + s_{i1},\qquad \dot{\hat x}_2 = a_5\hat x_4 + a_6\hat x_1\hat x_5 - a_7\hat x_2 + bu_1 + s_{i2}\qquad (4)`,
@@ -164,9 +164,9 @@ export const SECTIONS = [
     title: '5. Step 2: the torque loop',
     prose: [
       'Step 2 makes the torque term follow v1 by driving z2 to zero, and here the voltages appear for the first time. Differentiate (24): ẋ2 and ẋ3 bring bu1 and bu2, so v2 = b·a1(x̂4·u2 − x̂5·u1) is the input; x̂̇4, x̂̇5 are those of (4); and −v̇1 is (31). Group what the controller knows into ψ2, and write the torque term as z2 + v1: (32) follows.',
-      'ψ2 collects everything known: the flux and current dynamics, the injections si4, si5 and the known part of v̇1. The unmeasured errors x̃1, x̃4, x̃5 enter only through d̃2 (33): linear in them, with coefficients built from x̂, x and L, so bounded while those are. The paper keeps x̂ bounded with a projection (8); the EKF here has none, so nothing but the run itself bounds x̂.',
+      'ψ2 collects everything known: the flux and current dynamics, the injections si4, si5 and the known part of v̇1. The unmeasured errors x̃1, x̃4, x̃5 enter only through d̃2 (33): linear in them, with coefficients built from x̂, x and L, so bounded while x̂, x, L and x̃ are. The paper keeps x̂ bounded with a projection (7)–(9); that bounds x̂, not x̃, and while the projection acts x̂̇ is no longer (4), nor ψ2–ψ4 exact. The EKF here has no projection: nothing but the run itself bounds x̂.',
       'Choose v2 = v2a + v2s (34): v2a = −ψ2 − z1 cancels the known terms and the cross term z1z2 of V̇1; v2s = −k2s1·z2 + v2s2 (36) adds the feedback, with k2 = a7 + a8 + k2s1 since the motor supplies the damping a7 + a8 itself. For the paper’s motor a7 + a8 = 232.7 /s, so k2s1 = 967.3 /s when k2 = 1200 /s.',
-      'The robust term v2s2 = −h2²z2/(4ε2) (38) dominates d̃2 if h2 bounds |d̃2|. With V2 = ½(z1² + z2²) (39), V̇2 = −k1z1² − k2z2² + z2(v2s2 + d̃2) ≤ −k1z1² − k2z2² + ε2 (40). No finite h2 does this for a d̃2 that grows without bound: once |d̃2| passes h2, z2(v2s2 + d̃2) can exceed ε2.',
+      'The robust term v2s2 = −h2²z2/(4ε2) (38) dominates d̃2 if h2 bounds |d̃2|. With V_s2 = ½(z1² + z2²) (39), V̇_s2 = −k1z1² − k2z2² + z2(v2s2 + d̃2) ≤ −k1z1² − k2z2² + ε2 (40). No finite h2 does this for a d̃2 that grows without bound: once |d̃2| passes h2, z2(v2s2 + d̃2) can exceed ε2.',
       'Differentiating z2 also gives −(a7 + a8)·z2, the motor’s own damping; (32) as printed drops it, and the k2 = a7 + a8 + k2s1 of (36) counts it.',
     ],
     shows: [
@@ -206,7 +206,7 @@ export const SECTIONS = [
     id: 'step3',
     title: '6. Step 3: the flux outer loop',
     prose: [
-      'Step 3 regulates the estimated flux modulus squared: z3 = x̂4² + x̂5² − ψ_d (42). Its derivative needs only (4): ż3 = 2x̂4·x̂̇4 + 2x̂5·x̂̇5, in which the a9 terms cancel. Writing x̂2 = x2 − x̃2 and x̂3 = x3 − x̃3 separates the virtual control 2a10(x2·x̂4 + x3·x̂5), the part of ż3 the stator currents drive, from ψ3 (43).',
+      'Step 3 regulates the estimated flux modulus squared: z3 = x̂4² + x̂5² − ψ_d (42). Its derivative needs only (4): ż3 = 2x̂4·x̂̇4 + 2x̂5·x̂̇5 − ψ̇_d, in which the a9 terms cancel, written in the estimates alone below. Writing x̂2 = x2 − x̃2 and x̂3 = x3 − x̃3 separates the virtual control 2a10(x2·x̂4 + x3·x̂5), the part of ż3 the stator currents drive, from ψ3 (43).',
       'ψ3 depends only on estimates and measured residuals, so Step 3 has no unknown term at all: with v3 = −ψ3 − k3·z3 (45), ż3 = −k3·z3 + z4 (46) holds exactly in continuous time, for the observer’s own flux estimate. Its Lyapunov function is V3 = ½z3², with V̇3 = −k3z3² + z3z4; step 4 cancels the cross term.',
       'Since v3 = −ψ3 − k3·z3, the next error z4 (44) is z4 = ż3 + k3·z3: the rate at which z3 fails to decay at k3.',
     ],
@@ -214,12 +214,13 @@ export const SECTIONS = [
       'The sampled loop meets ż3 = −k3·z3 + z4 only approximately, and the measurement noise enters through the innovations: on step with an exact model, from 15 ms on (after the start-up), the recorded z3 misses it by 71 to 73 % of the RMS of ż3 over seeds 1–10, by 9.3 % without noise (noise=0) and by 2.7 % with the perfect observer (perfect=1), whose miss halves with Ts. The z3 plot shows the estimate’s error, not the motor’s.',
     ],
     equations: [
-      t`z_3 = \hat x_4^2 + \hat x_5^2 - \psi_d\quad (42),\qquad \dot z_3 = 2\hat x_4\dot{\hat x}_4 + 2\hat x_5\dot{\hat x}_5 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) + \psi_3\quad (43)`,
+      t`z_3 = \hat x_4^2 + \hat x_5^2 - \psi_d\quad (42),\qquad \dot z_3 = 2\hat x_4\dot{\hat x}_4 + 2\hat x_5\dot{\hat x}_5 - \dot\psi_d = -2a_8(\hat x_4^2 + \hat x_5^2) + 2a_{10}(\hat x_2\hat x_4 + \hat x_3\hat x_5) + 2\hat x_4s_{i4} + 2\hat x_5s_{i5} - \dot\psi_d`,
+      t`\dot z_3 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) + \psi_3\quad (43)`,
       t`\psi_3 = -2a_8(\hat x_4^2 + \hat x_5^2) - 2a_{10}(\tilde x_2\hat x_4 + \tilde x_3\hat x_5) + 2\hat x_4s_{i4} + 2\hat x_5s_{i5} - \dot\psi_d`,
       t`z_4 = 2a_{10}(x_2\hat x_4 + x_3\hat x_5) - v_3\quad (44),\qquad v_3 = v_{3a} + v_{3s},\quad v_{3a} = -\psi_3,\quad v_{3s} = -k_3z_3\quad (45)`,
       t`\dot z_3 = -k_3z_3 + z_4\quad (46),\qquad z_4 = \dot z_3 + k_3z_3,\qquad V_3 = \tfrac12z_3^2,\quad \dot V_3 = -k_3z_3^2 + z_3z_4`,
     ],
-    note: 'The problem statement asks x4² + x5² to track ψ_d², but (42) subtracts ψ_d: ψ_d here is the target of the squared modulus, in Wb². The scenario’s psi_d is that target: psi_d = 0.5 Wb² asks for a flux modulus |φ| = 0.707 Wb.',
+    note: 'The problem statement asks x4² + x5² to track ψ_d², but (42) subtracts ψ_d: ψ_d here is the target of the squared modulus, in Wb². The scenario’s psi_d is that target: psi_d = 0.5 Wb² asks for a flux modulus |φ| = 0.707 Wb. The paper’s simulations state “ϕ_d = 0.5” as the desired flux modulus, which read literally is 0.5 Wb (0.25 Wb²); the presets take it as the squared modulus, as (42) uses it, the square of the paper’s initial flux [0.5, 0.5].',
     plot: {
       title: 'Step 3: z3 and v3 = v3a + v3s',
       unit: 'Wb²/s',
@@ -237,9 +238,9 @@ export const SECTIONS = [
     id: 'step4',
     title: '7. Step 4: the flux inner loop and the voltages',
     prose: [
-      'Step 4 drives z4 to zero; its input v4 = 2a10·b(x̂4·u1 + x̂5·u2) is the second combination of the voltages. Since z4 = ż3 + k3·z3, ż4 = z̈3 + k3·ż3 = z̈3 + k3(−k3z3 + z4). Differentiate ż3 of (43) once more: the x̂̇4, x̂̇5 terms gather as below, x̂̇2 and x̂̇3 bring the voltages (v4) and the current dynamics, and the injections’ rates l41·ẋ̃2 + l42·ẋ̃3 and l51·ẋ̃2 + l52·ẋ̃3 bring the residuals’ derivatives.',
+      'Step 4 drives z4 to zero; its input v4 = 2a10·b(x̂4·u1 + x̂5·u2) is the second combination of the voltages. Since z4 = ż3 + k3·z3, ż4 = z̈3 + k3·ż3 = z̈3 + k3(−k3z3 + z4). Differentiate ż3 once more in its form in the estimates alone (the first line of step 3), not in the form (43), whose measured currents would bring unknown terms that cancel: the x̂̇4, x̂̇5 terms gather as below, x̂̇2 and x̂̇3 bring the voltages (v4) and the current dynamics, and the injections’ rates l41·ẋ̃2 + l42·ẋ̃3 and l51·ẋ̃2 + l52·ẋ̃3 bring the residuals’ derivatives.',
       'ψ4 takes the nominal residual dynamics for ẋ̃2 and ẋ̃3 (section 3), with L̇ neglected: the printed (47) holds with L̇ = 0. What the nominal dynamics leave out, the x̃1, x̃4, x̃5 terms of ẋ̃2 and ẋ̃3 weighted by 2(l41·x̂4 + l51·x̂5) and 2(l42·x̂4 + l52·x̂5), is d̃4.',
-      'Choose v4 = −ψ4 − z3 − k4·z4 + v4s2 (49)–(51): the −z3 cancels the cross term z3z4 of V̇3, and (52) follows. v2 and v4 together fix both voltages through the decoupling matrix (54), invertible while the estimated flux is not zero (55). The voltage limit then acts: the paper’s ±400 V box clips each component, while the circle and the inverter’s hexagon (vlimit) scale the whole vector down, keeping its direction. While it acts, the designed error dynamics no longer hold.',
+      'Choose v4 = −ψ4 − z3 − k4·z4 + v4s2 (49)–(51): the −z3 cancels the cross term z3z4 of V̇3, and (52) follows. v2 and v4 together fix both voltages through the decoupling matrix (54), invertible while the estimated flux is not zero (55). The voltage limit then acts: the paper gives only a 400 V limit; the box (vlimit=box) clips each component to ±400 V, while the circle and the inverter’s hexagon (vlimit) scale the whole vector down, keeping its direction. While it acts, the designed error dynamics no longer hold.',
     ],
     shows: [
       '|d̃4|, evaluated from the simulated truth as d̃2 is, peaks at 1,600 to 3,400 Wb²/s² on step with an exact model, from 15 ms on, over seeds 1–10; h4 must be at least that for (53) to dominate it.',
@@ -278,9 +279,9 @@ export const SECTIONS = [
     title: '8. Stability: Theorem 4.6',
     prose: [
       'With V = ½(z1² + z2² + z3² + z4²) (58), the four designed error dynamics give V̇ = −k1z1² − k2z2² − k3z3² − k4z4² + z2(v2s2 + d̃2) + z4(v4s2 + d̃4) (60). The cross terms ±z1z2 and ±z3z4 cancel: that is what the −z1 in v2a and the −z3 in v4a are for.',
-      'Three lines finish the proof. First, if |d̃2| ≤ h2 (the paper’s Assumption 4.2), Young’s inequality bounds the robust pair: z2(v2s2 + d̃2) ≤ h2|z2| − h2²z2²/(4ε2) ≤ ε2, since the difference is a perfect square. The same holds for z4 with h4 and ε4. Second, Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V = λV. So V̇ ≤ −λV + ε with ε = ε2 + ε4. Third, the comparison step: e^(λt)·V has the rate e^(λt)·(V̇ + λV) ≤ ε·e^(λt); integrating from 0 to t gives (59).',
-      'V adds squares of different units (z1 in rad/s, z2 in rad/s², z3 in Wb², z4 in Wb²/s), and ε2, ε4 carry different units too: the bound is a sum of unlike terms, meaningful term by term. The plot compares the recorded V with that bound for this run.',
-      'The theorem bounds the errors z_i of the estimates, not the motor: the true speed error is |x1 − ω_d| ≤ |z1| + |x̃1|. It assumes the estimation errors stay small enough for d̃2, d̃4 to be bounded, and says nothing about the true motor when they are not.',
+      'Three lines finish the proof. First, if |d̃2| ≤ h2 (h2 = δ_d2 of (38), the bound the paper derives for d̃2 from Assumption 4.2’s bounds on x̃), Young’s inequality bounds the robust pair: z2(v2s2 + d̃2) ≤ h2|z2| − h2²z2²/(4ε2) ≤ ε2, since the difference is a perfect square. The same holds for z4 with h4 and ε4. Second, Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V = λV. So V̇ ≤ −λV + ε with ε = ε2 + ε4. Third, the comparison step: e^(λt)·V has the rate e^(λt)·(V̇ + λV) ≤ ε·e^(λt); integrating from 0 to t gives (59).',
+      'V adds squares of different units (z1 in rad/s, z2 in rad/s², z3 in Wb², z4 in Wb²/s), and ε2 (rad²/s⁵) and ε4 (Wb⁴/s³) differ too: (59) holds for the SI numbers, as it would for any positive weighting of the z_i² with ε rescaled, but how tight it is depends on that choice. It bounds the sum, and each ½z_i² only through the sum. The plot compares the recorded V with that bound for this run.',
+      'The theorem bounds the errors z_i of the estimates, not the motor: the true speed error is |x1 − ω_d| ≤ |z1| + |x̃1|. It assumes |d̃2| ≤ h2 and |d̃4| ≤ h4 along the whole run; those bounds themselves presume x, x̂ and L bounded, which is what the theorem concludes, and the neglected L̇ terms are in neither ψ nor d̃. It says nothing about the true motor when the assumption fails.',
     ],
     shows: [
       'With the EKF’s 10 % initial error only the voltage limit holds the start-up: without it (sine200 with vmax=100000) the run ends 6,100 to 6,500 rad/s off, on either side, with the flux at 8.7 to 9.3 Wb over seeds 1–10, and the page reports it as a run that ran away. From a correct initial estimate (init_err=0) the same run tracks to 0.013 to 0.014 rad/s RMS with an exact model, but with the motor’s R_r 10 % above the model’s it fails even so.',
