@@ -39,6 +39,18 @@ export function sectionElement(s, onCompare) {
   const div = el('section', { className: 'step', id: `section-${s.id}` });
   div.append(el('h2', { textContent: s.title }));
   for (const p of s.prose) div.append(el('p', { textContent: p }));
+  if (s.figure)
+    div.append(
+      el('figure', { className: 'diagram' }, [
+        scrollBox(
+          el('div', { className: 'table-scroll' }, [
+            el('img', { src: s.figure.src, alt: s.figure.alt, loading: 'lazy', width: 760, height: 300 }),
+          ]),
+          `Diagram of section ${s.title}`,
+        ),
+        el('figcaption', { textContent: s.figure.caption }),
+      ]),
+    );
   s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
   if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
   // The numbers a run gives, apart from the derivation they illustrate.

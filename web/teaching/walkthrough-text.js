@@ -123,6 +123,12 @@ export const SECTIONS = [
       t`\dot{\tilde x}_2 = \underbrace{-(a_7 + l_{21})\tilde x_2 - l_{22}\tilde x_3}_{\text{nominal}} + a_5\tilde x_4 + a_6(\hat x_1\tilde x_5 + x_5\tilde x_1)`,
       t`\dot{\tilde x}_3 = \underbrace{-l_{31}\tilde x_2 - (a_7 + l_{32})\tilde x_3}_{\text{nominal}} + a_5\tilde x_5 - a_6(\hat x_1\tilde x_4 + x_4\tilde x_1)`,
     ],
+    figure: {
+      src: 'structure.svg',
+      alt: 'Block diagram: the reference and the EKF’s estimate, gain and residuals go into the backstepping controller; its voltage passes the voltage limit and drives the motor; the measured currents and the applied voltage go back into the EKF.',
+      caption:
+        'The controller and the observer, as in the paper’s Fig. 1: the controller sees the motor only through the EKF’s estimate, gain and residuals, and the measured currents.',
+    },
     note: 'The paper writes si_i(x̃2, x̃3) for the injection; here si_i is its value l_i1·x̃2 + l_i2·x̃3. The letter ψ names both the flux target ψ_d and the known terms ψ2, ψ3, ψ4 of the steps below: they are unrelated.',
     knobs: [],
   },
