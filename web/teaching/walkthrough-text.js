@@ -15,7 +15,7 @@ export const SECTIONS = [
       'The torque over the inertia is a1(x3·x4 − x2·x5), in rad/s²: current crossed with flux (a1 = 3n_pM/(2JL_r) already contains 1/J, so multiply by J for N m). The load a2 + a3·x1 is the constant T0 and the friction Cf·ω over J. The lumped parameters below are computed by the core from the motor parameters in use; the plant (the simulated motor) and the model (what the EKF and controller assume) can differ.',
     ],
     equations: [
-      t`\dot x_1 = a_1(x_3x_4 - x_2x_5) - a_2 - a_3x_1`,
+      t`\dot x_1 = a_1(x_3x_4 - x_2x_5) - a_2 - a_3x_1\qquad (2)`,
       t`\dot x_2 = a_5x_4 + a_6x_1x_5 - a_7x_2 + b\,u_1,\quad \dot x_3 = a_5x_5 - a_6x_1x_4 - a_7x_3 + b\,u_2`,
       t`\dot x_4 = -a_8x_4 - a_9x_1x_5 + a_{10}x_2,\quad \dot x_5 = -a_8x_5 + a_9x_1x_4 + a_{10}x_3`,
       t`\sigma = L_s - \tfrac{M^2}{L_r},\ \alpha = \tfrac{R_r}{L_r},\ \beta = \tfrac{M}{\sigma L_r},\ a_1 = \tfrac{3n_pM}{2JL_r},\ a_5 = \alpha\beta,\ a_6 = n_p\beta,\ a_7 = \tfrac{R_s}{\sigma} + \alpha\beta M,\ a_8 = \alpha,\ a_9 = n_p,\ a_{10} = \alpha M,\ b = \tfrac1\sigma`,
@@ -43,9 +43,9 @@ export const SECTIONS = [
       'Section 3.1 names a remedy it does not build: treat slowly varying quantities as extra states. The knob ekf.load adds a2 = T_L0/J as a random walk (the controller then uses â2 and its rate, the injection l_a·(x̃2, x̃3)); ekf.rr adds the rotor resistance (the controller’s a5, a7, a8, a10 follow R̂_r). The last two plots show both estimates with their ±2σ bands from P against the truth. An extra state absorbs whatever the model lacks, right or wrong: a rotor-resistance state under an unknown load takes the load for a resistance (see the lessons).',
     ],
     equations: [
-      t`\hat x_{k|k-1} = \hat x_{k-1|k-1} + T_s f(\hat x_{k-1|k-1}, u_{k-1}),\qquad A_{k-1} = I + T_s \tfrac{\partial f}{\partial x}\Big|_{\hat x_{k-1|k-1}}`,
-      t`P_{k|k-1} = A_{k-1}P_{k-1|k-1}A_{k-1}^T + Q,\qquad \tilde y_k = y_k - C\hat x_{k|k-1},\qquad S_k = CP_{k|k-1}C^T + R`,
-      t`K_k = P_{k|k-1}C^TS_k^{-1},\qquad \hat x_{k|k} = \hat x_{k|k-1} + K_k\tilde y_k,\qquad L = K_k/T_s`,
+      t`\hat x_{k|k-1} = \hat x_{k-1|k-1} + T_s f(\hat x_{k-1|k-1}, u_{k-1})\quad (10),(13),\qquad A_{k-1} = I + T_s \tfrac{\partial f}{\partial x}\Big|_{\hat x_{k-1|k-1}}\quad (11),(12)`,
+      t`P_{k|k-1} = A_{k-1}P_{k-1|k-1}A_{k-1}^T + Q\ (14),\qquad \tilde y_k = y_k - C\hat x_{k|k-1}\ (15),\qquad S_k = CP_{k|k-1}C^T + R\ (16)`,
+      t`K_k = P_{k|k-1}C^TS_k^{-1}\ (17),\qquad \hat x_{k|k} = \hat x_{k|k-1} + K_k\tilde y_k\ (18),\qquad L = K_k/T_s\ (20)`,
       t`P_{k|k} = (I - K_kC)P_{k|k-1}(I - K_kC)^T + K_kRK_k^T\quad\text{(Joseph form of (19))}`,
     ],
     note: 'Printed (13) predicts with u_{k|k−1}; the voltage that acted over the last sample is u_{k−1}, which (10) uses and so does the filter here. The Joseph form writes the covariance update (19) as a sum of two symmetric terms, each positive semidefinite, so that rounding cannot make P lose either property.',
