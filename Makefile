@@ -20,7 +20,7 @@ wasm: setup
 # gzip copy beside each file. The core's module and glue stay in dist/pkg/ too, for the Node tests.
 dist: wasm
 	mkdir -p dist/vendor/katex/fonts
-	cp static/sw.js static/structure.svg dist/
+	cp static/structure.svg dist/
 	cp node_modules/uplot/dist/uPlot.esm.js node_modules/uplot/dist/uPlot.min.css dist/vendor/
 	cp node_modules/katex/dist/katex.mjs node_modules/katex/dist/katex.min.css dist/vendor/katex/
 	cp node_modules/uplot/dist/uPlot.d.ts dist/vendor/uPlot.esm.d.ts

@@ -11,6 +11,7 @@
 //   web/boot-HASH.js        the script that starts the worker early (web/boot.js)
 //   style-HASH.css          uPlot's stylesheet and the page's, one file
 //   index.html              static/index.html, pointing at the above
+//   sw.js                   static/sw.js, with the list of files it fetches when it installs
 //
 //   node scripts/bundle.mjs DIST
 import { createHash } from 'node:crypto';
@@ -127,7 +128,7 @@ writeFileSync(join(dist, styleName), css);
 /** `text` with `from` replaced by `to`, where `from` must occur exactly once. */
 function once(text, from, to) {
   const at = text.indexOf(from);
-  if (at < 0 || text.indexOf(from, at + 1) >= 0) throw new Error(`bundle: index.html must hold "${from}" once`);
+  if (at < 0 || text.indexOf(from, at + 1) >= 0) throw new Error(`bundle: the source must hold "${from}" once`);
   return text.slice(0, at) + to + text.slice(at + from.length);
 }
 // The bundle's static imports (shared chunks) are fetched with it, not after it has been read.
@@ -152,3 +153,20 @@ html = once(
   `<script type="module" src="web/${main.name}"></script>${preloads}`,
 );
 writeFileSync(join(dist, 'index.html'), html);
+
+// The service worker, with the list of files it fetches when it installs: every hashed file of
+// this build, KaTeX's stylesheet and fonts, and the walkthrough's diagram.
+const fonts = readdirSync(join(dist, 'vendor', 'katex', 'fonts')).map((f) => `vendor/katex/fonts/${f}`);
+const precache = [
+  ...readdirSync(out).map((f) => `web/${f}`),
+  styleName,
+  'vendor/katex/katex.min.css',
+  ...fonts,
+  'structure.svg',
+];
+const sw = once(
+  readFileSync('static/sw.js', 'utf8'),
+  'const PRECACHE = [];',
+  `const PRECACHE = ${JSON.stringify(precache)};`,
+);
+writeFileSync(join(dist, 'sw.js'), sw);

@@ -4,8 +4,32 @@
 // so a class opening hundreds of links keeps one copy of the page.
 const CACHE = 'imlab-v1';
 
-self.addEventListener('install', () => self.skipWaiting());
-self.addEventListener('activate', (event) => event.waitUntil(self.clients.claim()));
+// What the page fetches only later, if at all (the core built with its tools and the jobs, KaTeX,
+// its stylesheet and fonts, the walkthrough's diagram), with every other file named by its hash: fetched when the service
+// worker installs, so that a loaded app has them offline too. The build (scripts/bundle.mjs)
+// writes the list into the copy of this file it serves.
+const PRECACHE = [];
+
+// A file named by its content's hash (main-JRYEWMOB.js): one of an older build once not listed.
+const HASHED = /-[A-Z2-7]{8}\.[a-z0-9]+$/;
+
+self.addEventListener('install', (event) => {
+  self.skipWaiting();
+  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(PRECACHE)));
+});
+
+// Once active: controls the open pages, and drops the hashed files of older builds.
+self.addEventListener('activate', (event) =>
+  event.waitUntil(
+    (async () => {
+      await self.clients.claim();
+      const listed = new Set(PRECACHE.map((path) => new URL(path, self.location.href).href));
+      const cache = await caches.open(CACHE);
+      for (const request of await cache.keys())
+        if (HASHED.test(new URL(request.url).pathname) && !listed.has(request.url)) await cache.delete(request);
+    })(),
+  ),
+);
 
 self.addEventListener('fetch', (event) => {
   if (event.request.method !== 'GET' || !event.request.url.startsWith(self.location.origin)) return;

@@ -38,6 +38,17 @@ function listChallenges() {
   listBuiltins(client, $('challenges'));
 }
 
+/**
+ * Registers the service worker, once, after the first run is drawn: it then fetches the files the
+ * page loads later (the tools, KaTeX) without taking the network from the first plot.
+ */
+let swRegistered = false;
+function registerServiceWorker() {
+  if (swRegistered) return;
+  swRegistered = true;
+  navigator.serviceWorker?.register('sw.js');
+}
+
 // What the page's parts share; in brackets, the parts that write each field.
 const state = {
   info: null, // the core's description of the scenario in the form (settings)
@@ -143,6 +154,7 @@ const run = createRun({
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
     listChallenges();
+    registerServiceWorker();
     pins.afterRun();
     sweeps.afterRun();
     robust.afterRun();
@@ -225,4 +237,3 @@ run.setBusy(false);
 client.start();
 // While the worker loads the core, the main plots are laid out, empty.
 plots.prepare();
-navigator.serviceWorker?.register('sw.js');
