@@ -138,8 +138,17 @@ mod tests {
         }
     }
 
-    /// A random state near an operating point, its estimate off by up to `err`, and a gain.
-    fn random(rng: &mut Rng, err: f64) -> (State, State, [[f64; 2]; 5], Input, RefSample) {
+    /// A random state near an operating point, its estimate off by up to `err`, a gain, a
+    /// voltage and a reference.
+    struct Draw {
+        x: State,
+        x_hat: State,
+        l: [[f64; 2]; 5],
+        u: Input,
+        r: RefSample,
+    }
+
+    fn random(rng: &mut Rng, err: f64) -> Draw {
         let mut u = |lo: f64, hi: f64| lo + (hi - lo) * (0.5 + 0.2 * rng.normal()).clamp(0.0, 1.0);
         let x = [
             u(-50.0, 50.0),
@@ -156,7 +165,30 @@ mod tests {
             d1: u(-100.0, 100.0),
             d2: u(-1000.0, 1000.0),
         };
-        (x, x_hat, l, input, r)
+        Draw {
+            x,
+            x_hat,
+            l,
+            u: input,
+            r,
+        }
+    }
+
+    /// [d̃2, d̃4] of the paper's controller (the paper's motor as its model) at `d`, for the motor
+    /// `plant` under the unknown load `extra_load`.
+    fn evaluate(plant: &Lumped, d: &Draw, extra_load: f64) -> [f64; 2] {
+        let controller = Backstepping::new(MotorParams::PAPER.lumped().unwrap(), gains());
+        let sample = Sample {
+            plant,
+            x: d.x,
+            x_hat: d.x_hat,
+            u: d.u,
+            l: d.l,
+            extra_load,
+            speed_ref: d.r,
+            psi_d: 0.5,
+        };
+        disturbances(&controller, &sample).unwrap()
     }
 
     /// With an exact model, the evaluation from the rates is the paper's closed forms: the
@@ -164,22 +196,11 @@ mod tests {
     #[test]
     fn exact_model_gives_the_closed_forms() {
         let p = MotorParams::PAPER.lumped().unwrap();
-        let controller = Backstepping::new(p, gains());
         let mut rng = Rng::new(7);
         for _ in 0..200 {
-            let (x, x_hat, l, u, r) = random(&mut rng, 0.1);
-            let sample = Sample {
-                plant: &p,
-                x,
-                x_hat,
-                u,
-                l,
-                extra_load: 0.0,
-                speed_ref: r,
-                psi_d: 0.5,
-            };
-            let got = disturbances(&controller, &sample).unwrap();
-            let want = closed_forms(&p, &x, &x_hat, &l);
+            let d = random(&mut rng, 0.1);
+            let got = evaluate(&p, &d, 0.0);
+            let want = closed_forms(&p, &d.x, &d.x_hat, &d.l);
             for i in 0..2 {
                 let scale = 1.0 + want[i].abs();
                 assert!(
@@ -197,20 +218,7 @@ mod tests {
     #[test]
     fn perfect_estimate_and_exact_model_give_zero() {
         let p = MotorParams::PAPER.lumped().unwrap();
-        let controller = Backstepping::new(p, gains());
-        let mut rng = Rng::new(3);
-        let (x, _, l, u, r) = random(&mut rng, 0.0);
-        let sample = Sample {
-            plant: &p,
-            x,
-            x_hat: x,
-            u,
-            l,
-            extra_load: 0.0,
-            speed_ref: r,
-            psi_d: 0.5,
-        };
-        let [d2, d4] = disturbances(&controller, &sample).unwrap();
+        let [d2, d4] = evaluate(&p, &random(&mut Rng::new(3), 0.0), 0.0);
         assert!(d2.abs() < 1e-6 && d4.abs() < 1e-6, "{d2} {d4}");
     }
 
@@ -220,20 +228,7 @@ mod tests {
     #[test]
     fn an_unknown_load_enters_neither_with_a_perfect_estimate() {
         let p = MotorParams::PAPER.lumped().unwrap();
-        let controller = Backstepping::new(p, gains());
-        let mut rng = Rng::new(5);
-        let (x, _, l, u, r) = random(&mut rng, 0.0);
-        let sample = Sample {
-            plant: &p,
-            x,
-            x_hat: x,
-            u,
-            l,
-            extra_load: 25.0,
-            speed_ref: r,
-            psi_d: 0.5,
-        };
-        let [d2, d4] = disturbances(&controller, &sample).unwrap();
+        let [d2, d4] = evaluate(&p, &random(&mut Rng::new(5), 0.0), 25.0);
         assert!(d2.abs() < 1e-6 && d4.abs() < 1e-6, "{d2} {d4}");
     }
 
@@ -248,21 +243,9 @@ mod tests {
         }
         .lumped()
         .unwrap();
-        let controller = Backstepping::new(p, gains());
-        let mut rng = Rng::new(11);
-        let (x, _, l, u, r) = random(&mut rng, 0.0);
-        let sample = Sample {
-            plant: &plant,
-            x,
-            x_hat: x,
-            u,
-            l,
-            extra_load: 0.0,
-            speed_ref: r,
-            psi_d: 0.5,
-        };
-        let [d2, d4] = disturbances(&controller, &sample).unwrap();
+        let d = random(&mut Rng::new(11), 0.0);
+        let [d2, d4] = evaluate(&plant, &d, 0.0);
         assert!(d2.abs() > 1.0 && d4.abs() > 1e-3, "{d2} {d4}");
-        assert_eq!(closed_forms(&p, &x, &x, &l), [0.0, 0.0]);
+        assert_eq!(closed_forms(&p, &d.x, &d.x, &d.l), [0.0, 0.0]);
     }
 }
