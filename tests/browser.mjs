@@ -41,6 +41,27 @@ export async function newPage(browser, errors) {
   return page;
 }
 
+/**
+ * Has `page` note, on every navigation, the milliseconds from the navigation's start to the first
+ * run's plots painted or its failure (the page sets data-state then), in `window.firstPlottedMs`.
+ */
+export function markFirstPlot(page) {
+  return page.addInitScript(() => {
+    new MutationObserver((_, observer) => {
+      if (!['done', 'failed'].includes(document.body?.dataset.state)) return;
+      window.firstPlottedMs = performance.now();
+      observer.disconnect();
+    }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-state'] });
+  });
+}
+
+/** Navigates a page marked by `markFirstPlot` to `url`; resolves to its first-plot milliseconds. */
+export async function firstPlotMs(page, url, timeout = 30_000) {
+  await page.goto(url);
+  await page.waitForFunction(() => window.firstPlottedMs !== undefined, null, { timeout });
+  return page.evaluate(() => window.firstPlottedMs);
+}
+
 /** Waits until the current run has finished (done, failed, cancelled, or crashed with its worker). */
 export async function settled(page, timeout = 30_000) {
   await page.waitForFunction(

@@ -15,7 +15,7 @@ import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { execFileSync } from 'node:child_process';
 import http from 'node:http';
-import { launch } from '../browser.mjs';
+import { firstPlotMs, launch, markFirstPlot } from '../browser.mjs';
 import { staticHandler } from '../../scripts/serve.mjs';
 
 const REPS = Number(process.env.BENCH_REPS ?? 5);
@@ -92,11 +92,10 @@ async function counted(root, compressed) {
   return { server, url: `http://127.0.0.1:${server.address().port}/` };
 }
 
-/** Navigates to `url` and resolves to the milliseconds to the first plotted run. */
+/** Navigates to `url` and resolves to the milliseconds to the first plotted run, which must be done. */
 async function firstPlot(page, url) {
-  await page.goto(url);
-  await page.waitForFunction(() => window.firstPlottedMs !== undefined, null, { timeout: 120_000 });
-  const { ms, state } = await page.evaluate(() => ({ ms: window.firstPlottedMs, state: document.body.dataset.state }));
+  const ms = await firstPlotMs(page, url, 120_000);
+  const state = await page.evaluate(() => document.body.dataset.state);
   if (state !== 'done') throw new Error(`the first run ended ${state}, not done`);
   return ms;
 }
@@ -107,13 +106,7 @@ async function loads(url, profile) {
   const page = await context.newPage();
   page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
-  await page.addInitScript(() => {
-    new MutationObserver((_, observer) => {
-      if (!['done', 'failed'].includes(document.body?.dataset.state)) return;
-      window.firstPlottedMs = performance.now();
-      observer.disconnect();
-    }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-state'] });
-  });
+  await markFirstPlot(page);
   await throttle(page, profile);
   sent.length = 0;
   const first = await firstPlot(page, url);
