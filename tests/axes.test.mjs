@@ -30,7 +30,9 @@ const suite = browserSuite();
  * tick labels that repeat or do not read back as their ticks to within half the tick spacing.
  */
 const problems = (page) =>
-  page.evaluate((LOG_DECADES) => {
+  page.evaluate(async (LOG_DECADES) => {
+    // Every plot, including those not near the viewport, which a lazy set has not drawn yet.
+    await window.imlab.plots.drawAll();
     const { fit, from } = window.imlab.plots.framing();
     const found = [];
     const sets = [

@@ -180,7 +180,9 @@ test('on a phone the plots come before the settings, which show under the run ba
 test('the inspect sheet leaves the plot that was clicked in view above it, and closes from its button', () =>
   withPage('?v=1&preset=step', [390, 844], async (page) => {
     // The third plot is below the fold; the sheet must not land on it.
-    const over = page.locator('#plots .plot .u-over').nth(2);
+    // Its chart is drawn as it comes near the viewport.
+    await page.locator('#plots .plot').nth(2).scrollIntoViewIfNeeded();
+    const over = page.locator('#plots .plot').nth(2).locator('.u-over');
     await over.scrollIntoViewIfNeeded();
     await page.evaluate(() => window.scrollBy(0, -innerHeight / 2 + 200));
     await inspectAt(over, page);

@@ -96,6 +96,7 @@ const plots = new Plots(ui.plots, PLOTS, {
   sampleTime,
   framing,
   constants: (plot) => (plot.constants ? [1, -1].map((s) => s * state.info.component_limit) : []),
+  lazy: true,
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
@@ -112,6 +113,8 @@ walkthrough.onInspect = (t) => {
   plots.mark(t);
   walkthrough.plots.mark(t);
 };
+// Built after the first run, the walkthrough's knobs then follow an open challenge's locks.
+walkthrough.onBuilt = () => state.info && challenge.described(state.info);
 const plotSets = [plots, walkthrough.plots];
 const analysis = new Analysis({ scenario: () => state.info.encoded });
 
@@ -153,6 +156,7 @@ const run = createRun({
   exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
+    walkthrough.build();
     listChallenges();
     registerServiceWorker();
     pins.afterRun();
@@ -235,5 +239,6 @@ window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
 
 run.setBusy(false);
 client.start();
-// While the worker loads the core, the main plots are laid out, empty.
+settings.loadFirst();
+// While the worker loads the core, the main plots' figures are laid out, empty.
 plots.prepare();

@@ -23,12 +23,12 @@ export class Plots {
    * @param {any[]} defs the plots' definitions (plot-defs.js)
    * @param {{onWindow: (t0: number, t1: number) => void, onFull: () => void, onPick: (t: number) => void,
    *   constants?: (plot: any) => number[], framing: () => {fit: boolean, from: number}, height?: number,
-   *   sampleTime?: () => number | null}} options
+   *   sampleTime?: () => number | null, lazy?: boolean}} options
    */
   constructor(
     container,
     defs,
-    { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null },
+    { onWindow, onFull, onPick, constants = () => [], framing, height = 260, sampleTime = () => null, lazy = false },
   ) {
     this.container = container;
     this.defs = defs;
@@ -45,7 +45,19 @@ export class Plots {
     this.embedded = null;
     this.scale = 1; // text and line scale: 1, or larger in presentation mode
     this.captions = ''; // the run's figures, as the captions give them
+    /** @type {HTMLElement[]} each plot's figure, which holds its chart once drawn */
+    this.slots = [];
+    /** @type {(uPlot | null)[]} each plot's chart; null while a lazy set has not drawn it */
     this.charts = [];
+    /** @type {any} the data the charts show (the last view shown or refined), for charts drawn later */
+    this.view = null;
+    // A lazy set draws a chart when its figure comes within half a screen of the viewport: the
+    // first run draws the plots in view, not eight, and a hidden or embedded-out plot costs nothing.
+    this.observer = lazy
+      ? new IntersectionObserver((entries) => entries.forEach((e) => e.isIntersecting && this.draw(e.target)), {
+          rootMargin: '50% 0px',
+        })
+      : null;
     this.syncing = false;
     this.full = null; // [t0, t1] of the whole run
     this.window = null; // the zoom window, or null for the whole run
@@ -81,9 +93,14 @@ export class Plots {
   describe(figures) {
     this.captions = figures;
     this.defs.forEach((plot, i) => {
-      const caption = this.charts[i]?.root.parentElement.querySelector('.caption');
+      const caption = this.slots[i]?.querySelector('.caption');
       if (caption) caption.textContent = this.caption(plot);
     });
+  }
+
+  /** The charts drawn so far. */
+  drawn() {
+    return /** @type {uPlot[]} */ (this.charts.filter((c) => c !== null));
   }
 
   /** Redraws every chart with text and lines `scale` times their normal size (presentation mode). */
@@ -92,19 +109,21 @@ export class Plots {
     this.height = height;
     const width = this.width();
     this.charts = this.charts.map((c, i) => {
-      const div = c.root.parentElement;
+      if (c === null) return null;
       const data = c.data;
       c.destroy();
-      return new uPlot(chartOptions(this, this.defs[i], width), data, div);
+      return new uPlot(chartOptions(this, this.defs[i], width), data, this.slots[i]);
     });
-    if (this.window) for (const c of this.charts) c.setScale('x', { min: this.window[0], max: this.window[1] });
+    if (this.observer)
+      for (const [i, div] of this.slots.entries()) if (!this.charts[i]) div.style.minHeight = this.held();
+    if (this.window) for (const c of this.drawn()) c.setScale('x', { min: this.window[0], max: this.window[1] });
   }
 
   /** Marks the inspected time on every plot (null clears it). */
   mark(t) {
     if (t === this.marker) return;
     this.marker = t;
-    for (const c of this.charts) c.redraw(false);
+    for (const c of this.drawn()) c.redraw(false);
   }
 
   zoomed(source) {
@@ -112,7 +131,7 @@ export class Plots {
     const { min, max } = source.scales.x;
     this.window = [min, max];
     this.syncing = true;
-    for (const c of this.charts) if (c !== source) c.setScale('x', { min, max });
+    for (const c of this.drawn()) if (c !== source) c.setScale('x', { min, max });
     this.syncing = false;
     this.onWindow(min, max);
   }
@@ -133,19 +152,13 @@ export class Plots {
   }
 
   /**
-   * Creates the charts, empty, so that the first run only fills them: their first layout and the
-   * first run of uPlot's code happen while the worker loads the core.
+   * Lays out each plot's figure, empty, while the worker loads the core: a focusable figure whose
+   * caption is the text alternative of its canvas. A lazy set's figure holds the chart's height
+   * until the chart is drawn.
    */
   prepare() {
-    if (this.charts.length === 0)
-      this.create((plot) => [[], ...plot.series.map(() => []), ...(plot.constants ?? []).map(() => [])]);
-  }
-
-  /** Creates a chart for each plot, with the data `data(plot)`. */
-  create(data) {
-    const width = this.width();
+    if (this.slots.length) return;
     for (const [i, plot] of this.defs.entries()) {
-      // A focusable figure: its caption is the text alternative of the canvas.
       const div = Object.assign(document.createElement('div'), { className: 'plot', tabIndex: 0 });
       div.dataset.plot = plot.id;
       // An embed shows only the plots its link names.
@@ -159,15 +172,53 @@ export class Plots {
       div.append(caption);
       inspectByKeys(this, div, i);
       (plot.container ?? this.container).append(div);
-      this.charts.push(new uPlot(chartOptions(this, plot, width), data(plot), div));
       caption.textContent = this.caption(plot);
       div.setAttribute('aria-label', this.title(plot));
+      this.slots.push(div);
+      this.charts.push(null);
+      if (this.observer) div.style.minHeight = this.held();
     }
   }
 
+  /** The height a lazy set's figure holds for its chart until it is drawn: the canvas, title and key. */
+  held() {
+    return `${this.height + 70 * this.scale}px`;
+  }
+
   /**
-   * Draws a whole run, every chart in this task: an envelope has at most four points per pixel
-   * column, so a chart costs the same for any run length.
+   * Draws the chart in figure `div`, `width` px wide, with the data shown, unless it is drawn or
+   * there is none.
+   */
+  draw(div, width = this.width()) {
+    const i = this.slots.indexOf(div);
+    if (i < 0 || this.charts[i] !== null || this.view === null) return;
+    this.observer?.unobserve(div);
+    const chart = new uPlot(chartOptions(this, this.defs[i], width), this.data(this.defs[i], this.view), div);
+    if (this.window) chart.setScale('x', { min: this.window[0], max: this.window[1] });
+    div.style.minHeight = '';
+    this.charts[i] = chart;
+  }
+
+  /**
+   * Draws every chart not drawn yet (the PNG export takes them all); resolves once they are drawn
+   * (uPlot draws a new chart in a microtask).
+   */
+  async drawAll() {
+    const width = this.width();
+    this.slots.forEach((div) => this.draw(div, width));
+    await null;
+  }
+
+  /** Whether `div` is in the viewport, and shown. */
+  static inView(div) {
+    const r = div.getBoundingClientRect();
+    return r.height > 0 && r.top < innerHeight && r.bottom > 0;
+  }
+
+  /**
+   * Draws a whole run, every chart in this task (in a lazy set, the charts in view; the
+   * others when they come near it): an envelope has at most four points per pixel column, so a
+   * chart costs the same for any run length.
    */
   show(view, { ifoc = false } = {}) {
     const t = view.plots[this.defs[0].id].t;
@@ -175,26 +226,38 @@ export class Plots {
     this.window = null;
     this.marker = null;
     this.ifoc = ifoc;
-    if (this.charts.length === 0) {
-      this.create((plot) => this.data(plot, view));
-      return;
-    }
+    this.view = view;
+    this.prepare();
+    // The layout is read once, before the charts change it.
+    const width = this.width();
+    // An embed draws its plots, which are all it shows, at once.
+    const now = this.defs.map(
+      (plot, i) => !this.observer || !!this.embedded?.includes(plot.id) || Plots.inView(this.slots[i]),
+    );
     for (const [i, plot] of this.defs.entries()) {
-      const title = this.charts[i].root.querySelector('.u-title');
+      const div = this.slots[i];
+      div.querySelector('.caption').textContent = this.caption(plot);
+      div.setAttribute('aria-label', this.title(plot));
+      const chart = this.charts[i];
+      if (chart === null) {
+        if (now[i]) this.draw(div, width);
+        else this.observer?.observe(div);
+        continue;
+      }
+      const title = chart.root.querySelector('.u-title');
       if (title) title.textContent = this.title(plot);
-      this.charts[i].root.parentElement.querySelector('.caption').textContent = this.caption(plot);
-      this.charts[i].root.parentElement.setAttribute('aria-label', this.title(plot));
       this.syncing = true;
-      this.charts[i].setData(this.data(plot, view), true);
+      chart.setData(this.data(plot, view), true);
       this.syncing = false;
     }
   }
 
   /** Replaces the data with that of a zoom window (the axes keep the window) or the whole run. */
   refine(view) {
-    if (this.charts.length < this.defs.length) return;
+    if (this.view === null) return;
+    this.view = view;
     this.syncing = true;
-    this.defs.forEach((plot, i) => this.charts[i].setData(this.data(plot, view), true));
+    this.defs.forEach((plot, i) => this.charts[i]?.setData(this.data(plot, view), true));
     this.syncing = false;
   }
 
@@ -206,22 +269,28 @@ export class Plots {
   /** Re-fits the y-axes (after the framing changed). */
   refit() {
     this.syncing = true;
-    for (const c of this.charts) c.setData(c.data, true);
+    for (const c of this.drawn()) c.setData(c.data, true);
     this.syncing = false;
   }
 
   resize(height = this.height) {
     this.height = height;
     const width = this.width();
-    for (const c of this.charts) c.setSize({ width, height });
+    for (const c of this.drawn()) c.setSize({ width, height });
   }
 
   /** Each chart's canvas with its title and colour key, for the PNG export. */
-  figures() {
-    return this.charts.map((c, i) => ({
-      canvas: c.ctx.canvas,
-      title: this.title(this.defs[i]),
-      key: c.series.slice(1).map((s) => ({ label: s.label, stroke: s._stroke ?? s.stroke, dash: s.dash })),
-    }));
+  async figures() {
+    await this.drawAll();
+    return this.drawn().map((c) => {
+      const i = this.charts.indexOf(c);
+      return {
+        canvas: c.ctx.canvas,
+        title: this.title(this.defs[i]),
+        key: c.series
+          .slice(1)
+          .map((s) => ({ label: s.label, stroke: /** @type {any} */ (s)._stroke ?? s.stroke, dash: s.dash })),
+      };
+    });
   }
 }

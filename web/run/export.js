@@ -64,11 +64,11 @@ export function createExport({ client, state, plots, walkthrough }) {
   ui.png.addEventListener('click', async () => {
     const tab = /** @type {HTMLElement} */ (document.querySelector('[role=tab][aria-selected=true]')).dataset.tab;
     const set = tab === 'walkthrough' ? walkthrough.plots : plots;
-    if (set.charts.length === 0 || (tab === 'walkthrough' && !walkthrough.drawn())) {
+    if (set.view === null || (tab === 'walkthrough' && !walkthrough.drawn())) {
       say('These plots are still being drawn; export them in a moment.', 'info');
       return;
     }
-    download(await png(set.figures(), pngHeader()), `${fileStem()}.png`);
+    download(await png(await set.figures(), pngHeader()), `${fileStem()}.png`);
   });
 
   const handlers = {

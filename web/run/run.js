@@ -149,6 +149,8 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       state.transient = transient;
       state.figures = figures;
       state.unreached = unreached;
+      // The plots first: they read the page's layout before the rest of the run changes it.
+      if (view) plots.show(view, { ifoc: fieldValue(state.info, 'controller') === 'ifoc' });
       showTransient(transient);
       figuresView.show(figures, warnings, unreached);
       if (view) {
@@ -156,7 +158,6 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
         walkthrough.show(stability, state.nisBand);
         // The walkthrough's plots are in the view once it has been opened.
         if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
-        plots.show(view, { ifoc: fieldValue(state.info, 'controller') === 'ifoc' });
         fitEmbed();
         // "Plotted" is when the browser has painted them: the canvases are rasterised then.
         await painted();

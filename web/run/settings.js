@@ -41,6 +41,26 @@ async function describeLoaded(client, state, text) {
 }
 
 /**
+ * The first scenario's loader: it loads the scenario `first()` resolves with (null when it has
+ * loaded one itself: a lesson's run), once a worker, unless one is loaded. Asked as the page
+ * starts, its description waits in the worker's queue behind the core's loading and comes just
+ * after `ready` (the worker answers in order); `again()` lets a worker restarted after a crash ask
+ * once more.
+ */
+function firstLoader(state, first, load) {
+  let asked = false;
+  const loadFirst = () => {
+    if (state.info !== null || asked) return;
+    asked = true;
+    Promise.resolve(first()).then((text) => text !== null && load(text));
+  };
+  loadFirst.again = () => {
+    asked = false;
+  };
+  return loadFirst;
+}
+
+/**
  * The settings; `startRun()` and `markUnrun(unrun)` are the run's, `openSettings(open)` opens the
  * settings drawer. The worker's `ready` message (`handlers`) lists the presets and loads the
  * scenario `first()` resolves with (the address's, unless a challenge gives it). `described(info)`
@@ -170,6 +190,8 @@ export function createSettings({
   followKnobs($('walkthrough'), knobChanged);
   ui.run.addEventListener('click', runForm);
 
+  const loadFirst = firstLoader(state, first, load);
+
   const handlers = {
     ready({ presets: offered, nisBand }) {
       // A worker started after a crash is ready too: the presets are listed already, and the
@@ -178,11 +200,10 @@ export function createSettings({
         presets = offered;
         state.nisBand = nisBand;
         listPresets(ui.preset, presets);
-      }
-      // `first()` resolves with null when it has loaded a scenario itself (a lesson's run).
-      if (state.info === null) Promise.resolve(first()).then((text) => text !== null && load(text));
+      } else loadFirst.again();
+      loadFirst();
     },
   };
 
-  return { load, knob: knobs.knob, handlers };
+  return { load, loadFirst, knob: knobs.knob, handlers };
 }

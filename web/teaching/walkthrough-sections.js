@@ -22,7 +22,10 @@ export function plotDefs(sectionDivs) {
         ...plot,
         id: `${s.id}-${defs.length}`,
         constants,
-        container: sectionDivs[s.id],
+        // The section's box for its plots, once the sections are built.
+        get container() {
+          return sectionDivs[s.id];
+        },
         backstepping: BACKSTEPPING.has(s.id),
       });
     }

@@ -41,11 +41,11 @@ export class Walkthrough {
     this.stale = false; // the plots wait for the view of the last run
     this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
     this.opened = false; // whether the walkthrough has been shown
-    for (const s of SECTIONS) {
-      const [section, plots] = sectionElement(s, onCompare);
-      this.sectionDivs[s.id] = plots;
-      this.container.append(section);
-    }
+    this.onCompare = onCompare;
+    /** @type {string | null} the last run's stability report */
+    this.report = null;
+    /** @type {(() => void) | null} told when the sections are built */
+    this.onBuilt = null;
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
       onWindow,
       onFull,
@@ -62,11 +62,34 @@ export class Walkthrough {
     return [h, -h];
   }
 
+  /** Whether the sections are built. */
+  built() {
+    return this.container.childElementCount > 0;
+  }
+
+  /**
+   * Builds the sections, once: when the walkthrough is first shown or the first run is done,
+   * whichever comes first (the first plot does not wait for them). They take the last
+   * description and stability report.
+   */
+  build() {
+    if (this.built()) return;
+    for (const s of SECTIONS) {
+      const [section, plots] = sectionElement(s, this.onCompare);
+      this.sectionDivs[s.id] = plots;
+      this.container.append(section);
+    }
+    if (this.info) this.describe(this.info);
+    if (this.report !== null) this.container.querySelector('.stability-report').textContent = this.report;
+    this.onBuilt?.();
+  }
+
   /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
   describe(info) {
     this.info = info;
     const ifoc = info.fields.find((f) => f.key === 'controller')?.value === 'ifoc';
     this.ifoc = ifoc;
+    if (!this.built()) return;
     ifocNote(this.container, ifoc);
     syncKnobs(this.container, (key) => this.knob(key));
     this.container.querySelector('.lumped').replaceChildren(lumpedTable(info));
@@ -81,8 +104,9 @@ export class Walkthrough {
     this.nisBand = nisBand;
     this.stale = true;
     this.pending = null;
+    this.report = stabilityText(stability);
     const report = this.container.querySelector('.stability-report');
-    report.textContent = stabilityText(stability);
+    if (report) report.textContent = this.report;
   }
 
   /** Whether the walkthrough is on screen. */
@@ -98,6 +122,7 @@ export class Walkthrough {
   /** The walkthrough has just been shown: its equations are typeset (the first time) and learn
    * whether they scroll, and a waiting view is drawn. */
   shown() {
+    this.build();
     this.opened = true;
     // The equations are typeset once KaTeX is in (fetched now the first time): then they learn
     // whether they scroll. Should KaTeX fail to load (the network gone), the page says so.
