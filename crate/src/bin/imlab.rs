@@ -8,6 +8,7 @@ use imlab::analysis::{
 };
 use imlab::challenge::grade::{self, ClassRow, Graded};
 use imlab::challenge::{builtin, Challenge, BUILTINS};
+use imlab::control::formula;
 use imlab::record::{Figure, Unreached, WarningKind};
 use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
@@ -428,7 +429,11 @@ fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "# {}", s.encode())?;
     writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;
     for f in s.describe() {
-        let value = f.value.unwrap_or_else(|| "-".to_string());
+        let value = match f.value {
+            Some(v) if f.formula && v.is_empty() => "paper's".to_string(),
+            Some(v) => v,
+            None => "-".to_string(),
+        };
         let unit = if f.unit.is_empty() {
             String::new()
         } else {
@@ -439,6 +444,25 @@ fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
             "{:12} = {:>22}{:8}  [{}] {}",
             f.key, value, unit, f.group, f.doc
         )?;
+    }
+    writeln!(
+        out,
+        "# The names a step's own law (law.v1..law.v4) may use, with their units:"
+    )?;
+    for n in formula::NAMES {
+        let steps = match n.from_step {
+            1 => "",
+            2 => " (steps 2–4)",
+            _ => " (step 4)",
+        };
+        writeln!(out, "{:6} {:14} {}{steps}", n.name, n.unit, n.doc)?;
+    }
+    writeln!(
+        out,
+        "# With + - * / ^, parentheses, numbers and the functions:"
+    )?;
+    for (name, _, _, doc) in formula::FUNCTIONS {
+        writeln!(out, "{name:6} {doc}")?;
     }
     Ok(())
 }

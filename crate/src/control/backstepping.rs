@@ -11,6 +11,7 @@
 //! The unknown disturbances d̃2 and d̃4 (which vanish when x̃1 = x̃4 = x̃5 = 0) are left out of the
 //! feedforward. Names follow the paper, hence `non_snake_case` is not needed but short names are.
 
+use crate::control::formula::{at, SIGNALS};
 use crate::control::RefSample;
 use crate::model::State;
 use crate::params::Lumped;
@@ -119,6 +120,103 @@ pub enum ControlError {
         /// x̂4² + x̂5² (Wb²).
         flux_sq: f64,
     },
+    /// A step's own law (a formula) gave a value that is not a finite number.
+    Law {
+        /// The step (1–4).
+        step: u8,
+        /// Its value (±inf or NaN).
+        value: f64,
+    },
+}
+
+/// Laws that replace some of the four steps' virtual controls v1..v4: the paper's law calls
+/// [`Custom::replace`] after each step with the step's signals (indexed as
+/// [`crate::control::formula::NAMES`]) and the paper's value, and uses what it returns.
+pub trait Custom {
+    /// False for the paper's law alone: the signals are then neither gathered nor passed.
+    const ON: bool;
+    /// Where the law keeps the signals: nothing at all for the paper's law (so that its loop
+    /// does not even clear them), the whole vector otherwise.
+    type Signals: Signals;
+    /// The value step `step` (1–4) uses: the paper's `paper`, or another law's.
+    fn replace(&self, step: u8, signals: &[f64; SIGNALS], paper: f64) -> f64;
+}
+
+/// The signals a law reads, as the law gathers them.
+pub trait Signals: Default {
+    /// Sets signal `i`.
+    fn set(&mut self, i: usize, value: f64);
+    /// Every signal.
+    fn all(&self) -> &[f64; SIGNALS];
+}
+
+/// No signals: the paper's law reads none.
+impl Signals for () {
+    #[inline(always)]
+    fn set(&mut self, _: usize, _: f64) {}
+    #[inline(always)]
+    fn all(&self) -> &[f64; SIGNALS] {
+        &[0.0; SIGNALS]
+    }
+}
+
+/// Every signal, as a step's own law reads them.
+pub struct Gathered(pub [f64; SIGNALS]);
+
+impl Default for Gathered {
+    fn default() -> Gathered {
+        Gathered([0.0; SIGNALS])
+    }
+}
+
+impl Signals for Gathered {
+    #[inline(always)]
+    fn set(&mut self, i: usize, value: f64) {
+        self.0[i] = value;
+    }
+    #[inline(always)]
+    fn all(&self) -> &[f64; SIGNALS] {
+        &self.0
+    }
+}
+
+/// The paper's law, every step.
+pub struct Paper;
+
+impl Custom for Paper {
+    const ON: bool = false;
+    type Signals = ();
+    #[inline(always)]
+    fn replace(&self, _: u8, _: &[f64; SIGNALS], paper: f64) -> f64 {
+        paper
+    }
+}
+
+/// The value step `step` uses, refused unless finite.
+#[inline(always)]
+fn chosen<C: Custom>(
+    custom: &C,
+    step: u8,
+    s: &[f64; SIGNALS],
+    paper: f64,
+) -> Result<f64, ControlError> {
+    if !C::ON {
+        return Ok(paper);
+    }
+    let value = custom.replace(step, s, paper);
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(ControlError::Law { step, value })
+    }
+}
+
+/// The index of signal `name` in the signal vector, found when compiled.
+macro_rules! sig {
+    ($name:literal) => {{
+        const I: usize = at($name);
+        I
+    }};
 }
 
 impl fmt::Display for ControlError {
@@ -129,6 +227,12 @@ impl fmt::Display for ControlError {
                 "decoupling matrix (55) is singular: estimated flux x̂4² + x̂5² = {flux_sq:.3e} Wb² \
                  is below {MIN_FLUX_SQ:e} Wb²"
             ),
+            ControlError::Law { step, value } => {
+                write!(
+                    f,
+                    "the law of step {step} gave {value}, not a finite number"
+                )
+            }
         }
     }
 }
@@ -167,7 +271,23 @@ impl Backstepping {
     // the one only a recorded row reads (V) is left out of the samples not recorded.
     #[inline(always)]
     pub fn control(&self, input: &ControlInput) -> Result<Terms, ControlError> {
-        self.law(&self.model, None, input)
+        self.law(&self.model, None, input, &Paper)
+    }
+
+    /// As [`Backstepping::control`] (with the observer's estimated parameters when `adapted` is
+    /// given), with the steps `custom` replaces. Its own function: the paper's law in the loop is
+    /// compiled without the signals a custom law reads.
+    #[inline(never)]
+    pub fn control_with<C: Custom>(
+        &self,
+        input: &ControlInput,
+        adapted: Option<&Adapted>,
+        custom: &C,
+    ) -> Result<Terms, ControlError> {
+        match adapted {
+            Some(a) => self.law(&a.model, Some(a.d_a2), input, custom),
+            None => self.law(&self.model, None, input, custom),
+        }
     }
 
     /// As [`Backstepping::control`], with the parameters the observer estimates (Section 3.1's
@@ -179,16 +299,18 @@ impl Backstepping {
         input: &ControlInput,
         adapted: &Adapted,
     ) -> Result<Terms, ControlError> {
-        self.law(&adapted.model, Some(adapted.d_a2), input)
+        self.law(&adapted.model, Some(adapted.d_a2), input, &Paper)
     }
 
-    /// The four steps with lumped parameters `p` and, when a2 is estimated, dâ2/dt.
+    /// The four steps with lumped parameters `p` and, when a2 is estimated, dâ2/dt; the steps
+    /// `custom` replaces take its values.
     #[inline(always)]
-    fn law(
+    fn law<C: Custom>(
         &self,
         p: &Lumped,
         d_a2: Option<f64>,
         input: &ControlInput,
+        custom: &C,
     ) -> Result<Terms, ControlError> {
         let g = &self.gains;
         let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
@@ -206,12 +328,78 @@ impl Backstepping {
         // Step 1, speed loop: eqs (23)–(30). â2 = a2 (the model's constant load) unless the
         // observer estimates it; then dâ2/dt is the observer's injection into â2.
         let k1s1 = g.k1 - p.a3;
+        let k2s1 = g.k2 - p.a7 - p.a8;
         let z1 = x1h - r.value;
+        let z3 = flux_sq - input.psi_d;
+        // x̂̇4, x̂̇5 of the observer (4).
+        let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
+        let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
+        // What a step's own law may read, gathered only when there is one.
+        let mut s = C::Signals::default();
+        if C::ON {
+            let named = [
+                (sig!("x1h"), x1h),
+                (sig!("x2h"), x2h),
+                (sig!("x3h"), x3h),
+                (sig!("x4h"), x4h),
+                (sig!("x5h"), x5h),
+                (sig!("x2"), x2),
+                (sig!("x3"), x3),
+                (sig!("xt2"), e2),
+                (sig!("xt3"), e3),
+                (sig!("dxt2"), de2),
+                (sig!("dxt3"), de3),
+                (sig!("dx4h"), dx4h),
+                (sig!("dx5h"), dx5h),
+                (sig!("wd"), r.value),
+                (sig!("dwd"), r.d1),
+                (sig!("ddwd"), r.d2),
+                (sig!("psi_d"), input.psi_d),
+                (sig!("a1"), p.a1),
+                (sig!("a2"), p.a2),
+                (sig!("a3"), p.a3),
+                (sig!("a5"), p.a5),
+                (sig!("a6"), p.a6),
+                (sig!("a7"), p.a7),
+                (sig!("a8"), p.a8),
+                (sig!("a9"), p.a9),
+                (sig!("a10"), p.a10),
+                (sig!("b"), p.b),
+                (sig!("da2"), d_a2.unwrap_or(0.0)),
+                (sig!("k1"), g.k1),
+                (sig!("k2"), g.k2),
+                (sig!("k3"), g.k3),
+                (sig!("k4"), g.k4),
+                (sig!("k1s1"), k1s1),
+                (sig!("k2s1"), k2s1),
+                (sig!("h2"), g.h2),
+                (sig!("eps2"), g.eps2),
+                (sig!("h4"), g.h4),
+                (sig!("eps4"), g.eps4),
+                (sig!("robust"), if g.robust { 1.0 } else { 0.0 }),
+                (sig!("z1"), z1),
+                (sig!("z3"), z3),
+            ];
+            for (i, v) in named {
+                s.set(i, v);
+            }
+            for (i, v) in si.iter().enumerate() {
+                s.set(sig!("si1") + i, *v);
+            }
+            for (i, row) in l.iter().enumerate() {
+                s.set(sig!("l11") + 2 * i, row[0]);
+                s.set(sig!("l11") + 2 * i + 1, row[1]);
+            }
+        }
         let v1a = -si[0] + r.d1 + p.a3 * r.value + p.a2;
         let v1s = -k1s1 * z1;
-        let v1 = v1a + v1s;
+        let v1 = chosen(custom, 1, s.all(), v1a + v1s)?;
         let torque = p.a1 * (x3 * x4h - x2 * x5h);
         let z2 = torque - v1;
+        if C::ON {
+            s.set(sig!("v1"), v1);
+            s.set(sig!("z2"), z2);
+        }
         // dv1/dt of eq (31) with its typos corrected (a3·ω̇_d, dâ2/dt = 0).
         let mut dv1 =
             -k1s1 * (-g.k1 * z1 + z2) - (l[0][0] * de2 + l[0][1] * de3) + r.d2 + p.a3 * r.d1;
@@ -227,7 +415,6 @@ impl Backstepping {
             + p.a1 * p.a10 * (x2h * x3 - x3h * x2)
             + p.a1 * (x3 * si[3] - x2 * si[4])
             - dv1;
-        let k2s1 = g.k2 - p.a7 - p.a8;
         let v2a = -psi2 - z1;
         let v2s2 = if g.robust {
             -g.h2 * g.h2 / (4.0 * g.eps2) * z2
@@ -235,20 +422,21 @@ impl Backstepping {
             0.0
         };
         let v2s = -k2s1 * z2 + v2s2;
-        let v2 = v2a + v2s;
+        let v2 = chosen(custom, 2, s.all(), v2a + v2s)?;
 
         // Step 3, flux outer loop: eqs (42)–(46).
-        let z3 = flux_sq - input.psi_d;
         let psi3 = -2.0 * p.a8 * flux_sq - 2.0 * p.a10 * (e2 * x4h + e3 * x5h)
             + 2.0 * (x4h * si[3] + x5h * si[4]);
         let v3a = -psi3;
         let v3s = -g.k3 * z3;
-        let v3 = v3a + v3s;
+        let v3 = chosen(custom, 3, s.all(), v3a + v3s)?;
         let z4 = 2.0 * p.a10 * (x2 * x4h + x3 * x5h) - v3;
+        if C::ON {
+            s.set(sig!("v3"), v3);
+            s.set(sig!("z4"), z4);
+        }
 
-        // Step 4, flux inner loop: eqs (47)–(51). x̂̇4, x̂̇5 of the observer (4):
-        let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
-        let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
+        // Step 4, flux inner loop: eqs (47)–(51).
         let psi4 = 2.0 * p.a10 * p.a5 * flux_sq - 2.0 * p.a10 * p.a7 * (x2h * x4h + x3h * x5h)
             + 2.0 * p.a10 * (x4h * si[1] + x5h * si[2])
             + 2.0 * (l[3][0] * x4h + l[4][0] * x5h) * de2
@@ -263,7 +451,7 @@ impl Backstepping {
             0.0
         };
         let v4s = -g.k4 * z4 + v4s2;
-        let v4 = v4a + v4s;
+        let v4 = chosen(custom, 4, s.all(), v4a + v4s)?;
 
         // Eq (54): b·[[−a1x̂5, a1x̂4], [2a10x̂4, 2a10x̂5]]·u = [v2, v4]; det = −2 a1 a10 b (x̂4²+x̂5²).
         if flux_sq.is_nan() || flux_sq < MIN_FLUX_SQ {

@@ -1,13 +1,19 @@
 //! Speed and flux references, the four-step backstepping controller of Section 4, its unknown
-//! terms d̃2 and d̃4 evaluated from the simulated truth, and the Lyapunov bound of Theorem 4.6.
+//! terms d̃2 and d̃4 evaluated from the simulated truth, the Lyapunov bound of Theorem 4.6, and the
+//! laws a student writes for its steps.
 
 mod backstepping;
 mod disturbance;
+pub mod formula;
 mod ifoc;
+pub mod law;
 mod reference;
 mod stability;
 
-pub use backstepping::{Adapted, Backstepping, ControlError, ControlInput, Gains, Terms};
+pub use backstepping::{
+    Adapted, Backstepping, ControlError, ControlInput, Custom, Gains, Gathered, Paper, Signals,
+    Terms,
+};
 pub use disturbance::{disturbances, Sample};
 pub use ifoc::{Ifoc, IfocTuning};
 pub use reference::{RefSample, Reference};

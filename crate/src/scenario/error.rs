@@ -70,6 +70,13 @@ pub enum ScenarioError {
         /// The reason.
         error: ParamError,
     },
+    /// A step's law that is not a formula of the language.
+    BadFormula {
+        /// The field (`law.v1`..`law.v4`).
+        key: &'static str,
+        /// Where and why.
+        error: crate::control::formula::FormulaError,
+    },
     /// A scenario string longer than [`MAX_SCENARIO_BYTES`].
     TooLong {
         /// Its length (bytes).
@@ -136,6 +143,7 @@ impl fmt::Display for ScenarioError {
                 "field '{key}' does not apply to the reference '{reference}' (set ref= first)"
             ),
             Physics { which, error } => write!(f, "{which} parameters: {error}"),
+            BadFormula { key, error } => write!(f, "field '{key}': {error}"),
             TooLong { bytes } => write!(
                 f,
                 "the scenario is {bytes} bytes long, more than the {MAX_SCENARIO_BYTES} bytes \

@@ -27,6 +27,8 @@ pub(super) enum Access {
         get: fn(&Scenario) -> &'static str,
         set: fn(&mut Scenario, &str),
     },
+    /// The law of backstepping step `step` (1–4): a formula, percent-encoded in the codec.
+    Formula { step: u8 },
 }
 
 /// The values a number field takes.
@@ -98,6 +100,9 @@ pub struct FieldInfo {
     pub integer: bool,
     /// Allowed names for choice fields; empty for numbers.
     pub options: &'static [&'static str],
+    /// Whether the field holds a formula (a step's own law); its value is then the formula's
+    /// text, not its codec text.
+    pub formula: bool,
     /// Meaning.
     pub doc: &'static str,
     /// Current value as written in the codec, or None when it does not apply.
@@ -123,6 +128,8 @@ fn acts(key: &str, s: &Scenario) -> bool {
         s.drive.vlimit == Shape::Box
     } else if key == "vdc" {
         s.drive.vlimit != Shape::Box || s.drive.pwm
+    } else if key.starts_with("law.") {
+        s.controller == ControllerKind::Backstepping
     } else if key == "delay.comp" {
         s.drive.delay && s.controller == ControllerKind::Backstepping
     } else {
@@ -290,6 +297,50 @@ const fn choice(
     }
 }
 
+const fn law(key: &'static str, unit: &'static str, doc: &'static str, step: u8) -> Field {
+    Field {
+        key,
+        group: "law",
+        unit,
+        range: closed(0.0, 0.0),
+        doc,
+        access: Access::Formula { step },
+    }
+}
+
+/// A formula as the codec writes it: every byte but the letters, digits and `-._~*()`
+/// percent-encoded (so `+`, `&`, `=` and spaces survive any query string).
+pub(crate) fn encode_formula(text: &str) -> String {
+    let mut out = String::with_capacity(text.len());
+    for b in text.bytes() {
+        if b.is_ascii_alphanumeric() || b"-._~*()".contains(&b) {
+            out.push(b as char);
+        } else {
+            out.push_str(&format!("%{b:02X}"));
+        }
+    }
+    out
+}
+
+/// A formula's text from its codec text: `%XX` decoded, everything else kept (a `+` is a plus,
+/// not a space); None unless the bytes decoded are UTF-8.
+pub(crate) fn decode_formula(text: &str) -> Option<String> {
+    let bytes = text.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' {
+            let hex = std::str::from_utf8(bytes.get(i + 1..i + 3)?).ok()?;
+            out.push(u8::from_str_radix(hex, 16).ok()?);
+            i += 3;
+        } else {
+            out.push(bytes[i]);
+            i += 1;
+        }
+    }
+    String::from_utf8(out).ok()
+}
+
 fn set_reference(s: &mut Scenario, name: &str) {
     // Keep the parameters when the kind does not change.
     if s.reference.kind() != name {
@@ -326,6 +377,10 @@ fn table() -> Vec<Field> {
         number("h2", "gains", "rad/s³", closed(0.0, 1e9), "h2 of (38): bound on |d̃2|", at!(gains.h2)),
         number("eps4", "gains", "Wb⁴/s³", above(0.0, 1e6), "ε4 of (53): the bound on z4·(v4s2 + d̃4)", at!(gains.eps4)),
         number("h4", "gains", "Wb²/s²", closed(0.0, 1e9), "h4 of (53): bound on |d̃4|", at!(gains.h4)),
+        law("law.v1", "rad/s²", "your step 1: the virtual control v1 (empty: the paper's (26))", 1),
+        law("law.v2", "rad/s³", "your step 2: v2 (empty: the paper's (34))", 2),
+        law("law.v3", "Wb²/s", "your step 3: the virtual control v3 (empty: the paper's (45))", 3),
+        law("law.v4", "Wb²/s²", "your step 4: v4 (empty: the paper's (49))", 4),
         choice("controller", "controller", "backstepping (paper) or ifoc (classical sensorless FOC baseline)", Access::Choice {
             options: &["backstepping", "ifoc"],
             get: |s| match s.controller { ControllerKind::Backstepping => "backstepping", ControllerKind::Ifoc => "ifoc" },
@@ -404,6 +459,9 @@ impl Field {
     fn allowed(&self) -> String {
         match self.access {
             Access::Choice { options, .. } => options.join(" | "),
+            Access::Formula { step } => format!(
+                "a formula of the names step {step} may use (`imlab describe` lists them), or empty"
+            ),
             Access::Number { .. } => {
                 let Range {
                     min,
@@ -447,12 +505,34 @@ impl Field {
         match self.access {
             Access::Number { get, .. } => get(s).map(|v| format!("{v}")),
             Access::Choice { get, .. } => Some(get(s).to_string()),
+            Access::Formula { step } => Some(encode_formula(
+                s.law[step as usize - 1].as_deref().unwrap_or(""),
+            )),
         }
     }
 
     /// Sets the field in `s` from its codec text, checking the field's own range.
     pub(super) fn set(&self, s: &mut Scenario, value: &str) -> Result<(), ScenarioError> {
         match self.access {
+            Access::Formula { step } => {
+                let text = decode_formula(value).ok_or_else(|| ScenarioError::BadValue {
+                    key: self.key.to_string(),
+                    value: value.to_string(),
+                    expected: "a formula, percent-encoded as UTF-8".to_string(),
+                })?;
+                if text.trim().is_empty() {
+                    s.law[step as usize - 1] = None;
+                    return Ok(());
+                }
+                crate::control::formula::Program::parse(&text, step).map_err(|error| {
+                    ScenarioError::BadFormula {
+                        key: self.key,
+                        error,
+                    }
+                })?;
+                s.law[step as usize - 1] = Some(text);
+                Ok(())
+            }
             Access::Choice { options, set, .. } => {
                 if !options.contains(&value) {
                     return Err(ScenarioError::BadValue {
@@ -500,10 +580,16 @@ impl Field {
             integer,
             options: match self.access {
                 Access::Choice { options, .. } => options,
-                Access::Number { .. } => &[],
+                Access::Number { .. } | Access::Formula { .. } => &[],
             },
+            formula: matches!(self.access, Access::Formula { .. }),
             doc: self.doc,
-            value: self.get(s),
+            value: match self.access {
+                Access::Formula { step } => {
+                    Some(s.law[step as usize - 1].clone().unwrap_or_default())
+                }
+                _ => self.get(s),
+            },
             acts: acts(self.key, s),
         }
     }

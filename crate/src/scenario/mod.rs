@@ -116,6 +116,10 @@ pub struct Scenario {
     /// Rated stator current of the motor: the amplitude of its rated phase current, which is
     /// |i_s| at rated load in the amplitude-invariant a–b frame (A).
     pub i_rated: f64,
+    /// The backstepping steps' own laws, v1..v4 as formulas (None: the paper's law), see
+    /// [`crate::control::law`].
+    #[serde(default)]
+    pub law: [Option<String>; 4],
 }
 
 /// `v` for a message: the codec's shortest form, or scientific notation where that is long

@@ -111,6 +111,7 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
             pwm: false,
         },
         i_rated: I_RATED,
+        law: Default::default(),
     }
 }
 

@@ -4,6 +4,7 @@
 //! observer and the controller get the measured currents and the applied voltages (or, with the
 //! `perfect` teaching switch, the truth).
 
+use crate::control::law::{self, Laws};
 use crate::control::{
     self, Adapted, Backstepping, ControlError, ControlInput, Ifoc, RefSample, Terms,
 };
@@ -49,6 +50,23 @@ pub enum SimError {
         /// The reason.
         error: ControlError,
     },
+    /// A step's own law gave a value that is not a finite number.
+    Law(Box<LawFailure>),
+}
+
+/// Where a step's own law failed: the formula, the time and the signals it read.
+#[derive(Clone, Debug, PartialEq)]
+pub struct LawFailure {
+    /// Time of the sample (s).
+    pub t: f64,
+    /// The step (1–4).
+    pub step: u8,
+    /// The formula.
+    pub text: String,
+    /// What it gave (±inf or NaN).
+    pub value: f64,
+    /// The names it reads and their values there.
+    pub signals: String,
 }
 
 impl fmt::Display for SimError {
@@ -67,6 +85,15 @@ impl fmt::Display for SimError {
             SimError::Control { t, error } => {
                 write!(f, "controller failed at t = {t:.5} s: {error}")
             }
+            SimError::Law(l) => write!(
+                f,
+                "your law.v{} = {} gave {} at t = {:.5} s, from {}",
+                l.step,
+                crate::quote::excerpt(&l.text),
+                l.value,
+                l.t,
+                l.signals
+            ),
         }
     }
 }
@@ -121,6 +148,8 @@ pub(super) struct Loop {
     pub(super) scenario: Scenario,
     plant: Lumped,
     controller: Backstepping,
+    /// The steps' own laws, when the scenario has any.
+    laws: Option<Laws>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -147,6 +176,34 @@ struct Commanded {
     u_cmd: Input,
     /// The speed the driving controller used.
     omega_used: f64,
+}
+
+/// The backstepping terms with a scenario's own laws in place of the paper's steps; a law that
+/// fails is named with its formula and the signals it read.
+#[inline(never)]
+fn custom_terms(
+    controller: &Backstepping,
+    input: ControlInput,
+    adapted: Option<Adapted>,
+    laws: &Laws,
+    t: f64,
+) -> Result<Terms, SimError> {
+    controller
+        .control_with(&input, adapted.as_ref(), laws)
+        .map_err(|error| match error {
+            ControlError::Law { step, value } => {
+                let (seen, _) = law::step_values(controller, &input, adapted.as_ref(), laws);
+                let own = laws.step(step).expect("a failing step has its own law");
+                SimError::Law(Box::new(LawFailure {
+                    t,
+                    step,
+                    text: own.text.clone(),
+                    value,
+                    signals: law::named_values(own, &seen.signals[step as usize - 1]),
+                }))
+            }
+            error => SimError::Control { t, error },
+        })
 }
 
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
@@ -224,6 +281,15 @@ impl Loop {
             scenario: scenario.clone(),
             plant,
             controller: Backstepping::new(model, scenario.gains),
+            laws: {
+                let laws = Laws::parse(&scenario.law).map_err(|(step, error)| {
+                    ScenarioError::BadFormula {
+                        key: ["law.v1", "law.v2", "law.v3", "law.v4"][step as usize - 1],
+                        error,
+                    }
+                })?;
+                (!laws.is_empty()).then_some(laws)
+            },
             model,
             limit: scenario.limit(),
             steps: scenario.steps(),
@@ -374,13 +440,24 @@ impl Loop {
     ) -> Result<Commanded, SimError> {
         let s = &self.scenario;
         let input = self.control_input(st, observed, y, speed_ref);
-        let backstepping = match &observed.adapted {
-            Some(a) if !s.perfect => self.controller.control_adapted(&input, a),
-            _ => self.controller.control(&input),
+        let backstepping = match &self.laws {
+            // Out of line, taking copies: the paper's law below keeps its inputs in registers.
+            Some(laws) => custom_terms(
+                &self.controller,
+                input,
+                observed.adapted.filter(|_| !s.perfect),
+                laws,
+                t,
+            ),
+            None => match &observed.adapted {
+                Some(a) if !s.perfect => self.controller.control_adapted(&input, a),
+                _ => self.controller.control(&input),
+            }
+            .map_err(|error| SimError::Control { t, error }),
         };
         let commanded = match &mut st.ifoc {
             None => {
-                let terms = backstepping.map_err(|error| SimError::Control { t, error })?;
+                let terms = backstepping?;
                 Commanded {
                     terms,
                     u_cmd: terms.u,

@@ -10,8 +10,8 @@ use crate::record::{
     COLUMNS, COLUMN_DOCS, NUM_COLUMNS,
 };
 use crate::scenario::{Scenario, ScenarioError};
-pub use closed_loop::SimError;
 use closed_loop::{with_filter, Loop, LoopState, Observer};
+pub use closed_loop::{LawFailure, SimError};
 use serde::Serialize;
 
 /// Largest trace a run may record (bytes); beyond it the run is refused before it starts.

@@ -1,0 +1,177 @@
+//! A student's own laws: the paper's law written in the language reproduces the built-in runs bit
+//! for bit, a wrong law is caught by the verdict and named, and a law that gives a non-finite value
+//! fails the run with the formula, the time and its signals.
+
+use imlab::control::law::{check, Laws, PAPER};
+use imlab::scenario::{Scenario, PRESETS};
+use imlab::sim::{SimError, Simulation};
+
+fn csv(s: &Scenario) -> (Vec<u8>, Result<(), SimError>) {
+    let mut sim = Simulation::traced(s).unwrap();
+    let result = sim.run();
+    let mut out = Vec::new();
+    sim.write_csv(&mut out).unwrap();
+    (out, result)
+}
+
+fn with_laws(s: &Scenario, steps: &[usize]) -> Scenario {
+    let mut s = s.clone();
+    for &i in steps {
+        s.law[i] = Some(PAPER[i].to_string());
+    }
+    s
+}
+
+#[test]
+fn the_papers_law_written_as_formulas_gives_the_built_in_runs_bits() {
+    for p in PRESETS {
+        let base = Scenario::parse(p.name).unwrap();
+        if base.controller != imlab::scenario::ControllerKind::Backstepping {
+            continue;
+        }
+        let (expected, result) = csv(&base);
+        for steps in [&[0usize][..], &[1], &[2], &[3], &[0, 1, 2, 3]] {
+            let s = with_laws(&base, steps);
+            // Through the codec, as a link carries it.
+            let s = Scenario::parse(&s.encode()).unwrap();
+            let (got, r) = csv(&s);
+            assert_eq!(r.is_ok(), result.is_ok(), "{} with steps {steps:?}", p.name);
+            assert!(
+                got == expected,
+                "{} with steps {steps:?}: the CSV differs",
+                p.name
+            );
+        }
+    }
+}
+
+#[test]
+fn with_the_robust_terms_and_the_estimated_load_the_papers_law_still_gives_the_same_bits() {
+    for text in [
+        "v=1&preset=step&robust=1&h2=5000&h4=2000&duration=0.05",
+        "v=1&preset=load-step-est&duration=0.05",
+        "v=1&preset=rr-mismatch-est&duration=0.05",
+        "v=1&preset=step&delay=1&delay.comp=1&duration=0.05",
+        "v=1&preset=step&perfect=1&duration=0.05",
+    ] {
+        let base = Scenario::parse(text).unwrap();
+        let (expected, _) = csv(&base);
+        let (got, _) = csv(&with_laws(&base, &[0, 1, 2, 3]));
+        assert!(got == expected, "{text}: the CSV differs");
+    }
+}
+
+#[test]
+fn a_link_with_a_law_round_trips_and_a_bad_law_is_refused_at_its_place() {
+    let s = Scenario::parse(
+        "v=1&preset=step&law.v1=-si1%20%2B%20dwd%20%2B%20a3*wd%20%2B%20a2%20-%20k1s1*z1",
+    )
+    .unwrap();
+    assert_eq!(
+        s.law[0].as_deref(),
+        Some("-si1 + dwd + a3*wd + a2 - k1s1*z1")
+    );
+    assert_eq!(Scenario::parse(&s.encode()).unwrap(), s);
+    // A `+` is a plus in the codec, not a space.
+    let plus = Scenario::parse("v=1&preset=step&law.v3=-k3*z3+0").unwrap();
+    assert_eq!(plus.law[2].as_deref(), Some("-k3*z3+0"));
+    for (text, needle) in [
+        (
+            "v=1&preset=step&law.v1=z1%20*",
+            "field 'law.v1': at character 5",
+        ),
+        ("v=1&preset=step&law.v2=foo", "unknown name 'foo'"),
+        ("v=1&preset=step&law.v1=z2", "not known in step 1"),
+        ("v=1&preset=step&law.v1=1/0", "division by zero"),
+        ("v=1&preset=step&law.v1=%FF", "field 'law.v1'"),
+    ] {
+        let e = Scenario::parse(text).unwrap_err().to_string();
+        assert!(e.contains(needle), "{text}: {e}");
+    }
+    // Leniently, the rest of the scenario is kept and the bad law alone is left out.
+    let (s, errors) = Scenario::parse_lenient("v=1&preset=step&k1=900&law.v2=foo").unwrap();
+    assert_eq!((s.gains.k1, s.law[1].clone()), (900.0, None));
+    assert_eq!(errors.len(), 1);
+}
+
+#[test]
+fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_signals() {
+    let s = Scenario::parse("v=1&preset=step&law.v3=-k3*z3%20%2B%20ln(z3%20-%20z3)").unwrap();
+    let e = Simulation::traced(&s)
+        .unwrap()
+        .run()
+        .unwrap_err()
+        .to_string();
+    assert!(
+        e.starts_with("your law.v3 = -k3*z3 + ln(z3 - z3) gave -inf at t = 0.00000 s, from k3 = "),
+        "{e}"
+    );
+    assert!(e.contains("z3 = "), "{e}");
+}
+
+fn verdict(step: u8, text: &str) -> imlab::control::law::Verdict {
+    let s = Scenario::parse("step").unwrap();
+    check(step, text, &s.model.lumped().unwrap(), &s.gains).unwrap()
+}
+
+#[test]
+fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() {
+    for step in 1..=4u8 {
+        let v = verdict(step, PAPER[step as usize - 1]);
+        assert!(v.designed, "{}", v.text);
+    }
+    // The paper's law rearranged is the same law.
+    assert!(verdict(1, "dwd - si1 + a2 + a3*x1h - k1*z1").designed);
+    let cases: &[(u8, &str, &str)] = &[
+        (1, "-si1 + dwd + a3*wd + a2 - k1*z1", "k1 where (28) has k1s1"),
+        (1, "-si1 + dwd + a3*x1h + a2 - k1s1*z1", "a3·x̂1 where (27) has a3·ω_d"),
+        (1, "si1 + dwd + a3*wd + a2 - k1s1*z1", "the term −si1 has the wrong sign"),
+        (1, "dwd + a3*wd + a2 - k1s1*z1", "the term −si1 of the paper's law is missing"),
+        (1, "-si1 + dwd + a3*wd + a2 - 400*z1", "decays at 400 /s, not 1200 /s"),
+        (3, "-(-2*a8*(x4h*x4h + x5h*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*z3", "missing"),
+        (3, "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h)) - k3*z3", "missing"),
+        (
+            3,
+            "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*(x4h*x4h + x5h*x5h - psi_d*psi_d)",
+            "ψ_d as the flux modulus",
+        ),
+    ];
+    for (step, text, needle) in cases {
+        let v = verdict(*step, text);
+        assert!(!v.designed, "{text}: {}", v.text);
+        assert!(v.text.contains(needle), "{text}: {}", v.text);
+    }
+    // Step 2: a missing −z1, k2 for k2s1 and the printed (31)'s typos.
+    let v2 = PAPER[1];
+    let missing_z1 = v2
+        .replace(")) - z1 \\", ")) \\")
+        .replace(")) - z1 +", ")) +");
+    assert!(verdict(2, &missing_z1)
+        .text
+        .contains("−z1 of the paper's law is missing"));
+    assert!(verdict(2, &v2.replace("(-k2s1*z2", "(-k2*z2"))
+        .text
+        .contains("k2 where (36) has k2s1"));
+    assert!(verdict(2, &v2.replace("a3*dwd", "a3*wd"))
+        .text
+        .contains("printed in (31)"));
+    // Step 4: a missing −z3 and the forgotten k3·(−k3·z3 + z4).
+    let v4 = PAPER[3];
+    assert!(verdict(4, &v4.replace(") - z3 +", ") +"))
+        .text
+        .contains("−z3 of the paper's law is missing"));
+    assert!(verdict(
+        4,
+        &v4.replace("\n     + k3*(-k3*z3 + z4))", ")")
+            .replace("+ k3*(-k3*z3 + z4))", ")")
+    )
+    .text
+    .contains("missing"));
+}
+
+#[test]
+fn laws_cost_what_their_formulas_take() {
+    let texts = PAPER.map(|t| Some(t.to_string()));
+    let laws = Laws::parse(&texts).unwrap();
+    assert!(laws.cost() > 100 && laws.cost() < 4 * imlab::control::formula::MAX_OPS);
+}
