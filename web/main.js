@@ -107,6 +107,7 @@ const walkthrough = new Walkthrough({
   onFull: () => views.fullRun(),
   onPick: (t) => views.requestInspect(t),
   framing,
+  preview: (step, text) => client.lawPreview(step, text),
 });
 walkthrough.plots.sampleTime = sampleTime;
 walkthrough.onInspect = (t) => {

@@ -13,11 +13,13 @@ const GROUPS = {
   load: 'Unknown load step',
   limits: 'Voltage limit (box), rating, duration and timing',
   drive: 'Drive: computation delay, inverter limit and PWM',
+  law: 'Your own laws for the backstepping steps (empty: the paper’s)',
 };
 const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 
 function allowed(f) {
   if (f.options.length) return f.options.join(' | ');
+  if (f.formula) return 'a formula of the names the walkthrough’s “Write this step” lists; empty: the paper’s law';
   const lo = f.min_open ? '<' : '≤';
   const unit = f.unit ? ` ${f.unit}` : '';
   return `${f.min} ${lo} ${f.key} ≤ ${f.max}${unit}${f.integer ? ', whole number' : ''}`;
@@ -29,6 +31,17 @@ function input(f) {
     for (const o of f.options) select.append(el('option', { value: o, textContent: o }));
     select.value = f.value;
     return select;
+  }
+  if (f.formula) {
+    return el('input', {
+      type: 'text',
+      name: f.key,
+      value: f.value,
+      className: 'formula',
+      spellcheck: false,
+      autocomplete: 'off',
+      autocapitalize: 'off',
+    });
   }
   if (f.integer && f.min === 0 && f.max === 1) {
     return el('input', { type: 'checkbox', name: f.key, checked: f.value === '1' });

@@ -141,7 +141,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       ui.progress.value = done / total;
       ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
     },
-    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings }) {
+    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings, verdicts }) {
       if (id !== state.runId) return;
       setBusy(false);
       ui.progress.value = 1;
@@ -155,7 +155,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       figuresView.show(figures, warnings, unreached);
       if (view) {
         state.shownRun = id;
-        walkthrough.show(stability, state.nisBand);
+        walkthrough.show(stability, state.nisBand, verdicts);
         // The walkthrough's plots are in the view once it has been opened.
         if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
         fitEmbed();

@@ -4,6 +4,7 @@ import { el } from '../ui/dom.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
+import { lawBlock } from './law-editor.js';
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
 const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
@@ -12,7 +13,7 @@ const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
 export function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
-    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6].filter(Boolean)) {
+    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6, s.law?.plot].filter(Boolean)) {
       const constants = plot.nisBand
         ? [['2.5 % quantile'], ['97.5 % quantile']]
         : plot.bound
@@ -82,6 +83,7 @@ export function sectionElement(s, onCompare) {
     knobs.dataset.keys = s.knobs.join(' ');
     div.append(el('h3', { textContent: 'Design knobs' }), knobs);
   }
+  if (s.law) div.append(lawBlock(s.law));
   const plots = el('div', { className: 'section-plots' });
   div.append(plots);
   return [div, plots];

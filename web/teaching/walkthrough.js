@@ -8,6 +8,7 @@ import { keepAboveSheet, markScrollable, rendered } from './layout.js';
 import { fillInspect } from './inspect-panel.js';
 import { ifocNote, lumpedTable, plotDefs, sectionElement, syncKnobs } from './walkthrough-sections.js';
 import { comparison, stabilityText } from './walkthrough-reports.js';
+import { fillNames, showPreview, showVerdicts } from './law-editor.js';
 import { el } from '../ui/dom.js';
 import { say } from '../ui/page.js';
 
@@ -19,7 +20,7 @@ export class Walkthrough {
    * `knob(key)` returns the settings control for a field;
    * `onCompare()` asks for the Euler/RK4 comparison.
    */
-  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing }) {
+  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview }) {
     this.container = container;
     this.inspectBox = inspectBox;
     this.knob = knob;
@@ -46,6 +47,20 @@ export class Walkthrough {
     this.report = null;
     /** @type {(() => void) | null} told when the sections are built */
     this.onBuilt = null;
+    /** @type {any} the language of the steps' own laws (the core's), once the worker is ready */
+    this.language = null;
+    /** @type {any[]} the verdicts on the own laws of the last run */
+    this.verdicts = [];
+    // A step's own law is typeset by the core as it is typed, a moment after the last key.
+    /** @type {(step: number, text: string) => Promise<any>} */
+    this.preview = preview;
+    let typing = null;
+    container.addEventListener('input', (e) => {
+      const input = e.target instanceof HTMLInputElement ? e.target : null;
+      if (!input?.matches('.law .formula')) return;
+      clearTimeout(typing);
+      typing = setTimeout(() => this.previewLaw(input), 150);
+    });
     this.plots = new Plots(container, plotDefs(this.sectionDivs), {
       onWindow,
       onFull,
@@ -81,7 +96,23 @@ export class Walkthrough {
     }
     if (this.info) this.describe(this.info);
     if (this.report !== null) this.container.querySelector('.stability-report').textContent = this.report;
+    if (this.language) fillNames(this.container, this.language);
+    showVerdicts(this.container, this.verdicts);
     this.onBuilt?.();
+  }
+
+  /** Takes the language of the steps' own laws (the core's names and functions). */
+  setLanguage(language) {
+    this.language = language;
+    if (this.built()) fillNames(this.container, language);
+  }
+
+  /** Shows the core's preview of the law in the knob `input`, unless it changed meanwhile. */
+  async previewLaw(input) {
+    const box = /** @type {HTMLElement} */ (input.closest('.law'));
+    const text = input.value;
+    const preview = await this.preview(Number(box.dataset.step), text).catch(() => null);
+    if (preview && input.value === text) showPreview(box, preview, text);
   }
 
   /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
@@ -93,6 +124,7 @@ export class Walkthrough {
     ifocNote(this.container, ifoc);
     syncKnobs(this.container, (key) => this.knob(key));
     this.container.querySelector('.lumped').replaceChildren(lumpedTable(info));
+    for (const input of this.container.querySelectorAll('.law .formula')) this.previewLaw(input);
   }
 
   /**
@@ -100,13 +132,15 @@ export class Walkthrough {
    * for their view: the run's own when the walkthrough has been opened before, otherwise one the
    * page asks for when it is (until then a run neither computes nor draws them).
    */
-  show(stability, nisBand) {
+  show(stability, nisBand, verdicts) {
     this.nisBand = nisBand;
     this.stale = true;
     this.pending = null;
     this.report = stabilityText(stability);
+    this.verdicts = verdicts;
     const report = this.container.querySelector('.stability-report');
     if (report) report.textContent = this.report;
+    showVerdicts(this.container, verdicts);
   }
 
   /** Whether the walkthrough is on screen. */

@@ -15,7 +15,9 @@ export {};
  * (an M4 envelope: every point a recorded sample at its own time). The column
  * 'lyapunov_bound' is the bound (59) evaluated by the core at the plot's times; 'd2_tilde' and
  * 'd4_tilde', the unknown terms of steps 2 and 4 evaluated from the simulated truth, come alone
- * in their plot, on the times of their own envelope (none where the core does not evaluate them).
+ * in their plot, on the times of their own envelope (none where the core does not evaluate them);
+ * so do 'law_r1'..'law_r4', the residuals of the steps' designed dynamics under a scenario's own
+ * laws (v_i less the paper's v_i; none without own laws).
  * @typedef {{t: Float64Array, columns: Record<string, Float64Array>}} PlotView
  */
 
@@ -45,6 +47,10 @@ export {};
 // Page → worker.
 
 /** @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest */
+/**
+ * A step's own law as it is typed (`step` 1–4): the core's TeX of it, or where and why it is refused.
+ * @typedef {{type: 'law-preview', req: number, step: number, text: string}} LawPreviewRequest
+ */
 /**
  * Starts run `id` (a new run ends the last). `overlay`, a column or null, is kept as the run goes
  * for the overlay with the pins.
@@ -87,7 +93,7 @@ export {};
 
 /**
  * Every message the page sends.
- * @typedef {DescribeRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
+ * @typedef {DescribeRequest | LawPreviewRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
  *   | InspectRequest | CompareRequest | PinRequest | PinCancelRequest | UnpinRequest | UnpinAllRequest | OverlayRequest
  *   | MeasureRequest | JobMessage} ToWorker
  */
@@ -169,8 +175,9 @@ export {};
 // Worker → page.
 
 /**
- * Unprompted, once the core is loaded: the presets and the NIS band of the EKF's consistency.
- * @typedef {{type: 'ready', presets: any[], nisBand: any}} Ready
+ * Unprompted, once the core is loaded: the presets, the NIS band of the EKF's consistency and the
+ * language of the steps' own laws (its names and functions).
+ * @typedef {{type: 'ready', presets: any[], nisBand: any, language: any}} Ready
  */
 /**
  * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
@@ -179,16 +186,21 @@ export {};
  */
 /** @typedef {{type: 'described', req: number, info: Info}} Described */
 /**
+ * A law's preview: `{tex, error: {at, len, reason}, designed}` (the core's `law_preview`).
+ * @typedef {{type: 'law-previewed', req: number, preview: any}} LawPreviewed
+ */
+/**
  * A request the core refused: `req` for a describe, `id` for a run's request.
  * @typedef {{type: 'invalid', req?: number, id?: number, message: string}} Invalid
  */
 /** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
 /**
  * Run `id` ended: `view` is the whole run's view of its `groups` (null when it recorded nothing),
- * `failure` why it stopped early, and the core's report (figures, warnings, …).
+ * `failure` why it stopped early, and the core's report (figures, warnings, …); `verdicts` the
+ * verdict on each step's own law against its designed dynamics (none without own laws).
  * @typedef {{type: 'done', id: number, rows: number, failure: string | null, view: View | null,
  *   computeMs: number, stability: any, figures: Figure[], unreached: any[], transient: any,
- *   warnings: any[]}} Done
+ *   warnings: any[], verdicts: any[]}} Done
  */
 /** @typedef {{type: 'cancelled', id: number}} Cancelled */
 /** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */
@@ -217,7 +229,7 @@ export {};
 
 /**
  * Every message the worker sends.
- * @typedef {Ready | Crashed | Described | Invalid | Progress | Done | Cancelled | ViewReply | CsvChunk
+ * @typedef {Ready | Crashed | Described | LawPreviewed | Invalid | Progress | Done | Cancelled | ViewReply | CsvChunk
  *   | CsvFailed | Inspected | Compared | PinProgress | Pins | OverlayReply | Measured | JobReply} FromWorker
  */
 

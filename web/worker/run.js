@@ -1,7 +1,7 @@
 // The worker's run: the one simulation it holds, run in time slices with progress, and what the
 // page asks of it once run (views, the CSV in chunks, a snapshot at one time, the predictors'
 // comparison, a challenge's measures).
-import { challenge_measure, Simulation, variant } from '../../pkg-run/imlab.js';
+import { challenge_measure, law_verdicts, Simulation, variant } from '../../pkg-run/imlab.js';
 import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */
@@ -10,11 +10,19 @@ import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './r
 // of a CSV that can reach 1.3 GB, past what one JS string can hold.
 const CSV_ROWS = 20_000;
 
-// Series that are not recorded columns: the bound (59), evaluated at the plot's times, and the
-// unknown terms d̃2, d̃4 of steps 2 and 4, evaluated from the simulated truth by a replay.
+// Series that are not recorded columns: the bound (59), evaluated at the plot's times; the
+// unknown terms d̃2, d̃4 of steps 2 and 4, evaluated from the simulated truth by a replay; and the
+// residuals of the steps' designed dynamics under a scenario's own laws, by a replay too.
 const BOUND = 'lyapunov_bound';
 const DISTURBANCES = ['d2_tilde', 'd4_tilde'];
-const derived = (/** @type {string} */ c) => c === BOUND || DISTURBANCES.includes(c);
+const RESIDUALS = ['law_r1', 'law_r2', 'law_r3', 'law_r4'];
+/** The replayed series, each set with the core's method that gives it (an envelope [t, ...]). */
+const REPLAYED = [
+  { names: DISTURBANCES, of: (/** @type {Simulation} */ sim, t0, t1, b) => sim.disturbances(t0, t1, b) },
+  { names: RESIDUALS, of: (/** @type {Simulation} */ sim, t0, t1, b) => sim.law_residuals(t0, t1, b) },
+];
+const replayed = (/** @type {string[]} */ names) => REPLAYED.find((r) => names.some((c) => r.names.includes(c)));
+const derived = (/** @type {string} */ c) => c === BOUND || REPLAYED.some((r) => r.names.includes(c));
 
 /** @typedef {{id: number, sim: Simulation, cancelled: boolean}} Held */
 
@@ -39,8 +47,8 @@ export const heldSim = () => current?.sim ?? null;
  */
 const recordedColumns = (groups) =>
   Object.values(groups).map((names) =>
-    // A plot of d̃2, d̃4 asks for the times alone, for when the core does not evaluate them.
-    names.some((c) => DISTURBANCES.includes(c)) ? ['t'] : names.filter((c) => !derived(c)),
+    // A plot of replayed series asks for the times alone, for when the core does not evaluate them.
+    replayed(names) ? ['t'] : names.filter((c) => !derived(c)),
   );
 
 /**
@@ -58,19 +66,21 @@ function view(run, groups, t0, t1, buckets) {
   /** @type {Record<string, P.PlotView>} */
   const plots = {};
   Object.entries(groups).forEach(([id, names], g) => {
-    // A plot of d̃2, d̃4 shows them alone, on the times of their own envelope.
-    if (names.some((c) => DISTURBANCES.includes(c))) {
+    // A plot of replayed series shows them alone, on the times of their own envelope.
+    const replay = replayed(names);
+    if (replay) {
       let cols;
       try {
-        cols = run.sim.disturbances(t0, t1, buckets);
+        cols = replay.of(run.sim, t0, t1, buckets);
       } catch (e) {
         if (trapped(e)) throw e;
-        // Not evaluated for this scenario (an observer with extra states, the delay
-        // compensation; the walkthrough says so): no sample at the window's times.
+        // Not evaluated for this scenario (d̃ with an observer with extra states or the delay
+        // compensation, residuals without own laws; the walkthrough says so): no sample at the
+        // window's times.
         const t = all[g][0];
-        cols = [t, new Float64Array(t.length).fill(NaN), new Float64Array(t.length).fill(NaN)];
+        cols = [t, ...replay.names.map(() => new Float64Array(t.length).fill(NaN))];
       }
-      plots[id] = { t: cols[0], columns: Object.fromEntries(DISTURBANCES.map((c, i) => [c, cols[i + 1]])) };
+      plots[id] = { t: cols[0], columns: Object.fromEntries(replay.names.map((c, i) => [c, cols[i + 1]])) };
       return;
     }
     const cols = all[g];
@@ -150,6 +160,7 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
       unreached: report?.unreached ?? [],
       transient: report?.transient ?? null,
       warnings: report?.warnings ?? [],
+      verdicts: law_verdicts(scenario),
     },
     v,
   );

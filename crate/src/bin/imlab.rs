@@ -76,6 +76,12 @@ enum Command {
         #[command(flatten)]
         target: ScenarioArg,
     },
+    /// Check each step's own law (law.v1..law.v4) against the error dynamics the step is designed
+    /// to give, at drawn states and parameter values; fails unless every one gives them
+    Law {
+        #[command(flatten)]
+        target: ScenarioArg,
+    },
     /// Measure the closed-loop speed frequency response and print it as CSV
     Sweep {
         #[command(flatten)]
@@ -294,6 +300,7 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             run(&s, every, file.as_deref(), out)
         }
         Command::Metrics { target } => metrics(&target.parse()?, out),
+        Command::Law { target } => law(&target.parse()?, out),
         Command::Sweep {
             target,
             freqs,
@@ -465,6 +472,35 @@ fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
         writeln!(out, "{name:6} {doc}")?;
     }
     Ok(())
+}
+
+/// Writes the verdict of each step's own law, one paragraph each; fails unless every one gives
+/// its designed dynamics.
+fn law(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
+    let model = s
+        .model
+        .lumped()
+        .map_err(|e| format!("model parameters: {e}"))?;
+    let verdicts = imlab::control::law::verdicts(&s.law, &model, &s.gains)
+        .map_err(|(step, e)| format!("law.v{step}: {e}"))?;
+    if verdicts.is_empty() {
+        return Err(
+            "the scenario has no law of its own: give law.v1, law.v2, law.v3 or law.v4"
+                .to_string()
+                .into(),
+        );
+    }
+    for v in &verdicts {
+        writeln!(out, "law.v{}: {}", v.step, v.text).map_err(stdout_stop)?;
+    }
+    match verdicts.iter().filter(|v| !v.designed).count() {
+        0 => Ok(()),
+        n => Err(format!(
+            "{n} of {} laws do not give their designed dynamics",
+            verdicts.len()
+        )
+        .into()),
+    }
 }
 
 /// Runs the scenario keeping every `every`-th sample and writes the trace as CSV to `file` or

@@ -19,7 +19,7 @@ pub const MAX_DEPTH: usize = 32;
 /// A named signal a formula may use: its name, its symbol in TeX, its unit and its meaning, and
 /// the first step whose formula may use it (the later steps' errors and virtual controls follow
 /// from the earlier steps' laws).
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, serde::Serialize)]
 pub struct Name {
     /// The name in a formula.
     pub name: &'static str,
@@ -236,7 +236,7 @@ impl Function {
 }
 
 /// Why a formula was refused: where (the character, counted from 1) and why.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct FormulaError {
     /// The first character the problem concerns, counted from 1 (0: the formula as a whole).
     pub at: usize,
@@ -550,7 +550,7 @@ impl Parser<'_> {
             None => Err(FormulaError::new(
                 at,
                 len,
-                format!("unknown name '{id}' (`imlab describe` lists the names)"),
+                format!("unknown name '{id}' (see the list of names)"),
             )),
         }
     }
@@ -565,7 +565,7 @@ fn constant(node: &Node) -> Option<f64> {
         depth: MAX_DEPTH,
     };
     let none = [0.0; SIGNALS];
-    (!program.ops.iter().any(|op| matches!(op, Op::Sig(_)))).then(|| program.eval(&none))
+    (!program.ops.iter().any(|op| op.names_signal())).then(|| program.eval(&none))
 }
 
 /// Parses `text` as the law of step `step` (1–4).
@@ -599,15 +599,57 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
     Ok(node)
 }
 
-/// One operation of a program, on a stack of values.
+/// One operation of a program, on a stack of values: each binary operation also comes fused with
+/// a signal or a number as its right operand (one dispatch where there would be two).
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Op {
     Num(f64),
     Sig(u16),
     Neg,
-    Bin(BinOp),
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Pow,
+    AddSig(u16),
+    SubSig(u16),
+    MulSig(u16),
+    DivSig(u16),
+    AddNum(f64),
+    SubNum(f64),
+    MulNum(f64),
+    DivNum(f64),
+    /// Pushes signal · signal (a `Sig` and the `MulSig` after it).
+    SigMulSig(u16, u16),
+    /// Pushes number · signal (a `Num` and the `MulSig` after it).
+    NumMulSig(f64, u16),
     Call1(Function),
     Call2(Function),
+}
+
+impl Op {
+    /// Whether it reads a signal.
+    fn names_signal(self) -> bool {
+        matches!(
+            self,
+            Op::Sig(_)
+                | Op::AddSig(_)
+                | Op::SubSig(_)
+                | Op::MulSig(_)
+                | Op::DivSig(_)
+                | Op::SigMulSig(..)
+                | Op::NumMulSig(..)
+        )
+    }
+
+    /// How the operation changes the stack's depth.
+    fn depth_change(self) -> isize {
+        match self {
+            Op::Num(_) | Op::Sig(_) | Op::SigMulSig(..) | Op::NumMulSig(..) => 1,
+            Op::Add | Op::Sub | Op::Mul | Op::Div | Op::Pow | Op::Call2(_) => -1,
+            _ => 0,
+        }
+    }
 }
 
 fn compile(node: &Node, ops: &mut Vec<Op>) {
@@ -622,7 +664,40 @@ fn compile(node: &Node, ops: &mut Vec<Op>) {
         Node::Bin(op, a, b) => {
             compile(a, ops);
             compile(b, ops);
-            ops.push(Op::Bin(*op));
+            // The same operation on the same operands, with one dispatch fewer.
+            let fused = match (op, ops.last()) {
+                (BinOp::Add, Some(Op::Sig(i))) => Some(Op::AddSig(*i)),
+                (BinOp::Sub, Some(Op::Sig(i))) => Some(Op::SubSig(*i)),
+                (BinOp::Mul, Some(Op::Sig(i))) => Some(Op::MulSig(*i)),
+                (BinOp::Div, Some(Op::Sig(i))) => Some(Op::DivSig(*i)),
+                (BinOp::Add, Some(Op::Num(v))) => Some(Op::AddNum(*v)),
+                (BinOp::Sub, Some(Op::Num(v))) => Some(Op::SubNum(*v)),
+                (BinOp::Mul, Some(Op::Num(v))) => Some(Op::MulNum(*v)),
+                (BinOp::Div, Some(Op::Num(v))) => Some(Op::DivNum(*v)),
+                _ => None,
+            };
+            // A product of two leaves is pushed in one step.
+            let fused = match (fused, ops.len().checked_sub(2).map(|k| ops[k])) {
+                (Some(Op::MulSig(j)), Some(Op::Sig(i))) => {
+                    ops.pop();
+                    Some(Op::SigMulSig(i, j))
+                }
+                (Some(Op::MulSig(j)), Some(Op::Num(v))) => {
+                    ops.pop();
+                    Some(Op::NumMulSig(v, j))
+                }
+                (f, _) => f,
+            };
+            match fused {
+                Some(f) => *ops.last_mut().expect("an operand") = f,
+                None => ops.push(match op {
+                    BinOp::Add => Op::Add,
+                    BinOp::Sub => Op::Sub,
+                    BinOp::Mul => Op::Mul,
+                    BinOp::Div => Op::Div,
+                    BinOp::Pow => Op::Pow,
+                }),
+            }
         }
         Node::Call(f, args) => {
             for a in args {
@@ -662,11 +737,7 @@ impl Program {
         }
         let (mut depth, mut deepest) = (0usize, 0usize);
         for op in &ops {
-            match op {
-                Op::Num(_) | Op::Sig(_) => depth += 1,
-                Op::Bin(_) | Op::Call2(_) => depth -= 1,
-                Op::Neg | Op::Call1(_) => {}
-            }
+            depth = depth.wrapping_add_signed(op.depth_change());
             deepest = deepest.max(depth);
         }
         if deepest > MAX_DEPTH {
@@ -690,35 +761,55 @@ impl Program {
     /// Its value with the signals `s` (indexed as [`NAMES`]); allocates nothing.
     #[inline]
     pub fn eval(&self, s: &[f64; SIGNALS]) -> f64 {
+        // A program needs at most MAX_DEPTH (a power of two) values: the mask keeps every index
+        // in the stack without a bounds check, and never changes one.
+        const MASK: usize = MAX_DEPTH - 1;
         let mut stack = [0.0f64; MAX_DEPTH];
         let mut n = 0usize;
+        let signal = |i: u16| s[i as usize];
         for op in &self.ops {
+            // The value on top, which every operation but a push works on.
+            let top = (n.wrapping_sub(1)) & MASK;
             match *op {
                 Op::Num(v) => {
-                    stack[n] = v;
+                    stack[n & MASK] = v;
                     n += 1;
                 }
                 Op::Sig(i) => {
-                    stack[n] = s[i as usize];
+                    stack[n & MASK] = signal(i);
                     n += 1;
                 }
-                Op::Neg => stack[n - 1] = -stack[n - 1],
-                Op::Bin(op) => {
+                Op::SigMulSig(i, j) => {
+                    stack[n & MASK] = signal(i) * signal(j);
+                    n += 1;
+                }
+                Op::NumMulSig(v, j) => {
+                    stack[n & MASK] = v * signal(j);
+                    n += 1;
+                }
+                Op::Neg => stack[top] = -stack[top],
+                Op::Add | Op::Sub | Op::Mul | Op::Div | Op::Pow | Op::Call2(_) => {
+                    let (a, b) = (stack[(n.wrapping_sub(2)) & MASK], stack[top]);
                     n -= 1;
-                    let (a, b) = (stack[n - 1], stack[n]);
-                    stack[n - 1] = match op {
-                        BinOp::Add => a + b,
-                        BinOp::Sub => a - b,
-                        BinOp::Mul => a * b,
-                        BinOp::Div => a / b,
-                        BinOp::Pow => libm::pow(a, b),
+                    stack[n.wrapping_sub(1) & MASK] = match *op {
+                        Op::Add => a + b,
+                        Op::Sub => a - b,
+                        Op::Mul => a * b,
+                        Op::Div => a / b,
+                        Op::Pow => libm::pow(a, b),
+                        Op::Call2(f) => f.apply2(a, b),
+                        _ => unreachable!("a binary operation"),
                     };
                 }
-                Op::Call1(f) => stack[n - 1] = f.apply1(stack[n - 1]),
-                Op::Call2(f) => {
-                    n -= 1;
-                    stack[n - 1] = f.apply2(stack[n - 1], stack[n]);
-                }
+                Op::AddSig(i) => stack[top] += signal(i),
+                Op::SubSig(i) => stack[top] -= signal(i),
+                Op::MulSig(i) => stack[top] *= signal(i),
+                Op::DivSig(i) => stack[top] /= signal(i),
+                Op::AddNum(v) => stack[top] += v,
+                Op::SubNum(v) => stack[top] -= v,
+                Op::MulNum(v) => stack[top] *= v,
+                Op::DivNum(v) => stack[top] /= v,
+                Op::Call1(f) => stack[top] = f.apply1(stack[top]),
             }
         }
         debug_assert!(n == 1 && self.depth <= MAX_DEPTH);
@@ -732,14 +823,23 @@ impl Program {
 
     /// The names it reads, each once, in the order of [`NAMES`].
     pub fn names(&self) -> Vec<usize> {
+        let mut used_pair = Vec::new();
         let mut used: Vec<usize> = self
             .ops
             .iter()
             .filter_map(|op| match op {
-                Op::Sig(i) => Some(*i as usize),
+                Op::Sig(i) | Op::AddSig(i) | Op::SubSig(i) | Op::MulSig(i) | Op::DivSig(i) => {
+                    Some(*i as usize)
+                }
+                Op::NumMulSig(_, j) => Some(*j as usize),
+                Op::SigMulSig(i, j) => {
+                    used_pair.push(*j as usize);
+                    Some(*i as usize)
+                }
                 _ => None,
             })
             .collect();
+        used.append(&mut used_pair);
         used.sort_unstable();
         used.dedup();
         used
@@ -909,7 +1009,7 @@ mod tests {
         }
         let long = "x1h + ".repeat(400) + "1";
         assert!(parse(&long, 1).unwrap_err().reason.contains("characters"));
-        let costly = "x1h*x1h + ".repeat(140) + "1";
+        let costly = "x1h*x1h*x1h + ".repeat(140) + "1";
         assert!(Program::parse(&costly, 1)
             .unwrap_err()
             .reason

@@ -194,6 +194,28 @@ impl<C: Custom> Custom for Watched<'_, C> {
     }
 }
 
+/// Laws that keep, for each step, the value used less the paper's at the same signals: the
+/// residual of the step's designed dynamics (zero for the paper's own steps).
+pub struct Residuals<'a> {
+    /// The laws.
+    pub laws: &'a Laws,
+    /// v_i − v_i,paper of the last sample, step by step.
+    pub last: std::cell::Cell<[f64; 4]>,
+}
+
+impl Custom for Residuals<'_> {
+    const ON: bool = true;
+    type Signals = Gathered;
+    #[inline]
+    fn replace(&self, step: u8, signals: &[f64; SIGNALS], paper: f64) -> f64 {
+        let used = self.laws.replace(step, signals, paper);
+        let mut r = self.last.get();
+        r[step as usize - 1] = used - paper;
+        self.last.set(r);
+        used
+    }
+}
+
 /// Every step's signals, the paper's values and those used, for the law `custom` at one sample
 /// (a step the law failed at holds what it read; the later ones hold zeros).
 pub fn step_values<C: Custom>(
@@ -227,7 +249,7 @@ pub fn named_values(law: &Law, signals: &[f64; SIGNALS]) -> String {
 }
 
 /// How a step's law compares with its designed dynamics.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Verdict {
     /// The step (1–4).
     pub step: u8,
@@ -372,9 +394,9 @@ pub fn check(step: u8, text: &str, model: &Lumped, gains: &Gains) -> Result<Verd
             worst,
             finding: None,
             text: format!(
-                "Your step {step} gives the designed dynamics {}: your {symbol} equals the paper's to {} of its size at {DRAWS} drawn states and parameter values.",
+                "Your step {step} gives the designed dynamics {}: your {symbol} equals the paper's to {:.0e} of its size at {DRAWS} drawn states and parameter values.",
                 DESIGNED[i],
-                format!("{:.0e}", worst.max(f64::EPSILON))
+                worst.max(f64::EPSILON)
             ),
         });
     }
@@ -401,6 +423,51 @@ pub fn check(step: u8, text: &str, model: &Lumped, gains: &Gains) -> Result<Verd
         finding,
         text,
     })
+}
+
+/// The verdict of every step with its own law in `texts`, checked with the scenario's `model`
+/// and `gains`; a law that does not parse is refused with its step.
+pub fn verdicts(
+    texts: &[Option<String>; 4],
+    model: &Lumped,
+    gains: &Gains,
+) -> Result<Vec<Verdict>, (u8, FormulaError)> {
+    let mut out = Vec::new();
+    for (i, text) in texts.iter().enumerate() {
+        let step = i as u8 + 1;
+        if let Some(text) = text.as_ref().filter(|t| !t.trim().is_empty()) {
+            out.push(check(step, text, model, gains).map_err(|e| (step, e))?);
+        }
+    }
+    Ok(out)
+}
+
+/// A formula as an editor shows it while it is typed: typeset, or refused at its place.
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Preview {
+    /// The formula in TeX, when it parses.
+    pub tex: Option<String>,
+    /// Where and why it does not, when it does not.
+    pub error: Option<FormulaError>,
+    /// The step's designed dynamics.
+    pub designed: &'static str,
+}
+
+/// The preview of `text` as the law of step `step` (1–4).
+pub fn preview(step: u8, text: &str) -> Preview {
+    let designed = DESIGNED[step as usize - 1];
+    match formula::parse(text, step).and_then(|node| Program::new(&node).map(|_| node)) {
+        Ok(node) => Preview {
+            tex: Some(format!("v_{step} = {}", formula::tex(&node))),
+            error: None,
+            designed,
+        },
+        Err(error) => Preview {
+            tex: None,
+            error: Some(error),
+            designed,
+        },
+    }
 }
 
 /// The drawn states' seed: the same draws for every check.

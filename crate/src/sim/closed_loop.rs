@@ -15,6 +15,7 @@ use crate::params::Lumped;
 use crate::record::{Row, Sink};
 use crate::rng::Rng;
 use crate::scenario::{ControllerKind, Scenario, ScenarioError};
+use std::cell::Cell;
 use std::fmt;
 
 /// Bounds past which the plant or the estimate is declared diverged.
@@ -150,6 +151,9 @@ pub(super) struct Loop {
     controller: Backstepping,
     /// The steps' own laws, when the scenario has any.
     laws: Option<Laws>,
+    /// With them, each step's v_i − v_i,paper at the last sample run: the residual of its
+    /// designed dynamics (the walkthrough plots it through a replay).
+    law_residuals: Cell<[f64; 4]>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -187,23 +191,28 @@ fn custom_terms(
     adapted: Option<Adapted>,
     laws: &Laws,
     t: f64,
+    residuals: &Cell<[f64; 4]>,
 ) -> Result<Terms, SimError> {
-    controller
-        .control_with(&input, adapted.as_ref(), laws)
-        .map_err(|error| match error {
-            ControlError::Law { step, value } => {
-                let (seen, _) = law::step_values(controller, &input, adapted.as_ref(), laws);
-                let own = laws.step(step).expect("a failing step has its own law");
-                SimError::Law(Box::new(LawFailure {
-                    t,
-                    step,
-                    text: own.text.clone(),
-                    value,
-                    signals: law::named_values(own, &seen.signals[step as usize - 1]),
-                }))
-            }
-            error => SimError::Control { t, error },
-        })
+    let kept = law::Residuals {
+        laws,
+        last: Cell::new([0.0; 4]),
+    };
+    let terms = controller.control_with(&input, adapted.as_ref(), &kept);
+    residuals.set(kept.last.get());
+    terms.map_err(|error| match error {
+        ControlError::Law { step, value } => {
+            let (seen, _) = law::step_values(controller, &input, adapted.as_ref(), laws);
+            let own = laws.step(step).expect("a failing step has its own law");
+            SimError::Law(Box::new(LawFailure {
+                t,
+                step,
+                text: own.text.clone(),
+                value,
+                signals: law::named_values(own, &seen.signals[step as usize - 1]),
+            }))
+        }
+        error => SimError::Control { t, error },
+    })
 }
 
 fn check_state(t: f64, x: &State, what: [&'static str; 5]) -> Result<(), SimError> {
@@ -290,6 +299,7 @@ impl Loop {
                 })?;
                 (!laws.is_empty()).then_some(laws)
             },
+            law_residuals: Cell::new([0.0; 4]),
             model,
             limit: scenario.limit(),
             steps: scenario.steps(),
@@ -305,6 +315,16 @@ impl Loop {
             k: 0,
         };
         Ok((lp, state))
+    }
+
+    /// Each step's v_i − v_i,paper at the sample run last (zeros without own laws).
+    pub(super) fn law_residuals(&self) -> [f64; 4] {
+        self.law_residuals.get()
+    }
+
+    /// Whether the scenario has its own laws (that drive the motor).
+    pub(super) fn has_laws(&self) -> bool {
+        self.laws.is_some() && self.scenario.controller == ControllerKind::Backstepping
     }
 
     /// Why d̃2 and d̃4 cannot be evaluated for this run's controller, if they cannot: they are
@@ -448,6 +468,7 @@ impl Loop {
                 observed.adapted.filter(|_| !s.perfect),
                 laws,
                 t,
+                &self.law_residuals,
             ),
             None => match &observed.adapted {
                 Some(a) if !s.perfect => self.controller.control_adapted(&input, a),

@@ -143,6 +143,32 @@ impl Simulation {
         Ok(envelope.finish().pop().expect("one group"))
     }
 
+    /// The residual of each step's designed dynamics, v_i − v_i,paper at the same signals (see
+    /// [`crate::control::law`]), over the rows with t in [t0, t1], as one M4 envelope
+    /// [t, r1, r2, r3, r4] in `buckets` buckets: a replay of the window. Errs for a run without
+    /// own laws or one that keeps its rows (no replay).
+    pub fn law_residuals(&self, t0: f64, t1: f64, buckets: usize) -> Result<Vec<Vec<f64>>, String> {
+        if !self.lp.has_laws() {
+            return Err("the scenario has no law of its own (law.v1..law.v4)".to_string());
+        }
+        let Recording::Trace(_) = &self.recording else {
+            return Err(
+                "the laws' residuals are evaluated by a replay of a traced run".to_string(),
+            );
+        };
+        let (start, end) = self.window(t0, t1);
+        let mut envelope = M4::new(vec![vec![0, 1, 2, 3]], 4, start, end - start, buckets);
+        if start < end {
+            let mut cursor = self.cursor(start);
+            for i in start..end {
+                let row = cursor.next_row();
+                let [r1, r2, r3, r4] = self.lp.law_residuals();
+                envelope.push(i, &[row.t, r1, r2, r3, r4]);
+            }
+        }
+        Ok(envelope.finish().pop().expect("one group"))
+    }
+
     /// Column `name` of this run and of `others` (recorded at the same sampling period), then the
     /// differences this − other, over their common rows with t in [t0, t1], as one M4 envelope
     /// [t, this, others..., differences...]. Errs for an unknown column.

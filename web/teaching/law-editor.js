@@ -1,0 +1,103 @@
+// "Write this step": a step's own law in the walkthrough. Its editor is the settings form's field
+// (law.v1..law.v4) as a knob; the formula is typeset by the core's TeX as it is typed, an error is
+// marked at its place, and after a run the core's verdict says whether the law gives the step's
+// designed dynamics. The names the law may use come from the core too.
+import { el } from '../ui/dom.js';
+import { tex } from './tex.js';
+
+/**
+ * The block of step `law.step` (1–4): its explanation, the knob's box, the preview, the verdict
+ * and the names it may use.
+ * @param {{step: number, output: string, intro: string}} law
+ */
+export function lawBlock(law) {
+  const box = el('div', { className: 'law' });
+  box.dataset.step = String(law.step);
+  const knobs = el('div', { className: 'knobs' });
+  knobs.dataset.keys = `law.v${law.step}`;
+  box.append(
+    el('h3', { textContent: 'Write this step' }),
+    el('p', { textContent: law.intro }),
+    knobs,
+    el('div', { className: 'law-preview', ariaLive: 'polite' }),
+    el('p', {
+      className: 'law-verdict',
+      role: 'status',
+      textContent: `No law of your own yet: this step runs the paper’s ${law.output}.`,
+    }),
+    el('details', { className: 'law-names' }, [el('summary', { textContent: 'The names and functions you can use' })]),
+  );
+  return box;
+}
+
+/**
+ * Shows the core's `preview` of `text` in `box`: the law typeset, or the error with the part of the
+ * formula it concerns marked (the core counts characters from 1; 0 is the formula as a whole).
+ */
+export function showPreview(box, preview, text) {
+  const out = box.querySelector('.law-preview');
+  if (text.trim() === '') {
+    out.replaceChildren();
+    return;
+  }
+  if (preview.tex) {
+    out.replaceChildren(tex(preview.tex, true, `v${box.dataset.step} = ${text}`));
+    return;
+  }
+  const { at, len, reason } = preview.error;
+  const chars = [...text];
+  const parts =
+    at === 0
+      ? [chars.join('')]
+      : [
+          chars.slice(0, at - 1).join(''),
+          el('mark', { textContent: chars.slice(at - 1, at - 1 + len).join('') || ' ' }),
+          chars.slice(at - 1 + len).join(''),
+        ];
+  out.replaceChildren(
+    el('p', { className: 'law-error', textContent: at === 0 ? reason : `At character ${at}: ${reason}` }),
+    el('code', { className: 'law-text' }, parts),
+  );
+}
+
+/** Shows each step's verdict (the core's, for the run shown), or that the step is the paper's. */
+export function showVerdicts(container, verdicts) {
+  for (const box of container.querySelectorAll('.law')) {
+    const step = Number(box.dataset.step);
+    const verdict = verdicts.find((v) => v.step === step);
+    const line = box.querySelector('.law-verdict');
+    line.textContent = verdict?.text ?? `No law of your own yet: this step runs the paper’s v${step}.`;
+    line.classList.toggle('good', verdict?.designed === true);
+    line.classList.toggle('bad', verdict?.designed === false);
+  }
+}
+
+/** Lists in each step's block the names its law may use (`language`, the core's) and the functions. */
+export function fillNames(container, language) {
+  for (const box of container.querySelectorAll('.law')) {
+    const step = Number(box.dataset.step);
+    const details = box.querySelector('.law-names');
+    const rows = language.names
+      .filter((n) => n.from_step <= step)
+      .map((n) =>
+        el('tr', {}, [
+          el('td', {}, [el('code', { textContent: n.name })]),
+          el('td', {}, [tex(n.tex, false, n.name)]),
+          el('td', { textContent: n.unit }),
+          el('td', { textContent: n.doc }),
+        ]),
+      );
+    const head = el('tr', {}, [
+      el('th', { scope: 'col', textContent: 'name' }),
+      el('th', { scope: 'col', textContent: 'symbol' }),
+      el('th', { scope: 'col', textContent: 'unit' }),
+      el('th', { scope: 'col', textContent: 'meaning' }),
+    ]);
+    const functions = language.functions.map((f) => f.doc).join('; ');
+    details.replaceChildren(
+      details.querySelector('summary'),
+      el('div', { className: 'table-scroll' }, [el('table', {}, [head, ...rows])]),
+      el('p', { textContent: `With + − * / ^ (or · and −), parentheses, numbers and the functions ${functions}.` }),
+    );
+  }
+}
