@@ -25,8 +25,16 @@ function wasmCsv(Simulation, scenario) {
   return Buffer.concat(parts).toString();
 }
 
+/** A step's own law in a link. */
+const law = (step, text) => `law.v${step}=${encodeURIComponent(text)}`;
+
 const scenarios = [
   ...presets().map((p) => p.name),
+  // Own laws with every function of the language (libm's, the same on every target).
+  `v=1&preset=step&duration=0.05&${law(1, '-si1 + dwd + a3*wd + a2 - k1s1*z1 + 0.01*sin(z1)*exp(-abs(z1)) + 1e-3*atan2(x2, x3)')}&${law(
+    3,
+    '2*a8*(x4h^2 + x5h^2) - 2*a10*(xt2*x4h + xt3*x5h) + 2*(x4h*si4 + x5h*si5) - sat(k3*z3, 500) + 1e-6*tanh(sqrt(x4h^2 + x5h^2)) + 1e-9*cos(ln(1 + z3^2)) + 0*max(sign(z3), min(z3, 1))',
+  )}`,
   'v=1&preset=step&ekf=rk4&seed=123456789&noise=0.01&substeps=3',
   'v=1&preset=ramp&plant.rr=5.5&load.torque=1&load.time=0.2&robust=1&h2=5&h4=5',
   'v=1&preset=sine200-1rad&duration=0.05&vlimit=circle&vdc=600&delay=1&delay.comp=1&ekf.load=1',

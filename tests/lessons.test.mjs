@@ -315,7 +315,64 @@ const rrEstStats = (m, run, end) =>
 // Per lesson (by title): the numbers that are settings, and the checks of the rest:
 // [text as written, tolerance, measured value] or [text, 'claim', a test that must hold].
 // Tolerances are a unit of the last digit written, unless a comment says why more.
+/** The verdicts of `imlab law` on `run`'s own laws, as printed (the command fails when one misses). */
+function lawVerdicts(run) {
+  const cli = new URL('../target/release/imlab', import.meta.url).pathname;
+  try {
+    return execFileSync(cli, ['law', run], { stdio: ['ignore', 'pipe', 'pipe'] }).toString();
+  } catch (e) {
+    return e.stdout.toString();
+  }
+}
+/** Step 1's law `text` on step, as a link. */
+const lawRun = (step, text) => `v=1&preset=step&law.v${step}=${encodeURIComponent(text)}`;
+/** The paper's step 2 in the language, as the core holds it (`imlab law` of it gives the designed dynamics). */
+const PAPER_V2 =
+  '-(-(a7 + a8)*v1 - a1*a6*x1h*(x4h*x4h + x5h*x5h) - a1*a9*x1h*(x5h*x3 + x4h*x2) + a1*a10*(x2h*x3 - x3h*x2) + a1*(x3*si4 - x2*si5) - (-k1s1*(-k1*z1 + z2) - (l11*dxt2 + l12*dxt3) + ddwd + a3*dwd + da2)) - z1 + (-k2s1*z2 + -robust*h2*h2/(4*eps2)*z2)';
+
 const SPECS = {
+  'Derive the four steps yourself': {
+    givens: [
+      '(27)–(28)',
+      'the observer (4)',
+      'ψ2 of (33)',
+      'under step 1',
+      'under step 2',
+      'under step 3',
+      'under step 4',
+      'the walkthrough’s step 2',
+    ],
+    checks: [
+      [
+        'v1 = −si1 + ω̇_d + a3·ω_d + a2 − k1s1·z1, which is (26)–(28)',
+        'claim',
+        () =>
+          /law\.v1: Your step 1 gives the designed dynamics/.test(
+            lawVerdicts(lawRun(1, '-si1 + dwd + a3*wd + a2 - k1s1*z1')),
+          ),
+      ],
+      [
+        'it is the same law, and the verdict says it gives the designed dynamics',
+        'claim',
+        () => /gives the designed dynamics/.test(lawVerdicts(lawRun(1, 'dwd - si1 + a2 + a3*x1h - k1*z1'))),
+      ],
+      [
+        'the verdict still names it',
+        'claim',
+        () => /it has k1 where \(28\) has k1s1/.test(lawVerdicts(lawRun(1, '-si1 + dwd + a3*wd + a2 - k1*z1'))),
+      ],
+      [
+        'v2 = −ψ2 − z1 − k2s1·z2',
+        'claim',
+        () => /law\.v2: Your step 2 gives the designed dynamics/.test(lawVerdicts(lawRun(2, PAPER_V2))),
+      ],
+      [
+        'v̇1 of (31) with its typos corrected; copying the printed (31), with a3·ω_d for a3·ω̇_d, is named by the verdict of step 2',
+        'claim',
+        () => /printed in \(31\), with a3·ω_d/.test(lawVerdicts(lawRun(2, PAPER_V2.replace('a3*dwd', 'a3*wd')))),
+      ],
+    ],
+  },
   'The paper’s step response': {
     givens: [
       'A 0.5 rad/s step',

@@ -175,3 +175,36 @@ fn laws_cost_what_their_formulas_take() {
     let laws = Laws::parse(&texts).unwrap();
     assert!(laws.cost() > 100 && laws.cost() < 4 * imlab::control::formula::MAX_OPS);
 }
+
+#[test]
+fn a_challenge_allows_a_law_and_grades_it_by_its_residual_like_any_other_field() {
+    use imlab::challenge::grade::grade_one;
+    use imlab::challenge::Challenge;
+    let text = "c=1&title=Derive%20step%201&base=v%3D1%26preset%3Dstep%26duration%3D0.05\
+                &allow.law.v1=formula&need.law_residual=max:1e-9";
+    let c = Challenge::parse(text).unwrap();
+    assert!(c.brief().contains("law.v1"), "{}", c.brief());
+    let pct = |t: &str| t.bytes().map(|b| format!("%{b:02X}")).collect::<String>();
+    let submit = |law: &str| grade_one(&c, 1, &format!("{text}&try.law.v1={}", pct(law)));
+    let right = submit(PAPER[0]);
+    assert!(right.pass(), "{right:?}");
+    // The same law rearranged passes; k1 for k1s1 is off by a part in a few hundred thousand,
+    // and fails.
+    assert!(submit("dwd - si1 + a2 + a3*x1h - k1*z1").pass());
+    let wrong = submit("-si1 + dwd + a3*wd + a2 - k1*z1");
+    assert!(!wrong.pass() && wrong.status == "ok", "{wrong:?}");
+    // A formula that does not parse is refused with the field and the reason.
+    let bad = submit("-si1 + foo");
+    assert!(
+        bad.status.contains("law.v1") && bad.status.contains("foo"),
+        "{}",
+        bad.status
+    );
+    // No law at all has no residual to judge: it does not pass.
+    assert!(!grade_one(&c, 1, text).pass());
+    // A law is allowed only as a formula.
+    let e = Challenge::parse(&text.replace("allow.law.v1=formula", "allow.law.v1=1..2"))
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("allow.law.v1=formula"), "{e}");
+}

@@ -23,10 +23,16 @@ export function knob(a, knobs) {
           { name: a.field, id },
           a.options.map((o) => el('option', { value: o, textContent: o })),
         )
-      : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
+      : a.kind === 'formula'
+        ? el('input', { type: 'text', name: a.field, id, spellcheck: false, className: 'formula', autocomplete: 'off' })
+        : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
   control.value = a.value ?? '';
   const unit = a.unit ? ` ${a.unit}` : '';
-  const range = a.kind === 'choice' ? `one of ${a.options.join(', ')}` : `${a.lo} to ${a.hi}${unit}`;
+  const range = {
+    choice: () => `one of ${a.options.join(', ')}`,
+    formula: () => `a formula of your own (${a.unit}; the walkthrough’s “Write this step” lists the names)`,
+    range: () => `${a.lo} to ${a.hi}${unit}`,
+  }[a.kind]();
   const rangeId = `${id}-range`;
   control.setAttribute('aria-describedby', rangeId);
   knobs.set(a.field, control);

@@ -145,4 +145,16 @@ export const LESSONS = [
     answer:
       'The paper’s step holds only while the motor’s R_r is at most 4 % above the model’s: from 6 % above on it runs away on every seed. “Holds” means only that no seed ran away: at 4 % above, the speed still ends 0.033 to 0.034 rad/s low, over a hundred times the exact model’s error. With the motor’s R_r below the model’s it never runs away and ends with a bias that grows with the error, 0.082 rad/s at 10 % below. Holding 50 rad/s, the same loop holds the whole ±10 % on every seed and ends within 0.4 rad/s of the reference. The currents turn at 0.42 Hz at 0.5 rad/s against 16 Hz at 50 rad/s. The usual argument fits this pair: the EKF reads the speed from the back-EMF, which grows with that frequency, so at low stator frequency it tells the filter little against a wrong R_r. The maps do not test that argument, and the tolerance is not a function of the speed alone: holding 20 rad/s the loop runs away with the motor’s R_r 10 % high on every seed and already 4 % high on some, worse than at 0.5 rad/s, and only holding 40 rad/s does it keep the whole +10 %. At 20 rad/s the start-up decides: from a correct initial estimate (init_err = 0) the same loop holds the motor’s R_r 10 % high on every seed. The paper’s three figures all run away with the motor’s R_r 10 % high, on every seed (step and sine200 stay at or below 0.5 rad/s; ramp starts and ends at standstill): they show the design with an exact model. A drive needs R_r known to a few per cent where the motor runs slowly, or estimated (the lesson on R_r as an EKF state).',
   },
+  {
+    id: 'derive-steps',
+    run: 'v=1&preset=step',
+    title: 'Derive the four steps yourself',
+    tab: 'walkthrough',
+    look: 'In the design walkthrough, open “Write this step” under step 1 and write v1 in the names listed there; press Enter to run it. The verdict under your law says whether it gives the designed dynamics ż1 = −k1·z1 + z2, and the plot below it shows the residual, your v1 less the paper’s, over the run. Then write v2 under step 2 (with the paper’s v1 or yours), v3 under step 3 and v4 under step 4.',
+    question:
+      'Which v1 makes ż1 = −k1·z1 + z2, when ż1 = a1·(x3·x̂4 − x2·x̂5) − a3·x̂1 − a2 + si1 − ω̇_d and z2 = a1·(x3·x̂4 − x2·x̂5) − v1? Which v2 then gives ż2 = −k2·z2 − z1?',
+    hint: 'Put z2 into ż1 and solve for v1: every term of ż1 but the torque is cancelled, and −k1·z1 is added. The paper writes a3·x̂1 as a3·z1 + a3·ω_d, so its gain on z1 is k1s1 = k1 − a3 (27)–(28). For v2, differentiate z2 along the observer (4), as the walkthrough’s step 2 does, and compare your terms with ψ2 of (33).',
+    answer:
+      'v1 = −si1 + ω̇_d + a3·ω_d + a2 − k1s1·z1, which is (26)–(28). Written as dwd - si1 + a2 + a3*x1h - k1*z1 it is the same law, and the verdict says it gives the designed dynamics. With k1 in place of k1s1 a3·z1 is left over, tiny beside k1·z1 on this preset, and the verdict still names it: it draws states and parameter values at which a3 is not small. v2 = −ψ2 − z1 − k2s1·z2 with k2s1 = k2 − a7 − a8, ψ2 of (33) and v̇1 of (31) with its typos corrected; copying the printed (31), with a3·ω_d for a3·ω̇_d, is named by the verdict of step 2.',
+  },
 ];

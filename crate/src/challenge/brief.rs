@@ -40,6 +40,7 @@ impl Challenge {
             let range = match &a.allowed {
                 Allowed::Range { lo, hi } => format!("{lo} to {hi}{unit}"),
                 Allowed::Choice { options } => format!("one of {}", options.join(", ")),
+                Allowed::Formula => format!("a formula of your own, in{unit}"),
             };
             let now = info.value.unwrap_or_else(|| "–".to_string());
             let _ = writeln!(out, "  {:<14} {range} (now {now}) — {}", a.field, info.doc);

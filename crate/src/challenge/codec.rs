@@ -376,7 +376,15 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
             excerpt(field)
         ))
     })?;
-    let allowed = if info.options.is_empty() {
+    let allowed = if info.formula {
+        if value != "formula" {
+            return Err(ChallengeError::malformed(format!(
+                "field '{key}' = '{}': a step's law is allowed as allow.{field}=formula",
+                excerpt(value)
+            )));
+        }
+        Allowed::Formula
+    } else if info.options.is_empty() {
         let bad = || {
             ChallengeError::malformed(format!(
                 "field '{key}' = '{}': expected LO..HI, two numbers with LO ≤ HI",

@@ -244,6 +244,12 @@ impl Challenge {
                         hi: None,
                         options: Some(FormList::Items(options.clone())),
                     },
+                    Allowed::Formula => AllowPart {
+                        field: a.field.clone(),
+                        lo: None,
+                        hi: None,
+                        options: Some(FormList::Items(vec!["formula".to_string()])),
+                    },
                 })
                 .collect(),
             need: self

@@ -130,14 +130,17 @@ pub enum Allowed {
         /// The names, as written.
         options: Vec<String>,
     },
+    /// Any formula the field takes: a step's own law (`law.v1`..`law.v4`).
+    Formula,
 }
 
 impl Allowed {
-    /// The codec text: `LO..HI` or `a|b`.
+    /// The codec text: `LO..HI`, `a|b` or `formula`.
     pub fn text(&self) -> String {
         match self {
             Allowed::Range { lo, hi } => format!("{lo}..{hi}"),
             Allowed::Choice { options } => options.join("|"),
+            Allowed::Formula => "formula".to_string(),
         }
     }
 }

@@ -142,6 +142,8 @@ fn fields(c: &Challenge, base: &Scenario, points: usize) -> Vec<Field> {
                         keep(o.clone(), 0);
                     }
                 }
+                // A law is the student's to derive: the search keeps the base's.
+                Allowed::Formula => {}
             }
             Field {
                 name: a.field.clone(),

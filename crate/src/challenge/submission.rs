@@ -64,6 +64,8 @@ impl Submission {
                     }
                     value.clone()
                 }
+                // Any formula the field takes: the field's own check below parses it.
+                Allowed::Formula => value.clone(),
             };
             // The field's own rules (whole numbers, say) on the base.
             base.clone()

@@ -201,6 +201,8 @@ pub struct Residuals<'a> {
     pub laws: &'a Laws,
     /// v_i − v_i,paper of the last sample, step by step.
     pub last: std::cell::Cell<[f64; 4]>,
+    /// v_i,paper of the last sample, step by step.
+    pub paper: std::cell::Cell<[f64; 4]>,
 }
 
 impl Custom for Residuals<'_> {
@@ -209,9 +211,12 @@ impl Custom for Residuals<'_> {
     #[inline]
     fn replace(&self, step: u8, signals: &[f64; SIGNALS], paper: f64) -> f64 {
         let used = self.laws.replace(step, signals, paper);
-        let mut r = self.last.get();
-        r[step as usize - 1] = used - paper;
+        let i = step as usize - 1;
+        let (mut r, mut p) = (self.last.get(), self.paper.get());
+        r[i] = used - paper;
+        p[i] = paper;
         self.last.set(r);
+        self.paper.set(p);
         used
     }
 }

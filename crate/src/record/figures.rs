@@ -169,6 +169,11 @@ pub const FIGURE_INFO: &[FigureInfo] = &[
         "final speed-estimate error ω − ω̂",
         "rad/s",
     ),
+    fig(
+        "law_residual",
+        "largest residual of your laws' designed dynamics, relative to the paper's law",
+        "",
+    ),
 ];
 
 /// The entry of the figure named `name`, if [`report`] gives one.

@@ -154,6 +154,9 @@ pub(super) struct Loop {
     /// With them, each step's v_i − v_i,paper at the last sample run: the residual of its
     /// designed dynamics (the walkthrough plots it through a replay).
     law_residuals: Cell<[f64; 4]>,
+    /// With them, each step's largest |v_i − v_i,paper| and largest |v_i,paper| over the samples
+    /// run (a replay runs the same samples again, which leaves the largest values as they are).
+    law_peaks: Cell<[[f64; 2]; 4]>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -192,13 +195,21 @@ fn custom_terms(
     laws: &Laws,
     t: f64,
     residuals: &Cell<[f64; 4]>,
+    peaks: &Cell<[[f64; 2]; 4]>,
 ) -> Result<Terms, SimError> {
     let kept = law::Residuals {
         laws,
         last: Cell::new([0.0; 4]),
+        paper: Cell::new([0.0; 4]),
     };
     let terms = controller.control_with(&input, adapted.as_ref(), &kept);
-    residuals.set(kept.last.get());
+    let (r, paper) = (kept.last.get(), kept.paper.get());
+    residuals.set(r);
+    let mut p = peaks.get();
+    for i in 0..4 {
+        p[i] = [p[i][0].max(r[i].abs()), p[i][1].max(paper[i].abs())];
+    }
+    peaks.set(p);
     terms.map_err(|error| match error {
         ControlError::Law { step, value } => {
             let (seen, _) = law::step_values(controller, &input, adapted.as_ref(), laws);
@@ -300,6 +311,7 @@ impl Loop {
                 (!laws.is_empty()).then_some(laws)
             },
             law_residuals: Cell::new([0.0; 4]),
+            law_peaks: Cell::new([[0.0; 2]; 4]),
             model,
             limit: scenario.limit(),
             steps: scenario.steps(),
@@ -320,6 +332,22 @@ impl Loop {
     /// Each step's v_i − v_i,paper at the sample run last (zeros without own laws).
     pub(super) fn law_residuals(&self) -> [f64; 4] {
         self.law_residuals.get()
+    }
+
+    /// The largest residual of the own laws' designed dynamics over the samples run, relative to
+    /// the paper's law: max over the steps with an own law of max|v_i − v_i,paper| / max|v_i,paper|
+    /// (None without own laws, or before a sample).
+    pub(super) fn law_residual(&self) -> Option<f64> {
+        let laws = self.laws.as_ref().filter(|_| self.has_laws())?;
+        let peaks = self.law_peaks.get();
+        (1..=4u8)
+            .filter(|&step| laws.step(step).is_some())
+            .map(|step| {
+                let [r, paper] = peaks[step as usize - 1];
+                r / paper
+            })
+            .reduce(f64::max)
+            .filter(|v| !v.is_nan())
     }
 
     /// Whether the scenario has its own laws (that drive the motor).
@@ -469,6 +497,7 @@ impl Loop {
                 laws,
                 t,
                 &self.law_residuals,
+                &self.law_peaks,
             ),
             None => match &observed.adapted {
                 Some(a) if !s.perfect => self.controller.control_adapted(&input, a),

@@ -270,7 +270,20 @@ impl Simulation {
 
     /// The transient, figures and warnings of the rows recorded so far (see [`record::report`]).
     pub fn report(&self) -> Report {
-        record::report(&self.lp.scenario, self)
+        let mut report = record::report(&self.lp.scenario, self);
+        // With own laws, how far they are from their steps' designed dynamics over the run.
+        if let (Some(figures), Some(value)) = (report.figures.as_mut(), self.lp.law_residual()) {
+            let info = record::figure_info("law_residual").expect("a figure of the table");
+            figures.push(record::Figure {
+                name: info.name,
+                label: info.label,
+                value,
+                unit: info.unit,
+                window: "the whole run".to_string(),
+                trend: None,
+            });
+        }
+        report
     }
 
     /// The figures of [`Simulation::report`]; None when nothing is recorded.

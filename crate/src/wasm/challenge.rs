@@ -24,6 +24,8 @@ enum AllowKind {
     Range,
     /// One of `options`.
     Choice,
+    /// A formula: a step's own law.
+    Formula,
 }
 
 /// An allowed field as the page shows it.
@@ -180,6 +182,7 @@ impl Challenge {
                         (AllowKind::Range, Some(*lo), Some(*hi), Vec::new())
                     }
                     Allowed::Choice { options } => (AllowKind::Choice, None, None, options.clone()),
+                    Allowed::Formula => (AllowKind::Formula, None, None, Vec::new()),
                 };
                 AllowView {
                     field: a.field.clone(),
