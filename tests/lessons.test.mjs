@@ -336,11 +336,9 @@ const SPECS = {
       '(27)–(28)',
       'the observer (4)',
       'ψ2 of (33)',
-      'under step 1',
-      'under step 2',
-      'under step 3',
-      'under step 4',
-      'the walkthrough’s step 2',
+      'under step 1 and write v1',
+      'write v2 under step 2 (with the paper’s v1 or yours), v3 under step 3 and v4 under step 4',
+      'as the walkthrough’s step 2 does',
     ],
     checks: [
       [
