@@ -107,7 +107,9 @@ const walkthrough = new Walkthrough({
   onFull: () => views.fullRun(),
   onPick: (t) => views.requestInspect(t),
   framing,
-  preview: (step, text) => client.lawPreview(step, text),
+  // The editor of a step's own law asks the core built with its tools (fetched on the first).
+  preview: (step, text) => client.job('law-preview', { step, text }),
+  language: () => client.job('law-language'),
 });
 walkthrough.plots.sampleTime = sampleTime;
 walkthrough.onInspect = (t) => {

@@ -76,16 +76,6 @@ export class RunClient {
   }
 
   /**
-   * The core's preview of a step's own law as it is typed: `{tex, error, designed}`.
-   * @param {number} step
-   * @param {string} text
-   */
-  lawPreview(step, text) {
-    const req = ++this.req;
-    return this.ask(`law ${req}`, { type: 'law-preview', req, step, text });
-  }
-
-  /**
    * Sends `message` and resolves with the answer that carries `key` (see receive).
    * @param {string} key
    * @param {P.ToWorker} message
@@ -138,8 +128,6 @@ export class RunClient {
       this.answer(`measure ${data.id}`, data.error, data.measures);
     } else if (data.type === 'described') {
       this.answer(`describe ${data.req}`, null, data.info);
-    } else if (data.type === 'law-previewed') {
-      this.answer(`law ${data.req}`, null, data.preview);
     } else if (data.type === 'invalid' && data.req !== undefined) {
       this.answer(`describe ${data.req}`, data.message);
     } else {

@@ -141,7 +141,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       ui.progress.value = done / total;
       ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
     },
-    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings, verdicts }) {
+    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings }) {
       if (id !== state.runId) return;
       setBusy(false);
       ui.progress.value = 1;
@@ -155,7 +155,13 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       figuresView.show(figures, warnings, unreached);
       if (view) {
         state.shownRun = id;
-        walkthrough.show(stability, state.nisBand, verdicts);
+        walkthrough.show(stability, state.nisBand);
+        // The steps' own laws, if the run has any, are judged by the core built with its tools.
+        if (state.info.fields.some((f) => f.formula && f.value))
+          client.job('law-verdicts', { scenario: state.info.encoded }).then(
+            (verdicts) => id === state.shownRun && walkthrough.showVerdicts(verdicts),
+            (e) => id === state.shownRun && walkthrough.verdictsFailed(e.message),
+          );
         // The walkthrough's plots are in the view once it has been opened.
         if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
         fitEmbed();

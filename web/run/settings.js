@@ -193,14 +193,13 @@ export function createSettings({
   const loadFirst = firstLoader(state, first, load);
 
   const handlers = {
-    ready({ presets: offered, nisBand, language }) {
+    ready({ presets: offered, nisBand }) {
       // A worker started after a crash is ready too: the presets are listed already, and the
       // scenario stays as it is unless none was loaded yet.
       if (!presets.length) {
         presets = offered;
         state.nisBand = nisBand;
         listPresets(ui.preset, presets);
-        walkthrough.setLanguage(language);
       } else loadFirst.again();
       loadFirst();
     },

@@ -20,7 +20,7 @@ export class Walkthrough {
    * `knob(key)` returns the settings control for a field;
    * `onCompare()` asks for the Euler/RK4 comparison.
    */
-  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview }) {
+  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview, language }) {
     this.container = container;
     this.inspectBox = inspectBox;
     this.knob = knob;
@@ -47,8 +47,10 @@ export class Walkthrough {
     this.report = null;
     /** @type {(() => void) | null} told when the sections are built */
     this.onBuilt = null;
-    /** @type {any} the language of the steps' own laws (the core's), once the worker is ready */
-    this.language = null;
+    /** @type {() => Promise<any>} asks for the language of the steps' own laws (the core's) */
+    this.language = language;
+    /** @type {Promise<void> | null} the language's names listed in each step, once asked for */
+    this.named = null;
     /** @type {any[]} the verdicts on the own laws of the last run */
     this.verdicts = [];
     // A step's own law is typeset by the core as it is typed, a moment after the last key.
@@ -96,15 +98,35 @@ export class Walkthrough {
     }
     if (this.info) this.describe(this.info);
     if (this.report !== null) this.container.querySelector('.stability-report').textContent = this.report;
-    if (this.language) fillNames(this.container, this.language);
     showVerdicts(this.container, this.verdicts);
     this.onBuilt?.();
   }
 
-  /** Takes the language of the steps' own laws (the core's names and functions). */
-  setLanguage(language) {
-    this.language = language;
-    if (this.built()) fillNames(this.container, language);
+  /**
+   * Lists in each step the names its own law may use, once: they come with the core built with
+   * its tools, fetched when the walkthrough is first shown (with KaTeX, for their symbols).
+   */
+  listNames() {
+    this.named ??= this.language().then(
+      (language) => fillNames(this.container, language),
+      () => {
+        this.named = null; // asked again when the walkthrough is next shown
+      },
+    );
+  }
+
+  /** Shows each step's verdict on the own law of the run shown (the core's). */
+  showVerdicts(verdicts) {
+    this.verdicts = verdicts;
+    showVerdicts(this.container, verdicts);
+  }
+
+  /** Says in each step with its own law that the verdicts could not be computed, and why. */
+  verdictsFailed(reason) {
+    for (const box of this.container.querySelectorAll('.law')) {
+      if (!(/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())) continue;
+      box.querySelector('.law-verdict').textContent = `The verdict on your law could not be computed: ${reason}`;
+    }
   }
 
   /** Shows the core's preview of the law in the knob `input`, unless it changed meanwhile. */
@@ -124,6 +146,11 @@ export class Walkthrough {
     ifocNote(this.container, ifoc);
     syncKnobs(this.container, (key) => this.knob(key));
     this.container.querySelector('.lumped').replaceChildren(lumpedTable(info));
+    if (this.opened) this.previewLaws();
+  }
+
+  /** Typesets each step's own law (KaTeX is fetched when the walkthrough is first shown). */
+  previewLaws() {
     for (const input of this.container.querySelectorAll('.law .formula')) this.previewLaw(input);
   }
 
@@ -132,15 +159,15 @@ export class Walkthrough {
    * for their view: the run's own when the walkthrough has been opened before, otherwise one the
    * page asks for when it is (until then a run neither computes nor draws them).
    */
-  show(stability, nisBand, verdicts) {
+  show(stability, nisBand) {
     this.nisBand = nisBand;
     this.stale = true;
     this.pending = null;
     this.report = stabilityText(stability);
-    this.verdicts = verdicts;
     const report = this.container.querySelector('.stability-report');
     if (report) report.textContent = this.report;
-    showVerdicts(this.container, verdicts);
+    // Until the core has judged the run's own laws, each step says it runs the paper's.
+    this.showVerdicts([]);
   }
 
   /** Whether the walkthrough is on screen. */
@@ -157,6 +184,8 @@ export class Walkthrough {
    * whether they scroll, and a waiting view is drawn. */
   shown() {
     this.build();
+    if (!this.opened) this.previewLaws();
+    this.listNames();
     this.opened = true;
     // The equations are typeset once KaTeX is in (fetched now the first time): then they learn
     // whether they scroll. Should KaTeX fail to load (the network gone), the page says so.

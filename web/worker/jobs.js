@@ -2,6 +2,9 @@
 // returns what the core computed, so any worker of a pool can take any of them. They run on the
 // core built with its tools (pkg/), which the worker loads with this module on its first job.
 import initTools, {
+  law_language,
+  law_preview,
+  law_verdicts,
   log_grid,
   panic_message,
   robust_cells,
@@ -47,5 +50,8 @@ export const JOBS = {
   'map-run': (d) => robust_run(d.scenario, d.seed),
   'map-cells': (d) => robust_cells(d.map, d.runs),
   'map-csv': (d) => robust_csv(d.map, d.cells),
+  'law-language': () => law_language(),
+  'law-preview': (d) => law_preview(d.step, d.text),
+  'law-verdicts': (d) => law_verdicts(d.scenario),
   ...CHALLENGE_JOBS,
 };

@@ -48,10 +48,6 @@ export {};
 
 /** @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest */
 /**
- * A step's own law as it is typed (`step` 1–4): the core's TeX of it, or where and why it is refused.
- * @typedef {{type: 'law-preview', req: number, step: number, text: string}} LawPreviewRequest
- */
-/**
  * Starts run `id` (a new run ends the last). `overlay`, a column or null, is kept as the run goes
  * for the overlay with the pins.
  * @typedef {{type: 'run', id: number, scenario: string, groups: Groups, buckets: number, overlay: string | null}} RunRequest
@@ -93,7 +89,7 @@ export {};
 
 /**
  * Every message the page sends.
- * @typedef {DescribeRequest | LawPreviewRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
+ * @typedef {DescribeRequest | RunRequest | CancelRequest | ViewRequest | CsvRequest | CsvNextRequest
  *   | InspectRequest | CompareRequest | PinRequest | PinCancelRequest | UnpinRequest | UnpinAllRequest | OverlayRequest
  *   | MeasureRequest | JobMessage} ToWorker
  */
@@ -119,6 +115,9 @@ export {};
  *   'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
  *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
  *   built-in challenges and the figures a criterion may name.
+ * - 'law-language': the names and functions a step's own law may use; 'law-preview' the law
+ *   `text` of `step` as typed (its TeX, or where and why it is refused); 'law-verdicts' the
+ *   verdict on each own law of `scenario` against its step's designed dynamics.
  * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
  *   CSV's header and the submissions; 'grade-link' one submission graded, its runs run and its
  *   CSV row written. The CSV is the header and then each row's `csv`, in file order.
@@ -144,6 +143,9 @@ export {};
  *   'challenge-run': {req: {scenario: string}, result: any},
  *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},
  *   'challenge-figures': {req: {}, result: {name: string, label: string, unit: string}[]},
+ *   'law-language': {req: {}, result: {names: any[], functions: {name: string, doc: string}[]}},
+ *   'law-preview': {req: {step: number, text: string}, result: {tex: string | null, error: {at: number, len: number, reason: string} | null, designed: string}},
+ *   'law-verdicts': {req: {scenario: string}, result: {step: number, designed: boolean, worst: number, finding: string | null, text: string}[]},
  *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassFile},
  *   'grade-link': {req: {text: string, row: ClassRow}, result: Graded},
  * }} Jobs
@@ -175,9 +177,8 @@ export {};
 // Worker → page.
 
 /**
- * Unprompted, once the core is loaded: the presets, the NIS band of the EKF's consistency and the
- * language of the steps' own laws (its names and functions).
- * @typedef {{type: 'ready', presets: any[], nisBand: any, language: any}} Ready
+ * Unprompted, once the core is loaded: the presets and the NIS band of the EKF's consistency.
+ * @typedef {{type: 'ready', presets: any[], nisBand: any}} Ready
  */
 /**
  * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
@@ -186,21 +187,16 @@ export {};
  */
 /** @typedef {{type: 'described', req: number, info: Info}} Described */
 /**
- * A law's preview: `{tex, error: {at, len, reason}, designed}` (the core's `law_preview`).
- * @typedef {{type: 'law-previewed', req: number, preview: any}} LawPreviewed
- */
-/**
  * A request the core refused: `req` for a describe, `id` for a run's request.
  * @typedef {{type: 'invalid', req?: number, id?: number, message: string}} Invalid
  */
 /** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
 /**
  * Run `id` ended: `view` is the whole run's view of its `groups` (null when it recorded nothing),
- * `failure` why it stopped early, and the core's report (figures, warnings, …); `verdicts` the
- * verdict on each step's own law against its designed dynamics (none without own laws).
+ * `failure` why it stopped early, and the core's report (figures, warnings, …).
  * @typedef {{type: 'done', id: number, rows: number, failure: string | null, view: View | null,
  *   computeMs: number, stability: any, figures: Figure[], unreached: any[], transient: any,
- *   warnings: any[], verdicts: any[]}} Done
+ *   warnings: any[]}} Done
  */
 /** @typedef {{type: 'cancelled', id: number}} Cancelled */
 /** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */
@@ -229,7 +225,7 @@ export {};
 
 /**
  * Every message the worker sends.
- * @typedef {Ready | Crashed | Described | LawPreviewed | Invalid | Progress | Done | Cancelled | ViewReply | CsvChunk
+ * @typedef {Ready | Crashed | Described | Invalid | Progress | Done | Cancelled | ViewReply | CsvChunk
  *   | CsvFailed | Inspected | Compared | PinProgress | Pins | OverlayReply | Measured | JobReply} FromWorker
  */
 

@@ -1,7 +1,7 @@
 // The worker's run: the one simulation it holds, run in time slices with progress, and what the
 // page asks of it once run (views, the CSV in chunks, a snapshot at one time, the predictors'
 // comparison, a challenge's measures).
-import { challenge_measure, law_verdicts, Simulation, variant } from '../../pkg-run/imlab.js';
+import { challenge_measure, Simulation, variant } from '../../pkg-run/imlab.js';
 import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */
@@ -160,7 +160,6 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
       unreached: report?.unreached ?? [],
       transient: report?.transient ?? null,
       warnings: report?.warnings ?? [],
-      verdicts: law_verdicts(scenario),
     },
     v,
   );

@@ -4,7 +4,7 @@
 //
 // The run worker holds one run (run.js) and the pins (pins.js). A pool's worker (`?role=pool`)
 // answers jobs only (jobs.js): it holds no pins and skips the warm-up for a run's first slices.
-import init, { describe, law_language, law_preview, nis_band, presets, recover } from '../../pkg-run/imlab.js';
+import init, { describe, nis_band, presets, recover } from '../../pkg-run/imlab.js';
 import { cancelPins, holdPins, overlay, pinAll, unpin, unpinAll } from './pins.js';
 import { cancel, compare, csvAnswer, exportCsv, inspect, measure, run, viewOf, warmUp } from './run.js';
 import { addPanicSource, isCrashed, post, trapped } from './runtime.js';
@@ -20,7 +20,7 @@ const ready = init({ module_or_path: WASM_URL }).then(() => {
     holdPins();
     warmUp();
   }
-  post({ type: 'ready', presets: presets(), nisBand: nis_band(), language: law_language() });
+  post({ type: 'ready', presets: presets(), nisBand: nis_band() });
 });
 
 /**
@@ -92,8 +92,6 @@ self.onmessage = async ({ data }) => {
     case 'describe':
     case 'recover':
       return describeScenario(data);
-    case 'law-preview':
-      return post({ type: 'law-previewed', req: data.req, preview: law_preview(data.step, data.text) });
     case 'run':
       return void run(data);
     case 'cancel':

@@ -203,6 +203,9 @@ pub struct Residuals<'a> {
     pub last: std::cell::Cell<[f64; 4]>,
     /// v_i,paper of the last sample, step by step.
     pub paper: std::cell::Cell<[f64; 4]>,
+    /// The signals of a step whose own law gave a value that is not a finite number (the run
+    /// stops there and names them).
+    pub failed: std::cell::Cell<Option<[f64; SIGNALS]>>,
 }
 
 impl Custom for Residuals<'_> {
@@ -211,6 +214,9 @@ impl Custom for Residuals<'_> {
     #[inline]
     fn replace(&self, step: u8, signals: &[f64; SIGNALS], paper: f64) -> f64 {
         let used = self.laws.replace(step, signals, paper);
+        if !used.is_finite() {
+            self.failed.set(Some(*signals));
+        }
         let i = step as usize - 1;
         let (mut r, mut p) = (self.last.get(), self.paper.get());
         r[i] = used - paper;

@@ -201,6 +201,7 @@ fn custom_terms(
         laws,
         last: Cell::new([0.0; 4]),
         paper: Cell::new([0.0; 4]),
+        failed: Cell::new(None),
     };
     let terms = controller.control_with(&input, adapted.as_ref(), &kept);
     let (r, paper) = (kept.last.get(), kept.paper.get());
@@ -212,14 +213,14 @@ fn custom_terms(
     peaks.set(p);
     terms.map_err(|error| match error {
         ControlError::Law { step, value } => {
-            let (seen, _) = law::step_values(controller, &input, adapted.as_ref(), laws);
             let own = laws.step(step).expect("a failing step has its own law");
+            let signals = kept.failed.get().expect("a failing law keeps its signals");
             SimError::Law(Box::new(LawFailure {
                 t,
                 step,
                 text: own.text.clone(),
                 value,
-                signals: law::named_values(own, &seen.signals[step as usize - 1]),
+                signals: law::named_values(own, &signals),
             }))
         }
         error => SimError::Control { t, error },

@@ -1,11 +1,13 @@
-//! The bindings of the analysis tools: frequency sweeps, seed sweeps and model-error maps. Built
-//! only with the `tools` feature, into the module the page fetches when a tool is first used;
-//! the first run needs none of them.
+//! The bindings of the analysis tools: frequency sweeps, seed sweeps and model-error maps, and the
+//! editor of a step's own law (its preview, its language, the verdicts). Built only with the
+//! `tools` feature, into the module the page fetches when a tool is first used; the first run
+//! needs none of them.
 
 use super::{from_js, js_error, to_js};
 use crate::analysis;
 use crate::robust;
 use crate::scenario::{Scenario, MAX_SEED};
+use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
 /// The closed-loop response of `scenario` at `freq` (Hz): `{freq, gain, phase, gain_hat, ...}`.
@@ -143,4 +145,49 @@ fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
         )));
     }
     Ok(value as u64)
+}
+
+/// The language of the steps' own laws: `{names: [{name, tex, unit, doc, from_step}],
+/// functions: [{name, doc}]}`.
+#[wasm_bindgen]
+pub fn law_language() -> Result<JsValue, JsValue> {
+    use crate::control::formula::{Name, FUNCTIONS, NAMES};
+    #[derive(Serialize)]
+    struct Function {
+        name: &'static str,
+        doc: &'static str,
+    }
+    #[derive(Serialize)]
+    struct Language {
+        names: &'static [Name],
+        functions: Vec<Function>,
+    }
+    to_js(&Language {
+        names: NAMES,
+        functions: FUNCTIONS
+            .iter()
+            .map(|&(name, _, _, doc)| Function { name, doc })
+            .collect(),
+    })
+}
+
+/// The law `text` of step `step` (1–4) as an editor shows it: `{tex, error: {at, len, reason},
+/// designed}` (see [`crate::control::law::preview`]).
+#[wasm_bindgen]
+pub fn law_preview(step: u8, text: &str) -> Result<JsValue, JsValue> {
+    if !(1..=4).contains(&step) {
+        return Err(js_error(format!("step {step}: the steps are 1 to 4")));
+    }
+    to_js(&crate::control::law::preview(step, text))
+}
+
+/// The verdict of each step with its own law in `scenario`, against its designed dynamics:
+/// `[{step, designed, worst, finding, text}]`.
+#[wasm_bindgen]
+pub fn law_verdicts(scenario: &str) -> Result<JsValue, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let model = s.model.lumped().map_err(js_error)?;
+    let verdicts = crate::control::law::verdicts(&s.law, &model, &s.gains)
+        .map_err(|(step, e)| js_error(format!("law.v{step}: {e}")))?;
+    to_js(&verdicts)
 }
