@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { browserSuite, runAgain, settled } from './browser.mjs';
+import { browserSuite, runAgain, settled, startRun } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -292,8 +292,7 @@ test("a model-error map link replays the map, its CSV is imlab robust's byte for
     });
     assert.ok(cells.some((c) => c.ranAway) && cells.some((c) => !c.ranAway), 'the map has both kinds of cell');
     // A click on the first cell runs its scenario, the one the CSV's row names.
-    await page.click('.map-table .map-cell >> nth=0');
-    assert.equal(await settled(page), 'done');
+    assert.equal(await startRun(page, () => page.click('.map-table .map-cell >> nth=0')), 'done');
     assert.equal(new URL(page.url()).search.slice(1), rows[0].at(-1));
   });
 });

@@ -25,8 +25,9 @@ const CRASH_MESSAGE = /^The simulation worker failed \(.+\)\. It was restarted; 
 const simulationWorker = (page) => page.workers()[0];
 
 /**
- * Opens `path` in a fresh page whose worker keeps the core's WASM exports on `self.core`, as a
- * copy the test may change: the worker's bundle is served with a line before it that wraps
+ * Opens `path` in a fresh page whose worker keeps the run core's WASM exports on `self.core` (the
+ * first instance it makes; the tools' core, loaded later, is left as it is), as a copy the test
+ * may change: the worker's bundle is served with a line before it that wraps
  * `WebAssembly.instantiateStreaming`. The test's way into the one WASM instance the bundled worker
  * holds; the page and the worker are otherwise as served.
  */
@@ -35,7 +36,7 @@ async function pageWithCore(path, errors) {
   await page.context().route('**/web/worker-*.js', async (route) => {
     const response = await route.fetch();
     const keep =
-      '{ const instantiate = WebAssembly.instantiateStreaming; WebAssembly.instantiateStreaming = async (...a) => { const r = await instantiate(...a); self.core = { ...r.instance.exports }; return { module: r.module, instance: { exports: self.core } }; }; }\n';
+      '{ const instantiate = WebAssembly.instantiateStreaming; WebAssembly.instantiateStreaming = async (...a) => { const r = await instantiate(...a); if (self.core) return r; self.core = { ...r.instance.exports }; return { module: r.module, instance: { exports: self.core } }; }; }\n';
     await route.fulfill({ response, body: keep + (await response.text()) });
   });
   await page.goto(`${suite.server.url}${path}`);

@@ -57,6 +57,7 @@ const state = {
   runId: 0, // runs started (run)
   running: false, // a run is being computed (run)
   ranScenario: null, // the scenario of the last run started (run)
+  ranLaws: false, // whether it has own laws for the backstepping steps (run)
   shownRun: 0, // the run the plots show (run)
   transient: null, // {t, reason}: the end of the start-up transient, from the core (run)
   figures: [], // the run's figures, from the core (run)

@@ -57,7 +57,14 @@ function allowRow(f) {
   const remove = button(`${id}-remove`, 'Remove', () => row.remove());
   remove.setAttribute('aria-label', `Remove ${f.key}`);
   const unit = f.unit ? ` ${f.unit}` : '';
-  if (f.options.length) {
+  if (f.formula) {
+    // A step's own law: the student writes any formula (the core allows it as `formula`).
+    row.append(
+      el('span', { className: 'key', textContent: f.key }),
+      el('input', { type: 'hidden', name: 'options', value: 'formula' }),
+      el('span', { className: 'range', textContent: `a formula of the student’s own (${f.unit})` }),
+    );
+  } else if (f.options.length) {
     row.append(
       el('label', { htmlFor: id, textContent: `${f.key}: choices (a|b)` }),
       el('input', { id, name: 'options', value: f.options.join('|') }),
@@ -85,7 +92,9 @@ export function needSet(figures, measures) {
   const rows = el('div', { id: 'compose-need' });
   for (const fig of figures) {
     const m = measures?.figures.find((x) => x.name === fig.name);
-    if (measures && !m) continue; // this scenario does not measure it (no step, no load step)
+    // This scenario does not measure it (no step, no load step); a law's residual is offered
+    // for a challenge that allows one, though its base has none.
+    if (measures && !m && fig.name !== 'law_residual') continue;
     rows.append(needRow(fig, m));
   }
   return el('fieldset', { className: 'compose-set' }, [

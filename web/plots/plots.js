@@ -193,8 +193,11 @@ export class Plots {
     const i = this.slots.indexOf(div);
     if (i < 0 || this.charts[i] !== null || this.view === null) return;
     this.observer?.unobserve(div);
+    // Its scales are set here, not zoomed by the user: the set's window stays as it is.
+    this.syncing = true;
     const chart = new uPlot(chartOptions(this, this.defs[i], width), this.data(this.defs[i], this.view), div);
     if (this.window) chart.setScale('x', { min: this.window[0], max: this.window[1] });
+    this.syncing = false;
     div.style.minHeight = '';
     this.charts[i] = chart;
   }

@@ -96,7 +96,15 @@ export function fieldControl(f, prefix) {
 export function composeScenario(form, preset) {
   const parts = ['v=1', `preset=${preset}`];
   for (const control of form.querySelectorAll('input, select')) {
-    const value = control.type === 'checkbox' ? (control.checked ? '1' : '0') : control.value.trim();
+    // A formula as typed: the core's positions in it are those the walkthrough's preview marks.
+    const value =
+      control.type === 'checkbox'
+        ? control.checked
+          ? '1'
+          : '0'
+        : control.classList.contains('formula')
+          ? control.value
+          : control.value.trim();
     parts.push(`${control.name}=${encodeURIComponent(value)}`);
   }
   return parts.join('&');

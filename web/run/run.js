@@ -51,6 +51,19 @@ function reportEnd(failure, warnings, rows, ms) {
 }
 
 /**
+ * Has the core built with its tools judge the own laws of run `id`, if it has any (each step with
+ * one says it is being checked meanwhile), and shows the verdicts unless a newer run began.
+ */
+function judgeLaws({ client, state, walkthrough }, id) {
+  walkthrough.checkingLaws(state.ranLaws);
+  if (!state.ranLaws) return;
+  client.job('law-verdicts', { scenario: state.ranScenario }).then(
+    (verdicts) => id === state.runId && walkthrough.showVerdicts(verdicts),
+    (e) => id === state.runId && walkthrough.verdictsFailed(e.message),
+  );
+}
+
+/**
  * The run, started with `start()` and followed through the worker's messages (`handlers`).
  * `figuresView` shows the run's figures, `exporter` is the CSV export a new run ends, `fitEmbed()`
  * sizes an embed's plots, and `afterRun()` follows up a run that is done and drawn.
@@ -93,6 +106,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     }
     const id = ++state.runId;
     state.ranScenario = state.info.encoded;
+    state.ranLaws = state.info.fields.some((f) => f.formula && f.value);
     markRun(state.info.encoded);
     fromRun = document.activeElement === ui.run; // started from Run: focus returns there
     document.body.dataset.scenario = state.info.encoded;
@@ -146,6 +160,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       setBusy(false);
       ui.progress.value = 1;
       const arrived = performance.now();
+      judgeLaws({ client, state, walkthrough }, id);
       state.transient = transient;
       state.figures = figures;
       state.unreached = unreached;
@@ -156,12 +171,6 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       if (view) {
         state.shownRun = id;
         walkthrough.show(stability, state.nisBand);
-        // The steps' own laws, if the run has any, are judged by the core built with its tools.
-        if (state.info.fields.some((f) => f.formula && f.value))
-          client.job('law-verdicts', { scenario: state.info.encoded }).then(
-            (verdicts) => id === state.shownRun && walkthrough.showVerdicts(verdicts),
-            (e) => id === state.shownRun && walkthrough.verdictsFailed(e.message),
-          );
         // The walkthrough's plots are in the view once it has been opened.
         if (walkthrough.plots.defs.every((p) => p.id in view.plots)) walkthrough.receive(view);
         fitEmbed();

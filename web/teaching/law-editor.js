@@ -19,7 +19,7 @@ export function lawBlock(law) {
     el('h3', { textContent: 'Write this step' }),
     el('p', { textContent: law.intro }),
     knobs,
-    el('div', { className: 'law-preview', ariaLive: 'polite' }),
+    el('div', { className: 'law-preview', id: `law-preview-${law.step}` }),
     el('p', {
       className: 'law-verdict',
       role: 'status',
@@ -36,6 +36,9 @@ export function lawBlock(law) {
  */
 export function showPreview(box, preview, text) {
   const out = box.querySelector('.law-preview');
+  const input = box.querySelector('input.formula');
+  input?.setAttribute('aria-describedby', out.id);
+  input?.setAttribute('aria-invalid', String(!!preview.error && text.trim() !== ''));
   if (text.trim() === '') {
     out.replaceChildren();
     return;

@@ -166,8 +166,19 @@ export class Walkthrough {
     this.report = stabilityText(stability);
     const report = this.container.querySelector('.stability-report');
     if (report) report.textContent = this.report;
-    // Until the core has judged the run's own laws, each step says it runs the paper's.
+  }
+
+  /**
+   * A run ended: without own laws each step says it runs the paper's; with them, the steps with
+   * a law say it is being checked until the verdicts come (`showVerdicts`).
+   */
+  checkingLaws(checking) {
     this.showVerdicts([]);
+    if (!checking) return;
+    for (const box of this.container.querySelectorAll('.law')) {
+      if (/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())
+        box.querySelector('.law-verdict').textContent = 'Checking your law against the designed dynamics…';
+    }
   }
 
   /** Whether the walkthrough is on screen. */

@@ -65,22 +65,31 @@ function view(run, groups, t0, t1, buckets) {
   const all = run.sim.view(recordedColumns(groups), t0, t1, buckets);
   /** @type {Record<string, P.PlotView>} */
   const plots = {};
+  // Each replayed set is replayed once for all the plots that show part of it.
+  const replays = new Map();
   Object.entries(groups).forEach(([id, names], g) => {
     // A plot of replayed series shows them alone, on the times of their own envelope.
     const replay = replayed(names);
     if (replay) {
-      let cols;
-      try {
-        cols = replay.of(run.sim, t0, t1, buckets);
-      } catch (e) {
-        if (trapped(e)) throw e;
-        // Not evaluated for this scenario (d̃ with an observer with extra states or the delay
-        // compensation, residuals without own laws; the walkthrough says so): no sample at the
-        // window's times.
-        const t = all[g][0];
-        cols = [t, ...replay.names.map(() => new Float64Array(t.length).fill(NaN))];
+      if (!replays.has(replay)) {
+        try {
+          replays.set(replay, replay.of(run.sim, t0, t1, buckets));
+        } catch (e) {
+          if (trapped(e)) throw e;
+          // Not evaluated for this scenario (d̃ with an observer with extra states or the delay
+          // compensation, residuals without own laws; the walkthrough says so): no sample at the
+          // window's times.
+          const t = all[g][0];
+          replays.set(replay, [t, ...replay.names.map(() => new Float64Array(t.length).fill(NaN))]);
+        }
       }
-      plots[id] = { t: cols[0], columns: Object.fromEntries(replay.names.map((c, i) => [c, cols[i + 1]])) };
+      // Copies: each plot's buffers are moved to the page on their own.
+      const cols = replays.get(replay).map((/** @type {Float64Array} */ c) => c.slice());
+      const asked = replay.names.filter((c) => names.includes(c));
+      plots[id] = {
+        t: cols[0],
+        columns: Object.fromEntries(asked.map((c) => [c, cols[replay.names.indexOf(c) + 1]])),
+      };
       return;
     }
     const cols = all[g];

@@ -140,6 +140,8 @@ pub trait Custom {
     type Signals: Signals;
     /// The value step `step` (1–4) uses: the paper's `paper`, or another law's.
     fn replace(&self, step: u8, signals: &[f64; SIGNALS], paper: f64) -> f64;
+    /// Whether step `step` (1–4) uses another law than the paper's.
+    fn owns(&self, step: u8) -> bool;
 }
 
 /// The signals a law reads, as the law gathers them.
@@ -190,9 +192,13 @@ impl Custom for Paper {
     fn replace(&self, _: u8, _: &[f64; SIGNALS], paper: f64) -> f64 {
         paper
     }
+    fn owns(&self, _: u8) -> bool {
+        false
+    }
 }
 
-/// The value step `step` uses, refused unless finite.
+/// The value step `step` uses; one of another law's is refused unless finite (a paper's step
+/// that is not finite reaches the voltage, which the loop refuses as diverged).
 #[inline(always)]
 fn chosen<C: Custom>(
     custom: &C,
@@ -204,7 +210,7 @@ fn chosen<C: Custom>(
         return Ok(paper);
     }
     let value = custom.replace(step, s, paper);
-    if value.is_finite() {
+    if value.is_finite() || !custom.owns(step) {
         Ok(value)
     } else {
         Err(ControlError::Law { step, value })

@@ -15,6 +15,8 @@ pub const MAX_CHARS: usize = 2000;
 pub const MAX_OPS: usize = 400;
 /// Deepest stack a program may need; the evaluator's stack holds this many values.
 pub const MAX_DEPTH: usize = 32;
+/// Deepest nesting of parentheses, signs and powers the parser follows.
+pub const MAX_NESTING: usize = 64;
 
 /// A named signal a formula may use: its name, its symbol in TeX, its unit and its meaning, and
 /// the first step whose formula may use it (the later steps' errors and virtual controls follow
@@ -387,6 +389,8 @@ struct Parser<'a> {
     /// Where the formula ends (one past its last character), for errors at its end.
     end: usize,
     step: u8,
+    /// How deep in parentheses, signs and powers the parser is.
+    nesting: usize,
 }
 
 impl Parser<'_> {
@@ -437,6 +441,21 @@ impl Parser<'_> {
     }
 
     fn unary(&mut self) -> Result<Node, FormulaError> {
+        self.nesting += 1;
+        let node = self.unary_inner();
+        self.nesting -= 1;
+        node
+    }
+
+    fn unary_inner(&mut self) -> Result<Node, FormulaError> {
+        if self.nesting > MAX_NESTING {
+            let (at, len) = self.here();
+            return Err(FormulaError::new(
+                at,
+                len,
+                format!("the formula nests deeper than {MAX_NESTING} levels here"),
+            ));
+        }
         if self.at_op('-') {
             self.pos += 1;
             return Ok(Node::Neg(Box::new(self.unary()?)));
@@ -587,6 +606,7 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
         pos: 0,
         end: length + 1,
         step,
+        nesting: 0,
     };
     let node = parser.expr()?;
     if let Some((token, at, len)) = parser.peek() {
@@ -1022,6 +1042,13 @@ mod tests {
             .unwrap_err()
             .reason
             .contains("deep"));
+        // The parser follows at most MAX_NESTING levels: deeper input is refused, not recursed.
+        let nested = "(".repeat(900) + "1" + &")".repeat(900);
+        let e = parse(&nested, 1).unwrap_err();
+        assert!(
+            e.reason.contains("nests deeper") && e.at == MAX_NESTING + 1,
+            "{e}"
+        );
     }
 
     #[test]
