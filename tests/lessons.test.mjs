@@ -360,6 +360,11 @@ const SPECS = {
         () => /it has k1 where \(28\) has k1s1/.test(lawVerdicts(lawRun(1, '-si1 + dwd + a3*wd + a2 - k1*z1'))),
       ],
       [
+        'k1s1 written as its value on this preset, 1199.95',
+        'claim',
+        () => /written as its number/.test(lawVerdicts(lawRun(1, '-si1 + dwd + a3*wd + a2 - 1199.95*z1'))),
+      ],
+      [
         'v2 = −ψ2 − z1 − k2s1·z2',
         'claim',
         () => /law\.v2: Your step 2 gives the designed dynamics/.test(lawVerdicts(lawRun(2, PAPER_V2))),

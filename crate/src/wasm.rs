@@ -184,28 +184,22 @@ impl Simulation {
     /// The unknown terms d̃2, d̃4 of steps 2 and 4 evaluated from the simulated truth over t in
     /// [t0, t1], as one M4 envelope in `buckets` buckets: `Float64Array`s [t, d̃2, d̃4].
     pub fn disturbances(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
-        let cols = self
-            .inner
-            .disturbances(t0, t1, buckets as usize)
-            .map_err(js_error)?;
-        Ok(cols
-            .iter()
-            .map(|c| Float64Array::from(c.as_slice()))
-            .collect())
+        float_arrays(
+            self.inner
+                .disturbances(t0, t1, buckets as usize)
+                .map_err(js_error)?,
+        )
     }
 
     /// The residual of each step's designed dynamics, v_i − v_i,paper, over t in [t0, t1], as
     /// one M4 envelope in `buckets` buckets: `Float64Array`s [t, r1, r2, r3, r4]; throws for a
     /// scenario without its own laws.
     pub fn law_residuals(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
-        let cols = self
-            .inner
-            .law_residuals(t0, t1, buckets as usize)
-            .map_err(js_error)?;
-        Ok(cols
-            .iter()
-            .map(|c| Float64Array::from(c.as_slice()))
-            .collect())
+        float_arrays(
+            self.inner
+                .law_residuals(t0, t1, buckets as usize)
+                .map_err(js_error)?,
+        )
     }
 
     /// Every recorded value and the Kalman gain at the recorded sample nearest to `t` (s),
@@ -274,6 +268,14 @@ pub fn presets() -> Result<JsValue, JsValue> {
         })
         .collect();
     to_js(&list)
+}
+
+/// An envelope's columns as `Float64Array`s.
+fn float_arrays(cols: Vec<Vec<f64>>) -> Result<Array, JsValue> {
+    Ok(cols
+        .iter()
+        .map(|c| Float64Array::from(c.as_slice()))
+        .collect())
 }
 
 fn to_js(value: &impl Serialize) -> Result<JsValue, JsValue> {

@@ -94,14 +94,19 @@ fn a_link_with_a_law_round_trips_and_a_bad_law_is_refused_at_its_place() {
     assert_eq!(errors.len(), 1);
 }
 
-#[test]
-fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_signals() {
-    let s = Scenario::parse("v=1&preset=step&law.v3=-k3*z3%20%2B%20ln(z3%20-%20z3)").unwrap();
-    let e = Simulation::traced(&s)
+/// The message of the run of `s`, which must fail.
+fn failure(s: &Scenario) -> String {
+    Simulation::traced(s)
         .unwrap()
         .run()
         .unwrap_err()
-        .to_string();
+        .to_string()
+}
+
+#[test]
+fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_signals() {
+    let s = Scenario::parse("v=1&preset=step&law.v3=-k3*z3%20%2B%20ln(z3%20-%20z3)").unwrap();
+    let e = failure(&s);
     assert!(
         e.starts_with("your law.v3 = -k3*z3 + ln(z3 - z3) gave -inf at t = 0.00000 s, from k3 = "),
         "{e}"
@@ -113,11 +118,7 @@ fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_s
 fn a_finite_law_that_drives_a_papers_step_past_every_bound_ends_the_run_as_diverged() {
     // v1 = 1e306 is finite; the paper's step 2 then is not, and the voltage it asks for is refused.
     let s = Scenario::parse("v=1&preset=step&law.v1=1e306").unwrap();
-    let e = Simulation::traced(&s)
-        .unwrap()
-        .run()
-        .unwrap_err()
-        .to_string();
+    let e = failure(&s);
     assert!(
         e.contains("diverged") || e.contains("controller failed"),
         "{e}"
@@ -143,6 +144,8 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
         (1, "si1 + dwd + a3*wd + a2 - k1s1*z1", "the term −si1 has the wrong sign"),
         (1, "dwd + a3*wd + a2 - k1s1*z1", "the term −si1 of the paper's law is missing"),
         (1, "-si1 + dwd + a3*wd + a2 - 400*z1", "decays at 400 /s, not 1200 /s"),
+        // step's k1s1 = 1200 − 0.05 written as its number: right here, wrong for other values.
+        (1, "-si1 + dwd + a3*wd + a2 - 1199.95*z1", "written as its number"),
         (3, "-(-2*a8*(x4h*x4h + x5h*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*z3", "missing"),
         (3, "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h)) - k3*z3", "missing"),
         (
