@@ -9,7 +9,8 @@
 //   BENCH_VS_DIST=DIR node tests/bench/throttled.mjs this build and another build's dist/ side by side
 //
 // Run by `make bench`. Prints, for each build, serving and profile, the median (min–max) of
-// BENCH_REPS (default 5) loads, and the bytes the network sent before the first plot.
+// BENCH_REPS (default 5) loads, and the bytes the network sent before the first plot; with two
+// builds, their loads alternate and the ratio of each pair of loads is given too.
 import { cpSync, existsSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
@@ -135,15 +136,17 @@ for (const profile of chosen(PROFILES, 'BENCH_PROFILES', (p) => p.name)) {
     ['plain', false],
   ];
   for (const [servingName, compressed] of chosen(servings, 'BENCH_SERVING', (s) => s[0])) {
+    const served = [];
     for (const [buildName, dir] of builds) {
       if (!existsSync(join(dir, 'index.html'))) throw new Error(`${dir} has no index.html: build it first`);
-      const served = compressed ? compressedCopy(dir) : { dir, done: () => {} };
-      const { server, url } = await counted(served.dir, compressed);
-      const runs = [];
-      // Interleaved with nothing else: each load is its own context, one after another.
-      for (let r = 0; r < REPS; r++) runs.push(await loads(url, profile));
+      const copy = compressed ? compressedCopy(dir) : { dir, done: () => {} };
+      served.push({ buildName, copy, ...(await counted(copy.dir, compressed)), runs: [] });
+    }
+    // The builds' loads alternate, so that a slower spell of the machine falls on both alike.
+    for (let r = 0; r < REPS; r++) for (const build of served) build.runs.push(await loads(build.url, profile));
+    for (const { buildName, copy, server, runs } of served) {
       server.close();
-      served.done();
+      copy.done();
       console.log(
         `  ${servingName.padEnd(10)} ${buildName.padEnd(12)} first load ${spread(runs.map((r) => r.first))} ms, ` +
           `${spread(
@@ -151,6 +154,17 @@ for (const profile of chosen(PROFILES, 'BENCH_PROFILES', (p) => p.name)) {
             0,
           )} KiB sent before it (the run's compute ${spread(runs.map((r) => r.compute))} ms); ` +
           `second load ${spread(runs.map((r) => r.second))} ms`,
+      );
+    }
+    if (served.length === 2) {
+      const [a, b] = served.map((s) => s.runs);
+      const ratio = (key) =>
+        spread(
+          a.map((run, i) => run[key] / b[i][key]),
+          2,
+        );
+      console.log(
+        `  ${servingName.padEnd(10)} this ÷ other, load by load: first ${ratio('first')}, second ${ratio('second')}`,
       );
     }
   }

@@ -1,5 +1,12 @@
-// How numbers read on a plot: the legend's read-out, and the axes' tick steps, tick labels and
-// the room time ticks need.
+// How numbers read on the page: counts in its sentences; on a plot, the legend's read-out, and the
+// axes' tick steps, tick labels and the room time ticks need.
+
+/**
+ * A whole number as the page's sentences write it: thousands grouped by commas, as in English,
+ * which the page is in whatever the browser's language (and no locale's data is loaded for it).
+ * @param {number} n
+ */
+export const count = (n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ',');
 
 // Tick steps of 1, 2 and 5 times a power of ten: a step of 2.5 would cost every label one more digit.
 export const STEPS = Array.from({ length: 33 }, (_, i) => i - 16).flatMap((e) =>

@@ -1,5 +1,6 @@
 // Downloads: the run's CSV, which the worker sends in chunks of rows, and a PNG of the plots in
 // the open tab.
+import { count } from '../plots/numbers.js';
 import { say, ui } from '../ui/page.js';
 import { png } from './png.js';
 import { presetNamed } from '../ui/url.js';
@@ -94,12 +95,12 @@ export function createExport({ client, state, plots, walkthrough }) {
       job.parts.push(part);
       ui.progress.value = total ? rows / total : 1;
       if (rows < total) {
-        ui.status.textContent = `Exporting CSV: ${rows.toLocaleString()} of ${total.toLocaleString()} rows`;
+        ui.status.textContent = `Exporting CSV: ${count(rows)} of ${count(total)} rows`;
         client.post({ type: 'csv-next', serial });
         return;
       }
       download(new Blob(job.parts, { type: 'text/csv' }), `${fileStem()}.csv`);
-      endExport('done', `CSV exported: ${total.toLocaleString()} rows`);
+      endExport('done', `CSV exported: ${count(total)} rows`);
     },
     'csv-failed'({ serial, message }) {
       if (state.export?.serial !== serial) return;

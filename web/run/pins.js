@@ -1,5 +1,6 @@
 // Pins: runs kept in the worker beside the current one, listed in the Analysis tab and kept in
 // the link (`#pins=`), and the overlay that compares one column of them with the current run.
+import { count } from '../plots/numbers.js';
 import uPlot from '../../vendor/uPlot.esm.js';
 import { $, say, ui } from '../ui/page.js';
 import { decodePins, excerpt, fragment, listed, setFragment } from '../ui/url.js';
@@ -45,7 +46,7 @@ function overlayChart(title, names, t, series, width) {
 function pinsFromLink(shared) {
   if (shared.length > MAX_PINS_CHARS) {
     say(
-      `The pins in the address were not run: ${shared.length.toLocaleString()} characters, more than the ${MAX_PINS_CHARS.toLocaleString()} a pins fragment may hold.`,
+      `The pins in the address were not run: ${count(shared.length)} characters, more than the ${count(MAX_PINS_CHARS)} a pins fragment may hold.`,
     );
     setFragment('pins', null);
     return null;
@@ -57,9 +58,7 @@ function pinsFromLink(shared) {
   const sent = scenarios.slice(0, MAX_PINS_SENT);
   const dropped = scenarios.length - sent.length;
   if (dropped > 0)
-    say(
-      `Only the first ${MAX_PINS_SENT} pins in the address were run; ${dropped.toLocaleString()} more were left out.`,
-    );
+    say(`Only the first ${MAX_PINS_SENT} pins in the address were run; ${count(dropped)} more were left out.`);
   return sent;
 }
 

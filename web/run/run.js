@@ -1,5 +1,6 @@
 // The run of the scenario in the form: starting it, its progress and status line, how it ended,
 // and the plots, figures and walkthrough it fills when it is done.
+import { count } from '../plots/numbers.js';
 import { $, say, ui } from '../ui/page.js';
 import { fieldValue } from './controls.js';
 import { excerpt, markRun } from '../ui/url.js';
@@ -36,16 +37,16 @@ function showTransient(transient) {
 function reportEnd(failure, warnings, rows, ms) {
   const ranAway = warnings.find((w) => w.kind === 'runaway');
   if (failure) {
-    say(`The run stopped early: ${failure}. The plots show the ${rows.toLocaleString()} samples before it.`);
-    ui.status.textContent = `Stopped after ${rows.toLocaleString()} samples`;
+    say(`The run stopped early: ${failure}. The plots show the ${count(rows)} samples before it.`);
+    ui.status.textContent = `Stopped after ${count(rows)} samples`;
     document.body.dataset.state = 'failed';
   } else if (ranAway) {
     // The simulation completed, but as a control run it failed: say so before any figure.
     say(`${ranAway.text} The plots show what the motor did.`);
-    ui.status.textContent = `Ran away: ${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+    ui.status.textContent = `Ran away: ${count(rows)} samples in ${ms.toFixed(0)} ms`;
     document.body.dataset.state = 'failed';
   } else {
-    ui.status.textContent = `${rows.toLocaleString()} samples in ${ms.toFixed(0)} ms`;
+    ui.status.textContent = `${count(rows)} samples in ${ms.toFixed(0)} ms`;
     document.body.dataset.state = 'done';
   }
 }
@@ -113,7 +114,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     document.body.dataset.started = String(id); // runs started: tests wait on it, not on a time
     started = performance.now();
     ui.progress.value = 0;
-    ui.status.textContent = `Running ${state.info.steps.toLocaleString()} samples…`;
+    ui.status.textContent = `Running ${count(state.info.steps)} samples…`;
     walkthrough.closeInspect();
     setBusy(true);
     // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
@@ -153,7 +154,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     progress({ id, done, total }) {
       if (id !== state.runId) return;
       ui.progress.value = done / total;
-      ui.status.textContent = `Running: ${done.toLocaleString()} of ${total.toLocaleString()} samples`;
+      ui.status.textContent = `Running: ${count(done)} of ${count(total)} samples`;
     },
     async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings }) {
       if (id !== state.runId) return;

@@ -1,6 +1,7 @@
 // The address bar holds the current scenario in the core's compact codec (`?v=1&preset=...`).
 // History entries carry {scenario, ran}: an edit replaces an entry that has not been run yet and
 // pushes a new one after a run, so Back and Forward move between scenarios that were run.
+import { count } from '../plots/numbers.js';
 
 export const DEFAULT_SCENARIO = 'v=1&preset=sine200';
 
@@ -83,7 +84,7 @@ export function excerpt(text, max = 40) {
  */
 export function listed(items, sep = ', ') {
   const shown = items.slice(0, LISTED).join(sep);
-  return items.length > LISTED ? `${shown} … and ${(items.length - LISTED).toLocaleString()} more` : shown;
+  return items.length > LISTED ? `${shown} … and ${count(items.length - LISTED)} more` : shown;
 }
 const LISTED = 5;
 
