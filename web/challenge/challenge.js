@@ -190,12 +190,17 @@ export class ChallengePanel {
   }
 
   /**
-   * Whether the scenario `info` may run: with a challenge open, only as a valid answer (the
-   * address then names the run on screen); a value outside the allowed range is refused before
-   * any run, and said.
+   * Whether the scenario `info` may run: `true` at once with no challenge open; with one, a
+   * promise of it, as a valid answer (the address then names the run on screen); a value outside
+   * the allowed range is refused before any run, and said.
+   * @returns {true | Promise<boolean>}
    */
-  async mayRun(info) {
-    if (!this.desc) return true;
+  mayRun(info) {
+    return this.desc ? this.answers(info) : true;
+  }
+
+  /** Whether `info` is a valid answer to the open challenge; a refusal is said. */
+  async answers(info) {
     const sub = await this.client.job('challenge-tries', { text: this.desc.encoded, tries: this.tries(info) });
     if (sub.kind === 'ok') return true;
     // A check under way is of the settings before this edit: it ends here.

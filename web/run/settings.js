@@ -8,6 +8,13 @@ import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } 
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
 
+/** The fields the form shows for description `info`, and whether each acts: what its build follows. */
+const shownFields = (info) =>
+  info?.fields
+    .filter((f) => f.value !== null)
+    .map((f) => `${f.key}${f.acts ? '' : '-'}`)
+    .join();
+
 function syncControl(control, value) {
   if (!control || control === document.activeElement) return;
   if (control.type === 'checkbox') control.checked = value === '1';
@@ -65,7 +72,8 @@ function firstLoader(state, first, load) {
  * settings drawer. The worker's `ready` message (`handlers`) lists the presets and loads the
  * scenario `first()` resolves with (the address's, unless a challenge gives it). `described(info)`
  * follows every description the form takes; `mayRun(info)` is asked before every run (an open
- * challenge refuses a value outside its ranges).
+ * challenge refuses a value outside its ranges): `true` at once when nothing needs asking, else a
+ * promise of the answer.
  */
 export function createSettings({
   client,
@@ -76,7 +84,7 @@ export function createSettings({
   openSettings,
   first = /** @type {() => string | null | Promise<string>} */ (scenarioFromUrl),
   described = /** @type {(info: any) => void} */ (() => {}),
-  mayRun = /** @type {(info: any) => Promise<boolean>} */ (async () => true),
+  mayRun = /** @type {(info: any) => true | Promise<boolean>} */ (() => true),
 }) {
   let presets = []; // the core's presets: {name, description}
   // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why).
@@ -87,27 +95,20 @@ export function createSettings({
   let checking = Promise.resolve(true); // that check: whether the core accepted it
   const knobs = knobMaker(state); // the walkthrough's knobs, with unique ids
 
-  function applyDescription(info) {
-    const shown = (i) =>
-      i?.fields
-        .filter((f) => f.value !== null)
-        .map((f) => `${f.key}${f.acts ? '' : '-'}`)
-        .join();
-    const keysBefore = shown(state.info);
-    const keysAfter = shown(info);
+  /** Shows `info` in the form, which showed `before` (re-built only where its fields differ). */
+  function applyDescription(info, before = state.info) {
     const presetChanged = ui.preset.value !== presetNamed(info.encoded);
     state.info = info;
     knobs.reset();
-    if (keysBefore !== keysAfter || presetChanged) renderFields(ui.form, info);
+    if (shownFields(before) !== shownFields(info) || presetChanged) renderFields(ui.form, info);
     else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
     walkthrough.describe(info);
     ui.preset.value = presetNamed(info.encoded);
     // The preset's description, and what this run changes of it (a lesson's run may hold another
     // speed or length than the preset says).
-    const changed = info.changed;
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
-    ui.presetDoc.textContent = changed.length
-      ? `${description}. This run changes: ${changed.join(', ')}.`
+    ui.presetDoc.textContent = info.changed.length
+      ? `${description}. This run changes: ${info.changed.join(', ')}.`
       : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
@@ -123,9 +124,18 @@ export function createSettings({
       if (e instanceof WorkerFailed) return;
       throw e;
     }
-    applyDescription(info);
     showScenario(info.encoded);
-    if (run) await startChecked();
+    const allowed = run && mayRun(info);
+    if (allowed === true) {
+      // Nothing to ask: the run starts first, and the form is built while the worker computes.
+      const before = state.info;
+      state.info = info;
+      startRun();
+      applyDescription(info, before);
+    } else {
+      applyDescription(info);
+      if (allowed && (await allowed)) startRun();
+    }
   }
 
   /** Checks the form's scenario with the core; resolves with whether it is valid. An invalid value

@@ -7,7 +7,8 @@ function setAttributes(e, attributes) {
 
 /**
  * Whether `element` is rendered: not under a hidden tab's panel, which is skipped
- * (`content-visibility`, style.css) where the browser has it and not displayed otherwise.
+ * (`content-visibility`, style.css) once shown where the browser has it, and not displayed
+ * otherwise.
  */
 export function rendered(element) {
   return element.checkVisibility?.() ?? element.offsetParent !== null;

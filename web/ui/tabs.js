@@ -5,6 +5,10 @@ import { $ } from './page.js';
 /** `walkthroughView()` asks for the last run's walkthrough view if it lacks one. */
 export function createTabs({ plots, walkthrough, walkthroughView }) {
   const TABS = [.../** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll('[role=tab]'))];
+  for (const tab of TABS) {
+    const panel = $(`panel-${tab.dataset.tab}`);
+    if (!panel.hidden) panel.dataset.shown = '';
+  }
 
   /** Shows tab `name`; with `fetch`, the walkthrough asks for the last run's view if it lacks it. */
   function showTab(name, { fetch = true } = {}) {
@@ -14,13 +18,15 @@ export function createTabs({ plots, walkthrough, walkthroughView }) {
       tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
       const panel = $(`panel-${tab.dataset.tab}`);
       panel.hidden = !selected;
-      // The style keeps a hidden panel laid out (skipped, see style.css): out of the accessibility
-      // tree as the `hidden` attribute alone would put it.
+      if (selected) panel.dataset.shown = '';
+      // The style keeps a hidden panel laid out once it has been shown (skipped, see style.css):
+      // out of the accessibility tree as the `hidden` attribute alone would put it.
       if (selected) panel.removeAttribute('aria-hidden');
       else panel.setAttribute('aria-hidden', 'true');
     }
-    // A hidden panel keeps its layout (style.css), so its plots keep their size; the shown ones
-    // are sized in case the window changed meanwhile (a chart of the right size is left alone).
+    // A panel hidden after it was shown keeps its layout (style.css), so its plots keep their
+    // size; the shown ones are sized in case the window changed meanwhile, or were drawn while
+    // their panel was not displayed yet (a chart of the right size is left alone).
     if (name === 'plots') plots.resize();
     if (name === 'walkthrough') {
       walkthrough.shown();
