@@ -1,7 +1,7 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 // This file composes the page's parts, each in its own module, and wires them to each other.
 import { Plots, PLOTS } from './plots/plots.js';
-import { fieldValue } from './run/controls.js';
+import { buildClosedGroups, fieldValue } from './run/controls.js';
 import { challengeFromUrl, excerpt, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
 import { Analysis } from './analysis/analysis.js';
 import { Walkthrough } from './teaching/walkthrough.js';
@@ -119,6 +119,8 @@ walkthrough.onInspect = (t) => {
 };
 // Built after the first run, the walkthrough's knobs then follow an open challenge's locks.
 walkthrough.onBuilt = () => state.info && challenge.described(state.info);
+// So do the settings' closed groups, built after a run or when one is opened (controls.js).
+ui.form.addEventListener('fieldsbuilt', () => state.info && challenge.described(state.info));
 const plotSets = [plots, walkthrough.plots];
 const analysis = new Analysis({ scenario: () => state.info.encoded });
 
@@ -161,6 +163,7 @@ const run = createRun({
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
     walkthrough.build();
+    buildClosedGroups(ui.form);
     listChallenges();
     registerServiceWorker();
     pins.afterRun();

@@ -2,13 +2,10 @@
 // its edits go to the settings form, which the run reads.
 import { ui } from '../ui/page.js';
 import { el } from '../ui/dom.js';
+import { setField } from '../run/controls.js';
 
 /** Copies a panel knob's value to the settings form's control of `field` (the run reads the form). */
-export function copyToForm(field, control) {
-  const target = ui.form.elements.namedItem(field);
-  if (target?.type === 'checkbox') target.checked = control.value === '1';
-  else if (target) target.value = control.value;
-}
+export const copyToForm = (field, control) => setField(ui.form, field, control.value);
 
 /**
  * The panel's control for an allowed field `a` (the core's description), kept in `knobs` by field;

@@ -55,27 +55,88 @@ function input(f) {
   });
 }
 
-/** Renders `info.fields` into `form`, keeping which groups are open. */
+/** The description each form shows: the fields of a group not built yet are read from it. */
+const shown = new WeakMap();
+
+/** The fields of `info` in `group` that the form holds (a field with no value is not in the scenario). */
+const fieldsOf = (info, group) => info.fields.filter((f) => f.group === group && f.value !== null);
+
+/**
+ * Builds the fields of group `details` of `form`, once. A field that does not act on this
+ * scenario keeps its value (it stays in the scenario string) but is not shown.
+ */
+function fill(form, details) {
+  if (details.dataset.built !== undefined) return;
+  details.dataset.built = '';
+  for (const f of fieldsOf(shown.get(form), details.dataset.group)) {
+    const control = fieldControl(f, 'field');
+    control.hidden = !f.acts;
+    details.append(control);
+  }
+}
+
+/**
+ * Builds the groups of `form` not built yet (of `groups`, else all); says so with a `fieldsbuilt`
+ * event on the form (an open challenge then locks their fields).
+ */
+function fillClosed(form, groups = form.querySelectorAll('details')) {
+  const unbuilt = [...groups].filter((details) => details.dataset.built === undefined);
+  unbuilt.forEach((details) => fill(form, details));
+  if (unbuilt.length) form.dispatchEvent(new Event('fieldsbuilt'));
+}
+
+/**
+ * Builds the closed groups of `form` when the page is next idle (within a second; soon where the
+ * browser does not tell idle time), unless one is opened first.
+ */
+export function buildClosedGroups(form) {
+  const task = () => fillClosed(form);
+  if (globalThis.requestIdleCallback) requestIdleCallback(task, { timeout: 1000 });
+  else setTimeout(task, 50);
+}
+
+/**
+ * Renders `info.fields` into `form`, keeping which groups are open. The open groups' fields are
+ * built at once; a closed one's when it is opened, or when `buildClosedGroups` is asked to (after
+ * a run): most of the form is closed, and the page's first run need not wait for it.
+ */
 export function renderFields(form, info) {
   const open = new Set([...form.querySelectorAll('details[open]')].map((d) => d.dataset.group));
   const first = form.childElementCount === 0;
+  shown.set(form, info);
   form.replaceChildren();
   for (const [group, title] of Object.entries(GROUPS)) {
-    const fields = info.fields.filter((f) => f.group === group && f.value !== null);
+    const fields = fieldsOf(info, group);
     if (!fields.length) continue;
     const details = el('details', { open: first ? OPEN_GROUPS.has(group) : open.has(group) });
     details.dataset.group = group;
-    details.append(el('summary', { textContent: title }));
-    // A field that does not act on this scenario keeps its value (it stays in the scenario
-    // string) but is not shown.
-    for (const f of fields) {
-      const control = fieldControl(f, 'field');
-      control.hidden = !f.acts;
-      details.append(control);
-    }
+    const summary = el('summary', { textContent: title });
+    // Built as it is opened: on the click (by the pointer or the keyboard), before it is drawn
+    // open, or as it opens otherwise.
+    summary.addEventListener('click', () => fillClosed(form, [details]));
+    details.addEventListener('toggle', () => details.open && fillClosed(form, [details]));
+    details.append(summary);
+    if (details.open) fill(form, details);
     details.hidden = fields.every((f) => !f.acts);
     form.append(details);
   }
+}
+
+/** Shows the values of `info` in the form's built controls, except the one being edited. */
+export function syncFields(form, info) {
+  shown.set(form, info);
+  for (const f of info.fields) {
+    const control = f.value === null ? null : form.elements.namedItem(f.key);
+    if (!control || control === document.activeElement) continue;
+    if (control.type === 'checkbox') control.checked = f.value === '1';
+    else control.value = f.value;
+  }
+}
+
+/** The form's control of field `key`, its group built first if need be (null if it has none). */
+function controlOf(form, key) {
+  if (!form.elements.namedItem(key)) fillClosed(form);
+  return form.elements.namedItem(key);
 }
 
 /** A labelled control for field `f` with id `${prefix}-${key}`, showing its unit and range. */
@@ -92,20 +153,25 @@ export function fieldControl(f, prefix) {
   ]);
 }
 
-/** The scenario string the form describes: the preset plus every field shown. */
+/** A control's value as the scenario string holds it. */
+function valueOf(control) {
+  if (control.type === 'checkbox') return control.checked ? '1' : '0';
+  // A formula as typed: the core's positions in it are those the walkthrough's preview marks.
+  return control.classList.contains('formula') ? control.value : control.value.trim();
+}
+
+/**
+ * The scenario string the form describes: the preset plus every field it holds, in the form's
+ * order, each as its control holds it (as the description says where the group is not built).
+ */
 export function composeScenario(form, preset) {
+  const info = shown.get(form);
   const parts = ['v=1', `preset=${preset}`];
-  for (const control of form.querySelectorAll('input, select')) {
-    // A formula as typed: the core's positions in it are those the walkthrough's preview marks.
-    const value =
-      control.type === 'checkbox'
-        ? control.checked
-          ? '1'
-          : '0'
-        : control.classList.contains('formula')
-          ? control.value
-          : control.value.trim();
-    parts.push(`${control.name}=${encodeURIComponent(value)}`);
+  for (const group of Object.keys(GROUPS)) {
+    for (const f of info ? fieldsOf(info, group) : []) {
+      const control = form.elements.namedItem(f.key);
+      parts.push(`${f.key}=${encodeURIComponent(control ? valueOf(control) : f.value)}`);
+    }
   }
   return parts.join('&');
 }
@@ -113,6 +179,7 @@ export function composeScenario(form, preset) {
 /** Marks the field a codec error message names (`field 'k1' ...`), clearing the others. */
 export function markInvalid(form, message) {
   const match = /field '([^']+)'/.exec(message ?? '');
+  if (match) controlOf(form, match[1]);
   for (const control of form.querySelectorAll('input, select')) {
     control.classList.toggle('invalid', match !== null && control.name === match[1]);
   }
@@ -120,11 +187,18 @@ export function markInvalid(form, message) {
 
 /** Copies a knob's value into the settings form's control for the same field and reports a change. */
 export function forwardKnob(form, knob) {
-  const target = form.elements.namedItem(knob.name);
+  const target = controlOf(form, knob.name);
   if (!target) return;
   if (knob.type === 'checkbox') target.checked = knob.checked;
   else target.value = knob.value;
   form.dispatchEvent(new Event('change'));
+}
+
+/** Sets the form's control of field `key` to `value` as a panel's control holds it (a choice, a number, a formula, or '0'/'1'). */
+export function setField(form, key, value) {
+  const target = controlOf(form, key);
+  if (target?.type === 'checkbox') target.checked = value === '1';
+  else if (target) target.value = value;
 }
 
 /** The value the form holds for `key`, as the codec writes it. */

@@ -2,7 +2,7 @@
 // lesson), checking each edit of the form or of a walkthrough knob with the core, the preset
 // picker, and Run.
 import { $, say, ui } from '../ui/page.js';
-import { composeScenario, forwardKnob, markInvalid, renderFields } from './controls.js';
+import { composeScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
 import { WorkerFailed } from '../client/run-client.js';
 import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listPresets, pickPresets } from './preset-picker.js';
@@ -14,12 +14,6 @@ const shownFields = (info) =>
     .filter((f) => f.value !== null)
     .map((f) => `${f.key}${f.acts ? '' : '-'}`)
     .join();
-
-function syncControl(control, value) {
-  if (!control || control === document.activeElement) return;
-  if (control.type === 'checkbox') control.checked = value === '1';
-  else control.value = value;
-}
 
 /**
  * The core's description of `text`, else of its valid fields, else of the default; says which
@@ -101,7 +95,7 @@ export function createSettings({
     state.info = info;
     knobs.reset();
     if (shownFields(before) !== shownFields(info) || presetChanged) renderFields(ui.form, info);
-    else for (const f of info.fields) if (f.value !== null) syncControl(ui.form.elements.namedItem(f.key), f.value);
+    else syncFields(ui.form, info);
     walkthrough.describe(info);
     ui.preset.value = presetNamed(info.encoded);
     // The preset's description, and what this run changes of it (a lesson's run may hold another
