@@ -114,6 +114,9 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     assert.equal(await page.isDisabled('#field-k1'), false);
     assert.equal(await page.isDisabled('#field-psi_d'), true);
     assert.equal(await page.isDisabled('#preset'), true);
+    // So are the fields of a group built after the first run, once opened.
+    await page.click('details[data-group=noise] > summary');
+    assert.equal(await page.isDisabled('#field-seed'), true);
     const failing = await checklist(page);
     assert.deepEqual(
       failing.map((c) => c.slice(0, 2)),

@@ -3,7 +3,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
-import { browserSuite, runAgain, settled, startRun } from './browser.mjs';
+import { browserSuite, newPage, runAgain, settled, startRun } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 const suite = browserSuite();
@@ -208,6 +208,34 @@ test('a loaded app reloads and runs offline', () =>
     );
     assert.deepEqual(await pages(), [`${suite.server.url}`]);
   }));
+
+// The settings' closed groups are built after a run, when the page is idle; a browser that is never
+// idle (as here) builds one only when it is opened. Meanwhile an edit runs with their values.
+test('an edit run before the closed settings groups are built keeps their values', async () => {
+  const errors = [];
+  const page = await newPage(suite.browser, errors);
+  try {
+    await page.addInitScript(() => {
+      window.requestIdleCallback = () => 0;
+    });
+    await page.goto(`${suite.server.url}?v=1&preset=step&seed=3&noise=0.004`);
+    assert.equal(await settled(page), 'done');
+    assert.equal(await page.locator('#field-seed').count(), 0, 'the noise group is not built');
+    await page.fill('#field-k1', '600');
+    assert.equal(await startRun(page, () => page.press('#field-k1', 'Enter')), 'done');
+    assert.equal(
+      await page.evaluate(() => document.body.dataset.scenario),
+      'v=1&preset=step&k1=600&noise=0.004&seed=3',
+    );
+    // Opened, the group shows them.
+    await page.click('details[data-group=noise] > summary');
+    assert.equal(await page.inputValue('#field-seed'), '3');
+    assert.equal(await page.inputValue('#field-noise'), '0.004');
+  } finally {
+    await page.context().close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+});
 
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>
   withPage('v=1&preset=step', async (page) => {

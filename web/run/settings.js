@@ -110,7 +110,7 @@ export function createSettings({
   }
 
   /** Loads a scenario string (from the URL, a preset or history); a bad one keeps its valid fields. */
-  async function load(text, { run = true } = {}) {
+  async function load(text) {
     let info;
     try {
       info = await describeLoaded(client, state, text);
@@ -119,7 +119,7 @@ export function createSettings({
       throw e;
     }
     showScenario(info.encoded);
-    const allowed = run && mayRun(info);
+    const allowed = mayRun(info);
     if (allowed === true) {
       // Nothing to ask: the run starts first, and the form is built while the worker computes.
       const before = state.info;
@@ -128,7 +128,7 @@ export function createSettings({
       applyDescription(info, before);
     } else {
       applyDescription(info);
-      if (allowed && (await allowed)) startRun();
+      if (await allowed) startRun();
     }
   }
 
