@@ -103,9 +103,9 @@ const worker = (
 )['worker.js'];
 
 // uPlot makes a number and a date formatter as its module is evaluated. The page formats neither
-// way (its axes and legends have their own formatters), and the first formatter of a page costs
-// tens of milliseconds of its thread (the locale's data is loaded) while nothing is plotted yet:
-// both are made when first used instead.
+// way (its axes and legends have their own formatters), and a page's first formatter loads its
+// locale's data on the page's thread while nothing is plotted yet (docs/figures.md): both are made
+// when first used instead.
 const UPLOT_PATH = join(dist, 'vendor', 'uPlot.esm.js');
 const uplot = [
   [

@@ -9,6 +9,7 @@ import { loadTex } from './teaching/tex.js';
 import { LessonPanel } from './teaching/lessons.js';
 import { LESSONS } from './teaching/teaching.js';
 import { $, say, ui } from './ui/page.js';
+import { whenIdle } from './ui/dom.js';
 import { RunClient } from './client/run-client.js';
 import { createRun } from './run/run.js';
 import { createSettings } from './run/settings.js';
@@ -119,7 +120,7 @@ walkthrough.onInspect = (t) => {
 };
 // Built after the first run, the walkthrough's knobs then follow an open challenge's locks.
 walkthrough.onBuilt = () => state.info && challenge.described(state.info);
-// So do the settings' closed groups, built after a run or when one is opened (controls.js).
+// So do the settings' closed groups, built after the first run or when one is opened (controls.js).
 ui.form.addEventListener('fieldsbuilt', () => state.info && challenge.described(state.info));
 const plotSets = [plots, walkthrough.plots];
 const analysis = new Analysis({ scenario: () => state.info.encoded });
@@ -162,8 +163,11 @@ const run = createRun({
   exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
-    walkthrough.build();
-    buildClosedGroups(ui.form);
+    // What no one sees yet is built once the page is idle, unless it is shown first.
+    whenIdle(() => {
+      walkthrough.build();
+      buildClosedGroups(ui.form);
+    });
     listChallenges();
     registerServiceWorker();
     pins.afterRun();

@@ -85,20 +85,13 @@ function fillClosed(form, groups = form.querySelectorAll('details')) {
   if (unbuilt.length) form.dispatchEvent(new Event('fieldsbuilt'));
 }
 
-/**
- * Builds the closed groups of `form` when the page is next idle (within a second; soon where the
- * browser does not tell idle time), unless one is opened first.
- */
-export function buildClosedGroups(form) {
-  const task = () => fillClosed(form);
-  if (globalThis.requestIdleCallback) requestIdleCallback(task, { timeout: 1000 });
-  else setTimeout(task, 50);
-}
+/** Builds the closed groups of `form` not built yet. */
+export const buildClosedGroups = (form) => fillClosed(form);
 
 /**
  * Renders `info.fields` into `form`, keeping which groups are open. The open groups' fields are
- * built at once; a closed one's when it is opened, or when `buildClosedGroups` is asked to (after
- * a run): most of the form is closed, and the page's first run need not wait for it.
+ * built at once; a closed one's when it is opened, or by `buildClosedGroups` (once a run is drawn
+ * and the page is idle): most of the form is closed, and the first run need not wait for it.
  */
 export function renderFields(form, info) {
   const open = new Set([...form.querySelectorAll('details[open]')].map((d) => d.dataset.group));

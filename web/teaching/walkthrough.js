@@ -85,9 +85,9 @@ export class Walkthrough {
   }
 
   /**
-   * Builds the sections, once: when the walkthrough is first shown or the first run is done,
-   * whichever comes first (the first plot does not wait for them). They take the last
-   * description and stability report.
+   * Builds the sections, once: when the walkthrough is first shown or the page is idle after the
+   * first run is drawn, whichever comes first (the first plot does not wait for them). They take
+   * the last description and stability report.
    */
   build() {
     if (this.built()) return;
