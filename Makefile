@@ -56,7 +56,8 @@ test: dist
 # `BENCH_ARGS=long` for one group. BENCH_REPS=n sets the repetitions of the Node and browser
 # figures (default 5; each prints the median). BENCH_VS_DIST=DIR adds the cold load against another
 # build's dist/ folder, side by side (see tests/bench/browser.mjs), and the first load under
-# throttled networks and CPUs, compressed and not, against that build too (tests/bench/throttled.mjs).
+# throttled networks and CPUs, compressed and not, against that build too (tests/bench/throttled.mjs),
+# and the page thread's work before the first plot on school Wi-Fi (tests/bench/thread.mjs).
 bench: dist
 	cargo bench --bench closed_loop --bench codec -- $(BENCH_ARGS)
 	node tests/bench/floor.mjs
@@ -64,3 +65,4 @@ bench: dist
 	node tests/bench/node.mjs
 	node tests/bench/browser.mjs
 	node tests/bench/throttled.mjs
+	node tests/bench/thread.mjs

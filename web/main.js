@@ -28,9 +28,9 @@ import { createCompose } from './challenge/challenge-compose.js';
 import { createGrading } from './challenge/grade.js';
 
 /**
- * Lists the built-in challenges in the Lessons tab, once: after the first run or when the tab is
- * first opened, whichever comes first (their listing loads the core's tools, which the first run
- * does not need).
+ * Lists the built-in challenges in the Lessons tab, once: when the page is idle after the first run
+ * or when the tab is first opened, whichever comes first (their listing loads the core's tools,
+ * which the first run does not need).
  */
 let challengesListed = false;
 function listChallenges() {
@@ -167,8 +167,8 @@ const run = createRun({
     whenIdle(() => {
       walkthrough.build();
       buildClosedGroups(ui.form);
+      listChallenges();
     });
-    listChallenges();
     registerServiceWorker();
     pins.afterRun();
     sweeps.afterRun();
