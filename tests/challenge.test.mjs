@@ -13,12 +13,16 @@ const cli = new URL('../target/release/imlab', import.meta.url).pathname;
 // The server and the browser of this file; pages here need contexts of their own.
 const suite = browserSuite();
 
-/** Opens `path` in a fresh context (clipboard allowed, CSP bypassed for axe); runs `body(page)`. */
-async function withPage(path, body, viewport = { width: 1400, height: 1000 }) {
+/**
+ * Opens `path` in a fresh context (clipboard allowed, CSP bypassed for axe; `init` run in the page
+ * before its own scripts); runs `body(page)`.
+ */
+async function withPage(path, body, viewport = { width: 1400, height: 1000 }, init = () => {}) {
   const errors = [];
   const context = await suite.browser.newContext({ viewport, bypassCSP: true });
   await context.grantPermissions(['clipboard-read', 'clipboard-write'], { origin: suite.server.url });
   const page = await context.newPage();
+  await page.addInitScript(init);
   page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
   try {
@@ -232,6 +236,30 @@ for (const [tamper, refusal] of [
     });
   });
 }
+
+// The settings' closed groups are built once the page is idle after a run (never here: this
+// browser is never idle) or when a field of theirs is needed: a challenge knob's edit of such a
+// field reaches the run as typed, and every field built then is locked but the allowed ones.
+test('a challenge knob of a field in a closed settings group reaches the run, and the fields built for it are locked', () =>
+  withPage(
+    '?challenge=load-observer',
+    async (page) => {
+      await graded(page);
+      assert.equal(await page.locator('#field-ekf\\.q').count(), 0, 'the observer group is not built');
+      const outcome = await tryValues(page, { 'ekf\\.q': '0.01' });
+      assert.ok(['pass', 'fail'].includes(outcome), `graded ${outcome}`);
+      assert.match(await page.evaluate(() => document.body.dataset.scenario), /&ekf\.q=0\.01(&|$)/);
+      assert.equal(await page.inputValue('#challenge-ekf\\.q'), '0.01');
+      await page.click('details[data-group=observer] > summary');
+      assert.equal(await page.inputValue('#field-ekf\\.q'), '0.01');
+      assert.equal(await page.isDisabled('#field-ekf\\.q'), false);
+      assert.equal(await page.isDisabled('#field-noise'), true);
+    },
+    undefined,
+    () => {
+      window.requestIdleCallback = () => 0;
+    },
+  ));
 
 test('a value outside the allowed range is refused before it runs: the address keeps naming the run on screen', () =>
   withPage('?challenge=step-tune', async (page) => {

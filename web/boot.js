@@ -1,9 +1,10 @@
 // Starts the simulation worker as soon as the page begins to load, before the page's modules are
 // fetched and run: a browser starts a worker only when the page's thread is free, and the page's
 // modules keep it busy for a few hundred milliseconds. The run client adopts this worker, with
-// what it said and any failure meanwhile. The build writes this script into the page's head, before
-// the stylesheets (a script after them would wait for them), with its hash in the page's
-// Content-Security-Policy: it runs as the head is parsed, with no request of its own. Should the
+// what it said and any failure meanwhile. The build writes this script's text into the page's head
+// in place of static/index.html's reference to it, before the stylesheets (a script after them
+// would wait for them), with its hash in the page's Content-Security-Policy: it runs as the head is
+// parsed, with no request of its own. Should the
 // page's modules start first (they cannot in practice), the run client has started the worker and
 // left `imlabBoot` null, and nothing is done here. The worker's address is on this script's element
 // (`data-worker`), where the build writes the name of the worker's bundle.

@@ -119,9 +119,9 @@ walkthrough.onInspect = (t) => {
   walkthrough.plots.mark(t);
 };
 // Built after the first run, the walkthrough's knobs then follow an open challenge's locks.
-walkthrough.onBuilt = () => state.info && challenge.described(state.info);
+walkthrough.onBuilt = () => challenge.lock();
 // So do the settings' closed groups, built after the first run or when one is opened (controls.js).
-ui.form.addEventListener('fieldsbuilt', () => state.info && challenge.described(state.info));
+ui.form.addEventListener('fieldsbuilt', () => challenge.lock());
 const plotSets = [plots, walkthrough.plots];
 const analysis = new Analysis({ scenario: () => state.info.encoded });
 

@@ -1,8 +1,8 @@
 // The page's own thread before the first plot, on school Wi-Fi (10 Mbit/s, 40 ms, CPU 2× slower):
 // the work Chromium counts for the page (`Performance.getMetrics` of the DevTools protocol) from
 // navigation to the first plotted run of the default scenario, in a fresh browser context for
-// each load, served compressed. The main thread is the first load's bottleneck there, and its
-// work moves less from load to load than the time to the first plot.
+// each load, served compressed (a build without brotli copies is given them in a temporary copy).
+// The main thread is the first load's bottleneck there.
 //
 //   node tests/bench/thread.mjs                     this build (dist/; BENCH_DIST=DIR for another)
 //   BENCH_VS_DIST=DIR node tests/bench/thread.mjs   this build and another build's dist/, load by load
@@ -16,6 +16,7 @@ import { join } from 'node:path';
 import { existsSync } from 'node:fs';
 import { launch, markFirstPlot } from '../browser.mjs';
 import { listen } from '../../scripts/serve.mjs';
+import { compressedCopy } from './compressed.mjs';
 
 const REPS = Number(process.env.BENCH_REPS ?? 5);
 if (!Number.isInteger(REPS) || REPS < 1)
@@ -29,7 +30,10 @@ for (const [, dir] of builds)
 const browser = await launch();
 const errors = [];
 const served = [];
-for (const [name, dir] of builds) served.push({ name, ...(await listen(dir, 0, { compressed: true })), loads: [] });
+for (const [name, dir] of builds) {
+  const copy = compressedCopy(dir);
+  served.push({ name, copy, ...(await listen(copy.dir, 0, { compressed: true })), loads: [] });
+}
 
 /** One fresh load of `url`: the first plot (ms) and the thread's counts at that moment. */
 async function load(url) {
@@ -85,8 +89,9 @@ for (let r = 0; r < REPS; r++) for (const build of served) build.loads.push(awai
 console.log(
   `School Wi-Fi, CPU 2×, served compressed: the page's thread to the first plot, median (min–max) of ${REPS} loads`,
 );
-for (const { name, server, loads } of served) {
+for (const { name, copy, server, loads } of served) {
   server.close();
+  copy.done();
   console.log(`  ${name}`);
   for (const key of Object.keys(loads[0])) {
     const unit = ['first plot', 'busy', 'script', 'style', 'layout'].includes(key) ? ' ms' : '';

@@ -11,11 +11,10 @@
 // Run by `make bench`. Prints, for each build, serving and profile, the median (min–max) of
 // BENCH_REPS (default 5) loads, and the bytes the network sent before the first plot; with two
 // builds, their loads alternate and the ratio of each pair of loads is given too.
-import { cpSync, existsSync, mkdtempSync, readdirSync, rmSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { existsSync } from 'node:fs';
 import { join } from 'node:path';
-import { execFileSync } from 'node:child_process';
 import http from 'node:http';
+import { compressedCopy } from './compressed.mjs';
 import { firstPlotMs, launch, markFirstPlot } from '../browser.mjs';
 import { staticHandler } from '../../scripts/serve.mjs';
 
@@ -36,19 +35,6 @@ const chosen = (list, env, key) => list.filter((x) => !process.env[env] || key(x
 const ROOT = new URL('../../dist/', import.meta.url).pathname;
 const builds = [['this build', ROOT]];
 if (process.env.BENCH_VS_DIST) builds.push([`other (${process.env.BENCH_VS_DIST})`, process.env.BENCH_VS_DIST]);
-
-/** `dir` itself if it has brotli copies, else a temporary copy given them. */
-function compressedCopy(dir) {
-  const hasBr = (d) =>
-    readdirSync(d, { withFileTypes: true }).some((e) =>
-      e.isDirectory() ? hasBr(join(d, e.name)) : e.name.endsWith('.br'),
-    );
-  if (hasBr(dir)) return { dir, done: () => {} };
-  const copy = mkdtempSync(join(tmpdir(), 'imlab-bench-'));
-  cpSync(dir, copy, { recursive: true });
-  execFileSync('node', [new URL('../../scripts/compress.mjs', import.meta.url).pathname, copy]);
-  return { dir: copy, done: () => rmSync(copy, { recursive: true, force: true }) };
-}
 
 const browser = await launch();
 const errors = [];

@@ -166,8 +166,12 @@ export class ChallengePanel {
     );
   }
 
-  /** After each description of the form: only the allowed fields stay editable, and the panel follows the form. */
-  described(info) {
+  /**
+   * Only the allowed fields stay editable, in the settings and the walkthrough's knobs: after each
+   * description, and whenever more of their fields are built (the panel's own knobs are left as
+   * they are: one may hold an edit the form has not described yet).
+   */
+  lock() {
     if (!this.desc) return;
     ui.preset.disabled = true;
     const allowed = new Set(this.desc.allow.map((a) => a.field));
@@ -177,6 +181,12 @@ export class ChallengePanel {
       )
     );
     for (const c of controls) c.disabled = !allowed.has(c.name);
+  }
+
+  /** After each description of the form: the fields are locked, and the panel follows the form. */
+  described(info) {
+    if (!this.desc) return;
+    this.lock();
     for (const [field, control] of this.knobs) {
       if (control !== document.activeElement) control.value = fieldValue(info, field) ?? '';
     }

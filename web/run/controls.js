@@ -90,7 +90,8 @@ export const buildClosedGroups = (form) => fillClosed(form);
 
 /**
  * Renders `info.fields` into `form`, keeping which groups are open. The open groups' fields are
- * built at once; a closed one's when it is opened, or by `buildClosedGroups` (once a run is drawn
+ * built at once; the closed ones' when one is opened, when a field of theirs is needed (a knob's
+ * edit, a challenge's control, an error to mark), or by `buildClosedGroups` (once a run is drawn
  * and the page is idle): most of the form is closed, and the first run need not wait for it.
  */
 export function renderFields(form, info) {
@@ -115,18 +116,22 @@ export function renderFields(form, info) {
   }
 }
 
+/** Sets `control` to `value` as the scenario string holds it (a checkbox's '0' or '1'). */
+function write(control, value) {
+  if (control.type === 'checkbox') control.checked = value === '1';
+  else control.value = value;
+}
+
 /** Shows the values of `info` in the form's built controls, except the one being edited. */
 export function syncFields(form, info) {
   shown.set(form, info);
   for (const f of info.fields) {
     const control = f.value === null ? null : form.elements.namedItem(f.key);
-    if (!control || control === document.activeElement) continue;
-    if (control.type === 'checkbox') control.checked = f.value === '1';
-    else control.value = f.value;
+    if (control && control !== document.activeElement) write(control, f.value);
   }
 }
 
-/** The form's control of field `key`, its group built first if need be (null if it has none). */
+/** The form's control of field `key`, the closed groups built first if need be (null if it has none). */
 function controlOf(form, key) {
   if (!form.elements.namedItem(key)) fillClosed(form);
   return form.elements.namedItem(key);
@@ -178,20 +183,17 @@ export function markInvalid(form, message) {
   }
 }
 
-/** Copies a knob's value into the settings form's control for the same field and reports a change. */
-export function forwardKnob(form, knob) {
-  const target = controlOf(form, knob.name);
-  if (!target) return;
-  if (knob.type === 'checkbox') target.checked = knob.checked;
-  else target.value = knob.value;
-  form.dispatchEvent(new Event('change'));
-}
-
-/** Sets the form's control of field `key` to `value` as a panel's control holds it (a choice, a number, a formula, or '0'/'1'). */
+/** Sets the form's control of field `key` (if it has one) to `value` as the scenario string holds it. */
 export function setField(form, key, value) {
   const target = controlOf(form, key);
-  if (target?.type === 'checkbox') target.checked = value === '1';
-  else if (target) target.value = value;
+  if (target) write(target, value);
+}
+
+/** Copies a knob's value into the settings form's control for the same field and reports a change. */
+export function forwardKnob(form, knob) {
+  if (!controlOf(form, knob.name)) return;
+  setField(form, knob.name, knob.type === 'checkbox' ? (knob.checked ? '1' : '0') : knob.value);
+  form.dispatchEvent(new Event('change'));
 }
 
 /** The value the form holds for `key`, as the codec writes it. */
