@@ -102,11 +102,10 @@ const worker = (
   })
 )['worker.js'];
 
-// uPlot makes a number and a date formatter as its module is evaluated. The first plot uses
-// neither (the trajectory plots' axes and legends have their own formatters; the analysis plots
-// and the pins' overlay use uPlot's numbers), and a page's first formatter loads its locale's data
-// on the page's thread while nothing is plotted yet (docs/figures.md): both are made when first
-// used instead.
+// uPlot makes a number and a date formatter as its module is evaluated. The page uses neither
+// (every chart writes its numbers as web/plots/numbers.js does), and a page's first formatter
+// loads its locale's data on the page's thread while nothing is plotted yet (docs/figures.md):
+// both are made when first used, which is never.
 const UPLOT_PATH = join(dist, 'vendor', 'uPlot.esm.js');
 const uplot = [
   [

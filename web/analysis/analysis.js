@@ -5,6 +5,7 @@ import { excerpt } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { fittedRange } from '../plots/ranges.js';
+import { pageNumbers } from '../plots/numbers.js';
 
 // Variants offered for the sweep: the field changes that make each from the current scenario.
 export const VARIANTS = {
@@ -238,7 +239,7 @@ export class Analysis {
       const [opts, data] = bodePlot(title, unit, freqs, series, width, marker);
       const div = el('div', { className: 'plot' });
       bodeBox.append(div);
-      new uPlot(opts, data, div);
+      new uPlot(pageNumbers(opts), data, div);
     }
     table.replaceChildren(
       el(
@@ -332,7 +333,7 @@ export class Analysis {
       };
       const div = el('div', { className: 'plot' });
       box.append(div);
-      this.seedCharts.push(new uPlot(opts, [bands.t, b.mean, b.min, b.max], div));
+      this.seedCharts.push(new uPlot(pageNumbers(opts), [bands.t, b.mean, b.min, b.max], div));
     }
   }
 

@@ -3,6 +3,7 @@
 import uPlot from '../../vendor/uPlot.esm.js';
 import { el } from '../ui/dom.js';
 import { fmt } from './map-colours.js';
+import { pageNumbers } from '../plots/numbers.js';
 
 /** Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out. */
 export function bandPlot(box, view) {
@@ -34,7 +35,7 @@ export function bandPlot(box, view) {
   };
   const div = el('div', { className: 'plot' });
   box.append(div);
-  new uPlot(opts, [x, series[0], series[1], series[2]], div);
+  new uPlot(pageNumbers(opts), [x, series[0], series[1], series[2]], div);
   const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
   if (gaps.length) {
     const percent = axes[0].relative ? ' %' : '';

@@ -1,5 +1,5 @@
 // How numbers read on the page: counts in its sentences; on a plot, the legend's read-out, and the
-// axes' tick steps, tick labels and the room time ticks need.
+// axes' tick steps, tick labels and the room time ticks need; the same on every chart.
 
 /**
  * A whole number as the page's sentences write it: thousands grouped by commas, as in English,
@@ -65,3 +65,16 @@ export const timeSpace = (em, least) => (u, axisIdx, lo, hi, dim) => {
 
 /** A value as the read-out shows it: 6 significant digits. */
 export const six = (v) => (v == null ? '–' : String(Number(v.toPrecision(6))));
+
+/**
+ * Chart options `opts` with numbers written as the page writes them on every axis and in every
+ * read-out of the legend, where the chart gives no formatter of its own: the trajectory plots'
+ * tick labels and six significant digits, rather than uPlot's (which follow the browser's locale).
+ * @param {uPlot.Options} opts
+ * @returns {uPlot.Options}
+ */
+export function pageNumbers(opts) {
+  for (const axis of opts.axes ?? []) axis.values ??= tickLabels;
+  for (const series of opts.series) series.value ??= (u, v) => six(v);
+  return opts;
+}

@@ -1,6 +1,6 @@
 // Pins: runs kept in the worker beside the current one, listed in the Analysis tab and kept in
 // the link (`#pins=`), and the overlay that compares one column of them with the current run.
-import { count } from '../plots/numbers.js';
+import { count, pageNumbers } from '../plots/numbers.js';
 import uPlot from '../../vendor/uPlot.esm.js';
 import { $, say, ui } from '../ui/page.js';
 import { decodePins, excerpt, fragment, listed, setFragment } from '../ui/url.js';
@@ -35,7 +35,7 @@ function overlayChart(title, names, t, series, width) {
     ],
     axes: [{ label: 't (s)' }, { size: 80 }],
   };
-  new uPlot(opts, [t, ...series], div);
+  new uPlot(pageNumbers(opts), [t, ...series], div);
   return div;
 }
 
