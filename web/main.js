@@ -1,7 +1,7 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 // This file composes the page's parts, each in its own module, and wires them to each other.
 import { Plots, PLOTS } from './plots/plots.js';
-import { buildClosedGroups, fieldValue } from './run/controls.js';
+import { buildGroups, fieldValue } from './run/controls.js';
 import { challengeFromUrl, excerpt, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
 import { Analysis } from './analysis/analysis.js';
 import { Walkthrough } from './teaching/walkthrough.js';
@@ -166,7 +166,7 @@ const run = createRun({
     // What no one sees yet is built once the page is idle, unless it is shown first.
     whenIdle(() => {
       walkthrough.build();
-      buildClosedGroups(ui.form);
+      buildGroups(ui.form);
       listChallenges();
     });
     registerServiceWorker();

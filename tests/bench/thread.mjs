@@ -16,11 +16,13 @@ import { join } from 'node:path';
 import { existsSync } from 'node:fs';
 import { launch, markFirstPlot } from '../browser.mjs';
 import { listen } from '../../scripts/serve.mjs';
-import { compressedCopy } from './compressed.mjs';
+import { PROFILES, compressedCopy, spread, throttle } from './builds.mjs';
 
 const REPS = Number(process.env.BENCH_REPS ?? 5);
 if (!Number.isInteger(REPS) || REPS < 1)
   throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
+
+const SCHOOL = PROFILES.find((p) => p.name.startsWith('school'));
 
 const builds = [['this build', process.env.BENCH_DIST ?? new URL('../../dist/', import.meta.url).pathname]];
 if (process.env.BENCH_VS_DIST) builds.push([`other (${process.env.BENCH_VS_DIST})`, process.env.BENCH_VS_DIST]);
@@ -49,15 +51,7 @@ async function load(url) {
       observer.disconnect();
     }).observe(document, { attributes: true, subtree: true, attributeFilter: ['data-state'] });
   });
-  const cdp = await context.newCDPSession(page);
-  await cdp.send('Network.enable');
-  await cdp.send('Network.emulateNetworkConditions', {
-    offline: false,
-    latency: 40,
-    downloadThroughput: 10e6 / 8,
-    uploadThroughput: 5e6 / 8,
-  });
-  await cdp.send('Emulation.setCPUThrottlingRate', { rate: 2 });
+  const cdp = await throttle(page, SCHOOL);
   await cdp.send('Performance.enable');
   await page.goto(url);
   await page.waitForFunction(() => window.firstPlottedMs !== undefined, null, { timeout: 60_000 });
@@ -75,13 +69,6 @@ async function load(url) {
   };
   await context.close();
   return out;
-}
-
-function spread(values) {
-  const s = [...values].sort((a, b) => a - b);
-  const mid = s.length >> 1;
-  const med = s.length % 2 ? s[mid] : (s[mid - 1] + s[mid]) / 2;
-  return `${med.toFixed(0)} (${s[0].toFixed(0)}–${s.at(-1).toFixed(0)})`;
 }
 
 // The builds' loads alternate, so that a slower spell of the machine falls on both alike.

@@ -14,19 +14,13 @@
 import { existsSync } from 'node:fs';
 import { join } from 'node:path';
 import http from 'node:http';
-import { compressedCopy } from './compressed.mjs';
+import { PROFILES, compressedCopy, spread, throttle } from './builds.mjs';
 import { firstPlotMs, launch, markFirstPlot } from '../browser.mjs';
 import { staticHandler } from '../../scripts/serve.mjs';
 
 const REPS = Number(process.env.BENCH_REPS ?? 5);
 if (!Number.isInteger(REPS) || REPS < 1)
   throw new Error(`BENCH_REPS must be a positive integer, not ${process.env.BENCH_REPS}`);
-
-const PROFILES = [
-  { name: 'unthrottled', network: null, cpu: 1 },
-  { name: 'school Wi-Fi (10 Mbit/s, 40 ms, CPU 2×)', network: { down: 10e6, up: 5e6, latency: 40 }, cpu: 2 },
-  { name: 'slow 4G (1.6 Mbit/s, 150 ms, CPU 4×)', network: { down: 1.6e6, up: 750e3, latency: 150 }, cpu: 4 },
-];
 
 // BENCH_PROFILES=slow picks the profiles whose name starts with it (e.g. "slow" or "school");
 // BENCH_SERVING=compressed or plain picks one serving.
@@ -38,20 +32,6 @@ if (process.env.BENCH_VS_DIST) builds.push([`other (${process.env.BENCH_VS_DIST}
 
 const browser = await launch();
 const errors = [];
-
-/** Applies `profile` to `page` through a CDP session. */
-async function throttle(page, profile) {
-  const cdp = await page.context().newCDPSession(page);
-  await cdp.send('Network.enable');
-  if (profile.network)
-    await cdp.send('Network.emulateNetworkConditions', {
-      offline: false,
-      latency: profile.network.latency,
-      downloadThroughput: profile.network.down / 8,
-      uploadThroughput: profile.network.up / 8,
-    });
-  await cdp.send('Emulation.setCPUThrottlingRate', { rate: profile.cpu });
-}
 
 /**
  * The bodies the server sends (compressed where it compresses; headers aside), as {at, bytes}:
@@ -105,13 +85,6 @@ async function loads(url, profile) {
   const second = await firstPlot(page, url);
   await context.close();
   return { first, bytes, second, compute };
-}
-
-function spread(values, digits = 0) {
-  const s = [...values].sort((a, b) => a - b);
-  const mid = s.length >> 1;
-  const med = s.length % 2 ? s[mid] : (s[mid - 1] + s[mid]) / 2;
-  return `${med.toFixed(digits)} (${s[0].toFixed(digits)}–${s.at(-1).toFixed(digits)})`;
 }
 
 console.log(`Chromium, navigation → first plotted run of the default scenario, median (min–max) of ${REPS} loads`);

@@ -79,19 +79,16 @@ function fill(form, details) {
  * Builds the groups of `form` not built yet (of `groups`, else all); says so with a `fieldsbuilt`
  * event on the form (an open challenge then locks their fields).
  */
-function fillClosed(form, groups = form.querySelectorAll('details')) {
+export function buildGroups(form, groups = form.querySelectorAll('details')) {
   const unbuilt = [...groups].filter((details) => details.dataset.built === undefined);
   unbuilt.forEach((details) => fill(form, details));
   if (unbuilt.length) form.dispatchEvent(new Event('fieldsbuilt'));
 }
 
-/** Builds the closed groups of `form` not built yet. */
-export const buildClosedGroups = (form) => fillClosed(form);
-
 /**
  * Renders `info.fields` into `form`, keeping which groups are open. The open groups' fields are
  * built at once; the closed ones' when one is opened, when a field of theirs is needed (a knob's
- * edit, a challenge's control, an error to mark), or by `buildClosedGroups` (once a run is drawn
+ * edit, a challenge's control, an error to mark), or by `buildGroups` (once a run is drawn
  * and the page is idle): most of the form is closed, and the first run need not wait for it.
  */
 export function renderFields(form, info) {
@@ -107,8 +104,8 @@ export function renderFields(form, info) {
     const summary = el('summary', { textContent: title });
     // Built as it is opened: on the click (by the pointer or the keyboard), before it is drawn
     // open, or as it opens otherwise.
-    summary.addEventListener('click', () => fillClosed(form, [details]));
-    details.addEventListener('toggle', () => details.open && fillClosed(form, [details]));
+    summary.addEventListener('click', () => buildGroups(form, [details]));
+    details.addEventListener('toggle', () => details.open && buildGroups(form, [details]));
     details.append(summary);
     if (details.open) fill(form, details);
     details.hidden = fields.every((f) => !f.acts);
@@ -133,7 +130,7 @@ export function syncFields(form, info) {
 
 /** The form's control of field `key`, the closed groups built first if need be (null if it has none). */
 function controlOf(form, key) {
-  if (!form.elements.namedItem(key)) fillClosed(form);
+  if (!form.elements.namedItem(key)) buildGroups(form);
   return form.elements.namedItem(key);
 }
 
@@ -191,8 +188,9 @@ export function setField(form, key, value) {
 
 /** Copies a knob's value into the settings form's control for the same field and reports a change. */
 export function forwardKnob(form, knob) {
-  if (!controlOf(form, knob.name)) return;
-  setField(form, knob.name, knob.type === 'checkbox' ? (knob.checked ? '1' : '0') : knob.value);
+  const target = controlOf(form, knob.name);
+  if (!target) return;
+  write(target, valueOf(knob));
   form.dispatchEvent(new Event('change'));
 }
 

@@ -18,11 +18,12 @@ export function createTabs({ plots, walkthrough, walkthroughView }) {
       tab.tabIndex = selected ? 0 : -1; // one tab stop for the tab list (WAI-ARIA tabs pattern)
       const panel = $(`panel-${tab.dataset.tab}`);
       panel.hidden = !selected;
-      if (selected) panel.dataset.shown = '';
       // The style keeps a hidden panel laid out once it has been shown (skipped, see style.css):
       // out of the accessibility tree as the `hidden` attribute alone would put it.
-      if (selected) panel.removeAttribute('aria-hidden');
-      else panel.setAttribute('aria-hidden', 'true');
+      if (selected) {
+        panel.dataset.shown = '';
+        panel.removeAttribute('aria-hidden');
+      } else panel.setAttribute('aria-hidden', 'true');
     }
     // A panel hidden after it was shown keeps its layout (style.css), so its plots keep their
     // size; the shown ones are sized in case the window changed meanwhile, or were drawn while
