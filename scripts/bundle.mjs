@@ -116,6 +116,22 @@ const uplot = [
   ['else if (tz == localTz)', 'else if (tz == (localTz ??= new Intl.DateTimeFormat().resolvedOptions().timeZone))'],
 ].reduce((text, [from, to]) => once(text, from, to), readFileSync(UPLOT_PATH, 'utf8'));
 
+// The lessons' measurements: of each table as `imlab claims` wrote it, the columns the page reads
+// (the scenarios and probes stay in the repository, for the core to measure them again).
+const TABLES_DIR = join('web', 'teaching', 'measurements');
+const PAGE_COLUMNS = ['id', 'show', 'seeds', 'value'];
+const tables = readdirSync(TABLES_DIR)
+  .filter((f) => f.endsWith('.csv'))
+  .sort()
+  .map((f) => {
+    const rows = readFileSync(join(TABLES_DIR, f), 'utf8')
+      .trim()
+      .split('\n')
+      .map((l) => l.split(','));
+    const kept = PAGE_COLUMNS.map((c) => rows[0].indexOf(c));
+    return rows.map((cells) => kept.map((i) => cells[i]).join(',')).join('\n');
+  });
+
 const main = (
   await build({
     entryPoints: [join(src, 'main.js')],
@@ -123,6 +139,7 @@ const main = (
     plugins: [
       replaced('/worker-url.js', `export const WORKER_URL = new URL('./${worker.name}', import.meta.url);`),
       replaced('/vendor/uPlot.esm.js', uplot),
+      replaced('/teaching/measurements.js', `export const TABLES = ${JSON.stringify(tables)};`),
     ],
   })
 )['main.js'];

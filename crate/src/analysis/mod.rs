@@ -2,6 +2,7 @@
 //! references) and seed sweeps. Each run is an ordinary `Simulation`, so the CLI, the browser's
 //! parallel workers and the tests share these functions.
 
+pub mod claims;
 mod seeds;
 mod sweep;
 

@@ -2,6 +2,7 @@
 
 use clap::error::{ContextKind, ContextValue};
 use clap::{Args, Parser, Subcommand};
+use imlab::analysis::claims;
 use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
@@ -15,7 +16,7 @@ use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::fmt;
 use std::fs::{File, OpenOptions};
-use std::io::{self, BufWriter, ErrorKind, Read, Seek, SeekFrom, Write};
+use std::io::{self, BufWriter, ErrorKind, IsTerminal, Read, Seek, SeekFrom, Write};
 use std::process::ExitCode;
 
 /// Run IM Lab scenarios: speed-sensorless induction-motor control (Zhang et al. 2015).
@@ -173,6 +174,23 @@ enum Command {
             allow_hyphen_values = true
         )]
         seeds: String,
+    },
+    /// Measure the teaching text's tables of measurements and print them as CSV
+    ///
+    /// Each TABLE is CSV, id,scenario,figure,seeds,statistic,show,value (docs/cli.md describes
+    /// each column); ids are unique across the tables. Every row is measured again, each run once
+    /// on all cores, and the rows are printed with the values measured; --check prints only the
+    /// rows whose value differs and fails if any does, --write writes the values into the tables.
+    Claims {
+        /// The measurements tables
+        #[arg(required = true)]
+        tables: Vec<String>,
+        /// Compare the measured values with the tables' and fail on any difference
+        #[arg(long, conflicts_with = "write")]
+        check: bool,
+        /// Write the measured values into the tables
+        #[arg(long)]
+        write: bool,
     },
     /// Print a challenge's canonical link and brief; --list names the built-in ones
     Challenge {
@@ -364,6 +382,11 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             let map = Map::plan(&s, axes, seeds)?;
             robust_map(&map, out)
         }
+        Command::Claims {
+            tables,
+            check,
+            write,
+        } => claims(&tables, check, write, out),
         Command::Challenge { challenge, list } => match challenge {
             Some(text) if !list => show_challenge(&text, out),
             _ => list_challenges(out).map_err(stdout_stop),
@@ -583,6 +606,79 @@ fn write_figures(list: &[Figure], unreached: &[Unreached], out: &mut impl Write)
         writeln!(out, "{}_reached,0,", u.name)?;
     }
     Ok(())
+}
+
+/// Measures every row of the tables at `paths` and prints them, checks them, or writes them back.
+fn claims(paths: &[String], check: bool, write: bool, out: &mut impl Write) -> Result<(), Stop> {
+    let mut table = Vec::new();
+    let mut ends = Vec::new();
+    for path in paths {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| format!("cannot read the table {}: {e}", excerpt(path)))?;
+        let rows = claims::parse_table(&text).map_err(|e| format!("{}: {e}", excerpt(path)))?;
+        for m in &rows {
+            if table.iter().any(|t: &claims::Measurement| t.id == m.id) {
+                return Err(format!(
+                    "{}: the id '{}' is used by another table",
+                    excerpt(path),
+                    m.id
+                )
+                .into());
+            }
+        }
+        table.extend(rows);
+        ends.push(table.len());
+    }
+    let threads = std::thread::available_parallelism().map_or(1, usize::from);
+    let progress = io::stderr().is_terminal();
+    let values = claims::measure_table(&table, threads, &|done, total| {
+        if progress {
+            to_stderr(format_args!("imlab claims: run {done}/{total}\r"));
+        }
+    });
+    let mut failed = Vec::new();
+    let mut lines = Vec::new();
+    for (m, v) in table.iter().zip(&values) {
+        match v {
+            Ok(v) => {
+                let now = claims::written(*v);
+                if check && now != m.value {
+                    failed.push(match m.value.as_str() {
+                        "" => format!("{}: no value in the table, measured {now}", m.id),
+                        was => format!("{}: the table says {was}, measured {now}", m.id),
+                    });
+                }
+                lines.push(claims::table_line(m, &now));
+            }
+            Err(e) => failed.push(format!("{}: {e}", m.id)),
+        }
+    }
+    if write && failed.is_empty() {
+        let mut start = 0;
+        for (path, &end) in paths.iter().zip(&ends) {
+            let text = std::iter::once(claims::HEADER.to_string())
+                .chain(lines[start..end].iter().cloned())
+                .collect::<Vec<_>>()
+                .join("\n");
+            std::fs::write(path, text + "\n")
+                .map_err(|e| format!("cannot write the table {}: {e}", excerpt(path)))?;
+            start = end;
+        }
+    } else if !check {
+        writeln!(out, "{}", claims::HEADER).map_err(stdout_stop)?;
+        for line in &lines {
+            writeln!(out, "{line}").map_err(stdout_stop)?;
+        }
+    }
+    match failed.len() {
+        0 => Ok(()),
+        n => Err(format!(
+            "{n} of {} measurements differ or have no value:\n{}",
+            table.len(),
+            failed.join("\n")
+        )
+        .into()),
+    }
 }
 
 /// Measures the response at each frequency, with progress and a count of the unsettled points on

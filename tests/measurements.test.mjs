@@ -1,0 +1,167 @@
+// The lessons' numbers are measurements: the table (web/teaching/measurements/*.csv) is measured
+// again by the core and must not differ; each lesson's texts name only measurements of its own
+// table, hold no number that is neither a measurement nor a setting they name, and every
+// conclusion their words state holds on the table.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { execFileSync } from 'node:child_process';
+import { readFileSync, readdirSync } from 'node:fs';
+import { LESSONS } from '../web/teaching/teaching.js';
+import { LESSON_TEXTS, namedIn, parseTables, render, withoutPlaceholders } from '../web/teaching/measured.js';
+import { numbersIn } from './claims.mjs';
+
+const CLI = new URL('../target/release/imlab', import.meta.url).pathname;
+const DIR = new URL('../web/teaching/measurements/', import.meta.url).pathname;
+const FILES = readdirSync(DIR)
+  .filter((f) => f.endsWith('.csv'))
+  .sort();
+const tableOf = (file) => parseTables([readFileSync(DIR + file, 'utf8')]);
+const TABLE = parseTables(FILES.map((f) => readFileSync(DIR + f, 'utf8')));
+
+// Settings a text names as `key = value`: the scenario's own fields, which the codec knows.
+const FIELDS = new Set(
+  execFileSync(CLI, ['describe', 'v=1&preset=step'])
+    .toString()
+    .split('\n')
+    .map((l) => l.split(/\s+/)[0])
+    .filter((k) => k && !k.startsWith('#')),
+);
+const SETTING = /\b([a-z][\w.]*) ?= ?(−?[\d.]+(?:e−?\d+)?)/g;
+// Equation numbers of the paper: (26), (26)–(28).
+const EQUATION = /\(\d+\)(?:–\(\d+\))?/g;
+
+/**
+ * The value of a condition over the table: `A op B`, each side a sum of products of ids and
+ * numbers (with unary minus and parentheses), op one of == != < <= > >=.
+ */
+export function holds(condition, table) {
+  const tokens = condition.match(/\s*([A-Za-z][\w.]*|\d+(?:\.\d+)?(?:e-?\d+)?|==|!=|<=|>=|[-+*/()<>])/g);
+  assert.equal(tokens?.join(''), condition, `'${condition}': not a condition`);
+  const list = tokens.map((t) => t.trim());
+  let i = 0;
+  const atom = () => {
+    const t = list[i++];
+    if (t === '-') return -atom();
+    if (t === '(') {
+      const v = sum();
+      assert.equal(list[i++], ')', `'${condition}': unbalanced`);
+      return v;
+    }
+    if (/^\d/.test(t)) return Number(t);
+    assert.ok(table.has(t), `'${condition}': no measurement '${t}'`);
+    return table.get(t).value;
+  };
+  const product = () => {
+    let v = atom();
+    while (list[i] === '*' || list[i] === '/') v = list[i++] === '*' ? v * atom() : v / atom();
+    return v;
+  };
+  const sum = () => {
+    let v = product();
+    while (list[i] === '+' || list[i] === '-') v = list[i++] === '+' ? v + product() : v - product();
+    return v;
+  };
+  const left = sum();
+  const op = list[i++];
+  const right = sum();
+  assert.equal(i, list.length, `'${condition}': trailing words`);
+  const result = { '==': left === right, '!=': left !== right, '<': left < right, '<=': left <= right }[op];
+  return result ?? { '>': left > right, '>=': left >= right }[op];
+}
+
+/** The numbers of `text` outside its placeholders that no given, setting or equation covers. */
+function untyped(text, givens) {
+  let rest = withoutPlaceholders(text);
+  for (const g of givens) rest = rest.replaceAll(g, '⟨given⟩');
+  rest = rest.replace(SETTING, (all, key) => (FIELDS.has(key) ? '⟨setting⟩' : all)).replace(EQUATION, '⟨eq⟩');
+  return numbersIn(rest);
+}
+
+test('the measurements table is what the core measures now', () => {
+  // Each run once, on both cores; the message lists every row that differs.
+  execFileSync(CLI, ['claims', '--check', ...FILES.map((f) => DIR + f)], { stdio: ['ignore', 'ignore', 'pipe'] });
+});
+
+test('the check fails on a table whose value differs', () => {
+  const file = FILES[0];
+  const [header, first, ...rest] = readFileSync(DIR + file, 'utf8')
+    .trim()
+    .split('\n');
+  const cells = first.split(',');
+  cells[cells.length - 1] = String(Number(cells.at(-1)) + 1);
+  const changed = `/tmp/imlab-claims-${process.pid}.csv`;
+  execFileSync('sh', ['-c', `cat > ${changed}`], { input: [header, cells.join(','), ...rest].join('\n') });
+  assert.throws(() => execFileSync(CLI, ['claims', '--check', changed], { stdio: 'pipe' }), /differ/);
+});
+
+/**
+ * Every measured text: its name, its table's file, the strings a reader reads, the conditions its
+ * words state and the settings it names. A lesson's table is `ID.csv`.
+ */
+export const MEASURED = LESSONS.map((lesson) => ({
+  name: `lesson ${lesson.id}`,
+  file: `${lesson.id}.csv`,
+  texts: LESSON_TEXTS.map((k) => lesson[k]),
+  holds: lesson.holds ?? [],
+  givens: lesson.givens ?? [],
+}));
+
+for (const { name, file, texts, holds: conditions, givens } of MEASURED) {
+  test(`${name}: numbers from its table, conclusions that hold`, () => {
+    assert.ok(FILES.includes(file), `no table ${file}`);
+    const own = tableOf(file);
+    const named = new Set(texts.flatMap(namedIn));
+    for (const id of named) assert.ok(own.has(id), `${id}: not in ${file}`);
+    for (const text of texts) render(text, own);
+    for (const c of conditions) assert.ok(holds(c, own), `'${c}' does not hold on the table`);
+    const used = (id) => named.has(id) || conditions.some((c) => c.match(/[A-Za-z][\w.]*/g).includes(id));
+    assert.deepEqual(
+      [...own.keys()].filter((id) => !used(id)),
+      [],
+      'measurements no text or condition uses',
+    );
+    for (const g of givens)
+      assert.ok(
+        texts.some((t) => t.includes(g)),
+        `given '${g}' is not in the text`,
+      );
+    assert.deepEqual(
+      texts.flatMap((t) => untyped(t, givens)),
+      [],
+      'numbers typed into the text: make each a measurement or name it as a given setting',
+    );
+  });
+}
+
+test('a number typed into a lesson fails, and a condition that does not hold fails', () => {
+  const lesson = LESSONS[0];
+  assert.deepEqual(untyped('settles in 4.75 ms', lesson.givens), ['4.75']);
+  assert.deepEqual(untyped('with k1 = 600 it settles', lesson.givens), []);
+  assert.deepEqual(untyped('with speed = 600 it settles', lesson.givens), ['600']);
+  const own = tableOf(`${lesson.id}.csv`);
+  for (const c of lesson.holds) {
+    // The condition's comparison reversed must fail: no condition holds whatever the table says.
+    const flipped = c.replace(
+      /==|!=|<=|>=|<|>/,
+      (op) => ({ '==': '!=', '!=': '==', '<=': '>', '>=': '<', '<': '>=', '>': '<=' })[op],
+    );
+    assert.equal(holds(flipped, own), false, flipped);
+  }
+});
+
+test('the page renders a measurement with its digits and unit', () => {
+  const table = parseTables([
+    'id,show,seeds,value\na,ms:3,1..30,0.004650000000000001\nb,:2,1..30,-25.43\nc,count,1..30,7\nd,:2,1..30,163000',
+  ]);
+  assert.equal(render('{a} ms, {b}, {c} of {c#draws}, {d}', table), '4.65 ms, −25, 7 of 30, 160,000');
+  assert.throws(() => render('{e}', table), /no measurement 'e'/);
+});
+
+test('every table belongs to a measured text', () => {
+  const ids = new Set(MEASURED.map((t) => t.file));
+  assert.deepEqual(
+    FILES.filter((f) => !ids.has(f)),
+    [],
+  );
+  assert.ok(TABLE.size > 0);
+});

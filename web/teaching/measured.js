@@ -1,0 +1,110 @@
+// The teaching text's numbers: a lesson is a template that names measurements ({id}), and the
+// measurements table (web/teaching/measurements/*.csv, computed by `imlab claims`) gives their
+// values. A sentence keeps its words and its numbers apart, so a number changes only with the
+// table, and a translation of the words keeps the same numbers.
+
+/**
+ * @typedef {{ value: number, show: string, seeds: string }} Measured
+ * @typedef {Map<string, Measured>} Table
+ */
+
+/**
+ * The rows of measurements tables (CSV, as `imlab claims` writes them), by id.
+ * @param {string[]} texts
+ * @returns {Table}
+ */
+export function parseTables(texts) {
+  /** @type {Table} */
+  const table = new Map();
+  for (const text of texts) {
+    const [header, ...lines] = text.trim().split('\n');
+    const names = header.split(',');
+    const col = (name) => names.indexOf(name);
+    for (const line of lines) {
+      const cells = line.split(',');
+      const value = cells[col('value')];
+      table.set(cells[col('id')], {
+        value: value === 'inf' ? Infinity : value === '-inf' ? -Infinity : Number(value),
+        show: cells[col('show')],
+        seeds: cells[col('seeds')],
+      });
+    }
+  }
+  return table;
+}
+
+// How a `show` spec scales a value: ms for seconds, % for a fraction, mrad/s for rad/s.
+const SCALES = { '': 1, ms: 1e3, '%': 1e2, m: 1e3 };
+
+/**
+ * `value` with `digits` significant digits, written as the page's sentences write numbers
+ * (a minus sign, thousands grouped by commas).
+ * @param {number} value
+ * @param {number} digits
+ */
+export function significant(value, digits) {
+  const rounded = Number(value.toPrecision(digits));
+  const magnitude = rounded === 0 ? 0 : Math.floor(Math.log10(Math.abs(rounded)));
+  const text = Math.abs(rounded).toFixed(Math.max(0, digits - 1 - magnitude));
+  const [whole, frac] = text.split('.');
+  const grouped = whole.length > 4 ? whole.replace(/\B(?=(\d{3})+(?!\d))/g, ',') : whole;
+  return `${rounded < 0 ? '−' : ''}${grouped}${frac ? `.${frac}` : ''}`;
+}
+
+/**
+ * How the text shows a measured row: `count` a whole number, `SCALE:DIGITS` its value scaled
+ * (ms, %, m for milli) to DIGITS significant digits.
+ * @param {Measured} m
+ * @param {string} id
+ */
+export function shown(m, id) {
+  if (!Number.isFinite(m.value)) throw new Error(`measurement ${id} is ${m.value}: a text cannot state it`);
+  if (m.show === 'count') {
+    if (!Number.isInteger(m.value)) throw new Error(`measurement ${id} shown as a count is ${m.value}`);
+    return String(m.value);
+  }
+  const [scale, digits] = m.show.split(':');
+  if (!(scale in SCALES) || !/^[1-9]$/.test(digits)) throw new Error(`measurement ${id}: show '${m.show}'`);
+  return significant(m.value * SCALES[scale], Number(digits));
+}
+
+// A placeholder: {id}, or {id#draws} for the number of noise draws its sample takes.
+const PLACEHOLDER = /\{([A-Za-z0-9._]+)(#draws)?\}/g;
+
+/**
+ * `template` with each placeholder replaced by its measurement; throws on an id the table lacks.
+ * @param {string} template
+ * @param {Table} table
+ */
+export function render(template, table) {
+  return template.replace(PLACEHOLDER, (_, id, draws) => {
+    const m = table.get(id);
+    if (!m) throw new Error(`no measurement '${id}' in the table`);
+    if (draws) {
+      const [a, b] = m.seeds.split('..').map(Number);
+      return String(b - a + 1);
+    }
+    return shown(m, id);
+  });
+}
+
+/** The ids a template names, in order. */
+export const namedIn = (template) => [...template.matchAll(PLACEHOLDER)].map((m) => m[1]);
+
+/** The template with its placeholders removed: what must hold no number of its own. */
+export const withoutPlaceholders = (template) => template.replace(PLACEHOLDER, '⟨⟩');
+
+/** The fields of a lesson that a student reads. */
+export const LESSON_TEXTS = ['title', 'look', 'question', 'hint', 'answer'];
+
+/**
+ * `lesson` with its texts rendered from `table`.
+ * @template {Record<string, any>} L
+ * @param {L} lesson
+ * @param {Table} table
+ * @returns {L}
+ */
+export const renderLesson = (lesson, table) => ({
+  ...lesson,
+  ...Object.fromEntries(LESSON_TEXTS.map((k) => [k, render(lesson[k], table)])),
+});
