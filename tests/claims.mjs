@@ -210,6 +210,9 @@ export class Core {
 /** The seeds a statement that the noise moves is checked over. */
 export const SEEDS = [1, 2, 3, 4, 5, 6, 7, 8, 9, 10];
 
+/** The default sample of noise draws, as the measurements tables take it (seeds 1..30). */
+export const SEEDS_30 = Array.from({ length: 30 }, (_, i) => i + 1);
+
 /** `run` with noise seed `seed`. */
 export const withSeed = (run, seed) => `${run}&seed=${seed}`;
 

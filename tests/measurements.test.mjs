@@ -5,10 +5,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { readFileSync, readdirSync } from 'node:fs';
+import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { LESSONS } from '../web/teaching/teaching.js';
 import { LESSON_TEXTS, namedIn, parseTables, render, withoutPlaceholders } from '../web/teaching/measured.js';
 import { numbersIn } from './claims.mjs';
+import { SECTIONS, STABILITY_CAUSES, WALKTHROUGH_GIVENS, WALKTHROUGH_HOLDS } from '../web/teaching/walkthrough-text.js';
 
 const CLI = new URL('../target/release/imlab', import.meta.url).pathname;
 const DIR = new URL('../web/teaching/measurements/', import.meta.url).pathname;
@@ -98,13 +99,25 @@ test('the check fails on a table whose value differs', () => {
  * Every measured text: its name, its table's file, the strings a reader reads, the conditions its
  * words state and the settings it names. A lesson's table is `ID.csv`.
  */
-export const MEASURED = LESSONS.map((lesson) => ({
-  name: `lesson ${lesson.id}`,
-  file: `${lesson.id}.csv`,
-  texts: LESSON_TEXTS.map((k) => lesson[k]),
-  holds: lesson.holds ?? [],
-  givens: lesson.givens ?? [],
-}));
+export const MEASURED = [
+  ...LESSONS.map((lesson) => ({
+    name: `lesson ${lesson.id}`,
+    file: `${lesson.id}.csv`,
+    texts: LESSON_TEXTS.map((k) => lesson[k]),
+    holds: lesson.holds ?? [],
+    givens: lesson.givens ?? [],
+  })),
+  {
+    name: 'walkthrough',
+    file: 'walkthrough.csv',
+    texts: [
+      ...SECTIONS.flatMap((s) => [...s.prose, s.note ?? '', ...(s.shows ?? [])]),
+      ...Object.values(STABILITY_CAUSES),
+    ],
+    holds: WALKTHROUGH_HOLDS,
+    givens: WALKTHROUGH_GIVENS,
+  },
+];
 
 for (const { name, file, texts, holds: conditions, givens } of MEASURED) {
   test(`${name}: numbers from its table, conclusions that hold`, () => {
@@ -164,4 +177,59 @@ test('every table belongs to a measured text', () => {
     [],
   );
   assert.ok(TABLE.size > 0);
+});
+
+// "Settled" means settled: every final value `imlab metrics` calls settled, on every preset and
+// every lesson's run, stays within its tolerance in a run four times longer (at most 20 s, the
+// longest run accepted), on seeds 1–10. One table of measurements, each run once on both cores.
+const FINALS = ['speed_error_final', 'speed_estimate_error_final', 'flux_error_final'];
+const LONGEST = 20;
+/** `run` with its duration multiplied by `k` (at most LONGEST s). */
+function longer(run, k) {
+  const duration = Number(
+    execFileSync(CLI, ['describe', run])
+      .toString()
+      .match(/^duration\s+=\s+(\S+)/m)[1],
+  );
+  const d = Math.min(LONGEST, k * duration);
+  return /(^|&)duration=/.test(run) ? run.replace(/duration=[^&]*/, `duration=${d}`) : `${run}&duration=${d}`;
+}
+
+test('a final value called settled stays within its tolerance in a run four times longer', () => {
+  const presets = execFileSync(CLI, ['list'])
+    .toString()
+    .trim()
+    .split('\n')
+    .map((l) => `v=1&preset=${l.split(/\s+/)[0]}`);
+  const runs = [...new Set([...presets, ...LESSONS.map((l) => l.run)])];
+  const rows = ['id,scenario,figure,seeds,statistic,show,value'];
+  const seeds = Array.from({ length: 10 }, (_, i) => i + 1);
+  runs.forEach((run, r) => {
+    for (const seed of seeds)
+      FINALS.forEach((f, k) => {
+        const id = `r${r}.s${seed}.f${k}`;
+        rows.push(`${id}.settled,${run}&seed=${seed},${f}_settled,-,max,count,`);
+        rows.push(`${id}.value,${run}&seed=${seed},${f},-,max,:3,`);
+        rows.push(`${id}.longer,${longer(run, 4)}&seed=${seed},${f},-,max,:3,`);
+      });
+  });
+  const file = `/tmp/imlab-settled-${process.pid}.csv`;
+  writeFileSync(file, rows.join('\n'));
+  const table = parseTables([execFileSync(CLI, ['claims', file], { stdio: ['ignore', 'pipe', 'pipe'] }).toString()]);
+  const wrong = [];
+  let settled = 0;
+  runs.forEach((run, r) => {
+    for (const seed of seeds)
+      FINALS.forEach((f, k) => {
+        const v = (what) => table.get(`r${r}.s${seed}.f${k}.${what}`).value;
+        if (v('settled') !== 1) return;
+        settled++;
+        // The tolerance a final value is settled within (crate/src/record/figures.rs).
+        const tolerance = Math.max(f === 'flux_error_final' ? 1e-3 : 0.01, 0.02 * Math.abs(v('value')));
+        if (!(Math.abs(v('longer') - v('value')) <= tolerance))
+          wrong.push(`${run}&seed=${seed} ${f}: ${v('value')} settled, ${v('longer')} in ${longer(run, 4)}`);
+      });
+  });
+  assert.ok(settled > 0);
+  assert.deepEqual(wrong, []);
 });

@@ -97,6 +97,10 @@ pub struct MapRun {
     /// The EKF's mean NIS was far outside a consistent filter's band (the "inconsistent"
     /// warning).
     pub inconsistent: bool,
+    /// The peak stator current after the start-up transient passed the motor's rating.
+    pub over_rating: bool,
+    /// A final value (the speed, speed-estimate or flux error) had not settled by the end.
+    pub unsettled: bool,
     /// Why the simulation stopped early, if it did.
     pub failure: Option<String>,
 }
@@ -117,6 +121,11 @@ pub struct Cell {
     pub ran_away: usize,
     /// Runs whose filter was inconsistent.
     pub inconsistent: usize,
+    /// Runs that did not run away but drew more than the motor's rated current after the
+    /// start-up transient: what holding cost.
+    pub over_rating: usize,
+    /// Runs that did not run away but ended with a final value still changing or fluctuating.
+    pub unsettled: usize,
     /// Per figure of [`MAP_FIGURES`]: [minimum, median, maximum] over the runs that neither ran
     /// away nor stopped early and have the figure; NaN when none has.
     pub stats: Vec<[f64; 3]>,
@@ -431,11 +440,22 @@ pub fn map_run(scenario: &str, seed: u64) -> Result<MapRun, String> {
         })
         .collect();
     let warned = |kind: WarningKind| report.warnings.iter().any(|w| w.kind == kind);
+    let value = |name: &str| list.iter().find(|f| f.name == name).map(|f| f.value);
+    let over_rating = matches!(
+        (value("current_peak"), value("current_rated")),
+        (Some(peak), Some(rated)) if peak > rated
+    );
+    let unsettled = list
+        .iter()
+        .filter_map(|f| f.trend.as_ref())
+        .any(|t| !t.settled);
     Ok(MapRun {
         seed,
         figures,
         ran_away: failure.is_some() || warned(WarningKind::Runaway),
         inconsistent: warned(WarningKind::Inconsistent),
+        over_rating,
+        unsettled,
         failure,
     })
 }
@@ -468,6 +488,8 @@ pub fn summarise(cell: &CellPlan, runs: &[MapRun]) -> Cell {
         runs: runs.len(),
         ran_away: runs.iter().filter(|r| r.ran_away).count(),
         inconsistent: runs.iter().filter(|r| r.inconsistent).count(),
+        over_rating: done.iter().filter(|r| r.over_rating).count(),
+        unsettled: done.iter().filter(|r| r.unsettled).count(),
         stats: (0..MAP_FIGURES.len())
             .map(|k| {
                 stats(
@@ -493,7 +515,16 @@ fn csv_header(map: &Map) -> String {
         cols.push(a.key.clone());
         cols.push(format!("{}_vs_{other}_pct", a.key));
     }
-    cols.extend(["runs", "ran_away", "inconsistent"].map(String::from));
+    cols.extend(
+        [
+            "runs",
+            "ran_away",
+            "inconsistent",
+            "over_rating",
+            "unsettled",
+        ]
+        .map(String::from),
+    );
     for f in MAP_FIGURES {
         for s in ["min", "median", "max"] {
             cols.push(format!("{f}_{s}"));
@@ -519,7 +550,16 @@ pub fn csv_row(map: &Map, cell: &Cell) -> String {
         cols.push(field(*v));
         cols.push(field(rounded(100.0 * a.errors[i])));
     }
-    cols.extend([cell.runs, cell.ran_away, cell.inconsistent].map(|n| n.to_string()));
+    cols.extend(
+        [
+            cell.runs,
+            cell.ran_away,
+            cell.inconsistent,
+            cell.over_rating,
+            cell.unsettled,
+        ]
+        .map(|n| n.to_string()),
+    );
     for s in &cell.stats {
         cols.extend(s.iter().map(|v| field(*v)));
     }
@@ -683,6 +723,8 @@ mod tests {
             figures: vec![v; MAP_FIGURES.len()],
             ran_away: failure.is_some(),
             inconsistent: false,
+            over_rating: v > 2.0,
+            unsettled: v < 2.0,
             failure: failure.map(String::from),
         };
         let mut away = run(4, -50.0, None);
@@ -697,6 +739,9 @@ mod tests {
             ],
         );
         assert_eq!((c.runs, c.ran_away), (4, 2));
+        // What holding cost is counted over the runs that held: the run at 3 passed the rating,
+        // the one at 1 had not settled; the diverged run's 1e9 counts for neither.
+        assert_eq!((c.over_rating, c.unsettled), (1, 1));
         // Neither the diverged run nor the one that ran away enters the statistics.
         assert_eq!(c.stats[0], [1.0, 2.0, 3.0]);
     }

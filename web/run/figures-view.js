@@ -16,7 +16,7 @@ function showKeyFigures(figures, rated) {
       if (f.name === 'current_peak' && rated)
         span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
       else if (f.name === 'speed_error_final' && f.trend) {
-        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
+        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', drifting: 'drifting', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
         if (!f.trend.settled) span.className = 'unsettled';
       } else if (f.name === 'mean_nis' && low && high) {
         span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
@@ -41,6 +41,8 @@ function trendText(f) {
   const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means each within ${Number(tolerance.toPrecision(2))}${unit}`;
   if (state === 'settled') return ['settled by the end of the run', fit];
   if (state === 'ran away') return ['the run ran away: not a final value', fit];
+  if (state === 'drifting')
+    return ['drifting with the EKF’s random-walk estimate of the load or R_r: a longer run ends elsewhere', fit];
   if (state === 'fluctuating')
     return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
   const left = toGo != null && toGo > tolerance ? ` (about ${Number(toGo.toPrecision(2))}${unit} still to go)` : '';

@@ -2,6 +2,12 @@
 // table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
 import { el } from '../ui/dom.js';
 import { STABILITY_CAUSES } from './walkthrough-text.js';
+import { TABLES } from './measurements.js';
+import { parseTables, render } from './measured.js';
+
+// The numbers of the causes' notes, from the table they were checked against
+// (web/teaching/measurements/walkthrough.csv).
+const TABLE = parseTables(TABLES);
 
 /** The stability report `st` of a run, in words. */
 export function stabilityText(st) {
@@ -9,7 +15,7 @@ export function stabilityText(st) {
   const b = st.bound;
   const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
   if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
-  const why = STABILITY_CAUSES[st.cause];
+  const why = render(STABILITY_CAUSES[st.cause] ?? '', TABLE);
   return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(st.first_outside.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
 }
 

@@ -1,10 +1,19 @@
-// The walkthrough's sections as the page shows them: each one's prose, equations, knobs and plots,
-// the lumped-parameter table, and the note that the IFOC baseline drives the motor.
+// The walkthrough's sections as the page shows them: each one's prose (its numbers filled in from
+// the measurements table), equations, knobs and plots, the lumped-parameter table, and the note
+// that the IFOC baseline drives the motor.
 import { el } from '../ui/dom.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
 import { lawBlock } from './law-editor.js';
+import { TABLES } from './measurements.js';
+import { parseTables, render } from './measured.js';
+
+// The walkthrough's numbers, from the table its words were checked against
+// (web/teaching/measurements/walkthrough.csv).
+const TABLE = parseTables(TABLES);
+/** A template of the walkthrough's text with its measurements filled in. */
+const measured = (template) => render(template, TABLE);
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
 const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
@@ -42,7 +51,7 @@ export function plotDefs(sectionDivs) {
 export function sectionElement(s, onCompare) {
   const div = el('section', { className: 'step', id: `section-${s.id}` });
   div.append(el('h2', { textContent: s.title }));
-  for (const p of s.prose) div.append(el('p', { textContent: p }));
+  for (const p of s.prose) div.append(el('p', { textContent: measured(p) }));
   if (s.figure)
     div.append(
       el('figure', { className: 'diagram' }, [
@@ -56,13 +65,13 @@ export function sectionElement(s, onCompare) {
       ]),
     );
   s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
-  if (s.note) div.append(el('p', { className: 'note', textContent: s.note }));
+  if (s.note) div.append(el('p', { className: 'note', textContent: measured(s.note) }));
   // The numbers a run gives, apart from the derivation they illustrate.
   if (s.shows)
     div.append(
       el('div', { className: 'run-shows' }, [
         el('h3', { textContent: 'What the run shows' }),
-        ...s.shows.map((p) => el('p', { textContent: p })),
+        ...s.shows.map((p) => el('p', { textContent: measured(p) })),
       ]),
     );
   if (s.lumped)

@@ -1,7 +1,9 @@
 // The design walkthrough's text: its sections (prose, display equations with the paper's numbers,
 // the plot of each section's live signals and its design knobs) and the stability section's notes.
-// Prose and equations only; every number shown next to them comes from the core, and every number
-// in the prose is checked against the core by tests/lessons.test.mjs.
+// Prose and equations only; every number shown next to them comes from the core. A number of the
+// prose about a run is a placeholder {id} of the measurements table
+// (web/teaching/measurements/walkthrough.csv, see web/teaching/measured.js), and what the words
+// conclude from it is a condition of WALKTHROUGH_HOLDS: tests/measurements.test.mjs checks both.
 const t = String.raw;
 
 // Each section: prose paragraphs, display equations (TeX), the plot of its live signals
@@ -39,7 +41,7 @@ export const SECTIONS = [
     prose: [
       'The EKF estimates all five states from the measured currents and the applied voltages. It predicts with the model discretised by forward Euler (10), linearised by the Jacobian (11), and corrects with the innovation: the measured minus the predicted currents.',
       'Q (process noise: q·Ts on every state, plus q_speed·Ts on the speed alone) says how much the model is trusted; R (measurement noise, r_std²·I) how much the sensors are. One q for states of mixed units is the paper’s choice; q_speed lets the speed estimate move without loosening the rest. The gain K_k enters the controller as the observer gain L = K_k/Ts of the general form (4): the estimation errors x̃ are what the controller must tolerate.',
-      'A consistent filter has innovations inside their ±2σ band about 95 % of the time and a normalised innovation squared (NIS) averaging 2. The Euler predictor cannot follow 200 Hz currents: compare it with RK4 below.',
+      'A consistent filter has innovations inside their ±2σ band about 95 % of the time and a normalised innovation squared (NIS) averaging 2. The Euler predictor cannot follow 200 Hz currents: on sine200 its NIS averages at least {wt.ekf.euler.nis} on every draw, the RK4 predictor’s at most {wt.ekf.rk4.nis}; compare them below.',
       'Section 3.1 names a remedy it does not build: treat slowly varying quantities as extra states. The knob ekf.load adds a2 = T_L0/J as a random walk (the controller then uses â2 and its rate, the injection l_a·(x̃2, x̃3)); ekf.rr adds the rotor resistance (the controller’s a5, a7, a8, a10 follow R̂_r). The last two plots show both estimates with their ±2σ bands from P against the truth. An extra state absorbs whatever the model lacks, right or wrong: a rotor-resistance state under an unknown load takes the load for a resistance (see the lessons).',
     ],
     equations: [
@@ -187,7 +189,7 @@ export const SECTIONS = [
       'Differentiating z2 also gives −(a7 + a8)·z2, the motor’s own damping; (32) as printed drops it, and the k2 = a7 + a8 + k2s1 of (36) counts it.',
     ],
     shows: [
-      'The plot below evaluates d̃2 from the simulated truth: the motor’s actual ż2 less the terms the controller knows, with the true currents in place of the measured ones. It is evaluated for the five-state EKF without the delay compensation; for an observer with extra states (ekf.load, ekf.rr) or with delay.comp the plot stays empty. On step with an exact model, from 15 ms on, |d̃2| peaks at 3,900 to 4,700 rad/s³ over seeds 1–10, at the speed step (t = 0.05 s): h2 must be at least that for (38) to dominate it. With the motor’s J 20 % above the model’s the peak is 6,400 to 7,400 rad/s³, with it 20 % below 5,500 to 6,200; with the motor’s R_r 10 % below the model’s, 51,000 to 58,000 rad/s³. These peaks are the same over a 1 s run. With R_r 10 % above, the flux runs off, to 5.5 to 13.2 Wb by the end of the preset’s 0.1 s and 28 to 33 Wb after 1 s, and within the 0.1 s |d̃2| reaches 57 to 590 million rad/s³: no h2 sized for the exact model covers it.',
+      'The plot below evaluates d̃2 from the simulated truth: the motor’s actual ż2 less the terms the controller knows, with the true currents in place of the measured ones. It is evaluated for the five-state EKF without the delay compensation; for an observer with extra states (ekf.load, ekf.rr) or with delay.comp the plot stays empty. h2 must be at least the peak of |d̃2| for (38) to dominate it: read it on step with an exact model, then with a model error (plant.j, plant.rr). With the motor’s R_r 10 % above the model’s (plant.rr = 5.445) the flux runs off, to {wt.rrhigh.flux.min} to {wt.rrhigh.flux.max} Wb by the end of the preset’s 0.1 s and {wt.rrhigh1s.flux.min} to {wt.rrhigh1s.flux.max} Wb after 1 s, and the coefficients of d̃2 in (33) grow with x.',
     ],
     equations: [
       t`\dot z_2 = a_1(\dot x_3\hat x_4 - \dot x_2\hat x_5) + a_1(x_3\dot{\hat x}_4 - x_2\dot{\hat x}_5) - \dot v_1`,
@@ -239,7 +241,7 @@ export const SECTIONS = [
       'Since v3 = −ψ3 − k3·z3, the next error z4 (44) is z4 = ż3 + k3·z3: the rate at which z3 fails to decay at k3.',
     ],
     shows: [
-      'The sampled loop meets ż3 = −k3·z3 + z4 only approximately, and the measurement noise enters through the innovations: on step with an exact model, from 15 ms on (after the start-up), the recorded z3 misses it by 71 to 73 % of the RMS of ż3 over seeds 1–10, by 9.3 % without noise (noise=0) and by 2.7 % with the perfect observer (perfect=1), whose miss halves with Ts. The z3 plot shows the estimate’s error, not the motor’s.',
+      'The z3 plot shows the error of the observer’s own flux estimate against the target, not the motor’s. On step with an exact model, from 15 ms on, its RMS is {wt.z3.min} to {wt.z3.max} mWb² with the EKF and {wt.z3.quiet} mWb² without measurement noise (noise=0): the noise enters z3 through the innovations. With the perfect observer (perfect=1), whose estimate is the motor’s flux, it stays below {wt.z3.perfect.max} mWb².',
     ],
     equations: [
       t`z_3 = \hat x_4^2 + \hat x_5^2 - \psi_d\quad (42),\qquad \dot z_3 = 2\hat x_4\dot{\hat x}_4 + 2\hat x_5\dot{\hat x}_5 - \dot\psi_d = -2a_8(\hat x_4^2 + \hat x_5^2) + 2a_{10}(\hat x_2\hat x_4 + \hat x_3\hat x_5) + 2\hat x_4s_{i4} + 2\hat x_5s_{i5} - \dot\psi_d`,
@@ -282,8 +284,8 @@ export const SECTIONS = [
       'Choose v4 = −ψ4 − z3 − k4·z4 + v4s2 (49)–(51): the −z3 cancels the cross term z3z4 of V̇3, and (52) follows. v2 and v4 together fix both voltages through the decoupling matrix (54), invertible while the estimated flux is not zero (55). The voltage limit then acts: the paper gives only a 400 V limit; the box (vlimit=box) clips each component to ±400 V, while the circle and the inverter’s hexagon (vlimit) scale the whole vector down, keeping its direction. While it acts, the designed error dynamics no longer hold.',
     ],
     shows: [
-      '|d̃4|, evaluated from the simulated truth as d̃2 is, peaks at 1,600 to 3,400 Wb²/s² on step with an exact model, from 15 ms on, over seeds 1–10 (1,900 to 3,400 over a 1 s run); h4 must be at least that for (53) to dominate it.',
-      'In the first milliseconds the start-up transient commands tens of kilovolts, 11 to 32 kV at its peak on step and 34 to 166 kV on rr-mismatch over seeds 1–10, and on rr-mismatch it stays beyond the limit for the first 10 to 19 ms; the limit clips it. The plots fit their y-axes to the run after that transient; untick “Fit y-axes after the start-up transient” above the plots to see it.',
+      '|d̃4|, evaluated from the simulated truth as d̃2 is, is plotted below against ±h4; h4 must be at least its peak for (53) to dominate it.',
+      'In its first 5 ms the start-up transient commands voltages far beyond the limit: the commanded u_sa peaks at {wt.cmd.step.min} to {wt.cmd.step.max} V on step and {wt.cmd.rr.min} to {wt.cmd.rr.max} V on rr-mismatch, and on rr-mismatch the limit clips the command until {wt.clip.rr.min} to {wt.clip.rr.max} ms. The plots fit their y-axes to the run after that transient; untick “Fit y-axes after the start-up transient” above the plots to see it.',
     ],
     equations: [
       t`\dot z_4 = v_4 + \psi_4 + \tilde d_4\quad (47),\qquad v_4 = a_{41}bu_1 + a_{42}bu_2,\quad a_{41} = 2a_{10}\hat x_4,\ a_{42} = 2a_{10}\hat x_5\quad (48)`,
@@ -334,7 +336,7 @@ export const SECTIONS = [
       'The theorem bounds the errors z_i of the estimates, not the motor: the true speed error is |x1 − ω_d| ≤ |z1| + |x̃1|. It assumes |d̃2| ≤ h2 and |d̃4| ≤ h4 along the whole run; those bounds themselves presume x, x̂ and L bounded, which is what the theorem concludes, and the neglected L̇ terms are in neither ψ nor d̃. It says nothing about the true motor when the assumption fails.',
     ],
     shows: [
-      'With the EKF’s 10 % initial error only the voltage limit holds the start-up: without it (sine200 with vmax=100000) the run ends 6,100 to 6,500 rad/s off, on either side, with the flux at 8.7 to 9.3 Wb over seeds 1–10, and the page reports it as a run that ran away. From a correct initial estimate (init_err=0) the same run tracks to 0.013 to 0.014 rad/s RMS with an exact model, but with the motor’s R_r 10 % above the model’s it fails even so.',
+      'With the EKF’s 10 % initial error the voltage limit holds the start-up: sine200 never runs away with it, but without it (vmax=100000) it runs away on {wt.nolimit.runaway} of {wt.nolimit.runaway#draws} draws, ending up to {wt.nolimit.off.max} rad/s off with the flux at up to {wt.nolimit.flux.max} Wb. From a correct initial estimate (init_err=0) the same run without the limit tracks to {wt.exact.rms.min} to {wt.exact.rms.max} rad/s RMS on every draw with an exact model; with the motor’s R_r 10 % above the model’s it fails even so: its RMS error is at least {wt.exact.rrhigh.rms} rad/s, and it runs away on {wt.exact.rrhigh.runaway} of {wt.exact.rrhigh.runaway#draws} draws.',
     ],
     equations: [
       t`z_2(v_{2s2} + \tilde d_2) \le h_2|z_2| - \tfrac{h_2^2}{4\epsilon_2}z_2^2 = \epsilon_2 - \Big(\tfrac{h_2|z_2|}{2\sqrt{\epsilon_2}} - \sqrt{\epsilon_2}\Big)^2 \le \epsilon_2`,
@@ -360,9 +362,12 @@ export const STABILITY_CAUSES = {
   saturation:
     'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.',
   sampling:
-    'With the perfect observer and an exact model d̃2 = d̃4 = 0, and in continuous time V would stay under the bound (on it, with equal gains). The sampled loop leaves an error of its own, proportional to Ts in the z_i: on decay V stays under the bound for about the first 5 ms, then stops at a floor, reached by about 15 ms, while the bound falls on, so that V ends about 10¹¹ times above it; halving Ts quarters the floor. A model that differs from the motor adds a d̃ of its own, far above that floor (10⁶ times with the motor’s R_r 10 % off either way).',
+    'With the perfect observer and an exact model d̃2 = d̃4 = 0, and in continuous time V would stay under the bound (on it, with equal gains). The sampled loop leaves an error of its own, of the order of Ts in the z_i: on decay V stops at a floor while the bound falls on, so that V ends far above it, and halving Ts scales the floor by {wt.decay.halfts}. A model that differs from the motor adds a d̃ of its own, far above that floor ({wt.decay.rrhigh} and {wt.decay.rrlow} times it on decay with the motor’s R_r 10 % above and below the model’s).',
   estimation_errors:
     'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold.',
   eps_or_sampling:
     'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.',
 };
+
+// What the words conclude from the measurements, and the settings and constants they name.
+export { WALKTHROUGH_GIVENS, WALKTHROUGH_HOLDS } from './walkthrough-measured.js';

@@ -50,9 +50,10 @@ pub struct Figure {
 ///   from a drift, so the change still to come is taken as at most |rate| × that window.
 ///
 /// Changes that reverse or do not shrink trace no approach, and only the line is read. A value
-/// that is not changing is "fluctuating" when the samples scatter about the line by more than
-/// `tolerance` (its last sample does not stand for it), and "settled" otherwise. On a run that
-/// ran away no value is final: its state is "ran away".
+/// that is not changing is "fluctuating" when four times the samples' scatter about the line
+/// is more than `tolerance` (its last sample does not stand for it), "drifting" when the EKF estimates the
+/// load or R_r as a random walk (which the final values follow without end), and "settled"
+/// otherwise. On a run that ran away no value is final: its state is "ran away".
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Trend {
     /// Slope of the line through the last tenth (the figure's unit per second).
@@ -80,12 +81,16 @@ pub struct Trend {
 }
 
 /// How a value read at the last sample was still moving (see [`Trend`]); the page and the JSON
-/// see it as "settled", "changing", "fluctuating" or "ran away".
+/// see it as "settled", "changing", "drifting", "fluctuating" or "ran away".
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum TrendState {
     /// Neither changing nor scattered beyond its tolerance.
     Settled,
+    /// Not changing over the last tenths, but tied to an estimate the EKF holds as a random walk
+    /// (the load or R_r as a state): such an estimate wanders without end, and the value with it,
+    /// so no stretch of the run tells where it ends (a run four times longer ends elsewhere).
+    Drifting,
     /// Its line, or the approach its tenths trace, still moves it by more than its tolerance.
     Changing,
     /// Not changing, but its samples scatter about the line by more than its tolerance.
@@ -107,6 +112,12 @@ const FLUX_TREND_TOL: f64 = 1e-3;
 
 /// Relative part of a final value's tolerance: a 2 % change of the value itself.
 const TREND_RELATIVE: f64 = 0.02;
+
+/// A final value is a single sample: it stands for the value only while this many times the
+/// samples' scatter σ about their line fits its tolerance. Two such samples (this run's last,
+/// and a run four times longer's) differ by noise alone with a scatter of √2·σ, at most 0.35 of
+/// the tolerance: by more than the tolerance less than once in two hundred draws.
+const FINAL_SCATTER: f64 = 4.0;
 
 /// A change within twice the samples' scatter about the line cannot be told from the ripple of
 /// a periodic reference or from noise: it is not called a trend.
@@ -315,6 +326,7 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     let (low, high) = mean_nis_band(w.n);
     let warnings = warnings_of(&last, w.reference_peak, w.nis / n, (low, high));
     let ran_away = warnings.iter().any(|w| w.kind == WarningKind::Runaway);
+    let random_walk = s.ekf.load || s.ekf.rr;
     let trend_of = |k: usize, value: f64, tol: f64| {
         let rate = line.slope(k)?;
         let tolerance = tol.max(TREND_RELATIVE * value.abs());
@@ -324,12 +336,18 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         let to_go = approach(tenths.means(k)).map(|r| r.min((rate * window).abs()));
         let moves_in_tenth = visible && change > tolerance;
         let fluctuating = scatter > tolerance;
+        // The last sample stands for the value only if four times its scatter fits the
+        // tolerance: else the last sample of a run four times longer may end elsewhere by the
+        // noise alone.
+        let scattered = FINAL_SCATTER * scatter > tolerance;
         let state = if ran_away {
             TrendState::RanAway
         } else if moves_in_tenth || visible && to_go.is_some_and(|r| r > tolerance) {
             TrendState::Changing
-        } else if fluctuating {
+        } else if scattered {
             TrendState::Fluctuating
+        } else if random_walk {
+            TrendState::Drifting
         } else {
             TrendState::Settled
         };

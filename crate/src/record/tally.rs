@@ -126,8 +126,9 @@ impl StabilityTally {
 }
 
 /// What the transient ([`super::transient`]) reads from every row, gathered by a traced run as its rows come: per
-/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sum
-/// of the NIS over the second half of the run as planned (from −0, in row order, as the
+/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sums
+/// of the NIS and of the squared flux estimation error over the second half of the run as
+/// planned (from −0, in row order, as the
 /// transient sums it). A run that ends early has another second half; the transient then
 /// reads the rows again.
 #[derive(Clone, Debug)]
@@ -138,6 +139,15 @@ pub struct TransientTally {
     pub half_index: usize,
     /// The sum of the NIS from that row on.
     pub late_sum: f64,
+    /// The sum of the squared rotor-flux estimation error |φ_r − φ̂_r|² from that row on (Wb²).
+    pub late_flux_sum: f64,
+}
+
+/// The squared distance |φ_r − φ̂_r|² of row `r`'s rotor-flux estimate from the true flux (Wb²).
+#[inline]
+pub fn flux_err_sq(r: &Row) -> f64 {
+    let (a, b) = (r.phi_ra - r.phi_ra_hat, r.phi_rb - r.phi_rb_hat);
+    a * a + b * b
 }
 
 impl TransientTally {
@@ -150,6 +160,7 @@ impl TransientTally {
             band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
             half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
             late_sum: -0.0,
+            late_flux_sum: -0.0,
         }
     }
 
@@ -165,6 +176,7 @@ impl TransientTally {
         }
         if i >= self.half_index {
             self.late_sum += r.nis;
+            self.late_flux_sum += flux_err_sq(r);
         }
     }
 

@@ -17,17 +17,17 @@ pub struct Preset {
 
 /// All presets, in display order.
 pub const PRESETS: &[Preset] = &[
-    Preset { name: "sine200", description: "Paper Fig 2: track 0.5 sin(2π·200 t) rad/s with the EKF (the current peaks at 1.8 to 2.4 times the motor's rated current, depending on the noise draw)" },
+    Preset { name: "sine200", description: "Paper Fig 2: track 0.5 sin(2π·200 t) rad/s with the EKF; the current peaks above the motor's rated current" },
     Preset { name: "step", description: "Paper Fig 3: 0 → 0.5 rad/s step at 50 ms through a 200 Hz critically damped filter" },
     Preset { name: "ramp", description: "Paper Fig 4: trapezoid to 100 rad/s at ±400 rad/s², hold, and back" },
     Preset { name: "sine200-1rad", description: "1 rad/s at 200 Hz: the 400 V limit saturates and tracking suffers" },
     Preset { name: "sine200-rk4", description: "Fig 2 with an RK4 EKF predictor instead of the paper's Euler" },
-    Preset { name: "rr-mismatch", description: "Hold 50 rad/s with the motor's rotor resistance 10 % above the model's: the true speed recovers from the start-up with a time constant of about 0.6 s and ends 0.12 rad/s high (run it for 6 s to see it end)" },
+    Preset { name: "rr-mismatch", description: "Hold 50 rad/s with the motor's rotor resistance 10 % above the model's: the true speed recovers from the start-up over seconds and settles above the reference (run it for 6 s to see it end)" },
     Preset { name: "load-step", description: "Hold 50 rad/s; an unknown 2 N m load step at 0.15 s that the 5-state EKF cannot see" },
-    Preset { name: "decay", description: "Perfect observer, no noise, ω_d ≡ 0: the errors decay at the designed 1200/s for about 6 ms, then stop at a floor that shrinks with the sampling period" },
+    Preset { name: "decay", description: "Perfect observer, no noise, ω_d ≡ 0: the errors decay at the designed 1200/s, then stop at a floor that shrinks with the sampling period" },
     Preset { name: "ifoc-step", description: "Classical baseline: sensorless IFOC with an MRAS, step to 40 rad/s (MRAS is blind near zero speed)" },
     Preset { name: "load-step-est", description: "load-step with the load a2 as an EKF state (RK4 predictor): the speed holds through the unknown step with an exact model, not with the motor's R_r 3 % below the model's" },
-    Preset { name: "rr-mismatch-est", description: "rr-mismatch with R_r as an EKF state (RK4 predictor): no slow transient, and R̂_r within 4 % of the motor's value over 4 s" },
+    Preset { name: "rr-mismatch-est", description: "rr-mismatch with R_r as an EKF state (RK4 predictor): no slow transient, and R̂_r stays near the motor's value" },
     Preset { name: "sine200-drive", description: "Does 200 Hz survive a real drive? sine200 with a one-sample computation delay, the 540 V inverter hexagon and PWM" },
     Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): the Euler EKF's prediction errors through the gains saturate the 400 V limit" },
 ];
