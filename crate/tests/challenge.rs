@@ -405,9 +405,10 @@ fn built_ins_fail_untouched_and_pass_with_their_solution() {
         };
         match b.name {
             "step-tune" => {
-                // Default gains: 5.9 ms and 6.1 A (seed 3); tuned: 3.45 ms and 3.63 A.
+                // Default gains: 5.9 ms, within the rating once the start-up is over (its 6.1 A
+                // on seed 3 fell in the start-up); tuned: 3.45 ms and 3.63 A.
                 assert!(value(&base, "settling_time") > 0.0055);
-                assert!(value(&base, "current_peak") > 5.0);
+                assert!(value(&base, "current_peak") < 4.0);
                 assert!(value(&solved, "settling_time") < 0.0036);
                 assert!(value(&solved, "current_peak") < 3.7);
             }
@@ -516,11 +517,12 @@ fn grade_writes_one_row_per_link_with_status_and_pass() {
         .iter()
         .map(|(_, _, c)| vec![c[1].as_str(), c[3].as_str(), c[4].as_str()])
         .collect();
+    // The untouched gains (line 4) keep the rating and fail on the settling time alone.
     assert_eq!(
         pass_columns,
         [
             vec!["1", "1", "1"],
-            vec!["0", "0", "0"],
+            vec!["0", "1", "0"],
             vec!["0", "0", "0"],
             vec!["0", "0", "0"],
             vec!["0", "0", "0"],

@@ -13,8 +13,8 @@ use std::process::Command;
 const SEEDS: std::ops::RangeInclusive<u64> = 1..=10;
 
 /// A longer run tells what a value settles to: this many times the run's duration (capped at the
-/// longest run accepted), long enough for every slow mode of these runs to have died away.
-const LONGER: f64 = 3.0;
+/// longest run accepted), as "settled" promises.
+const LONGER: f64 = 4.0;
 
 /// The longest run a scenario accepts (s).
 const MAX_DURATION: f64 = 20.0;
@@ -85,18 +85,19 @@ fn a_slow_decay_that_moves_little_over_the_last_tenth_is_still_changing() {
 }
 
 #[test]
-fn a_settled_value_with_noise_on_it_is_settled_on_every_seed_and_ends_there() {
+fn a_settled_value_ends_there_in_a_run_four_times_longer() {
     // Each run ends well after its slow modes: the rotor-resistance mismatch's (a time constant
-    // near 0.6 s) by 6 s, the unknown load's fall (about a second) by 3 s, the step's by 0.1 s;
-    // the 200 Hz sine's errors ripple about a steady mean. The speed errors wander by up to
-    // 0.002 rad/s between seconds, which a line through the last tenth alone would extrapolate
-    // well past the tolerance.
-    for link in [
+    // near 0.6 s) by 6 s, the unknown load's fall (about a second) by 3 s, the step's by 0.1 s.
+    // Their speed errors are settled on every seed; a value called settled, on any of these runs
+    // and on the 200 Hz sine, ends within its tolerance in a run four times longer (at most
+    // 20 s). The speed errors wander by up to 0.002 rad/s between seconds, which a line through
+    // the last tenth alone would extrapolate well past the tolerance.
+    let always = [
         "v=1&preset=rr-mismatch&duration=6",
         "v=1&preset=load-step&duration=3",
         "v=1&preset=step",
-        "v=1&preset=sine200",
-    ] {
+    ];
+    for link in always.into_iter().chain(["v=1&preset=sine200"]) {
         for seed in SEEDS {
             let link = format!("{link}&seed={seed}");
             let r = report(&link, 1.0);
@@ -104,18 +105,33 @@ fn a_settled_value_with_noise_on_it_is_settled_on_every_seed_and_ends_there() {
             for name in FINALS {
                 let t = trend(&r, name);
                 let (value, later) = (figure(&r, name).value, figure(&longer, name).value);
-                assert_eq!(
-                    t.state,
-                    TrendState::Settled,
-                    "{link} {name} = {value}: {t:?}"
-                );
-                assert!(t.settled);
-                assert!(
-                    (value - later).abs() <= t.tolerance,
-                    "{link} {name}: {value} then {later}"
-                );
+                if name == "speed_error_final" && always.iter().any(|a| link.starts_with(a)) {
+                    assert_eq!(
+                        t.state,
+                        TrendState::Settled,
+                        "{link} {name} = {value}: {t:?}"
+                    );
+                }
+                if t.settled {
+                    assert!(
+                        (value - later).abs() <= t.tolerance,
+                        "{link} {name}: {value} then {later}"
+                    );
+                }
             }
         }
+    }
+}
+
+#[test]
+fn the_200_hz_sines_final_speed_error_is_fluctuating_on_every_seed() {
+    // Over the last tenth the error swings through whole periods of the sine by about twice its
+    // 0.01 rad/s tolerance: its last sample does not stand for the run's end.
+    for seed in SEEDS {
+        let link = format!("v=1&preset=sine200&seed={seed}");
+        let t = trend(&report(&link, 1.0), "speed_error_final");
+        assert_eq!(t.state, TrendState::Fluctuating, "{link}: {t:?}");
+        assert!(4.0 * t.scatter > t.tolerance, "{link}: {t:?}");
     }
 }
 
@@ -271,4 +287,34 @@ fn states_causes_and_kinds_reach_the_page_by_their_names() {
 /// `value` as JSON, as the bindings hand it to the page.
 fn json(value: &impl serde::Serialize) -> String {
     serde_json::to_string(value).unwrap()
+}
+
+#[test]
+fn a_value_that_follows_a_random_walk_estimate_is_drifting() {
+    // With the load as a random-walk state, the final speed error wanders with its estimate:
+    // seed 1 ends at −0.012 rad/s at 0.3 s and at +0.018 at 1.2 s, past the 0.01 tolerance.
+    for link in ["v=1&preset=load-step-est", "v=1&preset=rr-mismatch-est"] {
+        let t = trend(&report(link, 1.0), "speed_error_final");
+        assert!(
+            matches!(t.state, TrendState::Drifting | TrendState::Fluctuating),
+            "{link}: {t:?}"
+        );
+        assert!(!t.settled);
+    }
+}
+
+#[test]
+fn no_seeds_strip_reads_a_start_up_peak_as_the_runs_current() {
+    // The paper's step draws 2.8–3.0 A once started on seeds 1–30; the EKF's start-up drew
+    // up to 6 A just after 4.2 ms on some seeds (seed 7: 5.4 A), which the strip once read as
+    // the run's peak because a lucky 2 ms window of low NIS ended the start-up there.
+    let peaks: Vec<f64> = (1..=30)
+        .map(|seed| {
+            let r = report(&format!("v=1&preset=step&seed={seed}"), 1.0);
+            figure(&r, "current_peak").value
+        })
+        .collect();
+    let least = peaks.iter().copied().fold(f64::INFINITY, f64::min);
+    let most = peaks.iter().copied().fold(0.0, f64::max);
+    assert!(most < 1.1 * least, "{least} to {most}: {peaks:?}");
 }
