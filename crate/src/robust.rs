@@ -99,7 +99,8 @@ pub struct MapRun {
     pub inconsistent: bool,
     /// The peak stator current after the start-up transient passed the motor's rating.
     pub over_rating: bool,
-    /// A final value (the speed, speed-estimate or flux error) had not settled by the end.
+    /// The final speed error had not settled by the end (still changing, drifting or
+    /// fluctuating).
     pub unsettled: bool,
     /// Why the simulation stopped early, if it did.
     pub failure: Option<String>,
@@ -124,7 +125,7 @@ pub struct Cell {
     /// Runs that did not run away but drew more than the motor's rated current after the
     /// start-up transient: what holding cost.
     pub over_rating: usize,
-    /// Runs that did not run away but ended with a final value still changing or fluctuating.
+    /// Runs that did not run away but ended with the speed error not settled.
     pub unsettled: usize,
     /// Per figure of [`MAP_FIGURES`]: [minimum, median, maximum] over the runs that neither ran
     /// away nor stopped early and have the figure; NaN when none has.
@@ -447,8 +448,9 @@ pub fn map_run(scenario: &str, seed: u64) -> Result<MapRun, String> {
     );
     let unsettled = list
         .iter()
-        .filter_map(|f| f.trend.as_ref())
-        .any(|t| !t.settled);
+        .find(|f| f.name == "speed_error_final")
+        .and_then(|f| f.trend.as_ref())
+        .is_some_and(|t| !t.settled);
     Ok(MapRun {
         seed,
         figures,

@@ -148,8 +148,8 @@ enum Command {
     /// done: the axis values and their errors against the other side (in %), the number of runs,
     /// of runs that ran away (the runaway warning, or a diverged simulation), of runs whose EKF
     /// was inconsistent, and of the runs that held what holding cost: those past the motor's
-    /// rated current after the start-up (over_rating) and those with a final value not settled
-    /// (unsettled), then the minimum, median and maximum over the runs that neither ran away nor
+    /// rated current after the start-up (over_rating) and those whose final speed error had not
+    /// settled (unsettled), then the minimum, median and maximum over the runs that neither ran away nor
     /// stopped early of
     /// tracking_rms, tracking_peak, speed_error_final, speed_estimate_error_final,
     /// flux_error_final, current_peak, saturated_share and mean_nis, then the cell's scenario.
