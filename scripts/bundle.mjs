@@ -119,7 +119,7 @@ const uplot = [
 // The lessons' measurements: of each table as `imlab claims` wrote it, the columns the page reads
 // (the scenarios and probes stay in the repository, for the core to measure them again).
 const TABLES_DIR = join('web', 'teaching', 'measurements');
-const PAGE_COLUMNS = ['id', 'show', 'seeds', 'value'];
+const PAGE_COLUMNS = ['id', 'show', 'seeds', 'statistic', 'value'];
 const tables = readdirSync(TABLES_DIR)
   .filter((f) => f.endsWith('.csv'))
   .sort()

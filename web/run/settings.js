@@ -101,8 +101,10 @@ export function createSettings({
     // The preset's description, and what this run changes of it (a lesson's run may hold another
     // speed or length than the preset says).
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
+    // A changed run is not the preset's: what the description says of the preset's run (its
+    // speed, its outcome) need not hold for it, and the page says so.
     ui.presetDoc.textContent = info.changed.length
-      ? `${description}. This run changes: ${info.changed.join(', ')}.`
+      ? `Preset ${ui.preset.value}: ${description}. This run changes ${info.changed.join(', ')}, so what the preset's description says of its run need not hold for this one.`
       : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);

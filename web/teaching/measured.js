@@ -4,7 +4,7 @@
 // table, and a translation of the words keeps the same numbers.
 
 /**
- * @typedef {{ value: number, show: string, seeds: string }} Measured
+ * @typedef {{ value: number, show: string, seeds: string, statistic: string }} Measured
  * @typedef {Map<string, Measured>} Table
  */
 
@@ -27,6 +27,7 @@ export function parseTables(texts) {
         value: value === 'inf' ? Infinity : value === '-inf' ? -Infinity : Number(value),
         show: cells[col('show')],
         seeds: cells[col('seeds')],
+        statistic: cells[col('statistic')],
       });
     }
   }
@@ -38,12 +39,24 @@ const SCALES = { '': 1, ms: 1e3, '%': 1e2, m: 1e3 };
 
 /**
  * `value` with `digits` significant digits, written as the page's sentences write numbers
- * (a minus sign, thousands grouped by commas).
+ * (a minus sign, thousands grouped by commas). `toward` rounds down (-1) or up (+1) instead of to
+ * the nearest: a least value shown is never above it, and a largest never below it, so that "at
+ * most 1.95" is not shown as "at most 1.9".
  * @param {number} value
  * @param {number} digits
+ * @param {number} [toward]
  */
-export function significant(value, digits) {
-  const rounded = Number(value.toPrecision(digits));
+export function significant(value, digits, toward = 0) {
+  let rounded = Number(value.toPrecision(digits));
+  if (toward !== 0 && rounded !== value && value !== 0) {
+    const step = 10 ** (Math.floor(Math.log10(Math.abs(value))) - digits + 1);
+    // A value that is a whole number of steps, bar the last bit, rounds to itself.
+    const steps = value / step;
+    const near = Math.round(steps);
+    const whole =
+      Math.abs(steps - near) < 1e-9 * Math.abs(steps) ? near : toward < 0 ? Math.floor(steps) : Math.ceil(steps);
+    rounded = Number((whole * step).toPrecision(digits + 1));
+  }
   const magnitude = rounded === 0 ? 0 : Math.floor(Math.log10(Math.abs(rounded)));
   const text = Math.abs(rounded).toFixed(Math.max(0, digits - 1 - magnitude));
   const [whole, frac] = text.split('.');
@@ -53,7 +66,8 @@ export function significant(value, digits) {
 
 /**
  * How the text shows a measured row: `count` a whole number, `SCALE:DIGITS` its value scaled
- * (ms, %, m for milli) to DIGITS significant digits.
+ * (ms, %, m for milli) to DIGITS significant digits; a row's least value (`min`) rounded down and
+ * its largest (`max`) rounded up, so that a range shown holds every draw.
  * @param {Measured} m
  * @param {string} id
  */
@@ -65,7 +79,8 @@ export function shown(m, id) {
   }
   const [scale, digits] = m.show.split(':');
   if (!(scale in SCALES) || !/^[1-9]$/.test(digits)) throw new Error(`measurement ${id}: show '${m.show}'`);
-  return significant(m.value * SCALES[scale], Number(digits));
+  const toward = { min: -1, max: 1 }[m.statistic] ?? 0;
+  return significant(m.value * SCALES[scale], Number(digits), toward);
 }
 
 // A placeholder: {id}, or {id#draws} for the number of noise draws its sample takes.

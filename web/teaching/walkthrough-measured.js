@@ -11,7 +11,10 @@ export const WALKTHROUGH_HOLDS = [
   // load step R̂_r ends more than 5 % above the motor's 4.95 Ω on every draw, without it below.
   'wt.ekf.rrload.min > 1.05 * 4.95',
   'wt.ekf.rrnoload.max < 4.95',
-  // "the flux runs off": far from its 0.707 Wb target by 0.1 s, and further after 1 s.
+  // "runs away or fails ...: the flux runs off on N and the controller fails before the end on M":
+  // wt.rrhigh.off counts the draws whose flux ends the 0.1 s above 5 × its 0.707 Wb target,
+  // wt.rrhigh.fail those that stop before 90 ms; together they are the ran_away count.
+  'wt.rrhigh.off + wt.rrhigh.fail == wt.rrhigh.runaway',
   'wt.rrhigh.flux.min > 5 * 0.707',
   'wt.rrhigh1s.flux.min > 2 * wt.rrhigh.flux.max',
   // "the noise enters z3 through the innovations": without it z3 is less than half as large.
@@ -21,8 +24,10 @@ export const WALKTHROUGH_HOLDS = [
   // "far beyond the limit" (400 V).
   'wt.cmd.step.min > 10 * 400',
   'wt.cmd.rr.min > 10 * 400',
-  // "the voltage limit holds the start-up": never a runaway with it, most without it.
+  // "the voltage limit holds the start-up" with an exact model: no runaway with it, most without
+  // it; with R_r 10 % high it does not.
   'wt.limit.runaway == 0',
+  'wt.limit.rrhigh.runaway > 0',
   'wt.nolimit.runaway > 0',
   // "tracks ... on every draw with an exact model".
   'wt.exact.runaway == 0',
@@ -35,9 +40,13 @@ export const WALKTHROUGH_HOLDS = [
   // "of the order of Ts in the z_i": halving Ts quarters V, a sum of squares of the z_i.
   'wt.decay.halfts > 0.2',
   'wt.decay.halfts < 0.3',
-  // "far above that floor".
+  // "far above that floor" for an R_r error; "does not" for an inertia error: within a factor 2.
   'wt.decay.rrhigh > 1000',
   'wt.decay.rrlow > 1000',
+  'wt.decay.jhigh > 0.5',
+  'wt.decay.jhigh < 2',
+  'wt.decay.jlow > 0.5',
+  'wt.decay.jlow < 2',
 ];
 
 // Phrases of the walkthrough with digits that are settings or constants, not measurements.
@@ -90,6 +99,8 @@ export const WALKTHROUGH_GIVENS = [
   '= 2·min(k_i)·V',
   'from 0 to t',
   'the EKF’s 10 % initial error',
+  'seeds 1 to',
+  'inertia 20 % above and below',
   'd̃2 = d̃4 = 0',
   'assumes d̃ = 0',
   'the 20 kHz sampling',

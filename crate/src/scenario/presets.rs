@@ -20,7 +20,7 @@ pub const PRESETS: &[Preset] = &[
     Preset { name: "sine200", description: "Paper Fig 2: track 0.5 sin(2π·200 t) rad/s with the EKF; the current peaks above the motor's rated current" },
     Preset { name: "step", description: "Paper Fig 3: 0 → 0.5 rad/s step at 50 ms through a 200 Hz critically damped filter" },
     Preset { name: "ramp", description: "Paper Fig 4: trapezoid to 100 rad/s at ±400 rad/s², hold, and back" },
-    Preset { name: "sine200-1rad", description: "1 rad/s at 200 Hz: the 400 V limit saturates and tracking suffers" },
+    Preset { name: "sine200-1rad", description: "1 rad/s at 200 Hz: saturates the 400 V limit, and its tracking error is more than three times sine200's" },
     Preset { name: "sine200-rk4", description: "Fig 2 with an RK4 EKF predictor instead of the paper's Euler" },
     Preset { name: "rr-mismatch", description: "Hold 50 rad/s with the motor's rotor resistance 10 % above the model's: the true speed recovers from the start-up over seconds and settles above the reference (run it for 6 s to see it end)" },
     Preset { name: "load-step", description: "Hold 50 rad/s; an unknown 2 N m load step at 0.15 s that the 5-state EKF cannot see" },
