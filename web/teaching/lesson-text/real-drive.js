@@ -4,7 +4,7 @@ export default {
   id: 'real-drive',
   run: 'v=1&preset=sine200-drive&duration=1',
   title: 'Does 200 Hz survive a real drive?',
-  look: 'The paper’s sine200 as a DSP drive runs it: each voltage is applied one sample after it is computed (delay = 1); the inverter makes only the hexagon of a 540 V DC link (vlimit = hex: at least 312 V in every direction, where the paper’s ±400 V box has 566 V corners); and it switches (pwm = 1: symmetric PWM at 20 kHz, the currents sampled at the carrier peak). This run lasts 1 s (the preset stops at 0.25 s); the figures strip gives the tracking RMS from the end of the start-up, and the current against the motor’s 4 A rating. Press “Pin this run”, then open the settings, group “Drive”, set delay.comp = 1 and run again: the pinned run is overlaid.',
+  look: 'The paper’s sine200 as a DSP drive runs it: each voltage is applied one sample after it is computed (delay = 1); the inverter makes only the hexagon of a 540 V DC link (vlimit = hex: 540/√3 ≈ 311.8 V across its flats and 360 V at its corners, where the paper’s ±400 V box has 566 V corners); and it switches (pwm = 1: symmetric PWM at 20 kHz, the currents sampled at the carrier peak). This run lasts 1 s (the preset stops at 0.25 s); the figures strip gives the tracking RMS from the end of the start-up, and the current against the motor’s 4 A rating. Press “Pin this run”, then open the settings, group “Drive”, set delay.comp = 1 and run again: the pinned run is overlaid.',
   question:
     'How much larger is the RMS of ω − ω_d than on sine200 over the same 1 s, which of the three effects causes it, and how much does the delay compensation win back? What does the run cost in current, and what happens with the model’s inertia 20 % off or its rotor resistance 10 % off?',
   hint: 'Run sine200 with duration = 1, then add one effect at a time in the Drive group: delay alone, then vlimit = hex, then pwm = 1. Read “RMS of ω − ω_d” each time. For the current, drag across the current plot from 50 ms on. Then set model.j = 0.024 and 0.016, and plant.rr = 5.445 and 4.455.',
@@ -46,7 +46,7 @@ export default {
   givens: [
     'Does 200 Hz survive',
     'hexagon of a 540 V DC link',
-    'at least 312 V in every direction',
+    '540/√3 ≈ 311.8 V across its flats and 360 V at its corners',
     '±400 V box has 566 V corners',
     'PWM at 20 kHz',
     'This run lasts 1 s',
