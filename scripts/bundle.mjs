@@ -129,6 +129,7 @@ const tables = readdirSync(TABLES_DIR)
       .split('\n')
       .map((l) => l.split(','));
     const kept = PAGE_COLUMNS.map((c) => rows[0].indexOf(c));
+    if (kept.includes(-1)) throw new Error(`bundle: ${f} lacks a column of ${PAGE_COLUMNS.join(', ')}`);
     return rows.map((cells) => kept.map((i) => cells[i]).join(',')).join('\n');
   });
 

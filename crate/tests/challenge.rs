@@ -405,8 +405,8 @@ fn built_ins_fail_untouched_and_pass_with_their_solution() {
         };
         match b.name {
             "step-tune" => {
-                // Default gains: 5.9 ms, within the rating once the start-up is over (its 6.1 A
-                // on seed 3 fell in the start-up); tuned: 3.45 ms and 3.63 A.
+                // Default gains: 5.9 ms, and within the rating once the start-up is over (seed 3
+                // draws 6.1 A during it); tuned: 3.45 ms and 3.63 A.
                 assert!(value(&base, "settling_time") > 0.0055);
                 assert!(value(&base, "current_peak") < 4.0);
                 assert!(value(&solved, "settling_time") < 0.0036);

@@ -16,12 +16,13 @@ function cellOf(cell, view, scale, open) {
   const lines = [cell.ran_away > 0 ? `✕ ${cell.ran_away}/${cell.runs}` : fmt(median(cell))];
   if (cell.inconsistent > 0) lines.push(`⚠ ${cell.inconsistent}/${cell.runs}`);
   // What holding cost, on the seeds that did not run away: past the rating, or not settled.
-  if (cell.over_rating > 0) lines.push(`I↑ ${cell.over_rating}/${cell.runs}`);
-  if (cell.unsettled > 0) lines.push(`~ ${cell.unsettled}/${cell.runs}`);
+  const held = cell.runs - cell.ran_away;
+  if (cell.over_rating > 0) lines.push(`I↑ ${cell.over_rating}/${held}`);
+  if (cell.unsettled > 0) lines.push(`~ ${cell.unsettled}/${held}`);
   const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
   button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent, ${cell.over_rating} past the rated current, ${cell.unsettled} with the speed error not settled at the end; ${figure.label} ${fmt(cell.stats[k][0])} to ${fmt(cell.stats[k][2])}`;
+  if (cell.over_rating > 0 || cell.unsettled > 0) button.classList.add('map-costly');
   if (cell.ran_away > 0) button.classList.add('map-ran-away');
-  else if (cell.over_rating > 0 || cell.unsettled > 0) button.classList.add('map-costly');
   else if (Number.isFinite(median(cell))) {
     // A cell whose runs lack the figure (the IFOC has no NIS) stays uncoloured, shown as —.
     const [colour, light] = scale.of(median(cell));
@@ -82,7 +83,7 @@ export function mapTable(view, open) {
   );
   const key = el('p', {
     className: 'map-key',
-    textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent; I↑ k/N: of the seeds that held, k drew more than the motor's rated current after the start-up; ~ k/N: k ended with the speed error not settled (both outlined). Click a cell to run it (seed ${seeds[0]}).`,
+    textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent; I↑ k/H: of the H seeds that held, k drew more than the motor's rated current after the start-up; ~ k/H: k ended with the speed error not settled (both outlined, and coloured by their median). Click a cell to run it (seed ${seeds[0]}).`,
   });
   return el('div', {}, [key, t]);
 }

@@ -38,7 +38,7 @@ function trendText(f) {
     toGo == null
       ? ''
       : `; the means of the last three tenths approach a value ${Number(toGo.toPrecision(2))}${unit} away`;
-  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means each within ${Number(tolerance.toPrecision(2))}${unit}`;
+  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means the line moves within ${Number(tolerance.toPrecision(2))}${unit} and four times the scatter fits it`;
   if (state === 'settled') return ['settled by the end of the run', fit];
   if (state === 'ran away') return ['the run ran away: not a final value', fit];
   if (state === 'drifting')

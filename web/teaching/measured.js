@@ -23,6 +23,7 @@ export function parseTables(texts) {
     for (const line of lines) {
       const cells = line.split(',');
       const value = cells[col('value')];
+      if (value === '') throw new Error(`measurement ${cells[col('id')]} has no value: run imlab claims --write`);
       table.set(cells[col('id')], {
         value: value === 'inf' ? Infinity : value === '-inf' ? -Infinity : Number(value),
         show: cells[col('show')],
@@ -34,7 +35,7 @@ export function parseTables(texts) {
   return table;
 }
 
-// How a `show` spec scales a value: ms for seconds, % for a fraction, mrad/s for rad/s.
+// How a `show` spec scales a value: ms for seconds, % for a fraction, m for milli (mrad/s, mWb²).
 const SCALES = { '': 1, ms: 1e3, '%': 1e2, m: 1e3 };
 
 /**
@@ -96,8 +97,9 @@ export function render(template, table) {
     const m = table.get(id);
     if (!m) throw new Error(`no measurement '${id}' in the table`);
     if (draws) {
-      const [a, b] = m.seeds.split('..').map(Number);
-      return String(b - a + 1);
+      const range = m.seeds.match(/^(\d+)\.\.(\d+)$/);
+      if (!range) throw new Error(`measurement ${id} is of one run ('${m.seeds}'), not a sample of draws`);
+      return String(Number(range[2]) - Number(range[1]) + 1);
     }
     return shown(m, id);
   });

@@ -20,9 +20,6 @@ use std::collections::BTreeMap;
 /// The header of a measurements table.
 pub const HEADER: &str = "id,scenario,figure,seeds,statistic,show,value";
 
-/// The sample a measurement is taken over unless it says otherwise: 30 noise draws.
-pub const DEFAULT_SEEDS: std::ops::RangeInclusive<u64> = 1..=30;
-
 /// What one run gives a measurement.
 #[derive(Clone, Debug, PartialEq)]
 pub enum Probe {
@@ -38,8 +35,8 @@ pub enum Probe {
     /// A statistic of a column over the rows with T0 ≤ t ≤ T1: `KIND COLUMN T0 T1`.
     Window(WindowKind, String, Time, Time),
     /// The time from T until |COLUMN − TARGET| stays within BAND to the end:
-    /// `recovery COLUMN BAND T [TARGET]`, TARGET 0 unless given (s; infinite when it is outside
-    /// at the last row).
+    /// `recovery COLUMN BAND T [TARGET]`, BAND and TARGET in the column's unit (TARGET 0 unless
+    /// given), the result in seconds (infinite when it is outside at the last row).
     Recovery(String, f64, Time, f64),
 }
 
@@ -271,7 +268,17 @@ pub fn parse_table(text: &str) -> Result<Vec<Measurement>, String> {
     let mut lines = text.lines().enumerate();
     match lines.next() {
         Some((_, h)) if h == HEADER => {}
-        _ => return Err(format!("line 1: expected the header '{HEADER}'")),
+        Some((_, h)) => {
+            return Err(format!(
+                "line 1 is '{}': expected the header '{HEADER}'",
+                crate::quote::excerpt(h)
+            ))
+        }
+        None => {
+            return Err(format!(
+                "the table is empty: expected the header '{HEADER}'"
+            ))
+        }
     }
     let mut out: Vec<Measurement> = Vec::new();
     for (i, line) in lines {
@@ -364,6 +371,8 @@ struct Reading {
     /// last row was outside.
     back: f64,
     outside_at_end: bool,
+    /// A row of its window held a value that is not finite.
+    not_finite: bool,
 }
 
 fn column_value(name: &str, row: &Row, limit: &Limit) -> f64 {
@@ -430,6 +439,7 @@ pub fn measure_run(
                 first: None,
                 back: f64::NAN,
                 outside_at_end: false,
+                not_finite: false,
             })
         })
         .collect();
@@ -445,6 +455,7 @@ pub fn measure_run(
                     continue;
                 }
                 let v = column_value(&r.column, row, &limit);
+                r.not_finite |= !v.is_finite();
                 if r.first.is_none() {
                     r.first = Some(v);
                 }
@@ -455,7 +466,8 @@ pub fn measure_run(
                 r.max = r.max.max(v);
                 r.max_abs = r.max_abs.max(v.abs());
                 if let Probe::Recovery(_, band, _, target) = r.probe {
-                    let outside = (v - target).abs() > band;
+                    // A value that is not finite is outside any band.
+                    let outside = v.is_nan() || (v - target).abs() > band;
                     if outside {
                         r.back = f64::NAN;
                     } else if r.back.is_nan() {
@@ -503,6 +515,8 @@ pub fn measure_run(
                         .expect("a reading for each row probe");
                     if r.n == 0.0 {
                         Err("no recorded row in its window".to_string())
+                    } else if r.not_finite {
+                        Err(format!("{} is not finite in its window", r.column))
                     } else {
                         let mean = r.sum / r.n;
                         let var = (r.sum_sq / r.n - mean * mean).max(0.0);
@@ -540,16 +554,24 @@ pub fn value_of(m: &Measurement, of: &RunLookup) -> Result<f64, String> {
         Some(r) => r.clone().map(Some).collect(),
         None => vec![None],
     };
+    let at = |s: &str, seed: Option<u64>, e: String| match seed {
+        Some(k) => format!("{s} on seed {k}: {e}"),
+        None => format!("{s}: {e}"),
+    };
     let read = |s: &str, seed: Option<u64>| -> Result<f64, String> {
-        let values = of(s, seed)?;
+        let values = of(s, seed).map_err(|e| at(s, seed, e))?;
         let (_, v) = values
             .iter()
             .find(|(p, _)| *p == m.probe)
             .expect("every probe of the run is read");
-        v.clone().map_err(|e| match seed {
-            Some(k) => format!("{s} on seed {k}: {e}"),
-            None => format!("{s}: {e}"),
-        })
+        let v = v.clone().map_err(|e| at(s, seed, e))?;
+        // A count may read a figure that is infinite (a recovery that never came); no other
+        // statistic, and no value at all, may be NaN.
+        let counted = matches!(m.statistic, Statistic::Below(_) | Statistic::Above(_));
+        if v.is_nan() || (v.is_infinite() && !counted) {
+            return Err(at(s, seed, format!("{} is {}", m.figure_text, written(v))));
+        }
+        Ok(v)
     };
     let mut values = Vec::with_capacity(seeds.len());
     for seed in seeds {
@@ -560,7 +582,12 @@ pub fn value_of(m: &Measurement, of: &RunLookup) -> Result<f64, String> {
         };
         values.push(v);
     }
-    Ok(m.statistic.reduce(&values))
+    let value = m.statistic.reduce(&values);
+    if value.is_finite() {
+        Ok(value)
+    } else {
+        Err(format!("its {} is {}", m.statistic_text, written(value)))
+    }
 }
 
 /// Measures every row of `table` on `threads` threads (each run once, however many rows read it),

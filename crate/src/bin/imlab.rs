@@ -181,8 +181,9 @@ enum Command {
     ///
     /// Each TABLE is CSV, id,scenario,figure,seeds,statistic,show,value (docs/cli.md describes
     /// each column); ids are unique across the tables. Every row is measured again, each run once
-    /// on all cores, and the rows are printed with the values measured; --check prints only the
-    /// rows whose value differs and fails if any does, --write writes the values into the tables.
+    /// on all cores, and the rows are printed with the values measured; --check prints nothing
+    /// and fails, naming each row whose value differs, if any does; --write writes the values
+    /// into the tables, and none when a row has no value.
     Claims {
         /// The measurements tables
         #[arg(required = true)]
@@ -619,11 +620,16 @@ fn claims(paths: &[String], check: bool, write: bool, out: &mut impl Write) -> R
             .map_err(|e| format!("cannot read the table {}: {e}", excerpt(path)))?;
         let rows = claims::parse_table(&text).map_err(|e| format!("{}: {e}", excerpt(path)))?;
         for m in &rows {
-            if table.iter().any(|t: &claims::Measurement| t.id == m.id) {
+            if let Some(k) = table
+                .iter()
+                .position(|t: &claims::Measurement| t.id == m.id)
+            {
+                let other = &paths[ends.iter().position(|&e| k < e).unwrap_or(0)];
                 return Err(format!(
-                    "{}: the id '{}' is used by another table",
+                    "{}: the id '{}' is used by {} too",
                     excerpt(path),
-                    m.id
+                    m.id,
+                    excerpt(other)
                 )
                 .into());
             }
@@ -635,9 +641,12 @@ fn claims(paths: &[String], check: bool, write: bool, out: &mut impl Write) -> R
     let progress = io::stderr().is_terminal();
     let values = claims::measure_table(&table, threads, &|done, total| {
         if progress {
-            to_stderr(format_args!("imlab claims: run {done}/{total}\r"));
+            to_stderr(format_args!("imlab claims: {done}/{total} runs\r"));
         }
     });
+    if progress {
+        to_stderr(format_args!("\r{:40}\r", ""));
+    }
     let mut failed = Vec::new();
     let mut lines = Vec::new();
     for (m, v) in table.iter().zip(&values) {
@@ -666,16 +675,17 @@ fn claims(paths: &[String], check: bool, write: bool, out: &mut impl Write) -> R
                 .map_err(|e| format!("cannot write the table {}: {e}", excerpt(path)))?;
             start = end;
         }
-    } else if !check {
+    } else if !check && !write {
         writeln!(out, "{}", claims::HEADER).map_err(stdout_stop)?;
         for line in &lines {
             writeln!(out, "{line}").map_err(stdout_stop)?;
         }
     }
+    let not_written = if write { " (no table written)" } else { "" };
     match failed.len() {
         0 => Ok(()),
         n => Err(format!(
-            "{n} of {} measurements differ or have no value:\n{}",
+            "{n} of {} measurements differ or have no value{not_written}:\n{}",
             table.len(),
             failed.join("\n")
         )

@@ -60,8 +60,9 @@ pub struct Trend {
     pub rate: f64,
     /// Length of the last tenth of the recorded run, the line's span (s).
     pub over: f64,
-    /// The most the value may still change, and its samples may scatter about the line, for it to
-    /// count as settled (the figure's unit): the larger of a fixed tolerance and 2 % of the value.
+    /// The most the value may still change for it to count as settled, and four times the most
+    /// its samples may scatter about the line (the figure's unit): the larger of a fixed
+    /// tolerance and 2 % of the value.
     pub tolerance: f64,
     /// Standard deviation of the samples about the line (the figure's unit).
     pub scatter: f64,
@@ -85,7 +86,8 @@ pub struct Trend {
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum TrendState {
-    /// Neither changing nor scattered beyond its tolerance.
+    /// Not changing, its samples' scatter within a quarter of its tolerance, and not tied to a
+    /// random-walk estimate.
     Settled,
     /// Not changing over the last tenths, but tied to an estimate the EKF holds as a random walk
     /// (the load or R_r as a state): such an estimate wanders without end, and the value with it,
@@ -93,7 +95,8 @@ pub enum TrendState {
     Drifting,
     /// Its line, or the approach its tenths trace, still moves it by more than its tolerance.
     Changing,
-    /// Not changing, but its samples scatter about the line by more than its tolerance.
+    /// Not changing, but four times its samples' scatter about the line exceeds its tolerance:
+    /// its last sample does not stand for it.
     Fluctuating,
     /// The run ran away, so no value of it is final.
     #[serde(rename = "ran away")]
@@ -326,7 +329,8 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     let (low, high) = mean_nis_band(w.n);
     let warnings = warnings_of(&last, w.reference_peak, w.nis / n, (low, high));
     let ran_away = warnings.iter().any(|w| w.kind == WarningKind::Runaway);
-    let random_walk = s.ekf.load || s.ekf.rr;
+    // With a perfect observer the controller does not use the filter's estimates.
+    let random_walk = (s.ekf.load || s.ekf.rr) && !s.perfect;
     let trend_of = |k: usize, value: f64, tol: f64| {
         let rate = line.slope(k)?;
         let tolerance = tol.max(TREND_RELATIVE * value.abs());
