@@ -590,7 +590,7 @@ fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
 /// Writes the header `name,value,unit` and one line per figure; a value read at the last sample
 /// is followed by its trend, `NAME_rate` (the slope of its line over the last tenth of the run,
 /// its unit per second) and `NAME_settled` (1 when the value had settled by the end of the run, 0
-/// when it was still changing, fluctuating, or the run ran away). A figure the run had not
+/// when it was still changing, fluctuating, drifting, or the run ran away). A figure the run had not
 /// reached by its end is `NAME_reached,0,` in its place, with no value.
 fn write_figures(list: &[Figure], unreached: &[Unreached], out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "name,value,unit")?;
