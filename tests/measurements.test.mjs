@@ -228,6 +228,7 @@ test('a final value called settled stays within its tolerance in a run four time
         rows.push(`${id}.settled,${run}&seed=${seed},${f}_settled,-,max,count,`);
         rows.push(`${id}.value,${run}&seed=${seed},${f},-,max,:3,`);
         rows.push(`${id}.longer,${longer(run, 4)}&seed=${seed},${f},-,max,:3,`);
+        rows.push(`${id}.tolerance,${run}&seed=${seed},${f}_tolerance,-,max,:3,`);
       });
   });
   const file = `/tmp/imlab-settled-${process.pid}.csv`;
@@ -241,9 +242,8 @@ test('a final value called settled stays within its tolerance in a run four time
         const v = (what) => table.get(`r${r}.s${seed}.f${k}.${what}`).value;
         if (v('settled') !== 1) return;
         settled++;
-        // The tolerance a final value is settled within (crate/src/record/figures.rs).
-        const tolerance = Math.max(f === 'flux_error_final' ? 1e-3 : 0.01, 0.02 * Math.abs(v('value')));
-        if (!(Math.abs(v('longer') - v('value')) <= tolerance))
+        // The tolerance the core judged the value settled within.
+        if (!(Math.abs(v('longer') - v('value')) <= v('tolerance')))
           wrong.push(`${run}&seed=${seed} ${f}: ${v('value')} settled, ${v('longer')} in ${longer(run, 4)}`);
       });
   });

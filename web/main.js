@@ -8,8 +8,8 @@ import { Walkthrough } from './teaching/walkthrough.js';
 import { loadTex } from './teaching/tex.js';
 import { LessonPanel } from './teaching/lessons.js';
 import { LESSONS } from './teaching/teaching.js';
-import { TABLES } from './teaching/measurements.js';
-import { parseTables, renderLesson } from './teaching/measured.js';
+import { TABLE } from './teaching/table.js';
+import { renderLesson } from './teaching/measured.js';
 import { $, say, ui } from './ui/page.js';
 import { whenIdle } from './ui/dom.js';
 import { RunClient } from './client/run-client.js';
@@ -189,12 +189,10 @@ const settings = createSettings({
   described: (info) => challenge.described(info),
   mayRun: (info) => challenge.mayRun(info),
 });
-// The lessons' numbers, from the table they were checked against.
-const LESSON_TABLE = parseTables(TABLES);
 const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
-  lessons: LESSONS.map((lesson) => renderLesson(lesson, LESSON_TABLE)),
+  lessons: LESSONS.map((lesson) => renderLesson(lesson, TABLE)),
   onOpen: async (lesson) => {
     // A lesson starts from its own state: no runs pinned in another lesson stay in its overlay.
     pins.clear();

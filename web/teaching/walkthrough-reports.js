@@ -2,12 +2,8 @@
 // table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
 import { el } from '../ui/dom.js';
 import { STABILITY_CAUSES } from './walkthrough-text.js';
-import { TABLES } from './measurements.js';
-import { parseTables, render } from './measured.js';
-
-// The numbers of the causes' notes, from the table they were checked against
-// (web/teaching/measurements/walkthrough.csv).
-const TABLE = parseTables(TABLES);
+import { TABLE } from './table.js';
+import { render } from './measured.js';
 
 /** The stability report `st` of a run, in words. */
 export function stabilityText(st) {

@@ -6,12 +6,9 @@ import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
 import { lawBlock } from './law-editor.js';
-import { TABLES } from './measurements.js';
-import { parseTables, render } from './measured.js';
+import { TABLE } from './table.js';
+import { render } from './measured.js';
 
-// The walkthrough's numbers, from the table its words were checked against
-// (web/teaching/measurements/walkthrough.csv).
-const TABLE = parseTables(TABLES);
 /** A template of the walkthrough's text with its measurements filled in. */
 const measured = (template) => render(template, TABLE);
 

@@ -24,7 +24,7 @@ pub const HEADER: &str = "id,scenario,figure,seeds,statistic,show,value";
 #[derive(Clone, Debug, PartialEq)]
 pub enum Probe {
     /// A figure of `imlab metrics` by its name (`tracking_rms`, `settling_time`, …), or
-    /// `NAME_rate` / `NAME_settled` for a final value's trend.
+    /// `NAME_rate` / `NAME_settled` / `NAME_tolerance` for a final value's trend.
     Figure(String),
     /// 1 when the run ran away (or failed), else 0.
     RanAway,
@@ -193,6 +193,7 @@ impl Probe {
                 let base = name
                     .strip_suffix("_rate")
                     .or_else(|| name.strip_suffix("_settled"))
+                    .or_else(|| name.strip_suffix("_tolerance"))
                     .unwrap_or(name);
                 figure_info(base)
                     .map(|_| Probe::Figure((*name).to_string()))
@@ -485,6 +486,8 @@ pub fn measure_run(
             (b, 1)
         } else if let Some(b) = name.strip_suffix("_settled") {
             (b, 2)
+        } else if let Some(b) = name.strip_suffix("_tolerance") {
+            (b, 3)
         } else {
             (name, 0)
         };
@@ -496,6 +499,7 @@ pub fn measure_run(
             (0, _) => Ok(f.value),
             (1, Some(t)) => Ok(t.rate),
             (2, Some(t)) => Ok(f64::from(u8::from(t.settled))),
+            (3, Some(t)) => Ok(t.tolerance),
             _ => Err(format!("{base} is not a final value, so it has no trend")),
         }
     };
