@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Writes the guides of docs/*.md into OUT as HTML pages the app links to, plus an index.
 
-The Markdown is shown as written (escaped, in a wrapping <pre>), so no renderer is needed; the
-.md files are copied beside them. Usage: scripts/docs_html.py OUT
+The Markdown is shown as written (escaped, in a wrapping <pre>), so no renderer is needed, less
+its HTML comments (the rows a measured number shows, see scripts/measured-docs.mjs), which a
+Markdown renderer would not show either; the .md files are copied beside them. Usage: scripts/docs_html.py OUT
 """
 import html
+import re
 import pathlib
 import shutil
 import sys
@@ -36,7 +38,10 @@ def main() -> None:
     out.mkdir(parents=True, exist_ok=True)
     items = []
     for md in sorted((root / "docs").glob("*.md")):
-        lines = md.read_text(encoding="utf-8").splitlines()
+        text = md.read_text(encoding="utf-8")
+        text = re.sub(r"<!--[^\n]*?-->", "", text)
+        text = re.sub(r"<!--.*?-->\n?", "", text, flags=re.S)
+        lines = text.splitlines()
         title = lines[0].lstrip("# ").strip() if lines else md.stem
         body = "\n".join(lines[1:]).strip("\n")
         page = PAGE.format(title=html.escape(title), name=md.stem, body=html.escape(body))

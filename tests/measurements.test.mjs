@@ -5,11 +5,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
-import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { LESSONS } from '../web/teaching/teaching.js';
 import { LESSON_TEXTS, namedIn, parseTables, render, withoutPlaceholders } from '../web/teaching/measured.js';
 import { numbersIn } from './claims.mjs';
 import { SECTIONS, STABILITY_CAUSES, WALKTHROUGH_GIVENS, WALKTHROUGH_HOLDS } from '../web/teaching/walkthrough-text.js';
+import { declarations, markedIn, measuredDocs, prose, renderDoc } from '../scripts/measured-docs.mjs';
 
 const CLI = new URL('../target/release/imlab', import.meta.url).pathname;
 const DIR = new URL('../web/teaching/measurements/', import.meta.url).pathname;
@@ -18,6 +19,8 @@ const FILES = readdirSync(DIR)
   .sort();
 const tableOf = (file) => parseTables([readFileSync(DIR + file, 'utf8')]);
 const TABLE = parseTables(FILES.map((f) => readFileSync(DIR + f, 'utf8')));
+// The guides' tables (docs/measured/NAME.csv, one a guide), measured in the same check.
+const DOCS = measuredDocs();
 
 // Settings a text names as `key = value`: the scenario's own fields, which the codec knows.
 const FIELDS = new Set(
@@ -78,9 +81,24 @@ function untyped(text, givens) {
   return numbersIn(rest);
 }
 
+// What a guide may number besides its measurements: its references to the paper and to itself
+// (Section 3.1, Theorem 4.6, Fig 3, lessons 4, 11 and 12, step 1, seeds 1 to 30) and its lists' numbers.
+const REFERENCE =
+  /\b(?:Sections?|Theorem|Fig\.?|Figure|[Ss]eeds?|[Ll]essons?|Eqs?\.?|[Ii]tems?|[Ss]teps?)\s+\d+(?:\.\d+)?(?:(?:,|–| and| or| to)\s*\d+(?:\.\d+)?)*/g;
+const LIST_ITEM = /^(\s*)\d+\.(?= )/gm;
+// A guide's figures past this comment are of the code's speed, each with its date, machine and
+// command, and not measurements of a run.
+const END = '<!--measured end-->';
+/** The part of a guide whose numbers must be measurements. */
+const measuredPart = (text) => (text.includes(END) ? text.slice(0, text.indexOf(END)) : text);
+/** The typed numbers of a guide's prose. */
+const untypedInDoc = (text, givens) =>
+  untyped(prose(measuredPart(text)).replace(REFERENCE, '⟨ref⟩').replace(LIST_ITEM, '$1⟨n⟩'), givens);
+
 test('the measurements table is what the core measures now', () => {
   // Each run once, on both cores; the message lists every row that differs.
-  execFileSync(CLI, ['claims', '--check', ...FILES.map((f) => DIR + f)], { stdio: ['ignore', 'ignore', 'pipe'] });
+  const tables = [...FILES.map((f) => DIR + f), ...DOCS.map((d) => d.table)];
+  execFileSync(CLI, ['claims', '--check', ...tables], { stdio: ['ignore', 'ignore', 'pipe'] });
 });
 
 test('the check fails on a table whose value differs', () => {
@@ -155,6 +173,58 @@ for (const { name, file, texts, holds: conditions, givens } of MEASURED) {
   });
 }
 
+for (const { name, doc, table } of DOCS) {
+  test(`docs/${name}.md: numbers from its table, conclusions that hold`, () => {
+    const text = readFileSync(doc, 'utf8');
+    const own = parseTables([readFileSync(table, 'utf8')]);
+    const { holds: conditions, givens } = declarations(text);
+    const named = new Set(markedIn(text));
+    for (const id of named) assert.ok(own.has(id), `${id}: not in docs/measured/${name}.csv`);
+    assert.ok(
+      renderDoc(text, own) === text,
+      `its numbers differ from the table: node scripts/measured-docs.mjs --write`,
+    );
+    assert.deepEqual(
+      conditions.filter((c) => !holds(c, own)),
+      [],
+      'conditions that do not hold on the table',
+    );
+    const used = (id) => named.has(id) || conditions.some((c) => c.match(/[A-Za-z][\w.]*/g).includes(id));
+    assert.deepEqual(
+      [...own.keys()].filter((id) => !used(id)),
+      [],
+      'measurements no text or condition uses',
+    );
+    const read = prose(measuredPart(text));
+    for (const g of givens) assert.ok(read.includes(g), `given '${g}' is not in the prose`);
+    assert.deepEqual(
+      untypedInDoc(text, givens),
+      [],
+      'numbers typed into the guide: mark each as a measurement or declare it a given',
+    );
+  });
+}
+
+test('a guide reads its marks, and a typed number in it fails', () => {
+  const table = parseTables(['id,show,seeds,statistic,value\na.min,:2,1..30,min,6.619\nb,count,1..30,sum,3']);
+  const text = 'From 1.2<!--a.min--> A, on <!--b--> of 30<!--b#draws--> draws (Section 3.1, step 2).\n';
+  assert.equal(
+    renderDoc(text, table),
+    'From 6.6<!--a.min--> A, on 3<!--b--> of 30<!--b#draws--> draws (Section 3.1, step 2).\n',
+  );
+  assert.deepEqual(markedIn(text), ['a.min', 'b', 'b']);
+  assert.deepEqual(untypedInDoc(renderDoc(text, table), []), []);
+  assert.deepEqual(untypedInDoc('It needs 6.6 A; `imlab metrics step` prints 2.87.\n```\n7.1\n```\n', []), [
+    '6.6',
+    '2.87',
+  ]);
+  assert.deepEqual(untypedInDoc('1. It settles in 4.7 ms.', ['4.7 ms']), []);
+  assert.deepEqual(declarations('<!--measured\nholds: a.min < 7\ngiven: 20 kHz\n-->'), {
+    holds: ['a.min < 7'],
+    givens: ['20 kHz'],
+  });
+});
+
 test('a number typed into a lesson fails; a condition reads the table and can fail', () => {
   const lesson = LESSONS[0];
   assert.deepEqual(untyped('settles in 4.75 ms', lesson.givens), ['4.75']);
@@ -188,6 +258,7 @@ test('the page renders a measurement with its digits and unit, a range rounded o
 });
 
 test('every table belongs to a measured text', () => {
+  for (const d of DOCS) assert.ok(existsSync(d.doc), `docs/measured/${d.name}.csv: no docs/${d.name}.md`);
   const ids = new Set(MEASURED.map((t) => t.file));
   assert.deepEqual(
     FILES.filter((f) => !ids.has(f)),
