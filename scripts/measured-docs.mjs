@@ -63,7 +63,7 @@ export const markedIn = (text) => [...text.matchAll(MARKED)].map((m) => m[2].rep
 /** What a guide's reader reads as prose: no code, no comments, no link targets. */
 export const prose = (text) =>
   text
-    .replace(/^```[\s\S]*?^```/gm, '')
+    .replace(/^[ \t]*```[\s\S]*?^[ \t]*```/gm, '')
     .replace(/`[^`\n]*`/g, '')
     .replace(MARKED, '⟨m⟩')
     .replace(/<!--[\s\S]*?-->/g, '')
