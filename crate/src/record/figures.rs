@@ -645,17 +645,14 @@ mod tests {
         let mut s = preset("ramp").unwrap();
         s.ts = TS;
         s.voltage_limit = 100.0;
-        // Transient ends at 5 ms (5/1200 s rounded up to a sample). Before it, wild values that
-        // must not count; after it, ω − ω_d = ±0.3, one sample in four at the limit, NIS 1 or 3,
-        // currents (3, 4).
+        // Transient ends at 7 ms: the estimates count as converged with the first full 2 ms
+        // window (mean NIS 2, its later level), and the controller's start-up, 5/1200 s, follows,
+        // rounded up to a sample. Before it, wild values that must not count; after it,
+        // ω − ω_d = ±0.3, one sample in four at the limit, NIS 1 or 3, currents (3, 4).
         let rows = trace(20, |k, r| {
             r.innov_band_a = 0.004;
             r.nis = if k % 2 == 0 { 1.0 } else { 3.0 };
-            // The estimates settle (2 ms mean NIS ≤ 2 × 2) at 4 ms, before the controller.
-            if k < 3 {
-                r.nis = 1e3;
-            }
-            if k < 5 {
+            if k < 7 {
                 r.omega_err = 100.0;
                 r.u_a_cmd = 1e3;
                 r.i_sa = 1e3;
@@ -688,23 +685,23 @@ mod tests {
                 "speed_estimate_error_final"
             ]
         );
-        assert_eq!(value(&f, "transient_end"), Some(rows[5].t));
+        assert_eq!(value(&f, "transient_end"), Some(rows[7].t));
         assert!((value(&f, "tracking_rms").unwrap() - 0.3).abs() < 1e-15);
         assert_eq!(value(&f, "tracking_peak"), Some(0.3));
-        // Samples 5..20: 8, 12 and 16 are beyond the limit, 3 of 15.
-        assert_eq!(value(&f, "saturated_share"), Some(3.0 / 15.0));
-        // 7 samples (even k) of NIS 1 and 8 (odd k) of NIS 3.
-        assert!((value(&f, "mean_nis").unwrap() - 31.0 / 15.0).abs() < 1e-15);
-        assert_eq!(value(&f, "mean_nis_low"), Some(mean_nis_band(15).0));
+        // Samples 7..20: 8, 12 and 16 are beyond the limit, 3 of 13.
+        assert_eq!(value(&f, "saturated_share"), Some(3.0 / 13.0));
+        // 6 samples (even k) of NIS 1 and 7 (odd k) of NIS 3.
+        assert!((value(&f, "mean_nis").unwrap() - 27.0 / 13.0).abs() < 1e-15);
+        assert_eq!(value(&f, "mean_nis_low"), Some(mean_nis_band(13).0));
         assert_eq!(value(&f, "current_peak"), Some(5.0));
-        // |i_s|² is 9 on 14 samples and 25 on one.
-        assert!((value(&f, "current_rms").unwrap() - (151.0f64 / 15.0).sqrt()).abs() < 1e-15);
+        // |i_s|² is 9 on 12 samples and 25 on one.
+        assert!((value(&f, "current_rms").unwrap() - (133.0f64 / 13.0).sqrt()).abs() < 1e-15);
         assert_eq!(value(&f, "current_rated"), Some(s.i_rated));
         assert!((value(&f, "flux_error_final").unwrap() - 0.2).abs() < 1e-15);
         assert_eq!(value(&f, "speed_error_final"), Some(-0.3));
         assert_eq!(value(&f, "speed_estimate_error_final"), Some(0.25));
         let window = |name| &f.iter().find(|f| f.name == name).unwrap().window;
-        assert_eq!(window("tracking_rms"), "t ≥ 5 ms");
+        assert_eq!(window("tracking_rms"), "t ≥ 7 ms");
         assert_eq!(window("speed_error_final"), "last sample, t = 19 ms");
         // A value that is not finite is left out rather than shown as NaN.
         let mut bad = rows.clone();

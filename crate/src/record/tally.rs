@@ -126,10 +126,10 @@ impl StabilityTally {
 }
 
 /// What the transient ([`super::transient`]) reads from every row, gathered by a traced run as its rows come: per
-/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, and the sums
-/// of the NIS and of the squared flux estimation error over the second half of the run as
-/// planned (from −0, in row order, as the
-/// transient sums it). A run that ends early has another second half; the transient then
+/// interval of [`CHECKPOINT_EVERY`] rows the least and the greatest innovation band, the sums
+/// of the NIS and of the squared flux and speed estimation errors over the second half of the run
+/// as planned, and of the squared speed estimation error over its second quarter (each from −0,
+/// in row order, as the transient sums it). A run that ends early has another second half; the transient then
 /// reads the rows again.
 #[derive(Clone, Debug)]
 pub struct TransientTally {
@@ -141,6 +141,12 @@ pub struct TransientTally {
     pub late_sum: f64,
     /// The sum of the squared rotor-flux estimation error |φ_r − φ̂_r|² from that row on (Wb²).
     pub late_flux_sum: f64,
+    /// The sum of the squared speed estimation error (ω̂ − ω)² from that row on ((rad/s)²).
+    pub late_speed_sum: f64,
+    /// The first row of the second quarter of the run as planned.
+    pub quarter_index: usize,
+    /// The sum of the squared speed estimation error over the second quarter ((rad/s)²).
+    pub mid_speed_sum: f64,
 }
 
 /// The squared distance |φ_r − φ̂_r|² of row `r`'s rotor-flux estimate from the true flux (Wb²).
@@ -156,11 +162,15 @@ impl TransientTally {
         let last = steps.saturating_sub(1);
         // `transient`'s half of a run whose rows are 0..steps, at times k·ts.
         let half = 0.0 + 0.5 * (last as f64 * ts - 0.0);
+        let quarter = 0.0 + 0.25 * (last as f64 * ts - 0.0);
         TransientTally {
             band: Vec::with_capacity(steps.div_ceil(CHECKPOINT_EVERY)),
             half_index: first_not(steps, |k| (k as f64 * ts) < half).min(last),
             late_sum: -0.0,
             late_flux_sum: -0.0,
+            late_speed_sum: -0.0,
+            quarter_index: first_not(steps, |k| (k as f64 * ts) < quarter).min(last),
+            mid_speed_sum: -0.0,
         }
     }
 
@@ -177,6 +187,9 @@ impl TransientTally {
         if i >= self.half_index {
             self.late_sum += r.nis;
             self.late_flux_sum += flux_err_sq(r);
+            self.late_speed_sum += r.omega_est_err * r.omega_est_err;
+        } else if i >= self.quarter_index {
+            self.mid_speed_sum += r.omega_est_err * r.omega_est_err;
         }
     }
 
