@@ -28,6 +28,9 @@ pub enum Probe {
     Figure(String),
     /// 1 when the run ran away (or failed), else 0.
     RanAway,
+    /// −1, 0 or 1 when the mean NIS after the start-up lies below, inside or above its 95 %
+    /// band: `nis_side`.
+    NisSide,
     /// 1 when figure NAME was reached (a step's settling time), else 0: `reached NAME`.
     Reached(String),
     /// A column at the first row at or after time T: `at COLUMN T`.
@@ -166,6 +169,7 @@ impl Probe {
         };
         match words.as_slice() {
             ["ran_away"] => Ok(Probe::RanAway),
+            ["nis_side"] => Ok(Probe::NisSide),
             ["reached", name] => figure_info(name)
                 .map(|_| Probe::Reached((*name).to_string()))
                 .ok_or_else(|| format!("'{name}' is not a figure of `imlab metrics`")),
@@ -509,6 +513,16 @@ pub fn measure_run(
             let v = match p {
                 Probe::Figure(name) => figure(name),
                 Probe::RanAway => Ok(f64::from(u8::from(ran_away))),
+                Probe::NisSide => (|| {
+                    let nis = figure("mean_nis")?;
+                    Ok(if nis < figure("mean_nis_low")? {
+                        -1.0
+                    } else if nis > figure("mean_nis_high")? {
+                        1.0
+                    } else {
+                        0.0
+                    })
+                })(),
                 Probe::Reached(name) => {
                     Ok(f64::from(u8::from(figures.iter().any(|f| f.name == name))))
                 }
@@ -754,5 +768,27 @@ mod tests {
             v[5]
         );
         assert_eq!(v[6], 0.0, "a sine reference starts at 0");
+    }
+
+    #[test]
+    fn nis_side_reads_the_mean_nis_against_its_band() {
+        // The Euler EKF at 200 Hz lies far above its band; the step's filter inside or near it.
+        for (run, expect) in [("v=1&preset=sine200", Some(1.0)), ("v=1&preset=step", None)] {
+            let v = read(
+                run,
+                &["nis_side", "mean_nis", "mean_nis_low", "mean_nis_high"],
+            );
+            let side = if v[1] < v[2] {
+                -1.0
+            } else if v[1] > v[3] {
+                1.0
+            } else {
+                0.0
+            };
+            assert_eq!(v[0], side, "{run}: {v:?}");
+            if let Some(e) = expect {
+                assert_eq!(v[0], e, "{run}");
+            }
+        }
     }
 }
