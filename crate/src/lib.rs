@@ -19,7 +19,6 @@ pub mod params;
 pub mod quote;
 pub mod record;
 pub mod rng;
-pub mod robust;
 pub mod scenario;
 pub mod sim;
 

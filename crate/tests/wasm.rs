@@ -203,7 +203,7 @@ fn slices_by_the_clock_run_the_same_samples_as_one_call() {
 
 #[wasm_bindgen_test]
 fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
-    use imlab::robust;
+    use imlab::analysis::robust;
     use imlab::wasm::{robust_cells, robust_csv, robust_plan, robust_run};
     let (scenario, text) = (
         "v=1&preset=step&duration=0.06",

@@ -1,8 +1,9 @@
 //! Analysis over many runs: closed-loop frequency response (sweeps of sinusoidal speed
-//! references) and seed sweeps. Each run is an ordinary `Simulation`, so the CLI, the browser's
+//! references), seed sweeps, model-error maps (`robust`) and measurement tables (`claims`). Each run is an ordinary `Simulation`, so the CLI, the browser's
 //! parallel workers and the tests share these functions.
 
 pub mod claims;
+pub mod robust;
 mod seeds;
 mod sweep;
 

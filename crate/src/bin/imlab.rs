@@ -3,6 +3,7 @@
 use clap::error::{ContextKind, ContextValue};
 use clap::{Args, Parser, Subcommand};
 use imlab::analysis::claims;
+use imlab::analysis::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
@@ -11,7 +12,6 @@ use imlab::challenge::grade::{self, ClassRow, Graded};
 use imlab::challenge::{builtin, Challenge, BUILTINS};
 use imlab::control::formula;
 use imlab::record::{Figure, Unreached, WarningKind};
-use imlab::robust::{self, csv_preamble, csv_row, map_run, Axis, Map, MapRun};
 use imlab::scenario::{excerpt, Scenario, PRESETS};
 use imlab::sim::Simulation;
 use std::fmt;

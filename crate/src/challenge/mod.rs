@@ -29,6 +29,7 @@ mod brief;
 mod builtin;
 mod codec;
 mod compose;
+mod error;
 pub mod grade;
 mod judge;
 mod search;
@@ -37,6 +38,7 @@ mod submission;
 pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
+pub use error::{ChallengeError, ErrorKind};
 pub use judge::{
     figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
@@ -47,7 +49,6 @@ use crate::quote::excerpt;
 use crate::scenario::Scenario;
 use codec::{builtin_named, check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
-use std::fmt;
 
 /// Version of the challenge codec.
 pub const CHALLENGE_VERSION: u32 = 1;
@@ -59,60 +60,6 @@ pub const MAX_TITLE_CHARS: usize = 120;
 pub const MAX_VARIANTS: usize = 20;
 /// Most criteria.
 pub const MAX_CRITERIA: usize = 20;
-
-/// What kind of refusal an error is: the grading table's status names it.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum ErrorKind {
-    /// The text is not a well-formed challenge or submission.
-    Malformed,
-    /// Well-formed, but a field the student set is not allowed or out of its range.
-    Refused,
-    /// A submission whose challenge text differs from the one it is graded against.
-    Another,
-}
-
-/// Why a challenge or submission was refused: a message naming the key or field, with user
-/// text quoted through [`excerpt`].
-#[derive(Clone, Debug, PartialEq)]
-pub struct ChallengeError {
-    /// The kind of refusal.
-    pub kind: ErrorKind,
-    /// The message.
-    pub message: String,
-}
-
-impl ChallengeError {
-    fn malformed(message: impl Into<String>) -> Self {
-        ChallengeError {
-            kind: ErrorKind::Malformed,
-            message: message.into(),
-        }
-    }
-    fn refused(message: impl Into<String>) -> Self {
-        ChallengeError {
-            kind: ErrorKind::Refused,
-            message: message.into(),
-        }
-    }
-
-    /// The status of a grading row: `malformed: …`, `refused: …` or `another challenge`.
-    pub fn status(&self) -> String {
-        match self.kind {
-            ErrorKind::Malformed => format!("malformed: {}", self.message),
-            ErrorKind::Refused => format!("refused: {}", self.message),
-            ErrorKind::Another => "another challenge".to_string(),
-        }
-    }
-}
-
-impl fmt::Display for ChallengeError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for ChallengeError {}
 
 /// What a student may set a field to.
 #[derive(Clone, Debug, PartialEq, Serialize)]

@@ -5,7 +5,7 @@
 
 use super::{from_js, js_error, to_js};
 use crate::analysis;
-use crate::robust;
+use crate::analysis::robust;
 use crate::scenario::{Scenario, MAX_SEED};
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
