@@ -95,161 +95,18 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
             0,
         );
     }
-    let (first_t, last) = (rows.time(0), rows.row(len - 1));
-    let half = first_t + 0.5 * (last.t - first_t);
-    let half_index = rows.first_at(half).min(len - 1);
-    // (a) The last row outside the band settles nothing; the one after it starts the settled run.
-    // A NaN band counts as not settled. (c) needs the mean NIS of the rows from half on; one pass
-    // gives both.
-    let settled = |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
-    let quarter = first_t + 0.25 * (last.t - first_t);
-    let quarter_index = rows.first_at(quarter).min(half_index);
-    let (mut unsettled, mut late_sum, mut late_flux) = (None, -0.0, -0.0);
-    let (mut late_speed, mut mid_speed) = (-0.0, -0.0);
-    let tally = rows.tally().filter(|t| {
-        t.half_index == half_index
-            && t.quarter_index == quarter_index
-            && t.band.len() == len.div_ceil(CHECKPOINT_EVERY)
-    });
-    match tally {
-        // A traced run's tally, when its quarters are the ones it summed.
-        Some(tally) => {
-            unsettled = last_unsettled(tally, rows, len, &settled);
-            late_sum = tally.late_sum;
-            late_flux = tally.late_flux_sum;
-            late_speed = tally.late_speed_sum;
-            mid_speed = tally.mid_speed_sum;
-        }
-        None => rows.visit(0, len, &mut |i, r| {
-            if !settled(r.innov_band_a) {
-                unsettled = Some(i);
-            }
-            if i >= half_index {
-                late_sum += r.nis;
-                late_flux += flux_err_sq(r);
-                late_speed += r.omega_est_err * r.omega_est_err;
-            } else if i >= quarter_index {
-                mid_speed += r.omega_est_err * r.omega_est_err;
-            }
-            true
-        }),
-    }
-    let observer = unsettled.map_or(0, |i| (i + 1).min(len - 1));
-    let t_observer = rows.time(observer);
-    // (b)
-    let (t_controller, controller) = match s.controller {
-        ControllerKind::Backstepping => {
-            let g = &s.gains;
-            let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
-            let t = CONTROLLER_TIME_CONSTANTS / k;
-            (
-                t,
-                format!(
-                    "5 time constants of the slowest designed error rate (1/{k} s) = {}",
-                    time_text(t)
-                ),
-            )
-        }
-        ControllerKind::Ifoc => {
-            let bw = s.ifoc.current_bw;
-            let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
-            (
-                t,
-                format!(
-                    "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
-                    time_text(t)
-                ),
-            )
-        }
-    };
-    // (c) The moving window holds the (t, NIS) of rows start..=i.
-    let late_mean = late_sum / (len - half_index) as f64;
-    let late_flux_mean = late_flux / (len - half_index) as f64;
-    let late_speed_mean = late_speed / (len - half_index) as f64;
-    let speed_level = if half_index > quarter_index {
-        late_speed_mean.min(mid_speed / (half_index - quarter_index) as f64)
-    } else {
-        late_speed_mean
-    };
-    let mut window = std::collections::VecDeque::new();
-    // (e) The 5 ms window of squared speed estimation errors, its sum, and its stretch within.
-    let mut speed_window = std::collections::VecDeque::new();
-    let (mut speed_sum, mut speed_start, mut speed_streak, mut speed) = (0.0, 0, None, None);
-    // (d) The same windows' mean squared flux estimation error, and where its stretch within began.
-    let (mut flux_sum, mut flux_streak, mut flux) = (0.0, None, None);
-    let (mut sum, mut start, mut estimates) = (0.0, 0, None);
-    // The end of the first window within of the current stretch of windows within, and of the
-    // first window within at all.
-    let (mut streak, mut first_within): (Option<f64>, Option<f64>) = (None, None);
-    rows.visit(0, half_index, &mut |i, r| {
-        let err = flux_err_sq(r);
-        sum += r.nis;
-        flux_sum += err;
-        window.push_back((r.t, r.nis, err));
-        while let Some(&(t, nis, err)) = window.front() {
-            if r.t - t < NIS_WINDOW {
-                break;
-            }
-            sum -= nis;
-            flux_sum -= err;
-            window.pop_front();
-            start += 1;
-        }
-        if start > 0 && flux.is_none() {
-            if flux_sum / (i + 1 - start) as f64 <= FLUX_SETTLED * FLUX_SETTLED * late_flux_mean {
-                let since = *flux_streak.get_or_insert(r.t);
-                if r.t - since >= NIS_HOLD {
-                    flux = Some(since);
-                }
-            } else {
-                flux_streak = None;
-            }
-        }
-        let e = r.omega_est_err * r.omega_est_err;
-        speed_sum += e;
-        speed_window.push_back((r.t, e));
-        while let Some(&(t, e)) = speed_window.front() {
-            if r.t - t < SPEED_WINDOW {
-                break;
-            }
-            speed_sum -= e;
-            speed_window.pop_front();
-            speed_start += 1;
-        }
-        // A perfect observer's speed error is 0 throughout: (e) has nothing to tell.
-        if speed_start > 0 && speed.is_none() && speed_level > 0.0 {
-            let mean = speed_sum / (i + 1 - speed_start) as f64;
-            if mean <= SPEED_SETTLED * SPEED_SETTLED * speed_level {
-                let since = *speed_streak.get_or_insert(r.t);
-                if r.t - since >= NIS_HOLD {
-                    speed = Some(since);
-                }
-            } else {
-                speed_streak = None;
-            }
-        }
-        if estimates.is_some() && flux.is_some() && (speed.is_some() || speed_level == 0.0) {
-            return false;
-        }
-        if start > 0 {
-            if sum / (i + 1 - start) as f64 <= NIS_SETTLED * late_mean {
-                first_within = first_within.or(Some(r.t));
-                let since = *streak.get_or_insert(r.t);
-                if r.t - since >= NIS_HOLD {
-                    estimates = estimates.or(Some(since));
-                }
-            } else {
-                streak = None;
-            }
-        }
-        true
-    });
-    // Where no stretch of the first half stays within for NIS_HOLD, the first window within.
-    let estimates = estimates.or(first_within);
-    let t_flux = flux.unwrap_or(first_t);
-    let t_estimates = estimates.unwrap_or(first_t);
-    let t_speed = speed.unwrap_or(first_t);
-    let later = t_controller + t_observer.max(t_estimates).max(t_flux).max(t_speed);
+    let first_t = rows.time(0);
+    let half = first_t + 0.5 * (rows.time(len - 1) - first_t);
+    let levels = Levels::of(rows);
+    let t_observer = rows.time(levels.observer);
+    let (t_controller, controller) = controller_start_up(s);
+    let (estimates, flux, speed) = converged(rows, &levels);
+    let t_of = |t: Option<f64>| t.unwrap_or(first_t);
+    let later = t_controller
+        + t_observer
+            .max(t_of(estimates))
+            .max(t_of(flux))
+            .max(t_of(speed));
     let event = first_event(s).filter(|&e| e > t_controller && e < later.min(half));
     let target = event.unwrap_or(later).min(half);
     // The rows are in time order and the last one is at or after `half`.
@@ -279,6 +136,195 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
             reason,
         },
         index,
+    )
+}
+
+/// (b) The controller's own start-up: its duration (s) and the words that name it.
+fn controller_start_up(s: &Scenario) -> (f64, String) {
+    match s.controller {
+        ControllerKind::Backstepping => {
+            let g = &s.gains;
+            let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
+            let t = CONTROLLER_TIME_CONSTANTS / k;
+            let words = format!(
+                "5 time constants of the slowest designed error rate (1/{k} s) = {}",
+                time_text(t)
+            );
+            (t, words)
+        }
+        ControllerKind::Ifoc => {
+            let bw = s.ifoc.current_bw;
+            let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
+            let words = format!(
+                "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
+                time_text(t)
+            );
+            (t, words)
+        }
+    }
+}
+
+/// What the start-up's criteria compare against: (a)'s first settled row, and the later levels
+/// of the NIS (c), the flux estimation error (d) and the speed estimation error (e).
+struct Levels {
+    /// The first row from which the innovation band stays settled (a).
+    observer: usize,
+    /// The first row of the second half.
+    half_index: usize,
+    /// Mean NIS over the second half.
+    nis: f64,
+    /// Mean squared flux estimation error over the second half (Wb²).
+    flux: f64,
+    /// Mean squared speed estimation error over the second quarter or half, the lesser.
+    speed: f64,
+}
+
+impl Levels {
+    /// One pass over the rows, or a traced run's tally when its quarters are the ones it summed.
+    fn of(rows: &dyn Samples) -> Levels {
+        let len = rows.count();
+        let (first_t, last) = (rows.time(0), rows.row(len - 1));
+        let half_index = rows
+            .first_at(first_t + 0.5 * (last.t - first_t))
+            .min(len - 1);
+        let quarter_index = rows
+            .first_at(first_t + 0.25 * (last.t - first_t))
+            .min(half_index);
+        // (a) The last row outside the band settles nothing; the one after it starts the settled
+        // run. A NaN band counts as not settled.
+        let settled =
+            |band: f64| (band - last.innov_band_a).abs() <= BAND_SETTLED * last.innov_band_a;
+        let (mut unsettled, mut nis, mut flux) = (None, -0.0, -0.0);
+        let (mut late_speed, mut mid_speed) = (-0.0, -0.0);
+        let tally = rows.tally().filter(|t| {
+            t.half_index == half_index
+                && t.quarter_index == quarter_index
+                && t.band.len() == len.div_ceil(CHECKPOINT_EVERY)
+        });
+        match tally {
+            Some(tally) => {
+                unsettled = last_unsettled(tally, rows, len, &settled);
+                nis = tally.late_sum;
+                flux = tally.late_flux_sum;
+                late_speed = tally.late_speed_sum;
+                mid_speed = tally.mid_speed_sum;
+            }
+            None => rows.visit(0, len, &mut |i, r| {
+                if !settled(r.innov_band_a) {
+                    unsettled = Some(i);
+                }
+                if i >= half_index {
+                    nis += r.nis;
+                    flux += flux_err_sq(r);
+                    late_speed += r.omega_est_err * r.omega_est_err;
+                } else if i >= quarter_index {
+                    mid_speed += r.omega_est_err * r.omega_est_err;
+                }
+                true
+            }),
+        }
+        let late = (len - half_index) as f64;
+        let late_speed = late_speed / late;
+        Levels {
+            observer: unsettled.map_or(0, |i| (i + 1).min(len - 1)),
+            half_index,
+            nis: nis / late,
+            flux: flux / late,
+            speed: if half_index > quarter_index {
+                late_speed.min(mid_speed / (half_index - quarter_index) as f64)
+            } else {
+                late_speed
+            },
+        }
+    }
+}
+
+/// A moving window's mean of one signal over the first half, and the first stretch of full
+/// windows whose mean stays within a bound for [`NIS_HOLD`].
+struct Held {
+    /// The window's span (s).
+    span: f64,
+    /// The bound on the window's mean.
+    bound: f64,
+    /// The window's (t, value), and their sum.
+    window: std::collections::VecDeque<(f64, f64)>,
+    sum: f64,
+    /// Whether a row has left the window: only full windows count.
+    full: bool,
+    /// The end of the first window within of the current stretch within.
+    streak: Option<f64>,
+    /// The end of the first window within at all.
+    first_within: Option<f64>,
+    /// Where the first stretch held for [`NIS_HOLD`] began.
+    held: Option<f64>,
+}
+
+impl Held {
+    fn new(span: f64, bound: f64) -> Held {
+        Held {
+            span,
+            bound,
+            window: std::collections::VecDeque::new(),
+            sum: 0.0,
+            full: false,
+            streak: None,
+            first_within: None,
+            held: None,
+        }
+    }
+
+    /// Takes the row at `t` with `value`, the rows coming in time order.
+    fn push(&mut self, t: f64, value: f64) {
+        if self.held.is_some() {
+            return;
+        }
+        self.sum += value;
+        self.window.push_back((t, value));
+        while let Some(&(t0, v0)) = self.window.front() {
+            if t - t0 < self.span {
+                break;
+            }
+            self.sum -= v0;
+            self.window.pop_front();
+            self.full = true;
+        }
+        if !self.full {
+            return;
+        }
+        if self.sum / self.window.len() as f64 <= self.bound {
+            self.first_within = self.first_within.or(Some(t));
+            let since = *self.streak.get_or_insert(t);
+            if t - since >= NIS_HOLD {
+                self.held = Some(since);
+            }
+        } else {
+            self.streak = None;
+        }
+    }
+}
+
+/// (c), (d) and (e): where the estimates' NIS, the flux estimate and the speed estimate hold at
+/// their later levels, each `None` where none does in the first half. The NIS falls back to its
+/// first window within when no stretch of the first half stays within for [`NIS_HOLD`]; a
+/// perfect observer's speed error is 0 throughout, so (e) has nothing to tell.
+fn converged(rows: &dyn Samples, levels: &Levels) -> (Option<f64>, Option<f64>, Option<f64>) {
+    let mut nis = Held::new(NIS_WINDOW, NIS_SETTLED * levels.nis);
+    let mut flux = Held::new(NIS_WINDOW, FLUX_SETTLED * FLUX_SETTLED * levels.flux);
+    let mut speed = (levels.speed > 0.0)
+        .then(|| Held::new(SPEED_WINDOW, SPEED_SETTLED * SPEED_SETTLED * levels.speed));
+    rows.visit(0, levels.half_index, &mut |_, r| {
+        nis.push(r.t, r.nis);
+        flux.push(r.t, flux_err_sq(r));
+        if let Some(speed) = speed.as_mut() {
+            speed.push(r.t, r.omega_est_err * r.omega_est_err);
+        }
+        let speed_done = speed.as_ref().is_none_or(|s| s.held.is_some());
+        !(nis.held.is_some() && flux.held.is_some() && speed_done)
+    });
+    (
+        nis.held.or(nis.first_within),
+        flux.held,
+        speed.and_then(|s| s.held),
     )
 }
 
