@@ -12,7 +12,7 @@
 //! - `value`: the measured number, in the shortest form that reads back to the same bits.
 
 use crate::inverter::Limit;
-use crate::record::{figure_info, is_saturated, Row, Samples, WarningKind};
+use crate::record::{figure_info, is_saturated, Figure, Row, Samples, WarningKind};
 use crate::scenario::Scenario;
 use crate::sim::Simulation;
 use std::collections::BTreeMap;
@@ -395,6 +395,122 @@ fn column_value(name: &str, row: &Row, limit: &Limit) -> f64 {
     }
 }
 
+impl Reading {
+    /// A reading of `probe` over [t0, t1] (None for a probe that reads no rows).
+    fn new(probe: &Probe, time: &dyn Fn(Time) -> f64) -> Option<Reading> {
+        let (column, t0, t1) = match probe {
+            Probe::At(c, t) => (c, time(*t), f64::INFINITY),
+            Probe::Window(_, c, t0, t1) => (c, time(*t0), time(*t1)),
+            Probe::Recovery(c, _, t, _) => (c, time(*t), f64::INFINITY),
+            _ => return None,
+        };
+        Some(Reading {
+            probe: probe.clone(),
+            column: column.clone(),
+            t0,
+            t1,
+            n: 0.0,
+            sum: 0.0,
+            sum_sq: 0.0,
+            min: f64::INFINITY,
+            max: f64::NEG_INFINITY,
+            max_abs: 0.0,
+            first: None,
+            back: f64::NAN,
+            outside_at_end: false,
+            not_finite: false,
+        })
+    }
+
+    /// Takes value `v` of the row at time `t`, one of its window's.
+    fn take(&mut self, t: f64, v: f64) {
+        self.not_finite |= !v.is_finite();
+        if self.first.is_none() {
+            self.first = Some(v);
+        }
+        self.n += 1.0;
+        self.sum += v;
+        self.sum_sq += v * v;
+        self.min = self.min.min(v);
+        self.max = self.max.max(v);
+        self.max_abs = self.max_abs.max(v.abs());
+        if let Probe::Recovery(_, band, _, target) = self.probe {
+            // A value that is not finite is outside any band.
+            let outside = v.is_nan() || (v - target).abs() > band;
+            if outside {
+                self.back = f64::NAN;
+            } else if self.back.is_nan() {
+                self.back = t;
+            }
+            self.outside_at_end = outside;
+        }
+    }
+
+    /// The probe's value over the rows taken.
+    fn value(&self) -> Result<f64, String> {
+        if self.n == 0.0 {
+            return Err("no recorded row in its window".to_string());
+        }
+        if self.not_finite {
+            return Err(format!("{} is not finite in its window", self.column));
+        }
+        let mean = self.sum / self.n;
+        let var = (self.sum_sq / self.n - mean * mean).max(0.0);
+        Ok(match self.probe {
+            Probe::At(..) => self.first.expect("a row was read"),
+            Probe::Recovery(..) if self.outside_at_end => f64::INFINITY,
+            Probe::Recovery(..) => (self.back - self.t0).max(0.0),
+            Probe::Window(kind, ..) => match kind {
+                WindowKind::Mean => mean,
+                WindowKind::Rms => (self.sum_sq / self.n).sqrt(),
+                WindowKind::Sd => var.sqrt(),
+                WindowKind::Max => self.max,
+                WindowKind::Min => self.min,
+                WindowKind::MaxAbs => self.max_abs,
+                WindowKind::MeanShare => mean * mean / (self.sum_sq / self.n),
+            },
+            _ => unreachable!("row probes only"),
+        })
+    }
+}
+
+/// Figure `name` of a run's figures, or `NAME_rate` / `NAME_settled` / `NAME_tolerance` of a
+/// final value's trend.
+fn figure_value(figures: &[Figure], name: &str) -> Result<f64, String> {
+    let (base, part) = if let Some(b) = name.strip_suffix("_rate") {
+        (b, 1)
+    } else if let Some(b) = name.strip_suffix("_settled") {
+        (b, 2)
+    } else if let Some(b) = name.strip_suffix("_tolerance") {
+        (b, 3)
+    } else {
+        (name, 0)
+    };
+    let f = figures
+        .iter()
+        .find(|f| f.name == base)
+        .ok_or_else(|| format!("the run has no figure {base}"))?;
+    match (part, &f.trend) {
+        (0, _) => Ok(f.value),
+        (1, Some(t)) => Ok(t.rate),
+        (2, Some(t)) => Ok(f64::from(u8::from(t.settled))),
+        (3, Some(t)) => Ok(t.tolerance),
+        _ => Err(format!("{base} is not a final value, so it has no trend")),
+    }
+}
+
+/// −1, 0 or 1 as the mean NIS lies below, inside or above its 95 % band.
+fn nis_side(figures: &[Figure]) -> Result<f64, String> {
+    let nis = figure_value(figures, "mean_nis")?;
+    Ok(if nis < figure_value(figures, "mean_nis_low")? {
+        -1.0
+    } else if nis > figure_value(figures, "mean_nis_high")? {
+        1.0
+    } else {
+        0.0
+    })
+}
+
 /// Runs `scenario` with `seed` (None: its own) and reads every probe of `probes` from it.
 pub fn measure_run(
     scenario: &str,
@@ -423,30 +539,7 @@ pub fn measure_run(
     };
     let mut readings: Vec<Reading> = probes
         .iter()
-        .filter_map(|p| {
-            let (column, t0, t1) = match p {
-                Probe::At(c, t) => (c, time(*t), f64::INFINITY),
-                Probe::Window(_, c, t0, t1) => (c, time(*t0), time(*t1)),
-                Probe::Recovery(c, _, t, _) => (c, time(*t), f64::INFINITY),
-                _ => return None,
-            };
-            Some(Reading {
-                probe: p.clone(),
-                column: column.clone(),
-                t0,
-                t1,
-                n: 0.0,
-                sum: 0.0,
-                sum_sq: 0.0,
-                min: f64::INFINITY,
-                max: f64::NEG_INFINITY,
-                max_abs: 0.0,
-                first: None,
-                back: f64::NAN,
-                outside_at_end: false,
-                not_finite: false,
-            })
-        })
+        .filter_map(|p| Reading::new(p, &time))
         .collect();
     if !readings.is_empty() && len > 0 {
         // Half a sample of slack, so that a time written in the text's decimals finds its row.
@@ -456,105 +549,29 @@ pub fn measure_run(
         let first = sim.first_at(from - slack);
         sim.visit(first, len, &mut |_, row| {
             for r in &mut readings {
-                if row.t < r.t0 - slack || row.t > r.t1 + slack {
-                    continue;
-                }
-                let v = column_value(&r.column, row, &limit);
-                r.not_finite |= !v.is_finite();
-                if r.first.is_none() {
-                    r.first = Some(v);
-                }
-                r.n += 1.0;
-                r.sum += v;
-                r.sum_sq += v * v;
-                r.min = r.min.min(v);
-                r.max = r.max.max(v);
-                r.max_abs = r.max_abs.max(v.abs());
-                if let Probe::Recovery(_, band, _, target) = r.probe {
-                    // A value that is not finite is outside any band.
-                    let outside = v.is_nan() || (v - target).abs() > band;
-                    if outside {
-                        r.back = f64::NAN;
-                    } else if r.back.is_nan() {
-                        r.back = row.t;
-                    }
-                    r.outside_at_end = outside;
+                if row.t >= r.t0 - slack && row.t <= r.t1 + slack {
+                    r.take(row.t, column_value(&r.column, row, &limit));
                 }
             }
             true
         });
     }
     let figures = report.figures.unwrap_or_default();
-    let figure = |name: &str| -> Result<f64, String> {
-        let (base, part) = if let Some(b) = name.strip_suffix("_rate") {
-            (b, 1)
-        } else if let Some(b) = name.strip_suffix("_settled") {
-            (b, 2)
-        } else if let Some(b) = name.strip_suffix("_tolerance") {
-            (b, 3)
-        } else {
-            (name, 0)
-        };
-        let f = figures
-            .iter()
-            .find(|f| f.name == base)
-            .ok_or_else(|| format!("the run has no figure {base}"))?;
-        match (part, &f.trend) {
-            (0, _) => Ok(f.value),
-            (1, Some(t)) => Ok(t.rate),
-            (2, Some(t)) => Ok(f64::from(u8::from(t.settled))),
-            (3, Some(t)) => Ok(t.tolerance),
-            _ => Err(format!("{base} is not a final value, so it has no trend")),
-        }
-    };
     let values = probes
         .iter()
         .map(|p| {
             let v = match p {
-                Probe::Figure(name) => figure(name),
+                Probe::Figure(name) => figure_value(&figures, name),
                 Probe::RanAway => Ok(f64::from(u8::from(ran_away))),
-                Probe::NisSide => (|| {
-                    let nis = figure("mean_nis")?;
-                    Ok(if nis < figure("mean_nis_low")? {
-                        -1.0
-                    } else if nis > figure("mean_nis_high")? {
-                        1.0
-                    } else {
-                        0.0
-                    })
-                })(),
+                Probe::NisSide => nis_side(&figures),
                 Probe::Reached(name) => {
                     Ok(f64::from(u8::from(figures.iter().any(|f| f.name == name))))
                 }
-                _ => {
-                    let r = readings
-                        .iter()
-                        .find(|r| r.probe == *p)
-                        .expect("a reading for each row probe");
-                    if r.n == 0.0 {
-                        Err("no recorded row in its window".to_string())
-                    } else if r.not_finite {
-                        Err(format!("{} is not finite in its window", r.column))
-                    } else {
-                        let mean = r.sum / r.n;
-                        let var = (r.sum_sq / r.n - mean * mean).max(0.0);
-                        Ok(match p {
-                            Probe::At(..) => r.first.expect("a row was read"),
-                            Probe::Recovery(..) if r.outside_at_end => f64::INFINITY,
-                            Probe::Recovery(..) => (r.back - r.t0).max(0.0),
-                            Probe::Window(kind, ..) => match kind {
-                                WindowKind::Mean => mean,
-                                WindowKind::Rms => (r.sum_sq / r.n).sqrt(),
-                                WindowKind::Sd => var.sqrt(),
-                                WindowKind::Max => r.max,
-                                WindowKind::Min => r.min,
-                                WindowKind::MaxAbs => r.max_abs,
-                                WindowKind::MeanShare => mean * mean / (r.sum_sq / r.n),
-                            },
-                            _ => unreachable!("row probes only"),
-                        })
-                    }
-                }
+                _ => readings
+                    .iter()
+                    .find(|r| r.probe == *p)
+                    .expect("a reading for each row probe")
+                    .value(),
             };
             (p.clone(), v)
         })
