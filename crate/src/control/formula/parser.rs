@@ -1,0 +1,285 @@
+//! The parser: tokens to a tree, refusing what the language or the step does not allow.
+
+use super::lexer::{tokens, Token};
+use super::program::constant;
+use super::{index, BinOp, FormulaError, Node, FUNCTIONS, MAX_CHARS, MAX_NESTING, NAMES};
+
+/// The parser: precedence climbing over the tokens, refusing names the step may not use.
+struct Parser<'a> {
+    tokens: &'a [(Token, usize, usize)],
+    pos: usize,
+    /// Where the formula ends (one past its last character), for errors at its end.
+    end: usize,
+    step: u8,
+    /// How deep in parentheses, signs and powers the parser is.
+    nesting: usize,
+}
+
+impl Parser<'_> {
+    fn peek(&self) -> Option<&(Token, usize, usize)> {
+        self.tokens.get(self.pos)
+    }
+
+    fn at_op(&self, op: char) -> bool {
+        matches!(self.peek(), Some((Token::Op(c), _, _)) if *c == op)
+    }
+
+    fn here(&self) -> (usize, usize) {
+        self.peek().map_or((self.end, 1), |t| (t.1, t.2))
+    }
+
+    fn expr(&mut self) -> Result<Node, FormulaError> {
+        let mut left = self.term()?;
+        while self.at_op('+') || self.at_op('-') {
+            let op = if self.at_op('+') {
+                BinOp::Add
+            } else {
+                BinOp::Sub
+            };
+            self.pos += 1;
+            let right = self.term()?;
+            left = Node::Bin(op, Box::new(left), Box::new(right));
+        }
+        Ok(left)
+    }
+
+    fn term(&mut self) -> Result<Node, FormulaError> {
+        let mut left = self.unary()?;
+        while self.at_op('*') || self.at_op('/') {
+            let op = if self.at_op('*') {
+                BinOp::Mul
+            } else {
+                BinOp::Div
+            };
+            let (at, _) = self.here();
+            self.pos += 1;
+            let right = self.unary()?;
+            if op == BinOp::Div && constant(&right) == Some(0.0) {
+                return Err(FormulaError::new(at, 1, "division by zero"));
+            }
+            left = Node::Bin(op, Box::new(left), Box::new(right));
+        }
+        Ok(left)
+    }
+
+    fn unary(&mut self) -> Result<Node, FormulaError> {
+        self.nesting += 1;
+        let node = self.unary_inner();
+        self.nesting -= 1;
+        node
+    }
+
+    fn unary_inner(&mut self) -> Result<Node, FormulaError> {
+        if self.nesting > MAX_NESTING {
+            let (at, len) = self.here();
+            return Err(FormulaError::new(
+                at,
+                len,
+                format!("the formula nests deeper than {MAX_NESTING} levels here"),
+            ));
+        }
+        if self.at_op('-') {
+            self.pos += 1;
+            return Ok(Node::Neg(Box::new(self.unary()?)));
+        }
+        if self.at_op('+') {
+            self.pos += 1;
+            return self.unary();
+        }
+        self.power()
+    }
+
+    fn power(&mut self) -> Result<Node, FormulaError> {
+        let base = self.primary()?;
+        if self.at_op('^') {
+            self.pos += 1;
+            let exponent = self.unary()?;
+            return Ok(Node::Bin(BinOp::Pow, Box::new(base), Box::new(exponent)));
+        }
+        Ok(base)
+    }
+
+    fn primary(&mut self) -> Result<Node, FormulaError> {
+        let Some((token, at, len)) = self.peek().cloned() else {
+            return Err(FormulaError::new(
+                self.end,
+                1,
+                "the formula ends where a number, a name or '(' is expected",
+            ));
+        };
+        self.pos += 1;
+        match token {
+            Token::Num(v, written) => Ok(Node::Num(v, written)),
+            Token::Op('(') => {
+                let inner = self.expr()?;
+                if !self.at_op(')') {
+                    let (here, n) = self.here();
+                    return Err(if self.peek().is_none() {
+                        FormulaError::new(at, 1, "this '(' is never closed")
+                    } else {
+                        FormulaError::new(here, n, "expected ')' or an operator here")
+                    });
+                }
+                self.pos += 1;
+                Ok(Node::Paren(Box::new(inner)))
+            }
+            Token::Ident(id) if self.at_op('(') => self.call(&id, at, len),
+            Token::Ident(id) => self.signal(&id, at, len),
+            Token::Op(c) => Err(FormulaError::new(
+                at,
+                1,
+                format!("'{c}' where a number, a name or '(' is expected"),
+            )),
+        }
+    }
+
+    fn call(&mut self, id: &str, at: usize, len: usize) -> Result<Node, FormulaError> {
+        let Some(&(_, f, arity, _)) = FUNCTIONS.iter().find(|f| f.0 == id) else {
+            let known: Vec<&str> = FUNCTIONS.iter().map(|f| f.0).collect();
+            return Err(FormulaError::new(
+                at,
+                len,
+                format!("no function '{id}': the functions are {}", known.join(", ")),
+            ));
+        };
+        self.pos += 1; // '('
+        let mut args = vec![self.expr()?];
+        while self.at_op(',') {
+            self.pos += 1;
+            args.push(self.expr()?);
+        }
+        if !self.at_op(')') {
+            let (here, n) = self.here();
+            return Err(FormulaError::new(
+                here,
+                n,
+                format!("expected ',' or ')' in {id}( )"),
+            ));
+        }
+        self.pos += 1;
+        if args.len() != arity {
+            return Err(FormulaError::new(
+                at,
+                len,
+                format!(
+                    "{id} takes {arity} argument{}, not {}",
+                    if arity == 1 { "" } else { "s" },
+                    args.len()
+                ),
+            ));
+        }
+        Ok(Node::Call(f, args))
+    }
+
+    fn signal(&mut self, id: &str, at: usize, len: usize) -> Result<Node, FormulaError> {
+        match index(id) {
+            Some(i) if NAMES[i].from_step <= self.step => Ok(Node::Sig(i)),
+            Some(i) => Err(FormulaError::new(
+                at,
+                len,
+                format!(
+                    "'{id}' is not known in step {}: it comes from step {}'s law",
+                    self.step,
+                    NAMES[i].from_step - 1
+                ),
+            )),
+            None if FUNCTIONS.iter().any(|f| f.0 == id) => Err(FormulaError::new(
+                at,
+                len,
+                format!("'{id}' is a function: write {id}( )"),
+            )),
+            None => Err(FormulaError::new(
+                at,
+                len,
+                format!("unknown name '{id}' (see the list of names)"),
+            )),
+        }
+    }
+}
+
+/// Parses `text` as the law of step `step` (1–4).
+pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
+    let length = text.chars().count();
+    if length > MAX_CHARS {
+        return Err(FormulaError::new(
+            0,
+            0,
+            format!("the formula has {length} characters, more than the {MAX_CHARS} allowed"),
+        ));
+    }
+    let tokens = tokens(text)?;
+    if tokens.is_empty() {
+        return Err(FormulaError::new(0, 0, "the formula is empty"));
+    }
+    let mut parser = Parser {
+        tokens: &tokens,
+        pos: 0,
+        end: length + 1,
+        step,
+        nesting: 0,
+    };
+    let node = parser.expr()?;
+    if let Some((token, at, len)) = parser.peek() {
+        let what = match token {
+            Token::Op(')') => "this ')' has no '(' before it".to_string(),
+            _ => "expected an operator here (a product is written with *)".to_string(),
+        };
+        return Err(FormulaError::new(*at, *len, what));
+    }
+    Ok(node)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::control::formula::Program;
+
+    #[test]
+    fn bad_formulas_are_refused_at_their_place_with_the_reason() {
+        let cases: &[(&str, u8, usize, &str)] = &[
+            ("", 1, 0, "empty"),
+            ("1 +", 1, 4, "ends where"),
+            ("(1 + 2", 1, 1, "never closed"),
+            ("1 + 2)", 1, 6, "no '('"),
+            ("2 x1h", 1, 3, "expected an operator"),
+            ("foo + 1", 1, 1, "unknown name 'foo'"),
+            ("z2 + 1", 1, 1, "not known in step 1"),
+            ("1 + z4", 3, 5, "not known in step 3"),
+            ("sqrt(1, 2)", 1, 1, "takes 1 argument"),
+            ("sqr(2)", 1, 1, "no function 'sqr'"),
+            ("sqrt + 1", 1, 1, "is a function"),
+            ("1 / 0", 1, 3, "division by zero"),
+            ("x1h/(2 - 2)", 1, 4, "division by zero"),
+            ("1 $ 2", 1, 3, "not part of the language"),
+            ("1e999", 1, 1, "too large"),
+            ("* 2", 1, 1, "where a number"),
+        ];
+        for (text, step, at, needle) in cases {
+            let e = parse(text, *step).expect_err(text);
+            assert_eq!(e.at, *at, "{text}: {e}");
+            assert!(e.reason.contains(needle), "{text}: {e}");
+        }
+        let long = "x1h + ".repeat(400) + "1";
+        assert!(parse(&long, 1).unwrap_err().reason.contains("characters"));
+        let costly = "x1h*x1h*x1h + ".repeat(140) + "1";
+        assert!(Program::parse(&costly, 1)
+            .unwrap_err()
+            .reason
+            .contains("operations"));
+        let deep = "(".repeat(40) + "1" + &")".repeat(40);
+        // Parentheses alone push nothing; a chain of powers does.
+        assert!(Program::parse(&deep, 1).is_ok());
+        let deep = "2^".repeat(40) + "1";
+        assert!(Program::parse(&deep, 1)
+            .unwrap_err()
+            .reason
+            .contains("deep"));
+        // The parser follows at most MAX_NESTING levels: deeper input is refused, not recursed.
+        let nested = "(".repeat(900) + "1" + &")".repeat(900);
+        let e = parse(&nested, 1).unwrap_err();
+        assert!(
+            e.reason.contains("nests deeper") && e.at == MAX_NESTING + 1,
+            "{e}"
+        );
+    }
+}
