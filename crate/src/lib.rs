@@ -5,8 +5,8 @@
 //! (four backstepping steps) → [`inverter`] (voltage limit, PWM) → [`record`] (what a run keeps,
 //! and the figures read from it) → [`sim`] (the 20 kHz loop, advanced in chunks). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
-//! runs many simulations (frequency responses, seed sweeps); [`robust`] maps a run over model
-//! errors and seeds; [`quote`] is how every message quotes
+//! runs many simulations (frequency responses, seed sweeps, model-error maps over model errors
+//! and seeds, measurement tables); [`quote`] is how every message quotes
 //! user input.
 
 pub mod analysis;
