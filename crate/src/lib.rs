@@ -21,6 +21,7 @@ pub mod record;
 pub mod rng;
 pub mod scenario;
 pub mod sim;
+pub mod text;
 
 #[cfg(target_arch = "wasm32")]
 pub mod wasm;

@@ -6,6 +6,7 @@ use super::{ControllerKind, Scenario, ScenarioError};
 use crate::control::Reference;
 use crate::inverter::Shape;
 use crate::observer::Predictor;
+use crate::text::percent::{self, Plus};
 use serde::Serialize;
 
 /// Largest seed: the largest integer a JavaScript number holds exactly (2^53 − 1), so that the
@@ -311,37 +312,13 @@ const fn law(key: &'static str, unit: &'static str, doc: &'static str, step: u8)
 /// A formula as the codec writes it: every byte but the letters, digits and `-._~*()`
 /// percent-encoded (so `+`, `&`, `=` and spaces survive any query string).
 pub(crate) fn encode_formula(text: &str) -> String {
-    let mut out = String::with_capacity(text.len());
-    for b in text.bytes() {
-        if b.is_ascii_alphanumeric() || b"-._~*()".contains(&b) {
-            out.push(b as char);
-        } else {
-            out.push_str(&format!("%{b:02X}"));
-        }
-    }
-    out
+    percent::encode(text, b"-._~*()")
 }
 
 /// A formula's text from its codec text: `%XX` decoded, everything else kept (a `+` is a plus,
 /// not a space); None unless the bytes decoded are UTF-8.
 pub(crate) fn decode_formula(text: &str) -> Option<String> {
-    let bytes = text.as_bytes();
-    let mut out = Vec::with_capacity(bytes.len());
-    let mut i = 0;
-    while i < bytes.len() {
-        if bytes[i] == b'%' {
-            let hex = bytes.get(i + 1..i + 3)?;
-            if !hex.iter().all(u8::is_ascii_hexdigit) {
-                return None;
-            }
-            out.push(u8::from_str_radix(std::str::from_utf8(hex).ok()?, 16).ok()?);
-            i += 3;
-        } else {
-            out.push(bytes[i]);
-            i += 1;
-        }
-    }
-    String::from_utf8(out).ok()
+    percent::decode(text, Plus::Plus)
 }
 
 fn set_reference(s: &mut Scenario, name: &str) {
