@@ -81,7 +81,7 @@ fn the_codec_round_trips_in_a_fixed_order() {
 }
 
 #[test]
-fn refusals_name_the_key_or_field() {
+fn a_refused_try_names_its_key_or_field() {
     let refused = |text: &str| Submission::parse(text).expect_err(text);
     let cases: &[(&str, ErrorKind, &str)] = &[
         (
@@ -132,6 +132,10 @@ fn refusals_name_the_key_or_field() {
         assert_eq!(e.kind, *kind, "{tail}: {e}");
         assert!(e.message.contains(needle), "{tail}: {e}");
     }
+}
+
+#[test]
+fn a_refused_challenge_names_its_field() {
     let challenge_cases: &[(&str, &str)] = &[
         (
             "c=2&base=step&need.current_peak=max:4",
@@ -210,6 +214,10 @@ fn refusals_name_the_key_or_field() {
         assert_eq!(e.kind, ErrorKind::Malformed, "{text}");
         assert!(e.message.contains(needle), "{text}: {e}");
     }
+}
+
+#[test]
+fn user_text_in_a_refusal_is_cut_and_escaped() {
     // User text is quoted through `excerpt`: cut, and invisible characters escaped.
     let e = Challenge::parse(&format!(
         "c=1&base=step&need.current_peak=max:4&{}\u{202e}=1",
@@ -218,6 +226,10 @@ fn refusals_name_the_key_or_field() {
     .unwrap_err();
     assert!(e.message.contains("… (61 characters)"), "{e}");
     assert!(!e.message.contains('\u{202e}'));
+}
+
+#[test]
+fn a_long_challenge_text_is_refused_at_once() {
     // Long texts are refused at once.
     let e = Challenge::parse(&format!("c=1&title={}", "x".repeat(20_000))).unwrap_err();
     assert!(e.message.contains("16384 bytes (16 KiB) allowed"), "{e}");
@@ -664,10 +676,25 @@ fn each_built_in_taken_apart_and_composed_again_is_its_text() {
     assert_eq!(json["robust"], serde_json::json!(["speed_error_final"]));
 }
 
+/// The base of the composer cases, as JSON.
+const COMPOSE_BASE: &str = r#""base": "v=1&preset=step""#;
+/// A criterion of the composer cases, as JSON.
+const COMPOSE_NEED: &str = r#""need": [{"figure": "current_peak", "op": "max", "bound": 4}]"#;
+
+/// Composes each case's JSON and checks that it is refused with the key and the words
+/// expected.
+fn assert_compose_errors(cases: &[(String, &str, &str)]) {
+    for (json, key, needle) in cases {
+        let e = Challenge::compose(&form_parts(json)).expect_err(json);
+        assert_eq!(e.key, *key, "{json}: {e}");
+        assert!(e.message.contains(needle), "{json}: {e}");
+    }
+}
+
 #[test]
-fn a_composer_error_names_the_part_at_fault() {
-    let base = r#""base": "v=1&preset=step""#;
-    let need = r#""need": [{"figure": "current_peak", "op": "max", "bound": 4}]"#;
+fn a_composer_error_names_the_title_or_base() {
+    let base = COMPOSE_BASE;
+    let need = COMPOSE_NEED;
     let cases: &[(String, &str, &str)] = &[
         (
             format!(r#"{{"title": "{}", {base}, {need}}}"#, "x".repeat(121)),
@@ -680,6 +707,15 @@ fn a_composer_error_names_the_part_at_fault() {
             "field 'base': field 'preset'",
         ),
         (format!(r#"{{"base": "", {need}}}"#), "base", "field 'base'"),
+    ];
+    assert_compose_errors(cases);
+}
+
+#[test]
+fn a_composer_error_names_the_allowed_field() {
+    let base = COMPOSE_BASE;
+    let need = COMPOSE_NEED;
+    let cases: &[(String, &str, &str)] = &[
         (
             format!(
                 r#"{{{base}, {need}, "allow": [{{"field": "k1", "lo": "2000", "hi": "300"}}]}}"#
@@ -723,6 +759,14 @@ fn a_composer_error_names_the_part_at_fault() {
             "allow.k1",
             "field 'allow.k1' is given more than once",
         ),
+    ];
+    assert_compose_errors(cases);
+}
+
+#[test]
+fn a_composer_error_names_the_criterion() {
+    let base = COMPOSE_BASE;
+    let cases: &[(String, &str, &str)] = &[
         (
             format!(r#"{{{base}, "need": [{{"figure": "peak", "op": "max", "bound": 4}}]}}"#),
             "need.peak",
@@ -753,6 +797,15 @@ fn a_composer_error_names_the_part_at_fault() {
             "the base has no load step",
         ),
         (format!(r#"{{{base}}}"#), "need", "no criteria"),
+    ];
+    assert_compose_errors(cases);
+}
+
+#[test]
+fn a_composer_error_names_vary_or_robust() {
+    let base = COMPOSE_BASE;
+    let need = COMPOSE_NEED;
+    let cases: &[(String, &str, &str)] = &[
         (
             format!(r#"{{{base}, {need}, "vary": "seeds:1..30", "robust": ["current_peak"]}}"#),
             "vary",
@@ -783,20 +836,19 @@ fn a_composer_error_names_the_part_at_fault() {
             "robust",
             "'mean_nis' is not the figure of a criterion",
         ),
-        (
-            format!(
-                r#"{{{base}, {need}, "vary": "{}", "robust": ["current_peak"]}}"#,
-                vec![format!("k1=1000.{}", "0".repeat(900)); 20].join("|")
-            ),
-            "challenge",
-            "16384 bytes (16 KiB) allowed",
-        ),
     ];
-    for (json, key, needle) in cases {
-        let e = Challenge::compose(&form_parts(json)).expect_err(json);
-        assert_eq!(e.key, *key, "{json}: {e}");
-        assert!(e.message.contains(needle), "{json}: {e}");
-    }
+    assert_compose_errors(cases);
+}
+
+#[test]
+fn a_composer_error_for_a_too_long_challenge_names_the_challenge() {
+    let base = COMPOSE_BASE;
+    let need = COMPOSE_NEED;
+    let json = format!(
+        r#"{{{base}, {need}, "vary": "{}", "robust": ["current_peak"]}}"#,
+        vec![format!("k1=1000.{}", "0".repeat(900)); 20].join("|")
+    );
+    assert_compose_errors(&[(json, "challenge", "16384 bytes (16 KiB) allowed")]);
 }
 
 #[test]

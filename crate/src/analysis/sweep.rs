@@ -175,165 +175,228 @@ pub fn sweep_point(
     freq: f64,
     settings: &SweepSettings,
 ) -> Result<SweepPoint, ScenarioError> {
-    let mut s = base.clone();
-    s.reference = Reference::Sine {
-        amp: settings.amp,
-        freq,
-        offset: settings.offset,
-    };
-    s.duration = settings.duration;
-    // The sine's fields carry the codec's ranges, so a bad frequency or offset is named.
-    s.validate()?;
-    if settings.amp <= 0.0 {
-        return Err(ScenarioError::OutOfRange {
-            key: "sine.amp".to_string(),
-            value: settings.amp,
-            allowed: "0 < sine.amp for a sweep".to_string(),
-        });
-    }
-    if freq >= 0.5 / s.ts {
-        return Err(ScenarioError::OutOfRange {
-            key: "freq".to_string(),
-            value: freq,
-            allowed: format!("below the Nyquist frequency 1/(2·Ts) = {} Hz", 0.5 / s.ts),
-        });
-    }
-    let half = settings.duration / 2.0;
-    let periods = (half * freq).floor();
-    if periods < 1.0 {
-        return Err(ScenarioError::OutOfRange {
-            key: "freq".to_string(),
-            value: freq,
-            allowed: format!(
-                "at least one period in the fit window: freq ≥ {} Hz for a {} s run",
-                1.0 / half,
-                settings.duration
-            ),
-        });
-    }
-    let period = 1.0 / freq;
-    let w = 2.0 * PI * freq;
-    // Whether a row at time t belongs to the run's part from time `start` on (the row times are
-    // the loop's k·Ts).
-    let ts = s.ts;
-    let from = move |start: f64| move |t: f64| t >= start - 0.5 * ts;
-    let window_start = settings.duration - periods * period;
-    // ω_d over the fit window is known before the run: an amplitude the fit cannot resolve is
-    // refused here, by name, rather than measured as an infinite gain.
-    let in_window = from(window_start);
-    let (reference_amp, _) = fit(
-        (0..s.steps())
-            .map(|k| k as f64 * s.ts)
-            .filter(|&t| in_window(t))
-            .map(|t| (t, s.reference.sample(t).value)),
-        w,
-    );
-    let resolved = (reference_amp - settings.amp).abs() <= SWEEP_AMP_TOL * settings.amp;
-    // A NaN fit is not resolved either.
-    if !resolved {
-        return Err(unmeasurable(
-            settings,
-            format!(
-                "the fit of ω_d itself over the fit window finds {} rad/s, more than {} % off \
-                 (the amplitude's square underflows, or offset + amplitude rounds to the offset \
-                 {} rad/s)",
-                short(reference_amp),
-                SWEEP_AMP_TOL * 100.0,
-                short(settings.offset)
-            ),
-        ));
-    }
-    let mut sim = Simulation::new(&s, 1)?;
+    let run = SineRun::new(base, freq, settings)?;
+    run.check_reference(settings)?;
+    let mut sim = Simulation::new(&run.s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
     let rows = sim.recorder().rows();
-    // The index of the first row at or after time t.
-    let at = |t: f64| rows.partition_point(|r| !from(t)(r.t));
-    let window = &rows[at(window_start)..];
-    let k = (periods / 2.0).floor().max(1.0);
-    let halves = [
-        &rows[at(settings.duration - 2.0 * k * period)..at(settings.duration - k * period)],
-        &rows[at(settings.duration - k * period)..],
-    ];
+    let window = &rows[run.at(rows, run.window_start)..];
     if failure.is_some() || window.is_empty() {
-        return Ok(SweepPoint {
+        return Ok(failed_point(freq, run.s.i_rated, failure));
+    }
+    run.measure(rows, settings)
+}
+
+/// One sweep point's run: the scenario with the sine reference, and where its fit window and
+/// the halves of its settling check fall.
+struct SineRun {
+    /// The base scenario with the sine reference and the sweep's run length.
+    s: Scenario,
+    /// Reference frequency (Hz).
+    freq: f64,
+    /// Whole periods in the fit window.
+    periods: f64,
+    /// One period of the sine (s).
+    period: f64,
+    /// Its angular frequency (rad/s).
+    w: f64,
+    /// Start of the fit window: the whole periods that end the run's second half (s).
+    window_start: f64,
+}
+
+impl SineRun {
+    /// The run of `base` with the sine of `freq` and `settings`, refused when the scenario is
+    /// not valid, the amplitude not positive, the frequency not below Nyquist, or the fit window
+    /// shorter than one period.
+    fn new(base: &Scenario, freq: f64, settings: &SweepSettings) -> Result<SineRun, ScenarioError> {
+        let mut s = base.clone();
+        s.reference = Reference::Sine {
+            amp: settings.amp,
             freq,
-            gain: f64::NAN,
-            gain_db: f64::NAN,
-            phase: f64::NAN,
-            gain_hat: f64::NAN,
-            phase_hat: f64::NAN,
-            saturated: f64::NAN,
-            peak_current: f64::NAN,
-            rated_current: s.i_rated,
-            failure: failure.or(Some("nothing recorded in the fit window".to_string())),
-            gain_change_db: f64::NAN,
-            phase_change: f64::NAN,
-            unsettled: None,
-        });
+            offset: settings.offset,
+        };
+        s.duration = settings.duration;
+        // The sine's fields carry the codec's ranges, so a bad frequency or offset is named.
+        s.validate()?;
+        if settings.amp <= 0.0 {
+            return Err(ScenarioError::OutOfRange {
+                key: "sine.amp".to_string(),
+                value: settings.amp,
+                allowed: "0 < sine.amp for a sweep".to_string(),
+            });
+        }
+        if freq >= 0.5 / s.ts {
+            return Err(ScenarioError::OutOfRange {
+                key: "freq".to_string(),
+                value: freq,
+                allowed: format!("below the Nyquist frequency 1/(2·Ts) = {} Hz", 0.5 / s.ts),
+            });
+        }
+        let half = settings.duration / 2.0;
+        let periods = (half * freq).floor();
+        if periods < 1.0 {
+            return Err(ScenarioError::OutOfRange {
+                key: "freq".to_string(),
+                value: freq,
+                allowed: format!(
+                    "at least one period in the fit window: freq ≥ {} Hz for a {} s run",
+                    1.0 / half,
+                    settings.duration
+                ),
+            });
+        }
+        let period = 1.0 / freq;
+        Ok(SineRun {
+            s,
+            freq,
+            periods,
+            period,
+            w: 2.0 * PI * freq,
+            window_start: settings.duration - periods * period,
+        })
     }
-    let (gain, phase) = response(window, w, |r| r.omega);
-    let (gain_hat, phase_hat) = response(window, w, |r| r.omega_used);
-    // ω only: at high frequencies the fundamental of the IFOC's MRAS estimate is buried in its
-    // noise, so its halves differ by up to 5 dB and 30° even in runs where ω has long settled.
-    let [(g1, p1), (g2, p2)] = halves.map(|h| response(h, w, |r| r.omega));
-    let gain_change_db = 20.0 * libm::log10(g2 / g1);
-    let phase_change = libm::remainder((p2 - p1) * 180.0 / PI, 360.0);
-    let gain_db = 20.0 * libm::log10(gain);
-    // A response too small for the fit (its square underflows) reads as a gain of 0 or ∞.
-    let figures = [
-        ("gain_db", gain_db),
-        ("gain_hat", gain_hat),
-        ("phase", phase),
-        ("phase_hat", phase_hat),
-        ("gain_change_db", gain_change_db),
-        ("phase_change", phase_change),
-    ];
-    if let Some((name, value)) = figures.iter().find(|(_, v)| !v.is_finite()) {
-        return Err(unmeasurable(
-            settings,
-            format!(
-                "at {} Hz the response reads as {name} = {value}, too small for the fit",
-                short(freq)
-            ),
-        ));
+
+    /// Whether a row at time t belongs to the run's part from time `start` on (the row times are
+    /// the loop's k·Ts).
+    fn from(&self, start: f64) -> impl Fn(f64) -> bool {
+        let ts = self.s.ts;
+        move |t: f64| t >= start - 0.5 * ts
     }
-    let settled =
-        gain_change_db.abs() <= SETTLED_GAIN_DB && phase_change.abs() <= SETTLED_PHASE_DEG;
-    // The scenario's own limit: the box, the circle or the hexagon.
-    let limit = s.limit();
-    let saturated = rows
-        .iter()
-        .filter(|r| limit.exceeds(&[r.u_a_cmd, r.u_b_cmd]))
-        .count() as f64
-        / rows.len() as f64;
-    // The largest |i_s|² first: √ is monotonic, so its root is the largest |i_s|.
-    let peak_current = window
-        .iter()
-        .map(|r| r.i_sa * r.i_sa + r.i_sb * r.i_sb)
-        .fold(0.0, f64::max)
-        .sqrt();
-    Ok(SweepPoint {
+
+    /// The index of the first of `rows` at or after time `t`.
+    fn at(&self, rows: &[Row], t: f64) -> usize {
+        let inside = self.from(t);
+        rows.partition_point(|r| !inside(r.t))
+    }
+
+    /// Refuses, by name, an amplitude the fit cannot resolve: ω_d over the fit window is known
+    /// before the run, so it is fitted here rather than measured as an infinite gain.
+    fn check_reference(&self, settings: &SweepSettings) -> Result<(), ScenarioError> {
+        let s = &self.s;
+        let in_window = self.from(self.window_start);
+        let (reference_amp, _) = fit(
+            (0..s.steps())
+                .map(|k| k as f64 * s.ts)
+                .filter(|&t| in_window(t))
+                .map(|t| (t, s.reference.sample(t).value)),
+            self.w,
+        );
+        let resolved = (reference_amp - settings.amp).abs() <= SWEEP_AMP_TOL * settings.amp;
+        // A NaN fit is not resolved either.
+        if !resolved {
+            return Err(unmeasurable(
+                settings,
+                format!(
+                    "the fit of ω_d itself over the fit window finds {} rad/s, more than {} % off \
+                     (the amplitude's square underflows, or offset + amplitude rounds to the \
+                     offset {} rad/s)",
+                    short(reference_amp),
+                    SWEEP_AMP_TOL * 100.0,
+                    short(settings.offset)
+                ),
+            ));
+        }
+        Ok(())
+    }
+
+    /// The point measured from the `rows` of a run that did not fail and recorded its fit
+    /// window: the fundamentals' gains and phases, the settling check, the share of saturated
+    /// samples and the peak current; refused when the response is too small for the fit.
+    fn measure(&self, rows: &[Row], settings: &SweepSettings) -> Result<SweepPoint, ScenarioError> {
+        let (freq, w, period) = (self.freq, self.w, self.period);
+        let window = &rows[self.at(rows, self.window_start)..];
+        let k = (self.periods / 2.0).floor().max(1.0);
+        let halves = [
+            &rows[self.at(rows, settings.duration - 2.0 * k * period)
+                ..self.at(rows, settings.duration - k * period)],
+            &rows[self.at(rows, settings.duration - k * period)..],
+        ];
+        let (gain, phase) = response(window, w, |r| r.omega);
+        let (gain_hat, phase_hat) = response(window, w, |r| r.omega_used);
+        // ω only: at high frequencies the fundamental of the IFOC's MRAS estimate is buried in
+        // its noise, so its halves differ by up to 5 dB and 30° even in runs where ω has long
+        // settled.
+        let [(g1, p1), (g2, p2)] = halves.map(|h| response(h, w, |r| r.omega));
+        let gain_change_db = 20.0 * libm::log10(g2 / g1);
+        let phase_change = libm::remainder((p2 - p1) * 180.0 / PI, 360.0);
+        let gain_db = 20.0 * libm::log10(gain);
+        // A response too small for the fit (its square underflows) reads as a gain of 0 or ∞.
+        let figures = [
+            ("gain_db", gain_db),
+            ("gain_hat", gain_hat),
+            ("phase", phase),
+            ("phase_hat", phase_hat),
+            ("gain_change_db", gain_change_db),
+            ("phase_change", phase_change),
+        ];
+        if let Some((name, value)) = figures.iter().find(|(_, v)| !v.is_finite()) {
+            return Err(unmeasurable(
+                settings,
+                format!(
+                    "at {} Hz the response reads as {name} = {value}, too small for the fit",
+                    short(freq)
+                ),
+            ));
+        }
+        let settled =
+            gain_change_db.abs() <= SETTLED_GAIN_DB && phase_change.abs() <= SETTLED_PHASE_DEG;
+        // The scenario's own limit: the box, the circle or the hexagon.
+        let limit = self.s.limit();
+        let saturated = rows
+            .iter()
+            .filter(|r| limit.exceeds(&[r.u_a_cmd, r.u_b_cmd]))
+            .count() as f64
+            / rows.len() as f64;
+        // The largest |i_s|² first: √ is monotonic, so its root is the largest |i_s|.
+        let peak_current = window
+            .iter()
+            .map(|r| r.i_sa * r.i_sa + r.i_sb * r.i_sb)
+            .fold(0.0, f64::max)
+            .sqrt();
+        Ok(SweepPoint {
+            freq,
+            gain,
+            gain_db,
+            phase: lag_degrees(phase),
+            gain_hat,
+            phase_hat: lag_degrees(phase_hat),
+            saturated,
+            peak_current,
+            rated_current: self.s.i_rated,
+            failure: None,
+            gain_change_db,
+            phase_change,
+            unsettled: (!settled).then(|| {
+                format!(
+                    "not settled: over the last {} periods, from the first half to the second, \
+                     the gain of ω changed {gain_change_db:+.2} dB and its phase \
+                     {phase_change:+.1}° (settled: within ±{SETTLED_GAIN_DB} dB and \
+                     ±{SETTLED_PHASE_DEG}°)",
+                    2.0 * k
+                )
+            }),
+        })
+    }
+}
+
+/// The point at `freq` of a run that failed (`failure`) or recorded nothing in its fit window:
+/// every figure NaN but the rated current `rated_current`.
+fn failed_point(freq: f64, rated_current: f64, failure: Option<String>) -> SweepPoint {
+    SweepPoint {
         freq,
-        gain,
-        gain_db,
-        phase: lag_degrees(phase),
-        gain_hat,
-        phase_hat: lag_degrees(phase_hat),
-        saturated,
-        peak_current,
-        rated_current: s.i_rated,
-        failure: None,
-        gain_change_db,
-        phase_change,
-        unsettled: (!settled).then(|| {
-            format!(
-                "not settled: over the last {} periods, from the first half to the second, the \
-                 gain of ω changed {gain_change_db:+.2} dB and its phase {phase_change:+.1}° \
-                 (settled: within ±{SETTLED_GAIN_DB} dB and ±{SETTLED_PHASE_DEG}°)",
-                2.0 * k
-            )
-        }),
-    })
+        gain: f64::NAN,
+        gain_db: f64::NAN,
+        phase: f64::NAN,
+        gain_hat: f64::NAN,
+        phase_hat: f64::NAN,
+        saturated: f64::NAN,
+        peak_current: f64::NAN,
+        rated_current,
+        failure: failure.or(Some("nothing recorded in the fit window".to_string())),
+        gain_change_db: f64::NAN,
+        phase_change: f64::NAN,
+        unsettled: None,
+    }
 }
 
 /// The error for a sweep amplitude that cannot be measured, with the reason.

@@ -324,79 +324,27 @@ impl Backstepping {
         let [e2, e3] = input.residual;
         let l = &input.l;
         let r = input.speed_ref;
-        // Observer injections si_i = l_i1 x̃2 + l_i2 x̃3, eq (5).
-        let si: [f64; 5] = std::array::from_fn(|i| l[i][0] * e2 + l[i][1] * e3);
-        // Nominal residual dynamics (x̃1 = x̃4 = x̃5 = 0): d/dt x̃2, d/dt x̃3.
-        let de2 = -(p.a7 + l[1][0]) * e2 - l[1][1] * e3;
-        let de3 = -l[2][0] * e2 - (p.a7 + l[2][1]) * e3;
-        let flux_sq = x4h * x4h + x5h * x5h;
-
-        // Step 1, speed loop: eqs (23)–(30). â2 = a2 (the model's constant load) unless the
-        // observer estimates it; then dâ2/dt is the observer's injection into â2.
-        let k1s1 = g.k1 - p.a3;
-        let k2s1 = g.k2 - p.a7 - p.a8;
-        let z1 = x1h - r.value;
-        let z3 = flux_sq - input.psi_d;
-        // x̂̇4, x̂̇5 of the observer (4).
-        let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
-        let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
+        let shared = Shared::new(p, g, input);
+        let Shared {
+            si,
+            de2,
+            de3,
+            flux_sq,
+            dx4h,
+            dx5h,
+            k1s1,
+            k2s1,
+            z1,
+            z3,
+        } = shared;
         // What a step's own law may read, gathered only when there is one.
         let mut s = C::Signals::default();
         if C::ON {
-            let named = [
-                (sig!("x1h"), x1h),
-                (sig!("x2h"), x2h),
-                (sig!("x3h"), x3h),
-                (sig!("x4h"), x4h),
-                (sig!("x5h"), x5h),
-                (sig!("x2"), x2),
-                (sig!("x3"), x3),
-                (sig!("xt2"), e2),
-                (sig!("xt3"), e3),
-                (sig!("dxt2"), de2),
-                (sig!("dxt3"), de3),
-                (sig!("dx4h"), dx4h),
-                (sig!("dx5h"), dx5h),
-                (sig!("wd"), r.value),
-                (sig!("dwd"), r.d1),
-                (sig!("ddwd"), r.d2),
-                (sig!("psi_d"), input.psi_d),
-                (sig!("a1"), p.a1),
-                (sig!("a2"), p.a2),
-                (sig!("a3"), p.a3),
-                (sig!("a5"), p.a5),
-                (sig!("a6"), p.a6),
-                (sig!("a7"), p.a7),
-                (sig!("a8"), p.a8),
-                (sig!("a9"), p.a9),
-                (sig!("a10"), p.a10),
-                (sig!("b"), p.b),
-                (sig!("da2"), d_a2.unwrap_or(0.0)),
-                (sig!("k1"), g.k1),
-                (sig!("k2"), g.k2),
-                (sig!("k3"), g.k3),
-                (sig!("k4"), g.k4),
-                (sig!("k1s1"), k1s1),
-                (sig!("k2s1"), k2s1),
-                (sig!("h2"), g.h2),
-                (sig!("eps2"), g.eps2),
-                (sig!("h4"), g.h4),
-                (sig!("eps4"), g.eps4),
-                (sig!("robust"), if g.robust { 1.0 } else { 0.0 }),
-                (sig!("z1"), z1),
-                (sig!("z3"), z3),
-            ];
-            for (i, v) in named {
-                s.set(i, v);
-            }
-            for (i, v) in si.iter().enumerate() {
-                s.set(sig!("si1") + i, *v);
-            }
-            for (i, row) in l.iter().enumerate() {
-                s.set(sig!("l11") + 2 * i, row[0]);
-                s.set(sig!("l11") + 2 * i + 1, row[1]);
-            }
+            gather(&mut s, p, g, d_a2, input, &shared);
         }
+
+        // Step 1, speed loop: eqs (23)–(30). â2 = a2 (the model's constant load) unless the
+        // observer estimates it; then dâ2/dt is the observer's injection into â2.
         let v1a = -si[0] + r.d1 + p.a3 * r.value + p.a2;
         let v1s = -k1s1 * z1;
         let v1 = chosen(custom, 1, s.all(), v1a + v1s)?;
@@ -459,18 +407,7 @@ impl Backstepping {
         let v4s = -g.k4 * z4 + v4s2;
         let v4 = chosen(custom, 4, s.all(), v4a + v4s)?;
 
-        // Eq (54): b·[[−a1x̂5, a1x̂4], [2a10x̂4, 2a10x̂5]]·u = [v2, v4]; det = −2 a1 a10 b (x̂4²+x̂5²).
-        if flux_sq.is_nan() || flux_sq < MIN_FLUX_SQ {
-            return Err(ControlError::SingularDecoupling { flux_sq });
-        }
-        let (m11, m12, m21, m22) = (
-            -p.a1 * x5h,
-            p.a1 * x4h,
-            2.0 * p.a10 * x4h,
-            2.0 * p.a10 * x5h,
-        );
-        let det = p.b * (m11 * m22 - m12 * m21);
-        let u = [(m22 * v2 - m12 * v4) / det, (m11 * v4 - m21 * v2) / det];
+        let u = decouple(p, x4h, x5h, flux_sq, v2, v4)?;
 
         let z = [z1, z2, z3, z4];
         Ok(Terms {
@@ -495,4 +432,162 @@ impl Backstepping {
             lyapunov: 0.5 * (z1 * z1 + z2 * z2 + z3 * z3 + z4 * z4),
         })
     }
+}
+
+/// What the four steps share at one sample, derived once from the estimate, the residual and the
+/// observer gain before step 1.
+#[derive(Clone, Copy)]
+struct Shared {
+    /// Observer injections si_i = l_i1 x̃2 + l_i2 x̃3, eq (5).
+    si: [f64; 5],
+    /// Nominal residual dynamics (x̃1 = x̃4 = x̃5 = 0): d/dt x̃2.
+    de2: f64,
+    /// Likewise d/dt x̃3.
+    de3: f64,
+    /// x̂4² + x̂5² (Wb²).
+    flux_sq: f64,
+    /// x̂̇4 of the observer (4).
+    dx4h: f64,
+    /// x̂̇5 of the observer (4).
+    dx5h: f64,
+    /// k1s1 = k1 − a3, the speed loop's feedback gain.
+    k1s1: f64,
+    /// k2s1 = k2 − a7 − a8, the torque loop's feedback gain.
+    k2s1: f64,
+    /// Speed error z1 = x̂1 − ω_d.
+    z1: f64,
+    /// Flux error z3 = x̂4² + x̂5² − ψ_d.
+    z3: f64,
+}
+
+impl Shared {
+    /// The shared quantities of `input` with lumped parameters `p` and gains `g`: step 1's
+    /// start, eqs (23)–(30).
+    #[inline(always)]
+    fn new(p: &Lumped, g: &Gains, input: &ControlInput) -> Shared {
+        let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
+        let [e2, e3] = input.residual;
+        let l = &input.l;
+        // Observer injections si_i = l_i1 x̃2 + l_i2 x̃3, eq (5).
+        let si: [f64; 5] = std::array::from_fn(|i| l[i][0] * e2 + l[i][1] * e3);
+        // Nominal residual dynamics (x̃1 = x̃4 = x̃5 = 0): d/dt x̃2, d/dt x̃3.
+        let de2 = -(p.a7 + l[1][0]) * e2 - l[1][1] * e3;
+        let de3 = -l[2][0] * e2 - (p.a7 + l[2][1]) * e3;
+        let flux_sq = x4h * x4h + x5h * x5h;
+        let k1s1 = g.k1 - p.a3;
+        let k2s1 = g.k2 - p.a7 - p.a8;
+        let z1 = x1h - input.speed_ref.value;
+        let z3 = flux_sq - input.psi_d;
+        // x̂̇4, x̂̇5 of the observer (4).
+        let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
+        let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
+        Shared {
+            si,
+            de2,
+            de3,
+            flux_sq,
+            dx4h,
+            dx5h,
+            k1s1,
+            k2s1,
+            z1,
+            z3,
+        }
+    }
+}
+
+/// Sets in `s` every signal a step's own law may read before step 1: the sample's estimate,
+/// measurement and reference, the parameters `p` (with dâ2/dt `d_a2`), the gains `g` and the
+/// `shared` quantities. The steps' own v1, z2, v3 and z4 are set as they come.
+#[inline(always)]
+fn gather<S: Signals>(
+    s: &mut S,
+    p: &Lumped,
+    g: &Gains,
+    d_a2: Option<f64>,
+    input: &ControlInput,
+    shared: &Shared,
+) {
+    let [x1h, x2h, x3h, x4h, x5h] = input.x_hat;
+    let [x2, x3] = input.y;
+    let [e2, e3] = input.residual;
+    let r = input.speed_ref;
+    let named = [
+        (sig!("x1h"), x1h),
+        (sig!("x2h"), x2h),
+        (sig!("x3h"), x3h),
+        (sig!("x4h"), x4h),
+        (sig!("x5h"), x5h),
+        (sig!("x2"), x2),
+        (sig!("x3"), x3),
+        (sig!("xt2"), e2),
+        (sig!("xt3"), e3),
+        (sig!("dxt2"), shared.de2),
+        (sig!("dxt3"), shared.de3),
+        (sig!("dx4h"), shared.dx4h),
+        (sig!("dx5h"), shared.dx5h),
+        (sig!("wd"), r.value),
+        (sig!("dwd"), r.d1),
+        (sig!("ddwd"), r.d2),
+        (sig!("psi_d"), input.psi_d),
+        (sig!("a1"), p.a1),
+        (sig!("a2"), p.a2),
+        (sig!("a3"), p.a3),
+        (sig!("a5"), p.a5),
+        (sig!("a6"), p.a6),
+        (sig!("a7"), p.a7),
+        (sig!("a8"), p.a8),
+        (sig!("a9"), p.a9),
+        (sig!("a10"), p.a10),
+        (sig!("b"), p.b),
+        (sig!("da2"), d_a2.unwrap_or(0.0)),
+        (sig!("k1"), g.k1),
+        (sig!("k2"), g.k2),
+        (sig!("k3"), g.k3),
+        (sig!("k4"), g.k4),
+        (sig!("k1s1"), shared.k1s1),
+        (sig!("k2s1"), shared.k2s1),
+        (sig!("h2"), g.h2),
+        (sig!("eps2"), g.eps2),
+        (sig!("h4"), g.h4),
+        (sig!("eps4"), g.eps4),
+        (sig!("robust"), if g.robust { 1.0 } else { 0.0 }),
+        (sig!("z1"), shared.z1),
+        (sig!("z3"), shared.z3),
+    ];
+    for (i, v) in named {
+        s.set(i, v);
+    }
+    for (i, v) in shared.si.iter().enumerate() {
+        s.set(sig!("si1") + i, *v);
+    }
+    for (i, row) in input.l.iter().enumerate() {
+        s.set(sig!("l11") + 2 * i, row[0]);
+        s.set(sig!("l11") + 2 * i + 1, row[1]);
+    }
+}
+
+/// The voltage of eq (54), b·[[−a1x̂5, a1x̂4], [2a10x̂4, 2a10x̂5]]·u = [v2, v4], with lumped
+/// parameters `p` and flux estimate (x̂4, x̂5) of square modulus `flux_sq`; refused when the
+/// matrix is singular (det = −2 a1 a10 b (x̂4²+x̂5²)).
+#[inline(always)]
+fn decouple(
+    p: &Lumped,
+    x4h: f64,
+    x5h: f64,
+    flux_sq: f64,
+    v2: f64,
+    v4: f64,
+) -> Result<[f64; 2], ControlError> {
+    if flux_sq.is_nan() || flux_sq < MIN_FLUX_SQ {
+        return Err(ControlError::SingularDecoupling { flux_sq });
+    }
+    let (m11, m12, m21, m22) = (
+        -p.a1 * x5h,
+        p.a1 * x4h,
+        2.0 * p.a10 * x4h,
+        2.0 * p.a10 * x5h,
+    );
+    let det = p.b * (m11 * m22 - m12 * m21);
+    Ok([(m22 * v2 - m12 * v4) / det, (m11 * v4 - m21 * v2) / det])
 }

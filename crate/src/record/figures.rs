@@ -283,7 +283,6 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         };
     }
     let last = rows.row(len - 1);
-    let limit = s.limit();
     // The step's settling, for a step reference whose step the run reached; it has a settling
     // time when ω ends inside the band.
     let step =
@@ -293,137 +292,22 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         .filter(|st| st.outside(&last))
         .map(|st| st.time);
     let mut settling = step.filter(|st| !st.outside(&last));
-    let tallied = rows.window_tally().and_then(|t| t.window(start, len));
-    let (w, tenths) = if let Some((w, tenths, last_out)) = tallied {
-        if let Some(st) = &mut settling {
-            st.last_out = last_out;
-        }
-        (w, tenths)
-    } else {
-        // One pass over the window, from the step on for a step reference that comes earlier.
-        let first = settling.as_ref().map_or(start, |st| st.from.min(start));
-        // The final values' trend over the last tenths (inside the window, which starts at most
-        // half-way).
-        let mut tenths = Tenths::new(len, |i| rows.time(i));
-        let mut w = Window::new();
-        rows.visit(first, len, &mut |i, r| {
-            if let Some(st) = &mut settling {
-                st.push(i, r);
-            }
-            if i < start {
-                return true;
-            }
-            tenths.push(i, r);
-            w.push(&Summand::of(r, &limit));
-            true
-        });
-        (w, tenths)
-    };
+    let (w, tenths) = window_of(s, rows, start, len, &mut settling);
     let n = w.n as f64;
-    let in_w = format!("t ≥ {}", time_text(end.t));
-    let at_last = format!("last sample, t = {}", time_text(last.t));
-    let mut out = Vec::new();
-    let line = tenths.line();
-    let over = last.t - line.t0;
-    let window = last.t - end.t;
-    let (low, high) = mean_nis_band(w.n);
-    let warnings = warnings_of(&last, w.reference_peak, w.nis / n, (low, high));
-    let ran_away = warnings.iter().any(|w| w.kind == WarningKind::Runaway);
-    // With a perfect observer the controller does not use the filter's estimates.
-    let random_walk = (s.ekf.load || s.ekf.rr) && !s.perfect;
-    let trend_of = |k: usize, value: f64, tol: f64| {
-        let rate = line.slope(k)?;
-        let tolerance = tol.max(TREND_RELATIVE * value.abs());
-        let scatter = line.scatter(k, rate);
-        let change = (rate * over).abs();
-        let visible = change > TREND_SCATTER * scatter;
-        let to_go = approach(tenths.means(k)).map(|r| r.min((rate * window).abs()));
-        let moves_in_tenth = visible && change > tolerance;
-        let fluctuating = scatter > tolerance;
-        // The last sample stands for the value only if four times its scatter fits the
-        // tolerance: else the last sample of a run four times longer may end elsewhere by the
-        // noise alone.
-        let scattered = FINAL_SCATTER * scatter > tolerance;
-        let state = if ran_away {
-            TrendState::RanAway
-        } else if moves_in_tenth || visible && to_go.is_some_and(|r| r > tolerance) {
-            TrendState::Changing
-        } else if scattered {
-            TrendState::Fluctuating
-        } else if random_walk {
-            TrendState::Drifting
-        } else {
-            TrendState::Settled
-        };
-        rate.is_finite().then_some(Trend {
-            rate,
-            over,
-            tolerance,
-            scatter,
-            to_go,
-            state,
-            settled: state == TrendState::Settled,
-            settled_in_last_tenth: !(moves_in_tenth || fluctuating),
-        })
+    let band = mean_nis_band(w.n);
+    let warnings = warnings_of(&last, w.reference_peak, w.nis / n, band);
+    let judge = TrendJudge {
+        tenths: &tenths,
+        over: last.t - tenths.line().t0,
+        window: last.t - end.t,
+        ran_away: warnings.iter().any(|w| w.kind == WarningKind::Runaway),
+        // With a perfect observer the controller does not use the filter's estimates.
+        random_walk: (s.ekf.load || s.ekf.rr) && !s.perfect,
     };
-    let mut with_trend = |name, value: f64, window: &String, trend| {
-        let info = figure_info(name).expect("a figure of the table");
-        if value.is_finite() {
-            out.push(Figure {
-                name,
-                label: info.label,
-                value,
-                unit: info.unit,
-                window: window.clone(),
-                trend,
-            });
-        }
-    };
-    let mut push = |name, value: f64, window: &String| {
-        with_trend(name, value, window, None);
-    };
-    push(
-        "transient_end",
-        end.t,
-        &format!("start-up, t < {}", time_text(end.t)),
-    );
-    push("tracking_rms", (w.tracking_sq / n).sqrt(), &in_w);
-    push("tracking_peak", w.tracking_peak, &in_w);
-    if let Some((value, time)) = settling.map(|st| st.result()) {
-        push(
-            "settling_time",
-            value,
-            &format!("from the step at {}", time_text(time)),
-        );
-    }
-    push("saturated_share", w.saturated as f64 / n, &in_w);
-    push("mean_nis", w.nis / n, &in_w);
-    push("mean_nis_low", low, &in_w);
-    push("mean_nis_high", high, &in_w);
-    push("current_peak", w.current_peak, &in_w);
-    let current_rms = (w.current_sq / n).sqrt();
-    push("current_rms", current_rms, &in_w);
-    push(
-        "current_rated",
-        s.i_rated,
-        &"the motor's rating".to_string(),
-    );
-    if s.drive.pwm {
-        push("ripple_peak", w.ripple_peak, &in_w);
-        push("ripple_rms", (w.ripple_sq / n).sqrt(), &in_w);
-    }
-    let flux_final = last.flux - last.flux_ref;
-    let flux_trend = trend_of(0, flux_final, FLUX_TREND_TOL);
-    let speed_trend = trend_of(1, last.omega_err, SPEED_TREND_TOL);
-    let estimate_trend = trend_of(2, last.omega_est_err, SPEED_TREND_TOL);
-    with_trend("flux_error_final", flux_final, &at_last, flux_trend);
-    with_trend("speed_error_final", last.omega_err, &at_last, speed_trend);
-    with_trend(
-        "speed_estimate_error_final",
-        last.omega_est_err,
-        &at_last,
-        estimate_trend,
-    );
+    let mut out = Figures(Vec::new());
+    out.push_window(s, &w, end.t, settling, band);
+    out.push_final(&last, &judge);
+    let Figures(out) = out;
     let mut unreached = Vec::new();
     if let Some(time) = unsettled_step {
         unreached.push(unreached_figure(
@@ -442,6 +326,181 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         figures: Some(out),
         unreached,
         warnings,
+    }
+}
+
+/// The sums over the window from row `start` to `len` of the rows recorded from `s`, and the
+/// last tenths' fits, with `settling` (the step's, if any) brought up to date: from the tally
+/// kept as the run went when there is one, else from one pass over the window (from the step
+/// on for a step reference that comes earlier).
+fn window_of(
+    s: &Scenario,
+    rows: &dyn Samples,
+    start: usize,
+    len: usize,
+    settling: &mut Option<Settling>,
+) -> (Window, Tenths) {
+    let tallied = rows.window_tally().and_then(|t| t.window(start, len));
+    if let Some((w, tenths, last_out)) = tallied {
+        if let Some(st) = settling {
+            st.last_out = last_out;
+        }
+        return (w, tenths);
+    }
+    let limit = s.limit();
+    let first = settling.as_ref().map_or(start, |st| st.from.min(start));
+    // The final values' trend over the last tenths (inside the window, which starts at most
+    // half-way).
+    let mut tenths = Tenths::new(len, |i| rows.time(i));
+    let mut w = Window::new();
+    rows.visit(first, len, &mut |i, r| {
+        if let Some(st) = settling.as_mut() {
+            st.push(i, r);
+        }
+        if i < start {
+            return true;
+        }
+        tenths.push(i, r);
+        w.push(&Summand::of(r, &limit));
+        true
+    });
+    (w, tenths)
+}
+
+/// What the trend of a value read at the last sample is judged from (see [`Trend`]).
+struct TrendJudge<'a> {
+    /// The last tenths' line fits and means.
+    tenths: &'a Tenths,
+    /// Span of the last tenth's line, to the last sample (s).
+    over: f64,
+    /// The window after the transient, to the last sample (s).
+    window: f64,
+    /// Whether the run ran away: no value of it is final.
+    ran_away: bool,
+    /// Whether the EKF holds the load or R_r as a random walk the controller follows.
+    random_walk: bool,
+}
+
+impl TrendJudge<'_> {
+    /// The trend of the final value `value` fitted as the tenths' signal `k`, with the fixed
+    /// tolerance `tol`; None when the line has no finite slope.
+    fn trend(&self, k: usize, value: f64, tol: f64) -> Option<Trend> {
+        let line = self.tenths.line();
+        let over = self.over;
+        let rate = line.slope(k)?;
+        let tolerance = tol.max(TREND_RELATIVE * value.abs());
+        let scatter = line.scatter(k, rate);
+        let change = (rate * over).abs();
+        let visible = change > TREND_SCATTER * scatter;
+        let to_go = approach(self.tenths.means(k)).map(|r| r.min((rate * self.window).abs()));
+        let moves_in_tenth = visible && change > tolerance;
+        let fluctuating = scatter > tolerance;
+        // The last sample stands for the value only if four times its scatter fits the
+        // tolerance: else the last sample of a run four times longer may end elsewhere by the
+        // noise alone.
+        let scattered = FINAL_SCATTER * scatter > tolerance;
+        let state = if self.ran_away {
+            TrendState::RanAway
+        } else if moves_in_tenth || visible && to_go.is_some_and(|r| r > tolerance) {
+            TrendState::Changing
+        } else if scattered {
+            TrendState::Fluctuating
+        } else if self.random_walk {
+            TrendState::Drifting
+        } else {
+            TrendState::Settled
+        };
+        rate.is_finite().then_some(Trend {
+            rate,
+            over,
+            tolerance,
+            scatter,
+            to_go,
+            state,
+            settled: state == TrendState::Settled,
+            settled_in_last_tenth: !(moves_in_tenth || fluctuating),
+        })
+    }
+}
+
+/// A report's figures as they are added, in [`FIGURE_INFO`]'s order.
+struct Figures(Vec<Figure>);
+
+impl Figures {
+    /// Adds the figure `name` with `value` over `window` and, for a final value, its `trend`;
+    /// a value that is not finite is left out.
+    fn push(&mut self, name: &'static str, value: f64, window: &str, trend: Option<Trend>) {
+        let info = figure_info(name).expect("a figure of the table");
+        if value.is_finite() {
+            self.0.push(Figure {
+                name,
+                label: info.label,
+                value,
+                unit: info.unit,
+                window: window.to_string(),
+                trend,
+            });
+        }
+    }
+
+    /// Adds the start-up's end `end` (s) and the figures over the window `w` after it of a run
+    /// of `s`: tracking, the step's `settling` (if settled), saturation, the mean NIS with its
+    /// `band`, currents and, with PWM, the ripple.
+    fn push_window(
+        &mut self,
+        s: &Scenario,
+        w: &Window,
+        end: f64,
+        settling: Option<Settling>,
+        band: (f64, f64),
+    ) {
+        let n = w.n as f64;
+        let in_w = format!("t ≥ {}", time_text(end));
+        let (low, high) = band;
+        self.push(
+            "transient_end",
+            end,
+            &format!("start-up, t < {}", time_text(end)),
+            None,
+        );
+        self.push("tracking_rms", (w.tracking_sq / n).sqrt(), &in_w, None);
+        self.push("tracking_peak", w.tracking_peak, &in_w, None);
+        if let Some((value, time)) = settling.map(|st| st.result()) {
+            self.push(
+                "settling_time",
+                value,
+                &format!("from the step at {}", time_text(time)),
+                None,
+            );
+        }
+        self.push("saturated_share", w.saturated as f64 / n, &in_w, None);
+        self.push("mean_nis", w.nis / n, &in_w, None);
+        self.push("mean_nis_low", low, &in_w, None);
+        self.push("mean_nis_high", high, &in_w, None);
+        self.push("current_peak", w.current_peak, &in_w, None);
+        self.push("current_rms", (w.current_sq / n).sqrt(), &in_w, None);
+        self.push("current_rated", s.i_rated, "the motor's rating", None);
+        if s.drive.pwm {
+            self.push("ripple_peak", w.ripple_peak, &in_w, None);
+            self.push("ripple_rms", (w.ripple_sq / n).sqrt(), &in_w, None);
+        }
+    }
+
+    /// Adds the final errors read at the last row `last`, each with its trend from `judge`.
+    fn push_final(&mut self, last: &Row, judge: &TrendJudge) {
+        let at_last = format!("last sample, t = {}", time_text(last.t));
+        let flux_final = last.flux - last.flux_ref;
+        let flux_trend = judge.trend(0, flux_final, FLUX_TREND_TOL);
+        let speed_trend = judge.trend(1, last.omega_err, SPEED_TREND_TOL);
+        let estimate_trend = judge.trend(2, last.omega_est_err, SPEED_TREND_TOL);
+        self.push("flux_error_final", flux_final, &at_last, flux_trend);
+        self.push("speed_error_final", last.omega_err, &at_last, speed_trend);
+        self.push(
+            "speed_estimate_error_final",
+            last.omega_est_err,
+            &at_last,
+            estimate_trend,
+        );
     }
 }
 
