@@ -6,8 +6,8 @@
 //! and the figures read from it) → [`sim`] (the 20 kHz loop, advanced in chunks). [`scenario`] holds every
 //! setting and the query-string codec shared by the CLI, the browser and the tests; [`analysis`]
 //! runs many simulations (frequency responses, seed sweeps, model-error maps over model errors
-//! and seeds, measurement tables); [`quote`] is how every message quotes
-//! user input.
+//! and seeds, measurement tables); [`text`], the ground floor, is how every message writes a
+//! number and quotes user input, and the one percent codec.
 
 pub mod analysis;
 pub mod challenge;
@@ -16,7 +16,6 @@ pub mod inverter;
 pub mod model;
 pub mod observer;
 pub mod params;
-pub mod quote;
 pub mod record;
 pub mod rng;
 pub mod scenario;

@@ -154,7 +154,7 @@ impl Simulation {
         let c = COLUMNS
             .iter()
             .position(|c| *c == name)
-            .ok_or_else(|| js_error(format!("no column '{}'", crate::quote::excerpt(name))))?;
+            .ok_or_else(|| js_error(format!("no column '{}'", crate::text::excerpt(name))))?;
         let mut out = Vec::with_capacity(self.inner.len());
         self.inner.visit(0, usize::MAX, &mut |_, row| {
             out.push(row.get(c));
@@ -359,7 +359,7 @@ fn from_js<T: serde::de::DeserializeOwned>(value: JsValue) -> Result<T, JsValue>
 /// Cc, Cf, Zl and Zp escaped (`\u{202e}`), cut to 40 characters with the full length noted.
 #[wasm_bindgen]
 pub fn excerpt(text: &str) -> String {
-    crate::quote::excerpt(text)
+    crate::text::excerpt(text)
 }
 
 /// Pinned runs to compare with the current one (at most four).

@@ -344,7 +344,7 @@ fn invisible_and_reordering_characters_are_quoted_as_escapes() {
         assert!(
             !stderr
                 .chars()
-                .any(|c| c != '\n' && imlab::quote::is_invisible(c)),
+                .any(|c| c != '\n' && imlab::text::is_invisible(c)),
             "{args:?}: {stderr:?}"
         );
     }

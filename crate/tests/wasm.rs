@@ -158,7 +158,7 @@ fn quoting_seed_ranges_and_work_are_the_cores() {
         "a\u{202e}b\u{2066}c\u{200d}\u{2028}\u{ad}\u{e0041}",
         &"x".repeat(90),
     ] {
-        assert_eq!(imlab::wasm::excerpt(text), imlab::quote::excerpt(text));
+        assert_eq!(imlab::wasm::excerpt(text), imlab::text::excerpt(text));
     }
     assert_eq!(imlab::wasm::excerpt("k\u{202e}1"), "k\\u{202e}1");
     // A seed range past 2^53 − 1 is refused with the range before any run.

@@ -4,10 +4,11 @@
 //! functions: [`Map::plan`] checks and bounds the grid before any run, [`map_run`] is one run of
 //! one cell, [`summarise`] turns a cell's runs into its row and [`map_csv`] writes the rows.
 
-use crate::quote::excerpt;
 use crate::record::WarningKind;
-use crate::scenario::{short, Scenario, MAX_SEED};
+use crate::scenario::{Scenario, MAX_SEED};
 use crate::sim::Simulation;
+use crate::text::excerpt;
+use crate::text::short;
 use serde::{Deserialize, Serialize};
 
 /// The figures a map keeps of each run, by their `imlab metrics` names.

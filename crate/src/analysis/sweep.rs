@@ -3,8 +3,9 @@
 
 use crate::control::Reference;
 use crate::record::Row;
-use crate::scenario::{short, Scenario, ScenarioError};
+use crate::scenario::{Scenario, ScenarioError};
 use crate::sim::Simulation;
+use crate::text::short;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

@@ -3,8 +3,8 @@
 use super::codec::field_info;
 use super::judge::figure_info;
 use super::{Allowed, Challenge, Op, Variants};
-use crate::quote::escape_invisible;
 use crate::record::{recovery_band, LOAD_RECOVERY};
+use crate::text::escape_invisible;
 use std::fmt::Write;
 
 impl Challenge {

@@ -6,9 +6,9 @@ use super::{
     builtin, Allow, Allowed, Challenge, ChallengeError, Criterion, Op, Variants, BUILTINS,
     CHALLENGE_VERSION, MAX_CHALLENGE_BYTES, MAX_CRITERIA, MAX_TITLE_CHARS, MAX_VARIANTS,
 };
-use crate::quote::excerpt;
 use crate::record::LOAD_RECOVERY;
 use crate::scenario::{FieldInfo, Scenario, MAX_SEED};
+use crate::text::excerpt;
 use crate::text::percent::{self, Plus};
 use std::collections::HashSet;
 

@@ -4,7 +4,7 @@
 
 use super::codec::{check_length, check_title, pct_encode, Draft, Part};
 use super::{Allowed, Challenge, ChallengeError, Op, Variants};
-use crate::quote::excerpt;
+use crate::text::excerpt;
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
 use std::fmt;

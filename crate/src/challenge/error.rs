@@ -16,7 +16,7 @@ pub enum ErrorKind {
 }
 
 /// Why a challenge or submission was refused: a message naming the key or field, with user
-/// text quoted through [`excerpt`](crate::quote::excerpt).
+/// text quoted through [`excerpt`](crate::text::excerpt).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ChallengeError {
     /// The kind of refusal.

@@ -45,8 +45,8 @@ pub use judge::{
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
 
-use crate::quote::excerpt;
 use crate::scenario::Scenario;
+use crate::text::excerpt;
 use codec::{builtin_named, check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
 

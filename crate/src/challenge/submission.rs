@@ -3,8 +3,9 @@
 
 use super::codec::{apply_overrides, number, parse_parts, pct_encode, sort_small};
 use super::{Allowed, Challenge, ChallengeError};
-use crate::quote::excerpt;
-use crate::scenario::{short, Scenario};
+use crate::scenario::Scenario;
+use crate::text::excerpt;
+use crate::text::short;
 use serde::Serialize;
 
 /// A challenge with the values a student set.

@@ -272,7 +272,7 @@ pub fn named_values(law: &Law, signals: &[f64; SIGNALS]) -> String {
     law.program
         .names()
         .iter()
-        .map(|&i| format!("{} = {}", NAMES[i].name, crate::scenario::short(signals[i])))
+        .map(|&i| format!("{} = {}", NAMES[i].name, crate::text::short(signals[i])))
         .collect::<Vec<_>>()
         .join(", ")
 }

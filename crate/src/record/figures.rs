@@ -6,12 +6,12 @@
 
 use super::row::Row;
 use super::samples::Samples;
-use super::text::{rounded, time_text};
 use super::transient::{transient, Transient};
 use super::window::{Settling, Summand, Tenths, Window, TREND_TENTHS};
 #[cfg(test)]
 use crate::control::Reference;
 use crate::scenario::Scenario;
+use crate::text::{rounded, time_text};
 use serde::Serialize;
 
 /// Standard-normal quantile of 97.5 %: the 95 % two-sided band.

@@ -16,7 +16,6 @@ mod recovery;
 mod row;
 mod samples;
 mod tally;
-mod text;
 mod trace;
 mod transient;
 mod window;

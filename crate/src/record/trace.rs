@@ -34,7 +34,7 @@ impl Overview {
                 COLUMNS
                     .iter()
                     .position(|c| *c == n)
-                    .ok_or_else(|| format!("no column '{}'", crate::quote::excerpt(n)))
+                    .ok_or_else(|| format!("no column '{}'", crate::text::excerpt(n)))
             })
             .collect()
     }

@@ -3,9 +3,9 @@
 
 use super::samples::Samples;
 use super::tally::{flux_err_sq, TransientTally, CHECKPOINT_EVERY};
-use super::text::time_text;
 use crate::control::Reference;
 use crate::scenario::{ControllerKind, Scenario};
+use crate::text::time_text;
 use serde::Serialize;
 use std::f64::consts::PI;
 

@@ -1,7 +1,8 @@
 //! Why a scenario string or value was refused, in words that name the field.
 
-use super::{excerpt, short, CODEC_VERSION, MAX_SCENARIO_BYTES, PRESETS};
+use super::{CODEC_VERSION, MAX_SCENARIO_BYTES, PRESETS};
 use crate::params::ParamError;
+use crate::text::{excerpt, short};
 use std::fmt;
 
 /// Why a scenario string or value was refused. Every variant names the field (or the piece of

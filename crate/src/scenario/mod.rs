@@ -17,7 +17,6 @@ pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
 pub use presets::{preset, Preset, PRESETS};
 pub use validate::{MAX_STEPS, MAX_WORK};
 // The codec's errors quote input with these.
-pub use crate::quote::{excerpt, EXCERPT_CHARS};
 
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::{Limit, Shape};
@@ -120,17 +119,6 @@ pub struct Scenario {
     /// [`crate::control::law`].
     #[serde(default)]
     pub law: [Option<String>; 4],
-}
-
-/// `v` for a message: the codec's shortest form, or scientific notation where that is long
-/// (5e-324 rather than 324 digits).
-pub fn short(v: f64) -> String {
-    let plain = format!("{v}");
-    if plain.len() > 12 {
-        format!("{v:e}")
-    } else {
-        plain
-    }
 }
 
 impl Scenario {
@@ -469,7 +457,7 @@ mod tests {
             .unwrap_err()
             .to_string();
         assert!(err.contains("field 'k\\u{202e}1'"), "{err}");
-        assert!(!err.chars().any(crate::quote::is_invisible), "{err:?}");
+        assert!(!err.chars().any(crate::text::is_invisible), "{err:?}");
     }
 }
 
@@ -582,7 +570,7 @@ mod properties {
             if let Err(e) = Scenario::parse(&text) {
                 let m = e.to_string();
                 prop_assert!(names_something(&m) || m.contains("unknown preset"), "{}", m);
-                prop_assert!(!m.chars().any(crate::quote::is_invisible), "{:?}", m);
+                prop_assert!(!m.chars().any(crate::text::is_invisible), "{:?}", m);
             }
         }
 

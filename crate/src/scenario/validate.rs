@@ -2,8 +2,9 @@
 //! voltage limit the drive can make, and a run whose samples and plant work stay within bounds.
 
 use super::fields::{fields, Access};
-use super::{preset, short, ControllerKind, Scenario, ScenarioError};
+use super::{preset, ControllerKind, Scenario, ScenarioError};
 use crate::inverter::Shape;
+use crate::text::short;
 
 /// Most samples one run may take.
 pub const MAX_STEPS: usize = 2_000_000;

@@ -90,7 +90,7 @@ impl fmt::Display for SimError {
                 f,
                 "your law.v{} = {} gave {} at t = {:.5} s, from {}",
                 l.step,
-                crate::quote::excerpt(&l.text),
+                crate::text::excerpt(&l.text),
                 l.value,
                 l.t,
                 l.signals

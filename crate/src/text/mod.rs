@@ -1,4 +1,10 @@
-//! The ground floor for text: how the core writes numbers into its messages and quotes user input
-//! (one rule each, used by every module above), and its one percent codec.
+//! The ground floor for text, used by every module above it: how the core writes numbers into
+//! its messages and figures (`numbers`), how it quotes user input (`quote`), and its one percent
+//! codec (`percent`).
 
+mod numbers;
 pub mod percent;
+mod quote;
+
+pub use numbers::{rounded, short, significant, time_text};
+pub use quote::{escape_invisible, excerpt, is_invisible, EXCERPT_CHARS};

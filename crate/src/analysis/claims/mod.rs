@@ -78,7 +78,7 @@ pub fn parse_table(text: &str) -> Result<Vec<Measurement>, String> {
         Some((_, h)) => {
             return Err(format!(
                 "line 1 is '{}': expected the header '{HEADER}'",
-                crate::quote::excerpt(h)
+                crate::text::excerpt(h)
             ))
         }
         None => {

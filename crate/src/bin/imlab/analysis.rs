@@ -6,7 +6,8 @@ use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
     SweepSettings, MAX_SEED_RUNS,
 };
-use imlab::scenario::{excerpt, Scenario};
+use imlab::scenario::Scenario;
+use imlab::text::excerpt;
 use std::io::Write;
 
 /// The frequencies (Hz) of `--freqs`, increasing and distinct.

@@ -2,7 +2,7 @@
 
 use crate::output::{stdout_stop, to_stderr, Stop};
 use imlab::analysis::claims;
-use imlab::scenario::excerpt;
+use imlab::text::excerpt;
 use std::io::{self, IsTerminal, Write};
 
 /// Measures every row of the tables at `paths` and prints them, checks them, or writes them back.

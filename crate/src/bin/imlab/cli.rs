@@ -2,7 +2,8 @@
 
 use clap::{Args, Parser, Subcommand};
 use imlab::analysis::SweepSettings;
-use imlab::scenario::{excerpt, Scenario};
+use imlab::scenario::Scenario;
+use imlab::text::excerpt;
 
 /// Run IM Lab scenarios: speed-sensorless induction-motor control (Zhang et al. 2015).
 #[derive(Parser)]

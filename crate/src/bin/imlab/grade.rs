@@ -3,7 +3,7 @@
 use crate::output::{stdout_stop, to_stderr, Stop};
 use imlab::challenge::grade::{self, ClassRow, Graded};
 use imlab::challenge::Challenge;
-use imlab::scenario::excerpt;
+use imlab::text::excerpt;
 use std::fs::OpenOptions;
 use std::io::{self, ErrorKind, Read, Seek, SeekFrom, Write};
 

@@ -14,7 +14,7 @@ mod run;
 use clap::error::{ContextKind, ContextValue};
 use clap::Parser;
 use cli::{number, Cli, Command};
-use imlab::scenario::excerpt;
+use imlab::text::excerpt;
 use output::{stdout_stop, to_stderr, Stop};
 use std::io::{self, BufWriter, Write};
 use std::process::ExitCode;

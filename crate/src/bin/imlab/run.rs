@@ -3,8 +3,9 @@
 use crate::output::{stdout_stop, to_stderr, Stop};
 use imlab::control::formula;
 use imlab::record::{Figure, Unreached, WarningKind};
-use imlab::scenario::{excerpt, Scenario, PRESETS};
+use imlab::scenario::{Scenario, PRESETS};
 use imlab::sim::Simulation;
+use imlab::text::excerpt;
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 

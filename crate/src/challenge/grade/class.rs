@@ -21,7 +21,7 @@
 //!   the extra ones to its link, which was written unquoted and split at its own commas
 //!   (`robust=a,b`); one with fewer fields, or without a link, is a row graded `malformed: …`.
 
-use crate::quote::excerpt;
+use crate::text::excerpt;
 use serde::{Deserialize, Serialize};
 
 /// A class's file, read: the submissions to grade, in file order.

@@ -21,8 +21,8 @@ mod class;
 pub use class::{read_class, Class, ClassRow};
 
 use super::{judge, measure, Challenge, Measures, Verdict};
-use crate::quote::{escape_invisible, excerpt};
 use crate::sim::Simulation;
+use crate::text::{escape_invisible, excerpt};
 use serde::Serialize;
 
 /// One graded submission: its line, the link, and the status with the verdict (None unless the

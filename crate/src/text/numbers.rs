@@ -1,4 +1,15 @@
-//! Numbers as the figures' texts write them.
+//! Numbers as the core's texts write them: a message's value (`short`), a figure's digits.
+
+/// `v` for a message: the codec's shortest form, or scientific notation where that is long
+/// (5e-324 rather than 324 digits).
+pub fn short(v: f64) -> String {
+    let plain = format!("{v}");
+    if plain.len() > 12 {
+        format!("{v:e}")
+    } else {
+        plain
+    }
+}
 
 /// `v` rounded to `digits` significant digits, the integer part included (179361 → 179400 at 4).
 pub fn rounded(v: f64, digits: i32) -> String {
