@@ -7,8 +7,7 @@
 use crate::record::WarningKind;
 use crate::scenario::{Scenario, MAX_SEED};
 use crate::sim::Simulation;
-use crate::text::excerpt;
-use crate::text::short;
+use crate::text::{csv, excerpt, short};
 use serde::{Deserialize, Serialize};
 
 /// The figures a map keeps of each run, by their `imlab metrics` names.
@@ -567,7 +566,7 @@ pub fn csv_row(map: &Map, cell: &Cell) -> String {
         cols.extend(s.iter().map(|v| field(*v)));
     }
     cols.push(cell.scenario.clone());
-    cols.join(",") + "\n"
+    csv::line(&cols) + "\n"
 }
 
 /// The whole CSV of a map: a comment line with the map's text and seeds, the header, one row a

@@ -3,6 +3,7 @@
 
 use crate::scenario::{Scenario, ScenarioError, MAX_SEED};
 use crate::sim::Simulation;
+use crate::text::csv;
 use serde::{Deserialize, Serialize};
 
 /// Figures of one seed's run: those of its [`crate::record::Metrics`], by their names.
@@ -171,7 +172,7 @@ pub fn seeds_csv(results: &[SeedResult]) -> String {
     let mut out =
         String::from("seed,tracking_rms,speed_estimate_error_rms,tracking_peak,failure\n");
     for r in results {
-        let failure = r.failure.as_deref().unwrap_or("").replace(',', ";");
+        let failure = csv::field(r.failure.as_deref().unwrap_or(""));
         out += &format!(
             "{},{},{},{},{failure}\n",
             r.seed, r.tracking_rms, r.speed_estimate_error_rms, r.tracking_peak
@@ -203,6 +204,22 @@ mod tests {
         assert!(
             runs[0].result.tracking_rms != runs[1].result.tracking_rms,
             "seeds change the noise"
+        );
+    }
+
+    #[test]
+    fn a_failure_keeps_its_words_in_its_csv_field() {
+        let failed = SeedResult {
+            seed: 3,
+            tracking_rms: f64::NAN,
+            speed_estimate_error_rms: f64::NAN,
+            tracking_peak: f64::NAN,
+            failure: Some("diverged at t = 0.1 s: x1 = inf, \"speed\"".to_string()),
+        };
+        let csv = seeds_csv(&[failed]);
+        assert_eq!(
+            csv.lines().nth(1),
+            Some("3,NaN,NaN,NaN,\"diverged at t = 0.1 s: x1 = inf, \"\"speed\"\"\"")
         );
     }
 }

@@ -5,7 +5,7 @@ use crate::control::Reference;
 use crate::record::Row;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::sim::Simulation;
-use crate::text::short;
+use crate::text::{csv, short};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -417,7 +417,7 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
          settled,gain_change_db,phase_change_deg,peak_current_a\n",
     );
     for p in points {
-        let failure = p.failure.as_deref().unwrap_or("").replace(',', ";");
+        let failure = csv::field(p.failure.as_deref().unwrap_or(""));
         out += &format!(
             "{},{},{},{},{},{},{},{failure},{},{},{},{}\n",
             p.freq,

@@ -4,8 +4,7 @@
 use super::codec::{apply_overrides, number, parse_parts, pct_encode, sort_small};
 use super::{Allowed, Challenge, ChallengeError};
 use crate::scenario::Scenario;
-use crate::text::excerpt;
-use crate::text::short;
+use crate::text::{excerpt, short};
 use serde::Serialize;
 
 /// A challenge with the values a student set.

@@ -1,7 +1,8 @@
 //! The ground floor for text, used by every module above it: how the core writes numbers into
-//! its messages and figures (`numbers`), how it quotes user input (`quote`), and its one percent
-//! codec (`percent`).
+//! its messages and figures (`numbers`), how it quotes user input (`quote`), its one percent
+//! codec (`percent`) and its one CSV escaping rule (`csv`).
 
+pub mod csv;
 mod numbers;
 pub mod percent;
 mod quote;

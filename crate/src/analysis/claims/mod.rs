@@ -263,10 +263,15 @@ pub fn written(value: f64) -> String {
 
 /// The row of `m` as the table writes it, with `value`.
 pub fn table_line(m: &Measurement, value: &str) -> String {
-    format!(
-        "{},{},{},{},{},{},{}",
-        m.id, m.scenario_text, m.figure_text, m.seeds_text, m.statistic_text, m.show, value
-    )
+    crate::text::csv::line(&[
+        &m.id,
+        &m.scenario_text,
+        &m.figure_text,
+        &m.seeds_text,
+        &m.statistic_text,
+        &m.show,
+        value,
+    ])
 }
 
 #[cfg(test)]

@@ -22,7 +22,7 @@ pub use class::{read_class, Class, ClassRow};
 
 use super::{judge, measure, Challenge, Measures, Verdict};
 use crate::sim::Simulation;
-use crate::text::{escape_invisible, excerpt};
+use crate::text::{csv, escape_invisible, excerpt};
 use serde::Serialize;
 
 /// One graded submission: its line, the link, and the status with the verdict (None unless the
@@ -101,16 +101,6 @@ pub fn grade_row(c: &Challenge, row: &ClassRow) -> Graded {
     }
 }
 
-/// `text` as one CSV field: quoted (with inner quotes doubled) when it holds a comma, a quote
-/// or a line break.
-fn csv_field(text: &str) -> String {
-    if text.contains([',', '"', '\n', '\r']) {
-        format!("\"{}\"", text.replace('"', "\"\""))
-    } else {
-        text.to_string()
-    }
-}
-
 /// The characters a spreadsheet may take as the start of a formula.
 const FORMULA_STARTS: [char; 10] = [
     '=', '+', '-', '@', '\t', '\r', '\u{ff1d}', '\u{ff0b}', '\u{ff0d}', '\u{ff20}',
@@ -121,9 +111,9 @@ const FORMULA_STARTS: [char; 10] = [
 pub fn text_cell(text: &str) -> String {
     let shown = escape_invisible(text);
     if text.starts_with(FORMULA_STARTS) {
-        csv_field(&format!("'{shown}"))
+        csv::field(&format!("'{shown}")).into_owned()
     } else {
-        csv_field(&shown)
+        csv::field(&shown).into_owned()
     }
 }
 
