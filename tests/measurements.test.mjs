@@ -81,6 +81,24 @@ function untyped(text, givens) {
   return numbersIn(rest);
 }
 
+/**
+ * Every condition holds on the table, and every row of the table is named by the text or a
+ * condition.
+ */
+function holdsAndUsesAll(own, named, conditions) {
+  assert.deepEqual(
+    conditions.filter((c) => !holds(c, own)),
+    [],
+    'conditions that do not hold on the table',
+  );
+  const used = (id) => named.has(id) || conditions.some((c) => c.match(/[A-Za-z][\w.]*/g).includes(id));
+  assert.deepEqual(
+    [...own.keys()].filter((id) => !used(id)),
+    [],
+    'measurements no text or condition uses',
+  );
+}
+
 // What a guide may number besides its measurements: its references to the paper and to itself
 // (Section 3.1, Theorem 4.6, Fig 3, lessons 4, 11 and 12, step 1, seeds 1 to 30) and its lists' numbers.
 const REFERENCE =
@@ -149,17 +167,7 @@ for (const { name, file, texts, holds: conditions, givens } of MEASURED) {
     const named = new Set(texts.flatMap(namedIn));
     for (const id of named) assert.ok(own.has(id), `${id}: not in ${file}`);
     for (const text of texts) render(text, own);
-    assert.deepEqual(
-      conditions.filter((c) => !holds(c, own)),
-      [],
-      'conditions that do not hold on the table',
-    );
-    const used = (id) => named.has(id) || conditions.some((c) => c.match(/[A-Za-z][\w.]*/g).includes(id));
-    assert.deepEqual(
-      [...own.keys()].filter((id) => !used(id)),
-      [],
-      'measurements no text or condition uses',
-    );
+    holdsAndUsesAll(own, named, conditions);
     for (const g of givens)
       assert.ok(
         texts.some((t) => t.includes(g)),
@@ -184,17 +192,7 @@ for (const { name, doc, table } of DOCS) {
       renderDoc(text, own) === text,
       `its numbers differ from the table: node scripts/measured-docs.mjs --write`,
     );
-    assert.deepEqual(
-      conditions.filter((c) => !holds(c, own)),
-      [],
-      'conditions that do not hold on the table',
-    );
-    const used = (id) => named.has(id) || conditions.some((c) => c.match(/[A-Za-z][\w.]*/g).includes(id));
-    assert.deepEqual(
-      [...own.keys()].filter((id) => !used(id)),
-      [],
-      'measurements no text or condition uses',
-    );
+    holdsAndUsesAll(own, named, conditions);
     const read = prose(measuredPart(text));
     for (const g of givens) assert.ok(read.includes(g), `given '${g}' is not in the prose`);
     assert.deepEqual(
