@@ -1,5 +1,6 @@
 // The page quotes address parts on its main thread, which holds no instance of the core: its
-// `excerpt` (web/ui/url.js) must write what the core's (crate/src/quote.rs, the CLI's) writes.
+// `excerpt` (web/ui/url.js) must write what the core's (crate/src/text/quote.rs, the CLI's)
+// writes.
 // Checked in Node against the core's binding for every code point, in strings of a few at a time
 // (escaping is per character), and for the cut of long input.
 import { test } from 'node:test';

@@ -63,9 +63,9 @@ const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
 
 /**
  * `text` as a message quotes it (address parts can be any length and hold any character), as the
- * core's `excerpt` (crate/src/quote.rs) does: the characters that do not show or that reorder the
- * text around them escaped as Rust writes them (`\n`, `\u{202e}`), cut to 40 characters with the
- * full length noted. The main thread holds no instance of the core (one there would compile the
+ * core's `excerpt` (crate/src/text/quote.rs) does: the characters that do not show or that
+ * reorder the text around them escaped as Rust writes them (`\n`, `\u{202e}`), cut to 40
+ * characters with the full length noted. The main thread holds no instance of the core (one there would compile the
  * module a second time before the worker starts, delaying the first run), so tests/quote.test.mjs
  * checks this against the core's, exported through the bindings, for every code point.
  */

@@ -78,7 +78,7 @@ pub struct Transient {
 /// - (e) the speed estimate's start-up error: the end of the first full 5 ms window whose RMS
 ///   speed estimation error |ω̂ − ω| is within twice its RMS over the second quarter or the
 ///   second half of the run, whichever is less, and stays so for 5 ms; left out as (d) is, and
-///   when that error is 0 throughout (a perfect observer),
+///   when the lesser of those levels is 0 (a perfect observer's error is 0 throughout),
 ///
 /// clamped to at most half the recorded run, so that a window of samples always remains after
 /// it, and to the scenario's first event after the controller's own start-up (the reference's
@@ -107,7 +107,7 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
             .max(t_of(estimates))
             .max(t_of(flux))
             .max(t_of(speed));
-    let event = first_event(s).filter(|&e| e > t_controller && e < later.min(half));
+    let event = first_event(s, t_controller).filter(|&e| e < later.min(half));
     let target = event.unwrap_or(later).min(half);
     // The rows are in time order and the last one is at or after `half`.
     let index = rows.first_at(target).min(len - 1);
@@ -328,10 +328,10 @@ fn converged(rows: &dyn Samples, levels: &Levels) -> (Option<f64>, Option<f64>, 
     )
 }
 
-/// The time of the first change the scenario makes to the drive after t = 0: the reference's
-/// step or the start of its ramp, or the load step (none for a constant or sine reference and no
-/// load step).
-fn first_event(s: &Scenario) -> Option<f64> {
+/// The time of the first change the scenario makes to the drive after `after` (s): the
+/// reference's step or the start of its ramp, or the load step (none for a constant or sine
+/// reference and no load step after it).
+fn first_event(s: &Scenario, after: f64) -> Option<f64> {
     let reference = match s.reference {
         Reference::Step { size, time, .. } if size != 0.0 => Some(time),
         Reference::Ramp {
@@ -343,10 +343,11 @@ fn first_event(s: &Scenario) -> Option<f64> {
         _ => None,
     };
     let load = (s.load_step.torque != 0.0).then_some(s.load_step.time);
-    match (reference, load) {
-        (Some(a), Some(b)) => Some(a.min(b)),
-        (a, b) => a.or(b),
-    }
+    [reference, load]
+        .into_iter()
+        .flatten()
+        .filter(|&t| t > after)
+        .reduce(f64::min)
 }
 
 /// The last of rows `0..len` whose band is not `settled`. The rows whose band is settled
@@ -570,11 +571,17 @@ mod tests {
         assert!(t
             .reason
             .contains("cut at the scenario's first event, at 50 ms"));
-        // An event before the controller's own start-up does not cut it.
+        // An event before the controller's own start-up does not cut it, and a later one still
+        // does.
         if let Reference::Step { ref mut time, .. } = s.reference {
             *time = 0.002;
         }
-        assert!(transient(&s, &rows).1 > 80);
+        // (the estimates converge at 81 ms, then 5/1200 s: 86 ms).
+        assert_eq!(transient(&s, &rows).1, 86);
+        s.load_step.time = 0.07;
+        s.load_step.torque = 2.0;
+        assert_eq!(transient(&s, &rows).1, 70);
+        s.load_step.torque = 0.0;
         // The load step counts too; a step of size 0 does not.
         if let Reference::Step { ref mut size, .. } = s.reference {
             *size = 0.0;

@@ -16,7 +16,6 @@ pub(crate) use fields::parse_number;
 pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
 pub use presets::{preset, Preset, PRESETS};
 pub use validate::{MAX_STEPS, MAX_WORK};
-// The codec's errors quote input with these.
 
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::{Limit, Shape};

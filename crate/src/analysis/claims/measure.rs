@@ -153,6 +153,9 @@ fn figure_value(figures: &[Figure], name: &str) -> Result<f64, String> {
 /// −1, 0 or 1 as the mean NIS lies below, inside or above its 95 % band.
 fn nis_side(figures: &[Figure]) -> Result<f64, String> {
     let nis = figure_value(figures, "mean_nis")?;
+    if !nis.is_finite() {
+        return Err("the mean NIS is not finite".to_string());
+    }
     Ok(if nis < figure_value(figures, "mean_nis_low")? {
         -1.0
     } else if nis > figure_value(figures, "mean_nis_high")? {
