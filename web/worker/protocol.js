@@ -33,9 +33,9 @@ export {};
 
 /**
  * A scenario as the core describes it (the core's `describe`): its canonical text in `encoded`,
- * its fields and the keys it changes of its preset; `rejected` lists the fields a `recover`
- * dropped. The core's binding documents the other fields.
- * @typedef {{encoded: string, rejected?: {key: string, message: string}[], [field: string]: any}} Info
+ * its fields and the keys it changes of its preset; `rejected` holds the messages of the fields a
+ * `recover` dropped, each naming its field. The core's binding documents the other fields.
+ * @typedef {{encoded: string, rejected?: string[], [field: string]: any}} Info
  */
 
 /**
