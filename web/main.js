@@ -1,8 +1,10 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 // This file composes the page's parts, each in its own module, and wires them to each other.
 import { Plots, PLOTS } from './plots/plots.js';
-import { buildGroups, fieldValue } from './run/controls.js';
-import { challengeFromUrl, excerpt, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
+import { buildGroups } from './run/controls.js';
+import { fieldValue } from './ui/scenario.js';
+import { challengeFromUrl, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
+import { excerpt } from './ui/quote.js';
 import { Analysis } from './analysis/analysis.js';
 import { Walkthrough } from './teaching/walkthrough.js';
 import { loadTex } from './teaching/tex.js';

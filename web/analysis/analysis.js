@@ -1,7 +1,7 @@
 // Analysis tab: frequency-response sweeps and seed sweeps run as independent jobs on a pool of
 // workers (one per core); every figure is computed by the core in those workers.
 import uPlot from '../../vendor/uPlot.esm.js';
-import { excerpt } from '../ui/url.js';
+import { excerpt } from '../ui/quote.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { fittedRange } from '../plots/ranges.js';

@@ -1,7 +1,8 @@
 // A tool of the Analysis tab that a shared link holds in its fragment runs once, after the page's
 // first run.
 import { say } from '../ui/page.js';
-import { excerpt, fragment } from '../ui/url.js';
+import { fragment } from '../ui/url.js';
+import { excerpt } from '../ui/quote.js';
 
 /**
  * Reads the fragment `name` now and returns `afterRun()`: the first call fills the tool's form from

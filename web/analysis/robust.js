@@ -5,7 +5,7 @@
 // finished.
 import { $ } from '../ui/page.js';
 import { Pool } from '../client/pool.js';
-import { download } from '../run/export.js';
+import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { fillMapForm, mapFormText } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';

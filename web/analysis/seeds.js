@@ -1,8 +1,8 @@
 // The Analysis tab's seed runs: the current scenario over many noise seeds from the seeds form,
 // its progress and status line, the bands it draws and its CSV download.
 import { $ } from '../ui/page.js';
-import { fieldValue } from '../run/controls.js';
-import { download } from '../run/export.js';
+import { fieldValue } from '../ui/scenario.js';
+import { download } from '../ui/dom.js';
 
 /** Wires the seeds form: `analysis` runs the seeds and draws their bands, `framing()` fits them. */
 export function createSeeds({ state, analysis, framing }) {

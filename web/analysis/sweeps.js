@@ -2,7 +2,7 @@
 // and their CSV download; the seed runs beside them (seeds.js). A link's sweep (`#sweep=`) runs once.
 import { $ } from '../ui/page.js';
 import { formatSweep, isCount, parseSweep } from './analysis.js';
-import { download } from '../run/export.js';
+import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { runFromLink } from './from-link.js';
 import { createSeeds } from './seeds.js';

@@ -4,7 +4,7 @@
 // address then holds the student's submission link. The built-in challenges are listed in the
 // Lessons tab.
 import { $, ui } from '../ui/page.js';
-import { fieldValue } from '../run/controls.js';
+import { fieldValue } from '../ui/scenario.js';
 import { Pool } from '../client/pool.js';
 import { challengeFromUrl, holdAddress, scenarioFromUrl } from '../ui/url.js';
 import { el } from '../ui/dom.js';

@@ -1,6 +1,6 @@
 // The challenge's checklist: the core's verdict on a student's runs, written as a line and a list
 // of criteria, each with its value, its bound and its mark.
-import { excerpt } from '../ui/url.js';
+import { excerpt } from '../ui/quote.js';
 import { el } from '../ui/dom.js';
 
 /** A measured value as the checklist writes it. */

@@ -1,7 +1,7 @@
 // The compose form's rows: the fields a student may change with their ranges, the criteria on
 // the run's figures with their bounds, and the robustness variants. Their defaults are a
 // starting point for the lecturer; the core checks and writes the challenge they describe.
-import { fieldValue } from '../run/controls.js';
+import { fieldValue } from '../ui/scenario.js';
 import { el } from '../ui/dom.js';
 
 /** `x` to two significant digits, as the codec writes numbers. */

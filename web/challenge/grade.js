@@ -7,7 +7,7 @@
 import { $ } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
-import { download } from '../run/export.js';
+import { download } from '../ui/dom.js';
 
 /** @import * as P from '../worker/protocol.js' */
 

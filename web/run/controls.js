@@ -193,8 +193,3 @@ export function forwardKnob(form, knob) {
   write(target, valueOf(knob));
   form.dispatchEvent(new Event('change'));
 }
-
-/** The value the form holds for `key`, as the codec writes it. */
-export function fieldValue(info, key) {
-  return info.fields.find((f) => f.key === key)?.value ?? null;
-}

@@ -4,17 +4,7 @@ import { count } from '../plots/numbers.js';
 import { say, ui } from '../ui/page.js';
 import { png } from './png.js';
 import { presetNamed } from '../ui/url.js';
-
-// The browser reads a blob: URL while it saves the download, which for a CSV of a gigabyte
-// takes seconds; revoking the URL earlier would fail the download.
-const REVOKE_AFTER_MS = 120_000;
-
-/** Saves `blob` as a download named `name`. */
-export function download(blob, name) {
-  const a = Object.assign(document.createElement('a'), { href: URL.createObjectURL(blob), download: name });
-  a.click();
-  setTimeout(() => URL.revokeObjectURL(a.href), REVOKE_AFTER_MS);
-}
+import { download } from '../ui/dom.js';
 
 /** The export buttons; the CSV export under way is `state.export`: {serial, parts: [Blob]}. */
 export function createExport({ client, state, plots, walkthrough }) {

@@ -3,7 +3,8 @@
 import { count, pageNumbers } from '../plots/numbers.js';
 import uPlot from '../../vendor/uPlot.esm.js';
 import { $, say, ui } from '../ui/page.js';
-import { decodePins, excerpt, fragment, listed, setFragment } from '../ui/url.js';
+import { decodePins, fragment, setFragment } from '../ui/url.js';
+import { excerpt, listed } from '../ui/quote.js';
 
 // A pins fragment longer than this is refused whole (characters): four pins of the longest
 // scenario the codec accepts (16 KiB each) fit.

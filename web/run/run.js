@@ -2,8 +2,9 @@
 // and the plots, figures and walkthrough it fills when it is done.
 import { count } from '../plots/numbers.js';
 import { $, say, ui } from '../ui/page.js';
-import { fieldValue } from './controls.js';
-import { excerpt, markRun } from '../ui/url.js';
+import { fieldValue } from '../ui/scenario.js';
+import { markRun } from '../ui/url.js';
+import { excerpt } from '../ui/quote.js';
 
 /**
  * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a

@@ -4,7 +4,8 @@
 import { $, say, ui } from '../ui/page.js';
 import { composeScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
 import { WorkerFailed } from '../client/run-client.js';
-import { DEFAULT_SCENARIO, listed, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
+import { DEFAULT_SCENARIO, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
+import { listed } from '../ui/quote.js';
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
 

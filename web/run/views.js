@@ -1,7 +1,7 @@
 // What the plots ask the worker about the last run: a zoom window, the whole run again, the
 // state at one time (inspect), and the walkthrough's own view and predictor comparison.
 import { $ } from '../ui/page.js';
-import { fieldValue } from './controls.js';
+import { fieldValue } from '../ui/scenario.js';
 
 export function createViews({ client, state, plots, walkthrough }) {
   const plotSets = [plots, walkthrough.plots];

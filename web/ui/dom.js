@@ -1,4 +1,4 @@
-// The page's DOM helpers: making an element, and putting work off until the page is idle.
+// The page's DOM helpers: making an element, saving a download, and putting work off until the page is idle.
 
 /** A new `tag` element with `props` assigned and `children` appended. */
 export function el(tag, props = {}, children = []) {
@@ -15,4 +15,15 @@ export function el(tag, props = {}, children = []) {
 export function whenIdle(task) {
   if (globalThis.requestIdleCallback) requestIdleCallback(task, { timeout: 1000 });
   else setTimeout(task, 50);
+}
+
+// The browser reads a blob: URL while it saves the download, which for a CSV of a gigabyte
+// takes seconds; revoking the URL earlier would fail the download.
+const REVOKE_AFTER_MS = 120_000;
+
+/** Saves `blob` as a download named `name`. */
+export function download(blob, name) {
+  const a = el('a', { href: URL.createObjectURL(blob), download: name });
+  a.click();
+  setTimeout(() => URL.revokeObjectURL(a.href), REVOKE_AFTER_MS);
 }

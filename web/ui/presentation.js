@@ -3,7 +3,8 @@
 // (`#embed=PLOT,PLOT...`) that shows a few plots in a frame of any size.
 import { $, say, ui } from './page.js';
 import { PLOTS } from '../plots/plots.js';
-import { excerpt, fragment, setFragment } from './url.js';
+import { fragment, setFragment } from './url.js';
+import { excerpt } from './quote.js';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
 // The least height of an embedded chart, however small its frame (px): a plot area of about

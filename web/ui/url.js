@@ -1,7 +1,6 @@
 // The address bar holds the current scenario in the core's compact codec (`?v=1&preset=...`).
 // History entries carry {scenario, ran}: an edit replaces an entry that has not been run yet and
 // pushes a new one after a run, so Back and Forward move between scenarios that were run.
-import { count } from '../plots/numbers.js';
 
 export const DEFAULT_SCENARIO = 'v=1&preset=sine200';
 
@@ -56,37 +55,6 @@ function fragmentEntries() {
 export function fragment(key) {
   return fragmentEntries().find(([k]) => k === key)?.[1] ?? null;
 }
-
-// The characters a message escapes: the Unicode categories Cc, Cf, Zl and Zp, as the core's.
-const INVISIBLE = /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u;
-const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
-
-/**
- * `text` as a message quotes it (address parts can be any length and hold any character), as the
- * core's `excerpt` (crate/src/text/quote.rs) does: the characters that do not show or that
- * reorder the text around them escaped as Rust writes them (`\n`, `\u{202e}`), cut to 40
- * characters with the full length noted. The main thread holds no instance of the core (one there would compile the
- * module a second time before the worker starts, delaying the first run), so tests/quote.test.mjs
- * checks this against the core's, exported through the bindings, for every code point.
- */
-export function excerpt(text, max = 40) {
-  const chars = [...text];
-  const shown = chars
-    .slice(0, max)
-    .map((c) => (INVISIBLE.test(c) ? (ESCAPES[c] ?? `\\u{${c.codePointAt(0).toString(16)}}`) : c))
-    .join('');
-  return chars.length > max ? `${shown}… (${chars.length} characters)` : shown;
-}
-
-/**
- * The first few `items` joined by `sep`, and how many more there are: a message quotes a bounded
- * number of parts of an address, however many it holds.
- */
-export function listed(items, sep = ', ') {
-  const shown = items.slice(0, LISTED).join(sep);
-  return items.length > LISTED ? `${shown} … and ${count(items.length - LISTED)} more` : shown;
-}
-const LISTED = 5;
 
 /**
  * The pinned scenarios of a `pins` fragment value (`a|b|...`, each URI-encoded), and the parts
