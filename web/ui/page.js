@@ -1,39 +1,47 @@
 // The page's elements, looked up once, and the message line every part of the page reports in.
 
 /**
- * The element of index.html with `id`. Typed loosely: its kind (input, select, form, …) is the
- * HTML's, which the compiler does not read.
+ * The element of index.html with `id`, of the kind `kind` (any element by default). Throws,
+ * naming the id, when the page has none or one of another kind, so a renamed element fails
+ * where it is looked up rather than where it is first used.
+ * @template {abstract new (...args: any) => HTMLElement} [K=typeof HTMLElement]
  * @param {string} id
- * @returns {any}
+ * @param {K} [kind]
+ * @returns {InstanceType<K>}
  */
-export const $ = (id) => document.getElementById(id);
+export function $(id, kind) {
+  const e = document.getElementById(id);
+  const want = kind ?? HTMLElement;
+  if (!(e instanceof want)) throw new Error(`index.html has no ${want.name} with id '${id}'`);
+  return /** @type {InstanceType<K>} */ (e);
+}
 
 export const ui = {
-  preset: $('preset'),
+  preset: $('preset', HTMLSelectElement),
   presetDoc: $('preset-doc'),
-  form: $('settings'),
-  run: $('run'),
-  cancel: $('cancel'),
-  progress: $('progress'),
+  form: $('settings', HTMLFormElement),
+  run: $('run', HTMLButtonElement),
+  cancel: $('cancel', HTMLButtonElement),
+  progress: $('progress', HTMLProgressElement),
   status: $('status'),
   message: $('message'),
-  copy: $('copy-link'),
-  csv: $('export-csv'),
-  png: $('export-png'),
+  copy: $('copy-link', HTMLButtonElement),
+  csv: $('export-csv', HTMLButtonElement),
+  png: $('export-png', HTMLButtonElement),
   plots: $('plots'),
-  present: $('present'),
+  present: $('present', HTMLButtonElement),
   inspect: $('inspect'),
-  settingsToggle: $('settings-toggle'),
-  embed: $('copy-embed'),
-  fullRun: $('full-run'),
-  fit: $('fit'),
+  settingsToggle: $('settings-toggle', HTMLButtonElement),
+  embed: $('copy-embed', HTMLButtonElement),
+  fullRun: $('full-run', HTMLButtonElement),
+  fit: $('fit', HTMLInputElement),
   fitLabel: $('fit-label'),
   unrun: $('unrun'),
   figures: $('figures'),
   consistency: $('consistency'),
   keyFigures: $('key-figures'),
   figuresBar: /** @type {HTMLElement} */ (document.querySelector('.figures-bar')),
-  figuresToggle: $('figures-toggle'),
+  figuresToggle: $('figures-toggle', HTMLButtonElement),
 };
 
 /** Shows `text` in the message line as an error or as `info`; an empty text clears it. */
