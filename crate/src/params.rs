@@ -4,6 +4,11 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Physical parameters of the induction motor and its load (SI units).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MotorParams {
     /// Stator resistance R_s (Ω).
@@ -95,6 +100,11 @@ impl MotorParams {
 }
 
 /// The lumped parameters of model (2); the paper has no a4.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Lumped {
     /// a1 = μ = 3 n_p M / (2 J L_r) (torque constant over inertia, 1/(kg m²)): a1·(x3·x4 − x2·x5)

@@ -6,6 +6,7 @@ use crate::scenario::{Scenario, PRESETS};
 use crate::sim;
 use js_sys::{Array, Float64Array};
 use serde::Serialize;
+use tsify::{Ts, Tsify};
 use wasm_bindgen::prelude::*;
 use wasm_bindgen::JsCast;
 
@@ -68,8 +69,12 @@ impl Simulation {
 
     /// Before the first step: computes the whole run's view of `groups` (an array of arrays of
     /// column names) in `buckets` buckets while it runs, so that the first plot needs no replay.
-    pub fn keep_overview(&mut self, groups: JsValue, buckets: u32) -> Result<(), JsValue> {
-        let groups: Vec<Vec<String>> = from_js(groups)?;
+    pub fn keep_overview(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "string[][]")] groups: JsValue,
+        buckets: u32,
+    ) -> Result<(), JsValue> {
+        let groups: Vec<Vec<String>> = read_js(groups)?;
         self.inner
             .keep_overview(&groups, buckets as usize)
             .map_err(js_error)
@@ -165,8 +170,15 @@ impl Simulation {
 
     /// M4 envelopes of each group of columns (an array of arrays of names) over t in [t0, t1] in
     /// `buckets` buckets: an array, per group, of `Float64Array`s [t, col1, col2, ...].
-    pub fn view(&self, groups: JsValue, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
-        let groups: Vec<Vec<String>> = from_js(groups)?;
+    #[wasm_bindgen(unchecked_return_type = "Float64Array[][]")]
+    pub fn view(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "string[][]")] groups: JsValue,
+        t0: f64,
+        t1: f64,
+        buckets: u32,
+    ) -> Result<Array, JsValue> {
+        let groups: Vec<Vec<String>> = read_js(groups)?;
         let views = self
             .inner
             .view(&groups, t0, t1, buckets as usize)
@@ -183,6 +195,7 @@ impl Simulation {
 
     /// The unknown terms d̃2, d̃4 of steps 2 and 4 evaluated from the simulated truth over t in
     /// [t0, t1], as one M4 envelope in `buckets` buckets: `Float64Array`s [t, d̃2, d̃4].
+    #[wasm_bindgen(unchecked_return_type = "Float64Array[]")]
     pub fn disturbances(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
         float_arrays(
             self.inner
@@ -194,6 +207,7 @@ impl Simulation {
     /// The residual of each step's designed dynamics, v_i − v_i,paper, over t in [t0, t1], as
     /// one M4 envelope in `buckets` buckets: `Float64Array`s [t, r1, r2, r3, r4]; throws for a
     /// scenario without its own laws.
+    #[wasm_bindgen(unchecked_return_type = "Float64Array[]")]
     pub fn law_residuals(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
         float_arrays(
             self.inner
@@ -204,7 +218,7 @@ impl Simulation {
 
     /// Every recorded value and the Kalman gain at the recorded sample nearest to `t` (s),
     /// replayed from the checkpoint before it.
-    pub fn inspect(&self, t: f64) -> Result<JsValue, JsValue> {
+    pub fn inspect(&self, t: f64) -> Result<Ts<crate::sim::Snapshot>, JsValue> {
         to_js(&self.inner.inspect_at(t).map_err(js_error)?)
     }
 
@@ -219,16 +233,16 @@ impl Simulation {
     }
 
     /// How V(t) compares with the bound (59): `{bound, samples, outside, outside_saturated, ...}`.
-    pub fn stability(&self) -> Result<JsValue, JsValue> {
-        to_js(&self.inner.stability())
+    pub fn stability(&self) -> Result<Option<Ts<crate::record::Stability>>, JsValue> {
+        self.inner.stability().as_ref().map(to_js).transpose()
     }
 
     /// RMS tracking and estimation errors, mean NIS and saturation of the run, by the report's
     /// names where it gives the figure too: `{transient_end, tracking_rms, tracking_peak,
     /// speed_estimate_error_rms, flux_estimate_error_rms, mean_nis, saturated_share}`, or null
     /// when nothing is recorded.
-    pub fn metrics(&self) -> Result<JsValue, JsValue> {
-        to_js(&self.inner.metrics())
+    pub fn metrics(&self) -> Result<Option<Ts<crate::record::Metrics>>, JsValue> {
+        self.inner.metrics().as_ref().map(to_js).transpose()
     }
 
     /// Where the start-up transient ends and the figures of the run so far:
@@ -236,7 +250,7 @@ impl Simulation {
     /// unreached: [{name, label, index, window, end, text}], warnings: [{kind, text}]}`, the
     /// figures as `imlab metrics` prints them (null when nothing is recorded), with the figures
     /// the run had not reached by its end in words.
-    pub fn report(&self) -> Result<JsValue, JsValue> {
+    pub fn report(&self) -> Result<Ts<crate::record::Report>, JsValue> {
         to_js(&self.inner.report())
     }
 
@@ -251,15 +265,21 @@ impl Simulation {
     }
 }
 
+/// A preset as the page lists it.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct PresetInfo {
+pub struct PresetInfo {
     name: &'static str,
     description: &'static str,
 }
 
 /// Presets as `[{name, description}]`.
 #[wasm_bindgen]
-pub fn presets() -> Result<JsValue, JsValue> {
+pub fn presets() -> Result<Vec<Ts<PresetInfo>>, JsValue> {
     let list: Vec<PresetInfo> = PRESETS
         .iter()
         .map(|p| PresetInfo {
@@ -267,7 +287,7 @@ pub fn presets() -> Result<JsValue, JsValue> {
             description: p.description,
         })
         .collect();
-    to_js(&list)
+    to_js_list(&list)
 }
 
 /// An envelope's columns as `Float64Array`s.
@@ -278,15 +298,37 @@ fn float_arrays(cols: Vec<Vec<f64>>) -> Result<Array, JsValue> {
         .collect())
 }
 
-fn to_js(value: &impl Serialize) -> Result<JsValue, JsValue> {
+/// `value` as the page receives it, typed by its declaration in the bindings' `.d.ts` (written
+/// from the Rust type by `tsify`): maps as objects, `None` as null, numbers as numbers.
+fn to_js<T: Tsify + Serialize>(value: &T) -> Result<Ts<T>, JsValue> {
+    raw_js(value).map(Ts::new_unchecked)
+}
+
+/// Each of `values` as [`to_js`] writes it: an array of them.
+fn to_js_list<T: Tsify + Serialize>(values: &[T]) -> Result<Vec<Ts<T>>, JsValue> {
+    values.iter().map(to_js).collect()
+}
+
+/// A value whose type the binding names itself (`unchecked_return_type`: lists of pairs),
+/// written by the same rules.
+fn raw_js(value: &impl Serialize) -> Result<JsValue, JsValue> {
     value
         .serialize(&serde_wasm_bindgen::Serializer::json_compatible())
         .map_err(js_error)
 }
 
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+/// A scenario as the page shows it: its fields, what it changes of its preset, its motors.
 #[derive(Serialize)]
-struct Description {
+pub struct Description {
+    /// The scenario as the codec writes it.
     encoded: String,
+    /// The preset it starts from.
+    preset: String,
     steps: usize,
     /// The largest value one voltage component can take under the limit (V).
     component_limit: f64,
@@ -297,36 +339,89 @@ struct Description {
     model: Lumped,
 }
 
-/// Every field of the effective scenario (key, unit, range, value) and its compact form;
-/// throws the codec's message for a bad scenario.
+impl Description {
+    fn of(s: &Scenario) -> Result<Description, JsValue> {
+        let lumped = |p: &crate::params::MotorParams| p.lumped().map_err(js_error);
+        Ok(Description {
+            encoded: s.encode(),
+            preset: s.preset.clone(),
+            steps: s.steps(),
+            component_limit: s.limit().component_max(),
+            changed: s.changed_keys(),
+            fields: s.describe(),
+            plant: lumped(&s.plant)?,
+            model: lumped(&s.model)?,
+        })
+    }
+}
+
+/// A field of a scenario that the core refused: its key (null when the fault is not one field's)
+/// and the codec's message.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct Rejected {
+    key: Option<String>,
+    message: String,
+}
+
+impl Rejected {
+    fn of(e: &crate::scenario::ScenarioError) -> Rejected {
+        Rejected {
+            key: e.key().map(str::to_string),
+            message: e.to_string(),
+        }
+    }
+}
+
+/// The description of a scenario checked field by field, or the field at fault.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct Checked {
+    /// The description; null when the scenario is refused (a fault that is not a field's too) or, for
+    /// [`recover`], when nothing of it can be kept (a bad `v` or `preset`).
+    info: Option<Description>,
+    /// The fields refused: the one fault that refuses the scenario, or every field [`recover`]
+    /// left out.
+    rejected: Vec<Rejected>,
+}
+
+/// Checks `scenario`: its description, or the fault that refuses it (never throws for a bad
+/// scenario, so the page marks the field the core names).
 #[wasm_bindgen]
-pub fn describe(scenario: &str) -> Result<JsValue, JsValue> {
-    let s = Scenario::parse(scenario).map_err(js_error)?;
-    let lumped = |p: &crate::params::MotorParams| p.lumped().map_err(js_error);
-    to_js(&Description {
-        encoded: s.encode(),
-        steps: s.steps(),
-        component_limit: s.limit().component_max(),
-        changed: s.changed_keys(),
-        fields: s.describe(),
-        plant: lumped(&s.plant)?,
-        model: lumped(&s.model)?,
+pub fn describe(scenario: &str) -> Result<Ts<Checked>, JsValue> {
+    to_js(&match Scenario::parse(scenario) {
+        Ok(s) => Checked {
+            info: Some(Description::of(&s)?),
+            rejected: Vec::new(),
+        },
+        Err(e) => Checked {
+            info: None,
+            rejected: vec![Rejected::of(&e)],
+        },
     })
 }
 
-/// A scenario string with its bad fields left out: `{encoded, rejected: [messages]}`; throws when
-/// there is no scenario to keep (bad `v` or `preset`).
+/// `scenario` with its bad fields left out: the description of what is kept and every field
+/// left out; only the fault of a bad `v` or `preset` keeps nothing.
 #[wasm_bindgen]
-pub fn recover(scenario: &str) -> Result<JsValue, JsValue> {
-    #[derive(Serialize)]
-    struct Recovered {
-        encoded: String,
-        rejected: Vec<String>,
-    }
-    let (s, errors) = Scenario::parse_lenient(scenario).map_err(js_error)?;
-    to_js(&Recovered {
-        encoded: s.encode(),
-        rejected: errors.iter().map(|e| e.to_string()).collect(),
+pub fn recover(scenario: &str) -> Result<Ts<Checked>, JsValue> {
+    to_js(&match Scenario::parse_lenient(scenario) {
+        Ok((s, errors)) => Checked {
+            info: Some(Description::of(&s)?),
+            rejected: errors.iter().map(Rejected::of).collect(),
+        },
+        Err(e) => Checked {
+            info: None,
+            rejected: vec![Rejected::of(&e)],
+        },
     })
 }
 
@@ -351,7 +446,23 @@ pub fn columns() -> Vec<String> {
     COLUMNS.iter().map(|c| c.to_string()).collect()
 }
 
-fn from_js<T: serde::de::DeserializeOwned>(value: JsValue) -> Result<T, JsValue> {
+#[cfg(feature = "tools")]
+/// The Rust value of a typed argument; throws the mismatch for one of another shape.
+fn from_js<T: Tsify + serde::de::DeserializeOwned>(value: &Ts<T>) -> Result<T, JsValue> {
+    serde_wasm_bindgen::from_value(value.js_value()).map_err(js_error)
+}
+
+#[cfg(feature = "tools")]
+/// Each of `values` as [`from_js`] reads it.
+fn from_js_list<T: Tsify + serde::de::DeserializeOwned>(
+    values: &[Ts<T>],
+) -> Result<Vec<T>, JsValue> {
+    values.iter().map(from_js).collect()
+}
+
+/// An argument whose type the binding names itself (`unchecked_param_type`: lists of strings,
+/// pairs), read by the same rules.
+fn read_js<T: serde::de::DeserializeOwned>(value: JsValue) -> Result<T, JsValue> {
     serde_wasm_bindgen::from_value(value).map_err(js_error)
 }
 
@@ -489,6 +600,6 @@ impl Comparison {
 /// settled}], failure}` (`value` may be Infinity: a load never recovered from; `failure` a
 /// message when the run failed or ran away, else null).
 #[wasm_bindgen]
-pub fn challenge_measure(sim: &Simulation) -> Result<JsValue, JsValue> {
+pub fn challenge_measure(sim: &Simulation) -> Result<Ts<crate::challenge::Measures>, JsValue> {
     to_js(&crate::challenge::measure(&sim.inner))
 }

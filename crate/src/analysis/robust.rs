@@ -37,6 +37,11 @@ pub const MAX_MAP_RUNS: usize = 100_000;
 pub const MAX_MAP_WORK: u64 = 400_000_000;
 
 /// One axis of a map: a motor (`plant.*`) or model (`model.*`) parameter and its values.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Axis {
     /// The scenario key, e.g. `plant.rr`.
@@ -55,6 +60,11 @@ pub struct Axis {
 }
 
 /// One cell of a map: its values on each axis and the scenario that runs there.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct CellPlan {
     /// The cell's place on each axis.
@@ -67,6 +77,11 @@ pub struct CellPlan {
 }
 
 /// A checked map: its axes, its cells (the first axis varying slowest) and its seeds.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object, rename = "RobustMap")
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Map {
     /// The base scenario, as the codec writes it.
@@ -85,6 +100,11 @@ pub struct Map {
 
 /// One run of one cell: the figures of [`MAP_FIGURES`] (NaN where the run has none) and what
 /// went wrong.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MapRun {
     /// The noise seed.
@@ -108,6 +128,11 @@ pub struct MapRun {
 
 /// A cell's row: how many runs ran away or were inconsistent, and each figure's minimum,
 /// median and maximum over the runs that completed.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Cell {
     /// The cell's place on each axis.

@@ -7,6 +7,11 @@ use crate::text::csv;
 use serde::{Deserialize, Serialize};
 
 /// Figures of one seed's run: those of its [`crate::record::Metrics`], by their names.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SeedResult {
     /// The noise seed.
@@ -24,6 +29,11 @@ pub struct SeedResult {
 }
 
 /// One seed's run: its figures and its decimated error traces.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SeedRun {
     /// Figures of the run.
@@ -93,6 +103,11 @@ pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, Sce
 }
 
 /// Mean, minimum and maximum over runs at each sample.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Band {
     /// Mean over the runs.
@@ -126,6 +141,11 @@ impl Band {
 }
 
 /// Seed-sweep statistics: the speed error and the estimation error over every completed run.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct SeedBands {
     /// Sample times (s).

@@ -10,6 +10,11 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// How one frequency is measured.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SweepSettings {
     /// Amplitude of the sinusoidal speed reference (rad/s).
@@ -33,6 +38,11 @@ impl Default for SweepSettings {
 }
 
 /// The measured response at one frequency.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SweepPoint {
     /// Reference frequency (Hz).
@@ -452,6 +462,11 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
 }
 
 /// Figures read off a measured frequency response; none rests on a point that had not settled.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SweepSummary {
     /// First frequency where the gain falls below 1/√2, interpolated in log frequency (Hz).

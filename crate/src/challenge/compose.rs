@@ -10,6 +10,11 @@ use std::collections::HashSet;
 use std::fmt;
 
 /// A number as a form holds it: text as typed, or a number.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum FormNumber {
@@ -30,6 +35,11 @@ impl FormNumber {
 }
 
 /// Several names, or several strings: a list, or one text with `|` between them.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum FormList {
@@ -50,6 +60,11 @@ impl FormList {
 }
 
 /// One field the student may set: a range (`lo`, `hi`) or choices (`options`).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct AllowPart {
@@ -68,6 +83,11 @@ pub struct AllowPart {
 
 /// One criterion: a figure, how it is bounded (`max`, `min`, `abs` or `band`) and the bound
 /// (none for `band`).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct NeedPart {
@@ -82,6 +102,11 @@ pub struct NeedPart {
 
 /// The parts of a challenge as a lecturer fills them in. `vary` is `seeds:A..B`, override strings
 /// (a list, or one text with `|` between them), or none (null, "" or an empty list).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct ChallengeParts {
@@ -102,6 +127,11 @@ pub struct ChallengeParts {
 /// Why parts make no challenge: the part's key (`title`, `base`, `allow.FIELD`, `need.FIGURE`,
 /// `need` for the criteria as a whole, `vary`, `robust`, or `challenge` for the whole text's
 /// length) and the codec's message.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct ComposeError {
     /// The part's key.

@@ -31,6 +31,11 @@ pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
 }
 
 /// One measured value of a run.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Measure {
     /// Figure name.
@@ -46,6 +51,11 @@ pub struct Measure {
 }
 
 /// What [`measure`] read from one run.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Measures {
     /// The figures (those the report could compute), then the load recovery time when the
@@ -100,6 +110,11 @@ pub fn measure(sim: &Simulation) -> Measures {
 }
 
 /// The verdict on one criterion.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct CriterionVerdict {
     /// Figure name.
@@ -122,6 +137,11 @@ pub struct CriterionVerdict {
 }
 
 /// The verdict on a submission.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object, rename = "ChallengeVerdict")
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Verdict {
     /// One verdict per criterion, in the challenge's order.

@@ -62,6 +62,11 @@ pub const MAX_VARIANTS: usize = 20;
 pub const MAX_CRITERIA: usize = 20;
 
 /// What a student may set a field to.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Allowed {
@@ -93,6 +98,11 @@ impl Allowed {
 }
 
 /// One field the student may set.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Allow {
     /// The scenario field.
@@ -102,6 +112,11 @@ pub struct Allow {
 }
 
 /// How a criterion bounds its figure.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "op", content = "bound", rename_all = "lowercase")]
 pub enum Op {
@@ -128,6 +143,11 @@ impl Op {
 }
 
 /// One criterion: a figure and its bound.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Criterion {
     /// The figure's name, e.g. `settling_time`.
@@ -137,6 +157,11 @@ pub struct Criterion {
 }
 
 /// The robustness variants of a challenge.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Variants {
@@ -167,6 +192,11 @@ impl Variants {
 }
 
 /// A design task: the scenario to start from, what may change and the criteria.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object, rename = "ChallengeSpec")
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Challenge {
     /// Short title.

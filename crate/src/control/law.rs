@@ -278,6 +278,11 @@ pub fn named_values(law: &Law, signals: &[f64; SIGNALS]) -> String {
 }
 
 /// How a step's law compares with its designed dynamics.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object, rename = "LawVerdict")
+)]
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Verdict {
     /// The step (1–4).
@@ -469,6 +474,11 @@ pub fn verdicts(
 }
 
 /// A formula as an editor shows it while it is typed: typeset, or refused at its place.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, serde::Serialize)]
 pub struct Preview {
     /// The formula in TeX, when it parses.

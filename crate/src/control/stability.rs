@@ -4,6 +4,11 @@ use crate::control::Gains;
 use serde::Serialize;
 
 /// The bound (59): V(t) ≤ exp(−λt)·V(0) + ε/λ·(1 − exp(−λt)), with λ = 2·min(k_i).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct LyapunovBound {
     /// V(0).

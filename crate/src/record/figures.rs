@@ -18,6 +18,11 @@ use serde::Serialize;
 const Z_975: f64 = 1.959963984540054;
 
 /// One figure of a run.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Serialize)]
 pub struct Figure {
     /// Machine name, used by `imlab metrics` and the tests, e.g. "tracking_rms".
@@ -54,6 +59,11 @@ pub struct Figure {
 /// is more than `tolerance` (its last sample does not stand for it), "drifting" when the EKF estimates the
 /// load or R_r as a random walk (which the final values follow without end), and "settled"
 /// otherwise. On a run that ran away no value is final: its state is "ran away".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct Trend {
     /// Slope of the line through the last tenth (the figure's unit per second).
@@ -83,6 +93,11 @@ pub struct Trend {
 
 /// How a value read at the last sample was still moving (see [`Trend`]); the page and the JSON
 /// see it as "settled", "changing", "drifting", "fluctuating" or "ran away".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum TrendState {
@@ -127,6 +142,11 @@ const FINAL_SCATTER: f64 = 4.0;
 const TREND_SCATTER: f64 = 2.0;
 
 /// A figure's machine name, its words and its unit: one entry for each figure [`report`] gives.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct FigureInfo {
     /// Machine name, as `imlab metrics` prints it.
@@ -197,6 +217,11 @@ pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
 
 /// The transient and the figures of a run, computed together (the figures start at the end of
 /// the transient): see [`report`].
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Serialize)]
 pub struct Report {
     /// See [`transient`].
@@ -212,6 +237,11 @@ pub struct Report {
 
 /// A figure the run had not reached by its last sample: a step's settling time while ω is still
 /// outside the band. It has no value, so none is given: the words stand in its place.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Unreached {
     /// The figure's machine name, e.g. "settling_time"; `imlab metrics` prints `NAME_reached,0,`.
@@ -230,6 +260,11 @@ pub struct Unreached {
 }
 
 /// What a [`Warning`] is about; the page and the JSON see it as "runaway" or "inconsistent".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum WarningKind {
@@ -242,6 +277,11 @@ pub enum WarningKind {
 }
 
 /// A finding about the whole run that its figures alone would hide.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Warning {
     /// What it is about.

@@ -9,6 +9,11 @@ use serde::Serialize;
 
 /// Summary figures of a run, for comparing variants. A figure [`super::report`] gives too has
 /// the report's name here.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Metrics {
     /// The end of the start-up transient (s), where the window the figures cover starts: the

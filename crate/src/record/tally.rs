@@ -15,6 +15,11 @@ pub const CHECKPOINT_EVERY: usize = 2048;
 const BOUND_TOL: f64 = 1e-9;
 
 /// How a run's V(t) compares with the bound (59).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, Serialize)]
 pub struct Stability {
     /// The bound.
@@ -35,6 +40,11 @@ pub struct Stability {
 
 /// Why V(t) most likely leaves the bound (59); the page and the JSON see it as "none",
 /// "saturation", "sampling", "estimation_errors" or "eps_or_sampling".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "snake_case")]
 pub enum StabilityCause {

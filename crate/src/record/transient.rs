@@ -45,6 +45,11 @@ const SPEED_WINDOW: f64 = 5e-3;
 const SPEED_SETTLED: f64 = 2.0;
 
 /// Where the start-up transient ends, and why there.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Transient {
     /// End of the transient (s): a recorded sample time.

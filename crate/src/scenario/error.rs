@@ -156,4 +156,22 @@ impl fmt::Display for ScenarioError {
     }
 }
 
+impl ScenarioError {
+    /// The field at fault, where one is: the key a page marks (`k1`, `law.v2`).
+    pub fn key(&self) -> Option<&str> {
+        use ScenarioError::*;
+        match self {
+            Missing { key } | BadFormula { key, .. } => Some(key),
+            UnknownKey { key }
+            | DuplicateKey { key }
+            | BadValue { key, .. }
+            | OutOfRange { key, .. }
+            | NotApplicable { key, .. } => Some(key),
+            UnsupportedVersion { .. } => Some("v"),
+            UnknownPreset { .. } => Some("preset"),
+            Malformed { .. } | Physics { .. } | TooLong { .. } | TooLarge { .. } => None,
+        }
+    }
+}
+
 impl std::error::Error for ScenarioError {}

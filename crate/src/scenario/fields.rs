@@ -83,6 +83,11 @@ pub(super) struct Field {
 }
 
 /// A field as data, for the UI and `describe`.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Serialize)]
 pub struct FieldInfo {
     /// Key in the query string.

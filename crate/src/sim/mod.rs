@@ -298,6 +298,11 @@ impl Simulation {
 }
 
 /// Every recorded value at one sample, with the Kalman gain, for the inspect panel.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Serialize)]
 pub struct Snapshot {
     /// Sample index k.

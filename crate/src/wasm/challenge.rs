@@ -1,10 +1,11 @@
 //! The challenge bindings: a challenge parsed once, its description, submissions, the measures of
 //! a run and the verdict on them.
 
-use super::{from_js, js_error, to_js};
+use super::{from_js, from_js_list, js_error, read_js, to_js, to_js_list};
 use crate::challenge::ErrorKind;
 use crate::scenario::Scenario;
 use serde::Serialize;
+use tsify::Ts;
 use wasm_bindgen::prelude::*;
 
 /// A design challenge, parsed once: its description, the scenarios a submission runs and the
@@ -17,6 +18,11 @@ pub struct Challenge {
 }
 
 /// What kind of values an allowed field takes; the page sees "range" or "choice".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Serialize)]
 #[serde(rename_all = "lowercase")]
 enum AllowKind {
@@ -29,8 +35,13 @@ enum AllowKind {
 }
 
 /// An allowed field as the page shows it.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct AllowView {
+pub struct AllowView {
     field: String,
     kind: AllowKind,
     lo: Option<f64>,
@@ -43,6 +54,11 @@ struct AllowView {
 }
 
 /// How a criterion bounds its figure; the page sees "max", "min", "abs" or "band".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Serialize)]
 #[serde(rename_all = "lowercase")]
 enum OpKind {
@@ -57,8 +73,13 @@ enum OpKind {
 }
 
 /// A criterion as the page shows it.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct NeedView {
+pub struct NeedView {
     figure: String,
     label: &'static str,
     unit: &'static str,
@@ -68,8 +89,13 @@ struct NeedView {
     robust: bool,
 }
 
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct ChallengeView {
+pub struct ChallengeView {
     title: String,
     base: String,
     encoded: String,
@@ -87,6 +113,11 @@ struct ChallengeView {
 
 /// Whether a submission link can be graded, or why not; the page sees "ok", "malformed",
 /// "refused" or "another".
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Serialize)]
 #[serde(rename_all = "lowercase")]
 enum SubmissionKind {
@@ -111,8 +142,13 @@ impl From<ErrorKind> for SubmissionKind {
 }
 
 /// What a submission link gives: its status and, when it can run, the scenarios to run.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct SubmissionView {
+pub struct SubmissionView {
     kind: SubmissionKind,
     /// "ok", or the grading status: "malformed: …", "refused: …", "another challenge".
     status: String,
@@ -149,7 +185,7 @@ impl Challenge {
     /// lo, hi} | {field, options: [name]}], need: [{figure, op, bound}], vary, robust: [figure]}`
     /// with numbers as the codec writes them (strings), `bound` left out for `band`, and `vary`
     /// `"seeds:A..B"`, an array of override strings, or null.
-    pub fn parts(&self) -> Result<JsValue, JsValue> {
+    pub fn parts(&self) -> Result<Ts<crate::challenge::ChallengeParts>, JsValue> {
         to_js(&self.inner.parts())
     }
 
@@ -168,7 +204,7 @@ impl Challenge {
     /// edited_from}`: `fingerprint` a short code of the canonical link to compare at a glance
     /// (`7KQ2-M9XD`), `edited_from` the name of the built-in whose title (or name) the challenge
     /// carries while its link differs from the built-in's, else null.
-    pub fn describe(&self) -> Result<JsValue, JsValue> {
+    pub fn describe(&self) -> Result<Ts<ChallengeView>, JsValue> {
         use crate::challenge::{figure_info, Allowed, Op};
         let c = &self.inner;
         let fields = c.base_scenario().describe();
@@ -232,7 +268,7 @@ impl Challenge {
 
     /// A submission link of this challenge (bare query or URL): never throws; returns
     /// `{kind, status, message, encoded, tries, scenarios}` (see the fields' docs).
-    pub fn submission(&self, text: &str) -> Result<JsValue, JsValue> {
+    pub fn submission(&self, text: &str) -> Result<Ts<SubmissionView>, JsValue> {
         to_js(&submission_view(self.inner.submission(text)))
     }
 
@@ -240,22 +276,12 @@ impl Challenge {
     /// canonical link (see [`Challenge::submit`]): `tries` is an array of [field, value] pairs
     /// (strings, any order); never throws for pairs of strings; returns `{kind, status, message,
     /// encoded, tries, scenarios}`, `encoded` the canonical submission link when `kind` is "ok".
-    pub fn submission_of(&self, tries: JsValue) -> Result<JsValue, JsValue> {
-        let tries: Vec<(String, String)> = from_js(tries)?;
+    pub fn submission_of(
+        &self,
+        #[wasm_bindgen(unchecked_param_type = "[string, string][]")] tries: JsValue,
+    ) -> Result<Ts<SubmissionView>, JsValue> {
+        let tries: Vec<(String, String)> = read_js(tries)?;
         to_js(&submission_view(self.inner.submit(&tries)))
-    }
-
-    /// The canonical submission link of the student's settings (the challenge's link, then
-    /// `&try.FIELD=VALUE` in allow order, each value percent-encoded as the codec encodes text):
-    /// `tries` is an array of [field, value] pairs (strings, any order); throws the status of
-    /// the refusal, e.g. "refused: k1=5000 is outside 300..3000".
-    pub fn submit(&self, tries: JsValue) -> Result<String, JsValue> {
-        let tries: Vec<(String, String)> = from_js(tries)?;
-        let s = self
-            .inner
-            .submit(&tries)
-            .map_err(|e| js_error(e.status()))?;
-        Ok(s.encode())
     }
 
     /// The designs a check of the challenge tries, at most `max` (and at most 10 000): an array
@@ -263,15 +289,19 @@ impl Challenge {
     /// each value as the codec writes it), for [`Challenge::submission_of`]. The base comes first
     /// (an empty array), then the designs that change the fewest fields, coarsest first; the full
     /// grid when it fits (see [`crate::challenge::Challenge::search_designs`] for the rule).
+    #[wasm_bindgen(unchecked_return_type = "[string, string][][]")]
     pub fn search_designs(&self, max: u32) -> Result<JsValue, JsValue> {
-        to_js(&self.inner.search_designs(max as usize))
+        super::raw_js(&self.inner.search_designs(max as usize))
     }
 
     /// Judges the measures of the runs (`runs[0]` the nominal run, then one per variant, each
     /// what [`challenge_measure`] returned): `{criteria: [{figure, label, bound, value, unit, run,
     /// pass, reason}], pass}`; throws when the count of runs is wrong.
-    pub fn judge(&self, runs: JsValue) -> Result<JsValue, JsValue> {
-        let runs: Vec<crate::challenge::Measures> = from_js(runs)?;
+    pub fn judge(
+        &self,
+        runs: Vec<Ts<crate::challenge::Measures>>,
+    ) -> Result<Ts<crate::challenge::Verdict>, JsValue> {
+        let runs = from_js_list(&runs)?;
         let verdict = crate::challenge::judge(&self.inner, &runs).map_err(js_error)?;
         to_js(&verdict)
     }
@@ -301,38 +331,49 @@ fn submission_view(
     }
 }
 
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct BuiltinView {
+    name: &'static str,
+    summary: &'static str,
+    text: &'static str,
+    solution: &'static str,
+}
+
 /// The built-in challenges: `[{name, summary, text, solution}]` (`text` the canonical link;
 /// `solution` a passing `field=value&…`).
 #[wasm_bindgen]
-pub fn challenge_builtins() -> Result<JsValue, JsValue> {
-    #[derive(Serialize)]
-    struct View {
-        name: &'static str,
-        summary: &'static str,
-        text: &'static str,
-        solution: &'static str,
-    }
-    let list: Vec<View> = crate::challenge::BUILTINS
+pub fn challenge_builtins() -> Result<Vec<Ts<BuiltinView>>, JsValue> {
+    let list: Vec<BuiltinView> = crate::challenge::BUILTINS
         .iter()
-        .map(|b| View {
+        .map(|b| BuiltinView {
             name: b.name,
             summary: b.summary,
             text: b.text,
             solution: b.solution,
         })
         .collect();
-    to_js(&list)
+    to_js_list(&list)
 }
 
 /// The figures a challenge's criteria may name: `[{name, label, unit}]`.
 #[wasm_bindgen]
-pub fn challenge_figures() -> Result<JsValue, JsValue> {
-    to_js(&crate::challenge::figures().collect::<Vec<_>>())
+pub fn challenge_figures() -> Result<Vec<Ts<crate::record::FigureInfo>>, JsValue> {
+    to_js_list(&crate::challenge::figures().copied().collect::<Vec<_>>())
 }
 
 /// What [`challenge_compose`] gives: the link and the task in words, or the part at fault.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct Composed {
+pub struct Composed {
     /// The canonical challenge link (query string), or null.
     encoded: Option<String>,
     /// The task in words, or null.
@@ -358,8 +399,10 @@ struct Composed {
 /// where `key` names the part at fault: `title`, `base`, `allow.FIELD`, `need.FIGURE`, `need`
 /// (no criterion, or too many), `vary`, `robust`, or `challenge` (the whole link too long).
 #[wasm_bindgen]
-pub fn challenge_compose(parts: JsValue) -> Result<JsValue, JsValue> {
-    let parts: crate::challenge::ChallengeParts = from_js(parts)?;
+pub fn challenge_compose(
+    parts: Ts<crate::challenge::ChallengeParts>,
+) -> Result<Ts<Composed>, JsValue> {
+    let parts = from_js(&parts)?;
     let view = match crate::challenge::Challenge::compose(&parts) {
         Ok(c) => Composed {
             encoded: Some(c.encode()),

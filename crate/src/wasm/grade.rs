@@ -7,11 +7,17 @@ use super::{from_js, js_error, to_js};
 use crate::challenge::grade::{self, ClassRow};
 use crate::challenge::{Challenge, Verdict};
 use serde::Serialize;
+use tsify::Ts;
 use wasm_bindgen::prelude::*;
 
 /// What [`grade_class`] gives the page.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct ClassView {
+pub struct ClassView {
     /// The CSV header line, with its line end ("" when the file is refused).
     header: String,
     /// The headers of the carried columns.
@@ -38,7 +44,7 @@ struct ClassView {
 /// where a row's `status` is set when it is graded as it is read ("malformed: line 4 is not
 /// valid UTF-8"). Each row goes as it is to [`grade_link`].
 #[wasm_bindgen]
-pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<JsValue, JsValue> {
+pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsValue> {
     let read = Challenge::parse(challenge)
         .map_err(|e| format!("challenge: {e}"))
         .and_then(|c| Ok((grade::read_class(bytes)?, c)));
@@ -62,12 +68,18 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<JsValue, JsValue> {
 }
 
 /// What [`grade_link`] gives the page.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Serialize)]
-struct GradedView {
+pub struct GradedView {
     line: usize,
     link: String,
     status: String,
     pass: bool,
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "ChallengeVerdict | null"))]
     verdict: Option<Verdict>,
     /// The row's CSV line, "\n" included.
     csv: String,
@@ -87,9 +99,9 @@ struct GradedView {
 ///
 /// Throws when the challenge does not parse or `row` is not of that shape.
 #[wasm_bindgen]
-pub fn grade_link(challenge: &str, row: JsValue) -> Result<JsValue, JsValue> {
+pub fn grade_link(challenge: &str, row: Ts<ClassRow>) -> Result<Ts<GradedView>, JsValue> {
     let c = Challenge::parse(challenge).map_err(js_error)?;
-    let row: ClassRow = from_js(row)?;
+    let row: ClassRow = from_js(&row)?;
     let graded = grade::grade_row(&c, &row);
     to_js(&GradedView {
         csv: grade::csv_row(&c, &row, &graded),

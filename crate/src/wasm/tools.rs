@@ -3,11 +3,12 @@
 //! `tools` feature, into the module the page fetches when a tool is first used; the first run
 //! needs none of them.
 
-use super::{from_js, js_error, to_js};
+use super::{from_js, from_js_list, js_error, to_js, to_js_list};
 use crate::analysis;
 use crate::analysis::robust;
 use crate::scenario::{Scenario, MAX_SEED};
 use serde::Serialize;
+use tsify::Ts;
 use wasm_bindgen::prelude::*;
 
 /// The closed-loop response of `scenario` at `freq` (Hz): `{freq, gain, phase, gain_hat, ...}`.
@@ -18,7 +19,7 @@ pub fn sweep_point(
     amp: f64,
     duration: f64,
     offset: f64,
-) -> Result<JsValue, JsValue> {
+) -> Result<Ts<analysis::SweepPoint>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
     let settings = analysis::SweepSettings {
         amp,
@@ -36,15 +37,17 @@ pub fn log_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, JsValue> {
 
 /// `{bandwidth, phase_at_200}` of sweep points sorted by frequency.
 #[wasm_bindgen]
-pub fn sweep_summary(points: JsValue) -> Result<JsValue, JsValue> {
-    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+pub fn sweep_summary(
+    points: Vec<Ts<analysis::SweepPoint>>,
+) -> Result<Ts<analysis::SweepSummary>, JsValue> {
+    let points = from_js_list(&points)?;
     to_js(&analysis::summarise(&points))
 }
 
 /// Sweep points as the CSV `imlab sweep` prints.
 #[wasm_bindgen]
-pub fn sweep_csv(points: JsValue) -> Result<String, JsValue> {
-    let points: Vec<analysis::SweepPoint> = from_js(points)?;
+pub fn sweep_csv(points: Vec<Ts<analysis::SweepPoint>>) -> Result<String, JsValue> {
+    let points = from_js_list(&points)?;
     Ok(analysis::sweep_csv(&points))
 }
 
@@ -62,7 +65,7 @@ pub fn seed_range(first: f64, count: f64) -> Result<Vec<f64>, JsValue> {
 /// `{result: {seed, tracking_rms, speed_estimate_error_rms, tracking_peak, failure}, t, error,
 /// estimate}`.
 #[wasm_bindgen]
-pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsValue> {
+pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<Ts<analysis::SeedRun>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
     let seed = whole("seed", seed)?;
     to_js(&analysis::seed_run(&s, seed, every).map_err(js_error)?)
@@ -70,37 +73,40 @@ pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<JsValue, JsVa
 
 /// Mean and min–max bands over seed runs (in seed order).
 #[wasm_bindgen]
-pub fn seed_bands(runs: JsValue) -> Result<JsValue, JsValue> {
-    let runs: Vec<analysis::SeedRun> = from_js(runs)?;
+pub fn seed_bands(runs: Vec<Ts<analysis::SeedRun>>) -> Result<Ts<analysis::SeedBands>, JsValue> {
+    let runs = from_js_list(&runs)?;
     to_js(&analysis::seed_bands(&runs).map_err(js_error)?)
 }
 
 /// Per-seed figures as the CSV `imlab seeds` prints.
 #[wasm_bindgen]
-pub fn seeds_csv(results: JsValue) -> Result<String, JsValue> {
-    let results: Vec<analysis::SeedResult> = from_js(results)?;
+pub fn seeds_csv(results: Vec<Ts<analysis::SeedResult>>) -> Result<String, JsValue> {
+    let results = from_js_list(&results)?;
     Ok(analysis::seeds_csv(&results))
 }
 
 /// The model-error map `text` (`AXIS[;AXIS][;seeds=A..B]`, as `imlab robust` reads its
 /// options) of `scenario`, checked and bounded before any run: its axes, cells and seeds.
 #[wasm_bindgen]
-pub fn robust_plan(scenario: &str, text: &str) -> Result<JsValue, JsValue> {
+pub fn robust_plan(scenario: &str, text: &str) -> Result<Ts<robust::Map>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
     to_js(&robust::Map::parse(&s, text).map_err(js_error)?)
 }
 
 /// One run of a map's cell: its scenario as the plan wrote it, with noise seed `seed`.
 #[wasm_bindgen]
-pub fn robust_run(scenario: &str, seed: f64) -> Result<JsValue, JsValue> {
+pub fn robust_run(scenario: &str, seed: f64) -> Result<Ts<robust::MapRun>, JsValue> {
     to_js(&robust::map_run(scenario, whole("seed", seed)?).map_err(js_error)?)
 }
 
 /// The rows of a map's cells from its runs, cell after cell, each cell's seeds in the map's order.
 #[wasm_bindgen]
-pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
-    let map: robust::Map = from_js(map)?;
-    let runs: Vec<robust::MapRun> = from_js(runs)?;
+pub fn robust_cells(
+    map: Ts<robust::Map>,
+    runs: Vec<Ts<robust::MapRun>>,
+) -> Result<Vec<Ts<robust::Cell>>, JsValue> {
+    let map = from_js(&map)?;
+    let runs = from_js_list(&runs)?;
     let per = map.seeds.len();
     if per == 0 || runs.len() != map.cells.len() * per {
         return Err(js_error(format!(
@@ -115,26 +121,26 @@ pub fn robust_cells(map: JsValue, runs: JsValue) -> Result<JsValue, JsValue> {
         .zip(runs.chunks(per))
         .map(|(c, r)| robust::summarise(c, r))
         .collect();
-    to_js(&cells)
+    to_js_list(&cells)
 }
 
 /// A map's rows as the CSV `imlab robust` prints; `cells` may be some of `map`'s (a stopped map),
 /// which the CSV then says.
 #[wasm_bindgen]
-pub fn robust_csv(map: JsValue, cells: JsValue) -> Result<String, JsValue> {
-    let map: robust::Map = from_js(map)?;
-    let cells: Vec<robust::Cell> = from_js(cells)?;
+pub fn robust_csv(map: Ts<robust::Map>, cells: Vec<Ts<robust::Cell>>) -> Result<String, JsValue> {
+    let map = from_js(&map)?;
+    let cells = from_js_list(&cells)?;
     Ok(robust::map_csv(&map, &cells))
 }
 
 /// The figures a map keeps of each run, in its order: `[{name, label, unit}]`.
 #[wasm_bindgen]
-pub fn robust_figures() -> Result<JsValue, JsValue> {
+pub fn robust_figures() -> Result<Vec<Ts<crate::record::FigureInfo>>, JsValue> {
     let info: Vec<_> = robust::MAP_FIGURES
         .iter()
-        .map(|f| crate::record::figure_info(f).expect("a map's figures are report figures"))
+        .map(|f| *crate::record::figure_info(f).expect("a map's figures are report figures"))
         .collect();
-    to_js(&info)
+    to_js_list(&info)
 }
 
 /// `value` as a seed, or a message naming it as `what`.
@@ -147,26 +153,40 @@ fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
     Ok(value as u64)
 }
 
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+/// A function a law may call, with its meaning.
+#[derive(Serialize)]
+pub struct LawFunction {
+    name: &'static str,
+    doc: &'static str,
+}
+
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+/// The names and functions a step's own law may use.
+#[derive(Serialize)]
+pub struct Language {
+    names: &'static [crate::control::formula::Name],
+    functions: Vec<LawFunction>,
+}
+
 /// The language of the steps' own laws: `{names: [{name, tex, unit, doc, from_step}],
 /// functions: [{name, doc}]}`.
 #[wasm_bindgen]
-pub fn law_language() -> Result<JsValue, JsValue> {
-    use crate::control::formula::{Name, FUNCTIONS, NAMES};
-    #[derive(Serialize)]
-    struct Function {
-        name: &'static str,
-        doc: &'static str,
-    }
-    #[derive(Serialize)]
-    struct Language {
-        names: &'static [Name],
-        functions: Vec<Function>,
-    }
+pub fn law_language() -> Result<Ts<Language>, JsValue> {
+    use crate::control::formula::{FUNCTIONS, NAMES};
     to_js(&Language {
         names: NAMES,
         functions: FUNCTIONS
             .iter()
-            .map(|&(name, _, _, doc)| Function { name, doc })
+            .map(|&(name, _, _, doc)| LawFunction { name, doc })
             .collect(),
     })
 }
@@ -174,7 +194,7 @@ pub fn law_language() -> Result<JsValue, JsValue> {
 /// The law `text` of step `step` (1–4) as an editor shows it: `{tex, error: {at, len, reason},
 /// designed}` (see [`crate::control::law::preview`]).
 #[wasm_bindgen]
-pub fn law_preview(step: u8, text: &str) -> Result<JsValue, JsValue> {
+pub fn law_preview(step: u8, text: &str) -> Result<Ts<crate::control::law::Preview>, JsValue> {
     if !(1..=4).contains(&step) {
         return Err(js_error(format!("step {step}: the steps are 1 to 4")));
     }
@@ -184,10 +204,10 @@ pub fn law_preview(step: u8, text: &str) -> Result<JsValue, JsValue> {
 /// The verdict of each step with its own law in `scenario`, against its designed dynamics:
 /// `[{step, designed, worst, finding, text}]`.
 #[wasm_bindgen]
-pub fn law_verdicts(scenario: &str) -> Result<JsValue, JsValue> {
+pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdict>>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
     let model = s.model.lumped().map_err(js_error)?;
     let verdicts = crate::control::law::verdicts(&s.law, &model, &s.gains)
         .map_err(|(step, e)| js_error(format!("law.v{step}: {e}")))?;
-    to_js(&verdicts)
+    to_js_list(&verdicts)
 }

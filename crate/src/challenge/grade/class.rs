@@ -25,6 +25,11 @@ use crate::text::excerpt;
 use serde::{Deserialize, Serialize};
 
 /// A class's file, read: the submissions to grade, in file order.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Class {
     /// The headers of the columns carried to the grades (those of a CSV export but the links'),
@@ -37,6 +42,11 @@ pub struct Class {
 }
 
 /// One submission of a class's file.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ClassRow {
     /// The line of the file it starts on (the first is 1).

@@ -3,6 +3,11 @@
 use std::fmt;
 
 /// Why a formula was refused: where (the character, counted from 1) and why.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
 pub struct FormulaError {
     /// The first character the problem concerns, counted from 1 (0: the formula as a whole).

@@ -3,6 +3,11 @@
 /// A named signal a formula may use: its name, its symbol in TeX, its unit and its meaning, and
 /// the first step whose formula may use it (the later steps' errors and virtual controls follow
 /// from the earlier steps' laws).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
 #[derive(Clone, Copy, Debug, serde::Serialize)]
 pub struct Name {
     /// The name in a formula.
