@@ -9,6 +9,8 @@ import { excerpt } from '../ui/quote.js';
  * it (`fill(text)`, which throws on text it cannot take), opens the Analysis tab with
  * `showTab(name)` and starts `run()`; a refused text is said, naming the tool as `what`. Later
  * calls do nothing.
+ * @param {{name: string, what: string, fill: (text: string) => void, run: () => unknown,
+ *   showTab: (name: string) => void}} tool
  */
 export function runFromLink({ name, what, fill, run, showTab }) {
   let shared = fragment(name); // from the link that opened the page
@@ -21,7 +23,7 @@ export function runFromLink({ name, what, fill, run, showTab }) {
       showTab('analysis');
       run();
     } catch (e) {
-      say(`The ${what} in the address (#${name}=${excerpt(text)}) was not run: ${e.message}.`);
+      say(`The ${what} in the address (#${name}=${excerpt(text)}) was not run: ${/** @type {Error} */ (e).message}.`);
     }
   };
 }

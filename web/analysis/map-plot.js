@@ -5,10 +5,20 @@ import { el } from '../ui/dom.js';
 import { fmt } from './map-colours.js';
 import { pageNumbers } from '../plots/numbers.js';
 
-/** Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out. */
+/** @typedef {import('./robust.js').MapCell} MapCell */
+
+/**
+ * Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out.
+ * @param {HTMLElement} box
+ * @param {import('./map-view.js').MapView} view
+ */
 export function bandPlot(box, view) {
   const { axes, axisValue, axisName, byIndex, k, figure } = view;
-  const clean = (cell) => cell && cell.ran_away === 0;
+  /**
+   * @param {MapCell | undefined} cell
+   * @returns {cell is MapCell}
+   */
+  const clean = (cell) => cell !== undefined && cell.ran_away === 0;
   // The band and median over the seeds of the cells where no seed ran away; the others are
   // gaps, marked below the plot and in the table, never drawn as values.
   const x = axes[0].values.map((_, i) => axisValue(0, i));
@@ -39,9 +49,10 @@ export function bandPlot(box, view) {
   const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
   if (gaps.length) {
     const percent = axes[0].relative ? ' %' : '';
-    const named = gaps.map(
-      (i) => `${fmt(axisValue(0, i))}${percent} (${byIndex[i].ran_away} of ${byIndex[i].runs} seeds)`,
-    );
+    const named = gaps.map((i) => {
+      const cell = /** @type {MapCell} */ (byIndex[i]); // a gap is a cell that ran
+      return `${fmt(axisValue(0, i))}${percent} (${cell.ran_away} of ${cell.runs} seeds)`;
+    });
     box.append(
       el('p', {
         className: 'map-gaps',

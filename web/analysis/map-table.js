@@ -4,7 +4,16 @@
 import { el } from '../ui/dom.js';
 import { colourScale, fmt } from './map-colours.js';
 
-/** The cell of one map cell: a button that opens its run, or 'not run'. */
+/** @typedef {import('./robust.js').MapCell} MapCell */
+/** @typedef {import('./map-view.js').MapView} MapView */
+
+/**
+ * The cell of one map cell: a button that opens its run, or 'not run'.
+ * @param {MapCell | undefined} cell
+ * @param {MapView} view
+ * @param {import('./map-colours.js').ColourScale} scale
+ * @param {(scenario: string) => void} open
+ */
 function cellOf(cell, view, scale, open) {
   const { k, figure, median } = view;
   const td = el('td');
@@ -33,7 +42,11 @@ function cellOf(cell, view, scale, open) {
   return td;
 }
 
-/** The rows of a two-axis map: the first axis down, the second across. */
+/**
+ * The rows of a two-axis map: the first axis down, the second across.
+ * @param {MapView} view
+ * @param {(cell: MapCell | undefined) => HTMLElement} cell
+ */
 function gridRows(view, cell) {
   const { axes, axisValue, axisName, byIndex } = view;
   const [rows, cols] = [axes[0].values.length, axes[1].values.length];
@@ -48,7 +61,11 @@ function gridRows(view, cell) {
   return trs;
 }
 
-/** The rows of a one-axis map: a value a row, its cell and its range over the seeds. */
+/**
+ * The rows of a one-axis map: a value a row, its cell and its range over the seeds.
+ * @param {MapView} view
+ * @param {(cell: MapCell | undefined) => HTMLElement} cell
+ */
 function columnRows(view, cell) {
   const { axes, axisValue, axisName, byIndex, k } = view;
   const head = el(
@@ -70,11 +87,17 @@ function columnRows(view, cell) {
   ];
 }
 
-/** The table of `view` (see `mapView`) and its key; `open(scenario)` runs a cell's scenario. */
+/**
+ * The table of `view` (see `mapView`) and its key; `open(scenario)` runs a cell's scenario.
+ * @param {MapView} view
+ * @param {(scenario: string) => void} open
+ */
 export function mapTable(view, open) {
   const { figure, median, seeds } = view;
-  const values = view.byIndex.filter((cell) => cell && cell.ran_away === 0).map(median);
+  const ran = /** @type {MapCell[]} */ (view.byIndex.filter((cell) => cell && cell.ran_away === 0));
+  const values = ran.map(median);
   const scale = colourScale(values);
+  /** @param {MapCell | undefined} c */
   const cell = (c) => cellOf(c, view, scale, open);
   const t = el(
     'table',

@@ -4,14 +4,30 @@ import { el } from '../ui/dom.js';
 import { bandPlot } from './map-plot.js';
 import { mapTable } from './map-table.js';
 
+/** @typedef {import('./robust.js').MapCell} MapCell */
+/** @typedef {import('./robust.js').MapFigure} MapFigure */
+
+/**
+ * What the plot and the table draw of a map: its axes, the value of place `i` on axis `a` (in
+ * per cent for a relative axis) and the axis's name, the cells by their place in the full grid
+ * (undefined where a cell was not run), the chosen figure `k`, a cell's median of it, and the seeds.
+ * @typedef {{axes: import('./robust.js').MapAxis[], axisValue: (a: number, i: number) => number,
+ *   axisName: (a: number) => string, byIndex: (MapCell | undefined)[], k: number, figure: MapFigure,
+ *   median: (cell: MapCell) => number, seeds: number[]}} MapView
+ */
+
 /**
  * What the plot and the table draw of `drawn` ({full, cells, figures, whole}: the map asked for,
  * the cells that finished, the figures a cell has, and which cells of the full grid finished),
  * for figure `k`.
+ * @param {import('./robust.js').Drawn} drawn
+ * @param {number} k
+ * @returns {MapView}
  */
 function mapView({ full, cells, figures, whole }, k) {
   const axes = full.axes;
   // The cells by their place in the full grid; a cell not run is undefined.
+  /** @type {(MapCell | undefined)[]} */
   const byIndex = [];
   let c = 0;
   whole.forEach((w, i) => {
@@ -29,7 +45,13 @@ function mapView({ full, cells, figures, whole }, k) {
   };
 }
 
-/** Draws the map `drawn` into `box` for figure `k`; `open(scenario)` runs a cell. */
+/**
+ * Draws the map `drawn` into `box` for figure `k`; `open(scenario)` runs a cell.
+ * @param {HTMLElement} box
+ * @param {import('./robust.js').Drawn} drawn
+ * @param {number} k
+ * @param {(scenario: string) => void} open
+ */
 export function drawMap(box, drawn, k, open) {
   const view = mapView(drawn, k);
   box.replaceChildren();
@@ -37,7 +59,11 @@ export function drawMap(box, drawn, k, open) {
   box.append(mapTable(view, open));
 }
 
-/** The figure `select` chooses, as its index in `figures`; fills the list the first time. */
+/**
+ * The figure `select` chooses, as its index in `figures`; fills the list the first time.
+ * @param {HTMLSelectElement} select
+ * @param {MapFigure[]} figures
+ */
 export function chosenFigure(select, figures) {
   if (!select.options.length) {
     for (const f of figures)

@@ -11,25 +11,79 @@ import { fillMapForm, mapFormText } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';
 import { runFromLink } from './from-link.js';
 
-/** Enables Run and Cancel for a map that runs (`running`) or not. */
+/** @typedef {import('../worker/protocol.js').Info} Info */
+
+/**
+ * One axis of a map, as the core checks it: its scenario key, its text `KEY=LO..HI:N`, whether it
+ * was written in relative errors (then read in per cent), its words for a plot, its values in
+ * order, and each value's relative error against the other side's value in the base scenario.
+ * @typedef {{key: string, text: string, relative: boolean, label: string, values: number[],
+ *   errors: number[]}} MapAxis
+ */
+/**
+ * One cell of a map's plan: its place and value on each axis, and the scenario that runs there.
+ * @typedef {{index: number[], values: number[], scenario: string}} CellPlan
+ */
+/**
+ * A map as the core checks it: the base scenario, its axes (one or two), its cells (the last
+ * axis varying fastest), the seeds run at every cell, the plant steps it takes, and its text.
+ * @typedef {{scenario: string, axes: MapAxis[], cells: CellPlan[], seeds: number[], work: number,
+ *   text: string}} RobustMap
+ */
+/**
+ * One run of one cell: its seed, its figures (in the order of the map's figures, NaN where it has
+ * none), what went wrong, and why it stopped early, if it did.
+ * @typedef {{seed: number, figures: number[], ran_away: boolean, inconsistent: boolean,
+ *   over_rating: boolean, unsettled: boolean, failure: string | null}} MapRun
+ */
+/**
+ * A cell's row as the core summarises its runs: the cell's place, values and scenario, its runs,
+ * how many ran away, were inconsistent, passed the rated current or did not settle, and each
+ * figure's [minimum, median, maximum] over the runs that completed (NaN when none has it).
+ * @typedef {{index: number[], values: number[], scenario: string, runs: number, ran_away: number,
+ *   inconsistent: number, over_rating: number, unsettled: number,
+ *   stats: [number, number, number][]}} MapCell
+ */
+/**
+ * A figure a map keeps: its machine name, its words and its unit ('' for ratios).
+ * @typedef {{name: string, label: string, unit: string}} MapFigure
+ */
+/**
+ * A map as drawn: the cells kept (`map`), the map asked for (`full`), the rows of the cells that
+ * finished, the figures a cell has, and which cells of the full map finished.
+ * @typedef {{map: RobustMap, full: RobustMap, cells: MapCell[], figures: MapFigure[],
+ *   whole: boolean[]}} Drawn
+ */
+
+/**
+ * Enables Run and Cancel for a map that runs (`running`) or not.
+ * @param {boolean} running
+ */
 function setRunning(running) {
-  $('map-run').disabled = running;
-  $('map-cancel').disabled = !running;
+  $('map-run', HTMLButtonElement).disabled = running;
+  $('map-cancel', HTMLButtonElement).disabled = !running;
 }
 
 /**
  * Runs every seed of every cell of `map` in `pool`, showing the progress in `status` and
  * `progress`. Resolves with the runs (a job's result at its index), which cells finished all their
  * seeds, and whether the map was cancelled; rejects if a run failed.
+ * @param {Pool} pool
+ * @param {RobustMap} map
+ * @param {HTMLElement} status
+ * @param {HTMLProgressElement} progress
+ * @returns {Promise<{runs: MapRun[], whole: boolean[], cancelled: boolean}>}
  */
 async function runCells(pool, map, status, progress) {
   const per = map.seeds.length;
   const total = map.cells.length * per;
+  /** @type {MapRun[]} */
   const runs = new Array(total);
   const finished = new Array(map.cells.length).fill(0);
   let cellsDone = 0;
   let cancelled = false;
   try {
+    /** @type {import('../worker/protocol.js').JobRequest[]} */
     const jobs = map.cells.flatMap((c) => map.seeds.map((seed) => ({ kind: 'map-run', scenario: c.scenario, seed })));
     await pool.run(jobs, (done, index, result) => {
       runs[index] = result;
@@ -38,31 +92,42 @@ async function runCells(pool, map, status, progress) {
       status.textContent = `Running the map: ${done} of ${total} runs.`;
     });
   } catch (e) {
-    if (e.message !== 'cancelled') throw e;
+    if (/** @type {Error} */ (e).message !== 'cancelled') throw e;
     cancelled = true;
   }
   return { runs, whole: finished.map((n) => n === per), cancelled };
 }
 
-/** `analysis` holds the worker pool; `open(scenario)` runs a scenario on the Plots tab. */
+/**
+ * `analysis` holds the worker pool; `open(scenario)` runs a scenario on the Plots tab; `state.info`
+ * is the core's description of the scenario in the form, which a map runs (null until the first).
+ * @param {{state: {info: Info | null}, analysis: import('./analysis.js').Analysis,
+ *   open: (scenario: string) => void, showTab: (name: string) => void}} parts
+ */
 export function createRobust({ state, analysis, open, showTab }) {
-  let last = null; // {map, full, cells, figures, whole}: the map drawn
+  /** @type {Drawn | null} */
+  let last = null; // the map drawn
   // The map's own workers: a sweep or a seed run on the Analysis tab's other pool neither waits
   // for it nor cancels it.
   const pool = new Pool(analysis.pool.size);
-  const form = $('map-form');
+  const form = $('map-form', HTMLFormElement);
   const status = $('map-status');
-  const progress = $('map-progress');
+  const progress = $('map-progress', HTMLProgressElement);
 
+  /** @param {string} text */
   const fill = (text) => fillMapForm(form, text);
 
-  /** The core's plan of the form's map, or null (said) if it refuses it. */
+  /**
+   * The core's plan of the form's map, or null (said) if it refuses it.
+   * @returns {Promise<{map: RobustMap, figures: MapFigure[]} | null>}
+   */
   async function plan() {
     try {
-      const [planned] = await pool.run([{ kind: 'map-plan', scenario: state.info.encoded, text: mapFormText(form) }]);
+      const info = /** @type {Info} */ (state.info);
+      const [planned] = await pool.run([{ kind: 'map-plan', scenario: info.encoded, text: mapFormText(form) }]);
       return planned;
     } catch (e) {
-      status.textContent = `The map was not run: ${e.message}.`;
+      status.textContent = `The map was not run: ${/** @type {Error} */ (e).message}.`;
       document.body.dataset.map = 'refused';
       return null;
     }
@@ -75,7 +140,7 @@ export function createRobust({ state, analysis, open, showTab }) {
     setFragment('robust', encodeURIComponent(map.text));
     const per = map.seeds.length;
     setRunning(true);
-    $('map-csv').disabled = true;
+    $('map-csv', HTMLButtonElement).disabled = true;
     progress.value = 0;
     Object.assign(document.body.dataset, { map: 'running', mapCells: '0' });
     status.textContent = `Running ${map.cells.length} cells × ${per} seeds…`;
@@ -84,7 +149,7 @@ export function createRobust({ state, analysis, open, showTab }) {
     try {
       ran = await runCells(pool, map, status, progress);
     } catch (e) {
-      status.textContent = `The map failed: ${e.message}`;
+      status.textContent = `The map failed: ${/** @type {Error} */ (e).message}`;
       document.body.dataset.map = 'failed';
       setRunning(false);
       return;
@@ -92,9 +157,10 @@ export function createRobust({ state, analysis, open, showTab }) {
     const { runs, whole, cancelled } = ran;
     // The cells whose every seed finished (all of them unless cancelled); the summary that
     // follows cannot be cancelled, so that what finished is kept.
-    $('map-cancel').disabled = true;
+    $('map-cancel', HTMLButtonElement).disabled = true;
     const kept = { ...map, cells: map.cells.filter((_, i) => whole[i]) };
     try {
+      /** @type {MapCell[][]} */
       const [cells] = await pool.run([
         { kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) },
       ]);
@@ -105,18 +171,20 @@ export function createRobust({ state, analysis, open, showTab }) {
         ? `Map cancelled: ${cells.length} of ${map.cells.length} cells finished and are shown; the others were not run.`
         : `${map.cells.length} cells × ${per} seeds (${map.seeds[0]}–${map.seeds.at(-1)}) in ${(ms / 1000).toFixed(1)} s.`;
       document.body.dataset.map = cancelled ? 'cancelled' : 'done';
-      $('map-csv').disabled = cells.length === 0;
+      $('map-csv', HTMLButtonElement).disabled = cells.length === 0;
     } catch (e) {
-      status.textContent = `The map failed: ${e.message}`;
+      status.textContent = `The map failed: ${/** @type {Error} */ (e).message}`;
       document.body.dataset.map = 'failed';
     } finally {
       setRunning(false);
     }
   }
 
+  /** Draws the last map, once there is one. */
   function draw() {
+    const drawn = /** @type {Drawn} */ (last);
     $('map-figure-label').hidden = false;
-    drawMap($('map-plot'), last, chosenFigure($('map-figure'), last.figures), open);
+    drawMap($('map-plot'), drawn, chosenFigure($('map-figure', HTMLSelectElement), drawn.figures), open);
   }
 
   /** After a run: a shared link with a map in its fragment runs that map, once. */
@@ -128,11 +196,13 @@ export function createRobust({ state, analysis, open, showTab }) {
     showTab,
   });
 
-  $('map-run').addEventListener('click', runMap);
-  $('map-cancel').addEventListener('click', () => pool.cancel());
-  $('map-figure').addEventListener('change', () => last && draw());
-  $('map-csv').addEventListener('click', async () => {
-    const [csv] = await pool.run([{ kind: 'map-csv', map: last.full, cells: last.cells }]);
+  $('map-run', HTMLButtonElement).addEventListener('click', runMap);
+  $('map-cancel', HTMLButtonElement).addEventListener('click', () => pool.cancel());
+  $('map-figure', HTMLSelectElement).addEventListener('change', () => last && draw());
+  $('map-csv', HTMLButtonElement).addEventListener('click', async () => {
+    // CSV is enabled only once a map is drawn.
+    const drawn = /** @type {Drawn} */ (last);
+    const [csv] = await pool.run([{ kind: 'map-csv', map: drawn.full, cells: drawn.cells }]);
     download(new Blob([csv], { type: 'text/csv' }), 'imlab-robust.csv');
   });
 

@@ -4,45 +4,58 @@ import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 import { download } from '../ui/dom.js';
 
-/** Wires the seeds form: `analysis` runs the seeds and draws their bands, `framing()` fits them. */
+/** @typedef {import('../worker/protocol.js').Info} Info */
+
+/**
+ * Wires the seeds form: `analysis` runs the seeds and draws their bands, `framing()` fits them;
+ * the seeds run the scenario `state.info` describes (null until the core first describes one).
+ * @param {{state: {info: Info | null}, analysis: import('./analysis.js').Analysis,
+ *   framing: () => {fit: boolean, from: number}}} parts
+ */
 export function createSeeds({ state, analysis, framing }) {
+  /** @type {string | null} */
   let seedsCsv = null; // the last seed runs' CSV
+  // The form's one field, the number of seeds.
+  const seedCount = () => /** @type {HTMLInputElement} */ ($('seeds-form', HTMLFormElement).elements.namedItem('n'));
 
   async function runSeeds() {
-    const n = Number($('seeds-form').elements.namedItem('n').value);
+    const n = Number(seedCount().value);
     const status = $('seeds-status');
     if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
-      status.textContent = `seeds = ${$('seeds-form').elements.namedItem('n').value}: expected a whole number from 1 to 1000.`;
+      status.textContent = `seeds = ${seedCount().value}: expected a whole number from 1 to 1000.`;
       return;
     }
     status.textContent = 'Running seeds…';
-    const progress = $('seeds-progress');
+    const progress = $('seeds-progress', HTMLProgressElement);
     progress.value = 0;
-    $('seeds-cancel').disabled = false;
+    $('seeds-cancel', HTMLButtonElement).disabled = false;
     document.body.dataset.seeds = 'running';
     try {
-      const first = Number(fieldValue(state.info, 'seed'));
-      const out = await analysis.seeds(n, first, state.info.steps, (p) => {
+      const info = /** @type {Info} */ (state.info);
+      const first = Number(fieldValue(info, 'seed'));
+      const out = await analysis.seeds(n, first, info.steps, (/** @type {number} */ p) => {
         progress.value = p;
         status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`;
       });
       analysis.showSeeds(out, $('seeds-plots'), framing);
       seedsCsv = out.csv;
-      $('seeds-csv').disabled = false;
+      $('seeds-csv', HTMLButtonElement).disabled = false;
       status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
       document.body.dataset.seeds = 'done';
     } catch (e) {
-      const cancelled = e.message === 'cancelled';
-      status.textContent = cancelled ? 'Seed runs cancelled.' : `Seed sweep failed: ${e.message}`;
+      const { message } = /** @type {Error} */ (e);
+      const cancelled = message === 'cancelled';
+      status.textContent = cancelled ? 'Seed runs cancelled.' : `Seed sweep failed: ${message}`;
       document.body.dataset.seeds = cancelled ? 'cancelled' : 'failed';
     } finally {
-      $('seeds-cancel').disabled = true;
+      $('seeds-cancel', HTMLButtonElement).disabled = true;
     }
   }
 
-  $('seeds-run').addEventListener('click', runSeeds);
-  $('seeds-cancel').addEventListener('click', () => analysis.pool.cancel());
-  $('seeds-csv').addEventListener('click', () =>
-    download(new Blob([seedsCsv], { type: 'text/csv' }), 'imlab-seeds.csv'),
+  $('seeds-run', HTMLButtonElement).addEventListener('click', runSeeds);
+  $('seeds-cancel', HTMLButtonElement).addEventListener('click', () => analysis.pool.cancel());
+  // CSV is enabled only once seed runs have finished and left their CSV.
+  $('seeds-csv', HTMLButtonElement).addEventListener('click', () =>
+    download(new Blob([/** @type {string} */ (seedsCsv)], { type: 'text/csv' }), 'imlab-seeds.csv'),
   );
 }

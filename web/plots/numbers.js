@@ -13,7 +13,10 @@ export const STEPS = Array.from({ length: 33 }, (_, i) => i - 16).flatMap((e) =>
   [1, 2, 5].map((m) => Number(`${m}e${e}`)),
 );
 
-/** Decimals that write `step` exactly (0.25 needs 2, 200 needs none). */
+/**
+ * Decimals that write `step` exactly (0.25 needs 2, 200 needs none).
+ * @param {number} step
+ */
 function decimals(step) {
   for (let d = 0; d < 20; d++) {
     const m = step * 10 ** d;
@@ -30,9 +33,16 @@ const LARGE = 1e6;
  * Tick labels with the digits their spacing needs, so that neighbouring ticks never read alike
  * at any zoom; tiny and huge values as powers of ten. A log axis's ticks are each one digit times
  * a power of ten, so three significant digits write every one of them.
+ * @param {uPlot} u
+ * @param {(number | null)[]} splits
+ * @param {number} axisIdx
+ * @param {number} space
+ * @param {number} step
+ * @returns {string[]}
  */
 export function tickLabels(u, splits, axisIdx, space, step) {
-  if (u.scales[u.axes[axisIdx].scale].distr === 3 || !(step > 0)) {
+  // uPlot gives every axis its scale.
+  if (u.scales[/** @type {string} */ (u.axes[axisIdx].scale)].distr === 3 || !(step > 0)) {
     return splits.map((v) => (v == null ? '' : String(Number(v.toPrecision(3)))));
   }
   // A tick that should be zero often misses it by a rounding error, which would print as −0.
@@ -55,6 +65,9 @@ export function tickLabels(u, splits, axisIdx, space, step) {
  * The least room between time ticks (px), `least` or more: room for a label with the window's
  * whole digits and the decimals of the finest step `least` allows, and a gap of one `em` (the
  * font size, px), so that the long labels of a narrow window do not run into each other.
+ * @param {number} em
+ * @param {number} least
+ * @returns {(u: uPlot, axisIdx: number, lo: number, hi: number, dim: number) => number}
  */
 export const timeSpace = (em, least) => (u, axisIdx, lo, hi, dim) => {
   const step = ((hi - lo) * least) / dim;
@@ -63,7 +76,10 @@ export const timeSpace = (em, least) => (u, axisIdx, lo, hi, dim) => {
   return Math.max(least, (chars * 0.6 + 1) * em);
 };
 
-/** A value as the read-out shows it: 6 significant digits. */
+/**
+ * A value as the read-out shows it: 6 significant digits.
+ * @param {number | null | undefined} v
+ */
 export const six = (v) => (v == null ? '–' : String(Number(v.toPrecision(6))));
 
 /**

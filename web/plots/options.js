@@ -7,11 +7,16 @@ import { drawMarker, pickOnClick } from './inspect.js';
 
 const SYNC_KEY = 'imlab-time';
 
+/** @typedef {import('./plot-defs.js').PlotDef} PlotDef */
+
 /**
  * The legend's series of `plot`: time, its signals, then its constant lines.
+ * @param {PlotDef} plot
+ * @param {number} lineWidth
  * @returns {uPlot.Series[]}
  */
 function seriesOf(plot, lineWidth) {
+  /** @type {uPlot.Series[]} */
   const series = [{ label: 't (s)', value: (u, v) => (v == null ? '–' : `${six(v)} s`) }];
   for (const [column, label, axis] of plot.series) {
     const style = STYLE[column] ?? { stroke: '#444' };
@@ -32,6 +37,8 @@ function seriesOf(plot, lineWidth) {
 
 /**
  * The time axis, the left y-axis and, for a plot with `unit2`, the right one; `k` scales the text.
+ * @param {PlotDef} plot
+ * @param {number} k
  * @returns {uPlot.Axis[]}
  */
 function axesOf(plot, k) {
@@ -64,6 +71,9 @@ function axesOf(plot, k) {
 
 /**
  * The options of the chart of `plot` in the set `set` (a Plots), `width` px wide.
+ * @param {import('./plots.js').Plots} set
+ * @param {PlotDef} plot
+ * @param {number} width
  * @returns {uPlot.Options}
  */
 export function chartOptions(set, plot, width) {

@@ -4,6 +4,23 @@
 // sign −1 draws the column negated (the lower half of a ±band), and `about` adds the column to
 // another (an estimate ± its band). Later series are drawn on top, so the true signals come after
 // their estimates and stay visible.
+
+/**
+ * A signal of a plot: [column, label, axis, sign, about], as above (an axis of null is the left one).
+ * @typedef {[column: string, label: string, axis?: 'y' | 'y2' | null, sign?: number, about?: string]} PlotSeries
+ */
+/**
+ * A plot: its id, its title, the unit of its left axis and, for a plot with a right-hand axis,
+ * of that one; its signals; its constant lines, each [label, axis] (their values come from the
+ * core); whether its y-axis is logarithmic; whether it shows the backstepping controller's own
+ * signals; and the box it goes in, where that is not its set's. A walkthrough plot's constant
+ * lines are the NIS band (`nisBand`) or ± the bound its `bound` names (h2 or h4).
+ * @typedef {{id: string, title: string, unit: string, unit2?: string, series: PlotSeries[],
+ *   constants?: [label: string, axis?: 'y' | 'y2'][], log?: boolean, backstepping?: boolean,
+ *   container?: HTMLElement, nisBand?: boolean, bound?: string}} PlotDef
+ */
+
+/** @type {PlotDef[]} */
 export const PLOTS = [
   {
     id: 'speed',

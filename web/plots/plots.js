@@ -9,6 +9,15 @@ import { inspectByKeys } from './inspect.js';
 export { PLOTS } from './plot-defs.js';
 export { six } from './numbers.js';
 
+/** @typedef {import('./plot-defs.js').PlotDef} PlotDef */
+/** @typedef {import('../worker/protocol.js').View} View */
+/** @typedef {[number, number]} Span a time range [t0, t1] */
+/**
+ * A chart's series as uPlot keeps it: `_stroke`, which its types leave out, is the colour the
+ * series was drawn in.
+ * @typedef {uPlot.Series & {_stroke?: CanvasRenderingContext2D['strokeStyle']}} DrawnSeries
+ */
+
 /**
  * A set of plots sharing the synchronised time axis. `onWindow(t0, t1)` asks for the data of a
  * zoom window, `onFull()` for the whole run, `onPick(t)` inspects a time. `constants(plot)` gives
@@ -20,9 +29,9 @@ export class Plots {
    * `onPick(t)` inspects time t (a click, or the arrow keys on a focused plot); `sampleTime()` is
    * the run's Ts, the step of one arrow press.
    * @param {HTMLElement} container
-   * @param {any[]} defs the plots' definitions (plot-defs.js)
+   * @param {PlotDef[]} defs the plots' definitions (plot-defs.js)
    * @param {{onWindow: (t0: number, t1: number) => void, onFull: () => void, onPick: (t: number) => void,
-   *   constants?: (plot: any) => number[], framing: () => {fit: boolean, from: number}, height?: number,
+   *   constants?: (plot: PlotDef) => number[], framing: () => {fit: boolean, from: number}, height?: number,
    *   sampleTime?: () => number | null, lazy?: boolean}} options
    */
   constructor(
@@ -35,7 +44,7 @@ export class Plots {
     this.onWindow = onWindow;
     this.onFull = onFull;
     this.onPick = onPick;
-    /** @type {(plot: any) => number[]} the constant lines of a plot (the voltage limit, the NIS band) */
+    /** @type {(plot: PlotDef) => number[]} the constant lines of a plot (the voltage limit, the NIS band) */
     this.constants = constants;
     this.framing = framing;
     this.height = height;
@@ -49,19 +58,24 @@ export class Plots {
     this.slots = [];
     /** @type {(uPlot | null)[]} each plot's chart; null while a lazy set has not drawn it */
     this.charts = [];
-    /** @type {any} the data the charts show (the last view shown or refined), for charts drawn later */
+    /** @type {View | null} the data the charts show (the last view shown or refined), for charts drawn later */
     this.view = null;
     // A lazy set draws a chart when its figure comes within half a screen of the viewport: the
     // first run draws the plots in view, not eight, and a hidden or embedded-out plot costs nothing.
     this.observer = lazy
-      ? new IntersectionObserver((entries) => entries.forEach((e) => e.isIntersecting && this.draw(e.target)), {
-          rootMargin: '50% 0px',
-        })
+      ? new IntersectionObserver(
+          // It observes the plots' figures only.
+          (entries) => entries.forEach((e) => e.isIntersecting && this.draw(/** @type {HTMLElement} */ (e.target))),
+          { rootMargin: '50% 0px' },
+        )
       : null;
     this.syncing = false;
-    this.full = null; // [t0, t1] of the whole run
-    this.window = null; // the zoom window, or null for the whole run
-    this.marker = null; // the inspected time
+    /** @type {Span | null} [t0, t1] of the whole run */
+    this.full = null;
+    /** @type {Span | null} the zoom window, or null for the whole run */
+    this.window = null;
+    /** @type {number | null} the inspected time */
+    this.marker = null;
     this.ifoc = false;
   }
 
@@ -76,11 +90,15 @@ export class Plots {
     );
   }
 
+  /** @param {PlotDef} plot */
   title(plot) {
     return plot.backstepping && this.ifoc ? plot.title + NOT_DRIVING : plot.title;
   }
 
-  /** The text alternative of plot `plot`: its axes, its signals and the run's figures. */
+  /**
+   * The text alternative of plot `plot`: its axes, its signals and the run's figures.
+   * @param {PlotDef} plot
+   */
   caption(plot) {
     const units = plot.unit2 ? `${plot.unit} (left) and ${plot.unit2} (right)` : plot.unit;
     const signals = plot.series.map(([, label]) => label).join('; ');
@@ -89,7 +107,10 @@ export class Plots {
     return `${this.title(plot)}, in ${units} against time t in s. Signals: ${signals}.${this.captions ? ` ${this.captions}` : ''} ${keys}`;
   }
 
-  /** Sets the run's figures (one sentence) that every plot's caption carries. */
+  /**
+   * Sets the run's figures (one sentence) that every plot's caption carries.
+   * @param {string} figures
+   */
   describe(figures) {
     this.captions = figures;
     this.defs.forEach((plot, i) => {
@@ -103,7 +124,11 @@ export class Plots {
     return /** @type {uPlot[]} */ (this.charts.filter((c) => c !== null));
   }
 
-  /** Redraws every chart with text and lines `scale` times their normal size (presentation mode). */
+  /**
+   * Redraws every chart with text and lines `scale` times their normal size (presentation mode).
+   * @param {number} scale
+   * @param {number} height
+   */
   rescale(scale, height) {
     this.scale = scale;
     this.height = height;
@@ -119,16 +144,24 @@ export class Plots {
     if (this.window) for (const c of this.drawn()) c.setScale('x', { min: this.window[0], max: this.window[1] });
   }
 
-  /** Marks the inspected time on every plot (null clears it). */
+  /**
+   * Marks the inspected time on every plot (null clears it).
+   * @param {number | null} t
+   */
   mark(t) {
     if (t === this.marker) return;
     this.marker = t;
     for (const c of this.drawn()) c.redraw(false);
   }
 
+  /**
+   * Zooms every other chart to the time window of chart `source`, and asks for that window's data.
+   * @param {uPlot} source
+   */
   zoomed(source) {
     if (this.syncing) return;
-    const { min, max } = source.scales.x;
+    // A chart's time scale has its range once the chart is drawn.
+    const { min, max } = /** @type {{min: number, max: number}} */ (source.scales.x);
     this.window = [min, max];
     this.syncing = true;
     for (const c of this.drawn()) if (c !== source) c.setScale('x', { min, max });
@@ -136,6 +169,11 @@ export class Plots {
     this.onWindow(min, max);
   }
 
+  /**
+   * The chart data of `plot` in `view`: its times, its series and its constant lines.
+   * @param {PlotDef} plot
+   * @param {View} view
+   */
   data(plot, view) {
     const group = view.plots[plot.id];
     const t = group.t;
@@ -188,6 +226,7 @@ export class Plots {
   /**
    * Draws the chart in figure `div`, `width` px wide, with the data shown, unless it is drawn or
    * there is none.
+   * @param {HTMLElement} div
    */
   draw(div, width = this.width()) {
     const i = this.slots.indexOf(div);
@@ -212,7 +251,10 @@ export class Plots {
     await null;
   }
 
-  /** Whether `div` is in the viewport, and shown. */
+  /**
+   * Whether `div` is in the viewport, and shown.
+   * @param {Element} div
+   */
   static inView(div) {
     const r = div.getBoundingClientRect();
     return r.height > 0 && r.top < innerHeight && r.bottom > 0;
@@ -222,6 +264,8 @@ export class Plots {
    * Draws a whole run, every chart in this task (in a lazy set, the charts in view; the
    * others when they come near it): an envelope has at most four points per pixel column, so a
    * chart costs the same for any run length.
+   * @param {View} view
+   * @param {{ifoc?: boolean}} [options] whether the IFOC baseline drives the motor
    */
   show(view, { ifoc = false } = {}) {
     const t = view.plots[this.defs[0].id].t;
@@ -239,7 +283,8 @@ export class Plots {
     );
     for (const [i, plot] of this.defs.entries()) {
       const div = this.slots[i];
-      div.querySelector('.caption').textContent = this.caption(plot);
+      // prepare() gave every figure its caption.
+      /** @type {Element} */ (div.querySelector('.caption')).textContent = this.caption(plot);
       div.setAttribute('aria-label', this.title(plot));
       const chart = this.charts[i];
       if (chart === null) {
@@ -255,7 +300,10 @@ export class Plots {
     }
   }
 
-  /** Replaces the data with that of a zoom window (the axes keep the window) or the whole run. */
+  /**
+   * Replaces the data with that of a zoom window (the axes keep the window) or the whole run.
+   * @param {View} view
+   */
   refine(view) {
     if (this.view === null) return;
     this.view = view;
@@ -290,9 +338,12 @@ export class Plots {
       return {
         canvas: c.ctx.canvas,
         title: this.title(this.defs[i]),
-        key: c.series
-          .slice(1)
-          .map((s) => ({ label: s.label, stroke: /** @type {any} */ (s)._stroke ?? s.stroke, dash: s.dash })),
+        // Every series of a chart has its colour as a string (see seriesOf).
+        key: c.series.slice(1).map((s) => ({
+          label: s.label,
+          stroke: /** @type {DrawnSeries} */ (s)._stroke ?? /** @type {string} */ (s.stroke),
+          dash: s.dash,
+        })),
       };
     });
   }

@@ -34,7 +34,8 @@ function extent(u, scale, from) {
       const y = u.data[s];
       for (let j = 0; j < t.length; j++) {
         if (t[j] < start) continue;
-        const v = y[j];
+        // The charts fitted here hold numbers only, never null (which would compare as 0).
+        const v = /** @type {number} */ (y[j]);
         if (v < lo) lo = v;
         if (v > hi) hi = v;
       }
@@ -73,6 +74,7 @@ const MIN_SHARE = 0.5;
  * @returns {[Span, Span]}
  */
 function shareZero(a, b) {
+  /** @type {(span: Span) => number} */
   const below = ([lo, hi]) => -lo / (hi - lo); // zero's height as a fraction of the axis
   const [fa, fb] = [below(a), below(b)];
   if (!(fa >= 0 && fa <= 1 && fb >= 0 && fb <= 1) || fa === fb) return [a, b];

@@ -3,6 +3,13 @@
 // a darker shade of the same colour).
 const REFERENCE = { stroke: '#6b6b6b', dash: [6, 4] };
 const BAND = { stroke: '#8a8a8a', dash: [3, 3] };
+
+/**
+ * How a signal is drawn: its colour, and its dash pattern (solid without one).
+ * @typedef {{stroke: string, dash?: number[]}} LineStyle
+ */
+
+/** @type {Partial<Record<string, LineStyle>>} each signal's style, by column */
 export const STYLE = {
   omega_ref: REFERENCE,
   flux_ref: REFERENCE,
