@@ -31,6 +31,9 @@ import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
 import { createGrading } from './challenge/grade.js';
 
+/** @import * as P from './worker/protocol.js' */
+/** @import { Unreached } from './run/figures-view.js' */
+
 /**
  * Lists the built-in challenges in the Lessons tab, once: when the page is idle after the first run
  * or when the tab is first opened, whichever comes first (their listing loads the core's tools,
@@ -54,7 +57,28 @@ function registerServiceWorker() {
   navigator.serviceWorker?.register('sw.js');
 }
 
+/**
+ * The page's shared state: `state` below, whose fields are described there.
+ * @typedef {{
+ *   info: P.Info | null,
+ *   nisBand: [number, number],
+ *   notice: string | null,
+ *   runId: number,
+ *   running: boolean,
+ *   ranScenario: string | null,
+ *   ranLaws: boolean,
+ *   shownRun: number,
+ *   transient: {t: number, reason: string} | null,
+ *   figures: P.Figure[],
+ *   unreached: Unreached[],
+ *   export: {serial: number, parts: Blob[]} | null,
+ *   pins: string[],
+ *   pinning: boolean,
+ * }} State
+ */
+
 // What the page's parts share; in brackets, the parts that write each field.
+/** @type {State} */
 const state = {
   info: null, // the core's description of the scenario in the form (settings)
   nisBand: [0, 0], // the NIS band, from the core (settings)
@@ -79,8 +103,11 @@ const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
 /**
  * The worker's messages handled by the page's parts, by type: one part a type. Two parts that
  * would handle the same type are a mistake of the page, refused rather than one silently lost.
+ * @param {...{handlers: P.Handlers}} parts
+ * @returns {P.Handlers}
  */
 function handlersOf(...parts) {
+  /** @type {Record<string, unknown>} */
   const handlers = {};
   for (const part of parts) {
     for (const [type, handle] of Object.entries(part.handlers)) {
@@ -88,33 +115,41 @@ function handlersOf(...parts) {
       handlers[type] = handle;
     }
   }
-  return handlers;
+  return /** @type {P.Handlers} */ (handlers);
 }
 
-const client = new RunClient((reason, restarting) => {
-  run.workerFailed(reason, restarting);
-  if (restarting) pins.show([], []);
-});
+const client = new RunClient(
+  /**
+   * @param {string} reason
+   * @param {boolean} restarting
+   */
+  (reason, restarting) => {
+    run.workerFailed(reason, restarting);
+    if (restarting) pins.show([], []);
+  },
+);
 const plots = new Plots(ui.plots, PLOTS, {
   onWindow: (t0, t1) => views.requestWindow(t0, t1),
   onFull: () => views.fullRun(),
   onPick: (t) => views.requestInspect(t),
   sampleTime,
   framing,
-  constants: (plot) => (plot.constants ? [1, -1].map((s) => s * state.info.component_limit) : []),
+  // Constant lines are drawn with a run's plots, after its scenario was described.
+  constants: (plot) =>
+    plot.constants ? [1, -1].map((s) => s * /** @type {P.Info} */ (state.info).component_limit) : [],
   lazy: true,
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
   inspectBox: ui.inspect,
-  knob: (key) => settings.knob(key),
+  knob: (/** @type {string} */ key) => settings.knob(key),
   onCompare: () => views.compare(),
-  onWindow: (t0, t1) => views.requestWindow(t0, t1),
+  onWindow: (/** @type {number} */ t0, /** @type {number} */ t1) => views.requestWindow(t0, t1),
   onFull: () => views.fullRun(),
-  onPick: (t) => views.requestInspect(t),
+  onPick: (/** @type {number} */ t) => views.requestInspect(t),
   framing,
   // The editor of a step's own law asks the core built with its tools (fetched on the first).
-  preview: (step, text) => client.job('law-preview', { step, text }),
+  preview: (/** @type {number} */ step, /** @type {string} */ text) => client.job('law-preview', { step, text }),
   language: () => client.job('law-language'),
 });
 walkthrough.plots.sampleTime = sampleTime;
@@ -127,7 +162,8 @@ walkthrough.onBuilt = () => challenge.lock();
 // So do the settings' closed groups, built after the first run or when one is opened (controls.js).
 ui.form.addEventListener('fieldsbuilt', () => challenge.lock());
 const plotSets = [plots, walkthrough.plots];
-const analysis = new Analysis({ scenario: () => state.info.encoded });
+// The analyses run the scenario the core last described.
+const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.info).encoded });
 
 const views = createViews({ client, state, plots, walkthrough });
 const presentation = createPresentation({ state, plots, walkthrough });
@@ -138,14 +174,14 @@ const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthrough
 // KaTeX is fetched when an equation is first shown; a pointer over the walkthrough's tab, or the
 // keyboard's focus on it, starts the fetch a moment sooner.
 for (const event of ['pointerenter', 'focus'])
-  $('tab-walkthrough').addEventListener(event, () => loadTex().catch(() => {}), { once: true });
-$('tab-lessons').addEventListener('click', listChallenges, { once: true });
+  $('tab-walkthrough', HTMLButtonElement).addEventListener(event, () => loadTex().catch(() => {}), { once: true });
+$('tab-lessons', HTMLButtonElement).addEventListener('click', listChallenges, { once: true });
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
 const robust = createRobust({
   state,
   analysis,
   showTab: tabs.showTab,
-  open: (scenario) => {
+  open: (/** @type {string} */ scenario) => {
     tabs.showTab('plots');
     settings.load(scenario);
   },
@@ -195,6 +231,7 @@ const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
   lessons: LESSONS.map((lesson) => renderLesson(lesson, TABLE)),
+  /** @param {{run: string, tab?: string, map?: string}} lesson a lesson of teaching.js, its texts rendered */
   onOpen: async (lesson) => {
     // A lesson starts from its own state: no runs pinned in another lesson stay in its overlay.
     pins.clear();

@@ -6,7 +6,17 @@ import { png } from './png.js';
 import { presetNamed } from '../ui/url.js';
 import { download } from '../ui/dom.js';
 
-/** The export buttons; the CSV export under way is `state.export`: {serial, parts: [Blob]}. */
+/** @import * as P from '../worker/protocol.js' */
+/** @import { State } from '../main.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Plots } from '../plots/plots.js' */
+/** @import { Walkthrough } from '../teaching/walkthrough.js' */
+/** @import { PlotImage } from './png.js' */
+
+/**
+ * The export buttons; the CSV export under way is `state.export`: {serial, parts: [Blob]}.
+ * @param {{client: RunClient, state: State, plots: Plots, walkthrough: Walkthrough}} parts
+ */
 export function createExport({ client, state, plots, walkthrough }) {
   let exportSerial = 0;
 
@@ -22,12 +32,21 @@ export function createExport({ client, state, plots, walkthrough }) {
     client.post({ type: 'csv', id: state.runId, serial });
   }
 
+  /**
+   * Cancels the export under way, with `status` for the status line.
+   * @param {string} status
+   */
   function cancelExport(status) {
-    client.post({ type: 'csv-cancel', serial: state.export.serial });
+    // Called only while an export is under way (main.js and the run check `state.export`).
+    client.post({ type: 'csv-cancel', serial: /** @type {NonNullable<State['export']>} */ (state.export).serial });
     endExport('cancelled', status);
   }
 
-  /** Ends the export under way: `outcome` is done, cancelled or failed, `status` the status line. */
+  /**
+   * Ends the export under way: `outcome` is done, cancelled or failed, `status` the status line.
+   * @param {'done' | 'cancelled' | 'failed'} outcome
+   * @param {string} status
+   */
   function endExport(outcome, status) {
     state.export = null;
     ui.csv.disabled = false;
@@ -37,7 +56,8 @@ export function createExport({ client, state, plots, walkthrough }) {
   }
 
   function fileStem() {
-    return `imlab-${presetNamed(state.info.encoded)}-${state.runId}`;
+    // Only a run's download is named, and a run has a described scenario.
+    return `imlab-${presetNamed(/** @type {P.Info} */ (state.info).encoded)}-${state.runId}`;
   }
 
   /** The lines the PNG export carries above the plots: the scenario and the run's figures. */
@@ -46,7 +66,7 @@ export function createExport({ client, state, plots, walkthrough }) {
       .filter((f) => !f.name.startsWith('mean_nis_'))
       .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`)
       .concat(state.unreached.map((u) => `${u.label}: ${u.text}`));
-    const lines = [`IM Lab · ${state.info.encoded}`];
+    const lines = [`IM Lab · ${/** @type {P.Info} */ (state.info).encoded}`];
     for (let i = 0; i < figures.length; i += 3) lines.push(figures.slice(i, i + 3).join(' · '));
     return lines;
   }
@@ -59,15 +79,18 @@ export function createExport({ client, state, plots, walkthrough }) {
       say('These plots are still being drawn; export them in a moment.', 'info');
       return;
     }
-    download(await png(await set.figures(), pngHeader()), `${fileStem()}.png`);
+    // The plots' series are labelled with text.
+    download(await png(/** @type {PlotImage[]} */ (await set.figures()), pngHeader()), `${fileStem()}.png`);
   });
 
+  /** @type {P.Handlers} */
   const handlers = {
     async csv({ serial, bytes, rows, total }) {
       const job = state.export;
       if (job?.serial !== serial) return; // cancelled
       // Each chunk becomes a Blob at once: the browser keeps blob data out of the page's heap.
-      const part = new Blob([bytes]);
+      // The chunk's buffer was transferred from the worker: an ArrayBuffer of its own, not shared.
+      const part = new Blob([/** @type {Uint8Array<ArrayBuffer>} */ (bytes)]);
       // Reading its last byte waits until the browser has stored the chunk, and fails if it refused
       // it (Chromium keeps at most 2 GiB of blobs where it cannot spill them to disk).
       try {
@@ -77,7 +100,7 @@ export function createExport({ client, state, plots, walkthrough }) {
         const stored = job.parts.reduce((sum, p) => sum + p.size, 0);
         endExport('failed', 'CSV export failed');
         say(
-          `The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${e.name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`,
+          `The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${/** @type {Error} */ (e).name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`,
         );
         return;
       }

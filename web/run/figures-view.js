@@ -1,22 +1,52 @@
 // The run's figures, all from the core: the strip of every figure with its unit, window and
 // trend, the compact row of key figures, and the warnings they must not be read without.
 import { ui } from '../ui/page.js';
+import { el } from '../ui/dom.js';
+
+/** @import * as P from '../worker/protocol.js' */
+/** @import { Plots } from '../plots/plots.js' */
+
+/**
+ * How a final value was still moving at the end of the run (the core's `Trend`): the slope of the
+ * line through the last tenth (per s) over its span `over` (s), the tolerance and scatter about
+ * the line, the change the approach still has to go (null when it traces none), and its state.
+ * @typedef {{rate: number, over: number, tolerance: number, scatter: number, to_go: number | null,
+ *   state: 'settled' | 'changing' | 'drifting' | 'fluctuating' | 'ran away', settled: boolean,
+ *   settled_in_last_tenth: boolean}} Trend
+ */
+
+/**
+ * A figure the run had not reached by its end (the core's `Unreached`): its name and label, its
+ * place among the figures (before the figure at `index`), the part of the run it covers, the time
+ * of the last sample and the words that stand in place of its value.
+ * @typedef {{name: string, label: string, index: number, window: string, end: number, text: string}} Unreached
+ */
+
+/**
+ * What the figures must not be read without (the core's `Warning`): a run that ran away, or an
+ * inconsistent filter, in words.
+ * @typedef {{kind: 'runaway' | 'inconsistent', text: string}} Warning
+ */
 
 // The figures the compact row shows, in this order.
 const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_final'];
 
-/** The compact row of key figures that stands for the strip on small screens and projectors. */
+/**
+ * The compact row of key figures that stands for the strip on small screens and projectors.
+ * @param {P.Figure[]} figures
+ * @param {P.Figure | undefined} rated
+ */
 function showKeyFigures(figures, rated) {
   const [low, high] = ['mean_nis_low', 'mean_nis_high'].map((n) => figures.find((f) => f.name === n));
   const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name))
-    .filter(Boolean)
+    .filter((f) => f !== undefined)
     .map((f) => {
       const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
       const span = document.createElement('span');
       if (f.name === 'current_peak' && rated)
         span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
       else if (f.name === 'speed_error_final' && f.trend) {
-        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', drifting: 'drifting', fluctuating: 'fluctuating', 'ran away': 'ran away' }[f.trend.state]})`;
+        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', drifting: 'drifting', fluctuating: 'fluctuating', 'ran away': 'ran away' }[/** @type {Trend} */ (f.trend).state]})`;
         if (!f.trend.settled) span.className = 'unsettled';
       } else if (f.name === 'mean_nis' && low && high) {
         span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
@@ -30,9 +60,11 @@ function showKeyFigures(figures, rated) {
 /**
  * Whether a final value `f` had settled, in words, from its trend over the end of the run:
  * [short text, the detail for its tooltip].
+ * @param {P.Figure} f
+ * @returns {[string, string]}
  */
 function trendText(f) {
-  const { rate, over, tolerance, scatter, to_go: toGo, state } = f.trend;
+  const { rate, over, tolerance, scatter, to_go: toGo, state } = /** @type {Trend} */ (f.trend);
   const unit = f.unit ? ` ${f.unit}` : '';
   const approach =
     toGo == null
@@ -49,26 +81,37 @@ function trendText(f) {
   return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer${left}`, fit];
 }
 
-/** An item of the strip for a figure the run had not reached by its end: the words, no value. */
+/**
+ * An item of the strip for a figure the run had not reached by its end: the words, no value.
+ * @param {Unreached} u
+ * @returns {HTMLElement}
+ */
 function unreachedItem(u) {
-  const item = Object.assign(document.createElement('div'), { className: 'figure unsettled' });
+  const item = el('div', { className: 'figure unsettled' });
   // As `imlab metrics` prints it: NAME_reached,0.
   Object.assign(item.dataset, { name: `${u.name}_reached`, value: '0' });
   item.append(
-    Object.assign(document.createElement('dt'), { textContent: u.label }),
-    Object.assign(document.createElement('dd'), { textContent: u.text, title: `no value: ${u.text}; ${u.window}` }),
-    Object.assign(document.createElement('dd'), { className: 'window', textContent: u.window }),
+    el('dt', { textContent: u.label }),
+    el('dd', { textContent: u.text, title: `no value: ${u.text}; ${u.window}` }),
+    el('dd', { className: 'window', textContent: u.window }),
   );
   return item;
 }
 
-/** The figures display; the plots in `plotSets` carry the figures in their text alternatives. */
+/**
+ * The figures display; the plots in `plotSets` carry the figures in their text alternatives.
+ * @param {{plotSets: Plots[]}} parts
+ */
 export function createFiguresView({ plotSets }) {
   /**
    * The figures strip: each figure of the run with its unit and window, and in place of a figure
    * the run had not reached by its end, the words that say so (all from the core).
+   * @param {P.Figure[]} figures
+   * @param {Warning[]} [warnings]
+   * @param {Unreached[]} [unreached]
    */
   function show(figures, warnings = [], unreached = []) {
+    /** @param {P.Figure} f */
     const fmt = (f) => {
       if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
       if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
@@ -90,7 +133,7 @@ export function createFiguresView({ plotSets }) {
           const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
           text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;
         }
-        const item = Object.assign(document.createElement('div'), { className: 'figure' });
+        const item = /** @type {HTMLElement} */ (el('div', { className: 'figure' }));
         item.dataset.name = f.name;
         item.dataset.value = String(f.value);
         // A value read at the last sample says whether the run had settled by then.
@@ -103,20 +146,17 @@ export function createFiguresView({ plotSets }) {
           Object.assign(item.dataset, { low: String(nis.mean_nis_low), high: String(nis.mean_nis_high) });
         if (f.name === 'current_peak' && rated) item.dataset.rated = String(rated.value);
         item.append(
-          Object.assign(document.createElement('dt'), { textContent: f.label }),
-          Object.assign(document.createElement('dd'), {
+          el('dt', { textContent: f.label }),
+          el('dd', {
             textContent: text,
             title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}`,
           }),
-          Object.assign(document.createElement('dd'), { className: 'window', textContent: f.window }),
+          el('dd', { className: 'window', textContent: f.window }),
         );
-        if (trend)
-          item.append(
-            Object.assign(document.createElement('dd'), { className: 'trend', textContent: trend[0], title: trend[1] }),
-          );
+        if (trend) item.append(el('dd', { className: 'trend', textContent: trend[0], title: trend[1] }));
         return item;
       })
-      .filter(Boolean);
+      .filter((item) => item !== null);
     // What the figures must not be read without, in the core's words.
     // (A run that ran away says so in the message above, as a failure.)
     const warning = warnings
@@ -130,7 +170,11 @@ export function createFiguresView({ plotSets }) {
     showKeyFigures(figures, rated);
     // The plots' text alternatives carry the same figures.
     const sentence = items
-      .map((item) => `${item.querySelector('dt').textContent} ${item.querySelector('dd').textContent}`)
+      // Every item has its label (dt) and its value or words (dd).
+      .map(
+        (item) =>
+          `${/** @type {HTMLElement} */ (item.querySelector('dt')).textContent} ${/** @type {HTMLElement} */ (item.querySelector('dd')).textContent}`,
+      )
       .join('; ');
     for (const set of plotSets)
       set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');

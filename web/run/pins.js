@@ -5,6 +5,12 @@ import uPlot from '../../vendor/uPlot.esm.js';
 import { $, say, ui } from '../ui/page.js';
 import { decodePins, fragment, setFragment } from '../ui/url.js';
 import { excerpt, listed } from '../ui/quote.js';
+import { el } from '../ui/dom.js';
+
+/** @import * as P from '../worker/protocol.js' */
+/** @import { State } from '../main.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Plots } from '../plots/plots.js' */
 
 // A pins fragment longer than this is refused whole (characters): four pins of the longest
 // scenario the codec accepts (16 KiB each) fit.
@@ -18,9 +24,15 @@ const COLOURS = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
 /**
  * One overlay chart `width` px wide: `series` against the times `t`, named `names`. The current
  * run, first when it is drawn, is black; each pin keeps its colour in both charts.
+ * @param {string} title
+ * @param {string[]} names
+ * @param {Float64Array} t
+ * @param {Float64Array[]} series
+ * @param {number} width
+ * @returns {HTMLElement}
  */
 function overlayChart(title, names, t, series, width) {
-  const div = Object.assign(document.createElement('div'), { className: 'plot' });
+  const div = el('div', { className: 'plot' });
   const opts = {
     title,
     width,
@@ -43,6 +55,8 @@ function overlayChart(title, names, t, series, width) {
 /**
  * The pins of a link's fragment `shared` that are sent to the worker: none if the fragment is too
  * long, and no more than the core can take; each one left out is said.
+ * @param {string} shared
+ * @returns {string[] | null}
  */
 function pinsFromLink(shared) {
   if (shared.length > MAX_PINS_CHARS) {
@@ -63,18 +77,26 @@ function pinsFromLink(shared) {
   return sent;
 }
 
+/**
+ * The pins: the list, the overlay and the link's pins; the worker's replies about them (`handlers`).
+ * @param {{client: RunClient, state: State, plots: Plots}} parts
+ */
 export function createPins({ client, state, plots }) {
   let shared = fragment('pins'); // from the link that opened the page
 
-  /** Shows the pinned runs (with what differs from the current run) and keeps them in the link. */
+  /**
+   * Shows the pinned runs (with what differs from the current run) and keeps them in the link.
+   * @param {string[]} scenarios
+   * @param {string[]} legends
+   */
   function show(scenarios, legends) {
     state.pins = scenarios;
     setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
     $('pins').replaceChildren(
       ...scenarios.map((s, i) => {
-        const unpin = Object.assign(document.createElement('button'), { type: 'button', textContent: 'Unpin' });
+        const unpin = el('button', { type: 'button', textContent: 'Unpin' });
         unpin.addEventListener('click', () => client.post({ type: 'unpin', index: i }));
-        const li = Object.assign(document.createElement('li'), { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
+        const li = el('li', { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
         li.append(unpin);
         return li;
       }),
@@ -91,18 +113,22 @@ export function createPins({ client, state, plots }) {
     client.post({
       type: 'overlay',
       id: state.runId,
-      column: $('overlay-column').value,
+      column: $('overlay-column', HTMLSelectElement).value,
       t0: 0,
       t1: Number.MAX_VALUE,
       buckets: Math.round(plots.width()),
     });
   }
 
-  // Overlay of the current run and the pins, and their differences (all envelopes from the core).
+  /**
+   * Overlay of the current run and the pins, and their differences (all envelopes from the core).
+   * @param {string} column
+   * @param {Float64Array[]} data
+   */
   function drawOverlay(column, data) {
     window.imlab.overlay = { column, data };
     const n = state.pins.length;
-    const label = $('overlay-column').selectedOptions[0].textContent;
+    const label = $('overlay-column', HTMLSelectElement).selectedOptions[0].textContent;
     const pinNames = state.pins.map((_, i) => `pin ${i + 1}`);
     $('overlay-plots').replaceChildren(
       overlayChart(
@@ -126,18 +152,24 @@ export function createPins({ client, state, plots }) {
   function afterRun() {
     if (shared) {
       const sent = pinsFromLink(shared);
-      if (sent) client.post({ type: 'pin', scenarios: sent, column: $('overlay-column').value });
+      if (sent) client.post({ type: 'pin', scenarios: sent, column: $('overlay-column', HTMLSelectElement).value });
     } else if (state.pins.length) {
-      client.post({ type: 'pin', scenarios: [], column: $('overlay-column').value });
+      client.post({ type: 'pin', scenarios: [], column: $('overlay-column', HTMLSelectElement).value });
     }
     shared = null;
   }
 
-  $('pin').addEventListener('click', () =>
-    client.post({ type: 'pin', scenarios: [state.info.encoded], column: $('overlay-column').value }),
+  // Pins the scenario the core last described (a Pin before the first description throws here).
+  $('pin', HTMLButtonElement).addEventListener('click', () =>
+    client.post({
+      type: 'pin',
+      scenarios: [/** @type {P.Info} */ (state.info).encoded],
+      column: $('overlay-column', HTMLSelectElement).value,
+    }),
   );
-  $('overlay-column').addEventListener('change', requestOverlay);
+  $('overlay-column', HTMLSelectElement).addEventListener('change', requestOverlay);
 
+  /** @type {P.Handlers} */
   const handlers = {
     'pin-progress'({ index, count, done, total }) {
       state.pinning = true;

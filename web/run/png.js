@@ -2,8 +2,26 @@
 // scenario and the run's figures.
 
 /**
+ * A series in a plot's colour key: its label, and its line's colour and dashes (px at scale 1).
+ * @typedef {{label: string, stroke: string | CanvasGradient | CanvasPattern, dash?: number[]}} KeyEntry
+ */
+
+/**
+ * A plot as Plots.figures() gives it: its chart's canvas, its title and its colour key.
+ * @typedef {{canvas: HTMLCanvasElement, title: string, key: KeyEntry[]}} PlotImage
+ */
+
+/**
+ * A row of a colour key in the image, each series with its left edge.
+ * @typedef {(KeyEntry & {x: number})[]} KeyRow
+ */
+
+/**
  * One PNG of `figures` (from Plots.figures()) under a header of text lines (the scenario and the
  * run's figures): each plot with its title and a colour key of its series.
+ * @param {PlotImage[]} figures
+ * @param {string[]} header
+ * @returns {Promise<Blob | null>}
  */
 export async function png(figures, header) {
   const scale = devicePixelRatio || 1;
@@ -11,19 +29,21 @@ export async function png(figures, header) {
   const font = `${15 * scale}px system-ui`;
   const width = Math.max(...figures.map((f) => f.canvas.width));
   const out = document.createElement('canvas');
-  const ctx = out.getContext('2d');
+  // A new canvas has no context yet, so it gives its 2D one.
+  const ctx = /** @type {CanvasRenderingContext2D} */ (out.getContext('2d'));
   // Lay out the colour keys first to know each one's height.
   ctx.font = font;
   const keyRows = figures.map((f) => {
+    /** @type {KeyRow[]} never empty: it starts with one row and only grows */
     const rows = [[]];
     let x = 8 * scale;
     for (const k of f.key) {
       const w = 40 * scale + ctx.measureText(k.label).width + 16 * scale;
-      if (x + w > width && rows.at(-1).length) {
+      if (x + w > width && /** @type {KeyRow} */ (rows.at(-1)).length) {
         rows.push([]);
         x = 8 * scale;
       }
-      rows.at(-1).push({ ...k, x });
+      /** @type {KeyRow} */ (rows.at(-1)).push({ ...k, x });
       x += w;
     }
     return rows;

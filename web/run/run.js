@@ -6,6 +6,15 @@ import { fieldValue } from '../ui/scenario.js';
 import { markRun } from '../ui/url.js';
 import { excerpt } from '../ui/quote.js';
 
+/** @import * as P from '../worker/protocol.js' */
+/** @import { State } from '../main.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Plots } from '../plots/plots.js' */
+/** @import { Walkthrough } from '../teaching/walkthrough.js' */
+/** @import { Warning, createFiguresView } from './figures-view.js' */
+/** @import { createViews } from './views.js' */
+/** @import { createExport } from './export.js' */
+
 /**
  * Resolves once the browser has rendered the next frame (at once for a hidden page, and after a
  * second at most).
@@ -22,7 +31,10 @@ const painted = () =>
     },
   );
 
-/** Names the run's start-up transient (null if it has none) beside the switch that fits the y-axes after it. */
+/**
+ * Names the run's start-up transient (null if it has none) beside the switch that fits the y-axes after it.
+ * @param {State['transient']} transient
+ */
 function showTransient(transient) {
   ui.fitLabel.textContent = transient
     ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
@@ -34,6 +46,10 @@ function showTransient(transient) {
 /**
  * Says how a run of `rows` samples, done in `ms`, ended: stopped early (`failure`), ran away (one
  * of its `warnings`), or done; in the status line and the page's state.
+ * @param {string | null} failure
+ * @param {Warning[]} warnings
+ * @param {number} rows
+ * @param {number} ms
  */
 function reportEnd(failure, warnings, rows, ms) {
   const ranAway = warnings.find((w) => w.kind === 'runaway');
@@ -55,13 +71,16 @@ function reportEnd(failure, warnings, rows, ms) {
 /**
  * Has the core built with its tools judge the own laws of run `id`, if it has any (each step with
  * one says it is being checked meanwhile), and shows the verdicts unless a newer run began.
+ * @param {{client: RunClient, state: State, walkthrough: Walkthrough}} parts
+ * @param {number} id
  */
 function judgeLaws({ client, state, walkthrough }, id) {
   walkthrough.checkingLaws(state.ranLaws);
   if (!state.ranLaws) return;
-  client.job('law-verdicts', { scenario: state.ranScenario }).then(
+  // A run with own laws was started: its scenario is the one it ran.
+  client.job('law-verdicts', { scenario: /** @type {string} */ (state.ranScenario) }).then(
     (verdicts) => id === state.runId && walkthrough.showVerdicts(verdicts),
-    (e) => id === state.runId && walkthrough.verdictsFailed(e.message),
+    (/** @type {Error} */ e) => id === state.runId && walkthrough.verdictsFailed(e.message),
   );
 }
 
@@ -69,15 +88,26 @@ function judgeLaws({ client, state, walkthrough }, id) {
  * The run, started with `start()` and followed through the worker's messages (`handlers`).
  * `figuresView` shows the run's figures, `exporter` is the CSV export a new run ends, `fitEmbed()`
  * sizes an embed's plots, and `afterRun()` follows up a run that is done and drawn.
+ * @param {{client: RunClient, state: State, plots: Plots, walkthrough: Walkthrough,
+ *   views: ReturnType<typeof createViews>, figuresView: ReturnType<typeof createFiguresView>,
+ *   exporter: ReturnType<typeof createExport>, fitEmbed: () => void, afterRun: () => void}} parts
  */
 export function createRun({ client, state, plots, walkthrough, views, figuresView, exporter, fitEmbed, afterRun }) {
   let started = 0; // when the run started (performance.now())
   let fromRun = false; // whether it was started from Run, where focus returns
 
+  /**
+   * Marks a run as going on (or not): Run, Cancel and the CSV export follow.
+   * @param {boolean} busy
+   */
   function setBusy(busy) {
     // Run is disabled while a run goes on, which drops its focus: give it back at the end, unless
     // the user has moved on to another control.
-    const refocus = !busy && state.running && fromRun && [document.body, ui.run, null].includes(document.activeElement);
+    const refocus =
+      !busy &&
+      state.running &&
+      fromRun &&
+      /** @type {(Element | null)[]} */ ([document.body, ui.run, null]).includes(document.activeElement);
     state.running = busy;
     ui.run.disabled = busy || state.info === null;
     ui.cancel.disabled = !busy && state.export === null;
@@ -87,7 +117,10 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     if (refocus && !ui.run.disabled) ui.run.focus({ preventScroll: true });
   }
 
-  /** Marks the settings as changed and not yet run (or not), beside Run. */
+  /**
+   * Marks the settings as changed and not yet run (or not), beside Run.
+   * @param {boolean} unrun
+   */
   function markUnrun(unrun) {
     ui.unrun.hidden = !unrun;
     if (unrun) document.body.dataset.unrun = '1';
@@ -108,7 +141,9 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     }
     const id = ++state.runId;
     state.ranScenario = state.info.encoded;
-    state.ranLaws = state.info.fields.some((f) => f.formula && f.value);
+    state.ranLaws = state.info.fields.some(
+      (/** @type {{formula: boolean, value: string | null}} */ f) => f.formula && f.value,
+    );
     markRun(state.info.encoded);
     fromRun = document.activeElement === ui.run; // started from Run: focus returns there
     document.body.dataset.scenario = state.info.encoded;
@@ -122,11 +157,15 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     // opened (until then they ask for theirs when it is, and a run does not pay for them).
     const groups = { ...plots.groups(), ...(walkthrough.opened ? walkthrough.plots.groups() : {}) };
     // With runs pinned, the run keeps the overlay's column as it goes.
-    const overlay = state.pins.length ? $('overlay-column').value : null;
+    const overlay = state.pins.length ? $('overlay-column', HTMLSelectElement).value : null;
     client.post({ type: 'run', id, scenario: state.info.encoded, groups, buckets: views.buckets(), overlay });
   }
 
-  /** The worker failed (RunClient): the run and its export are gone with it; says so. */
+  /**
+   * The worker failed (RunClient): the run and its export are gone with it; says so.
+   * @param {string} reason
+   * @param {boolean} restarting
+   */
   function workerFailed(reason, restarting) {
     if (state.export) exporter.end('failed', 'CSV export stopped');
     const wasRunning = state.running;
@@ -145,6 +184,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     say(`The simulation worker failed (${reason}). It was restarted; press Run to try again.${dropped}`);
   }
 
+  /** @type {P.Handlers} */
   const handlers = {
     invalid({ id, message }) {
       if (id === state.runId) {

@@ -3,6 +3,16 @@
 import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 
+/** @import * as P from '../worker/protocol.js' */
+/** @import { State } from '../main.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Plots } from '../plots/plots.js' */
+/** @import { Walkthrough } from '../teaching/walkthrough.js' */
+
+/**
+ * The plots' requests of the worker about the last run, and its replies (`handlers`).
+ * @param {{client: RunClient, state: State, plots: Plots, walkthrough: Walkthrough}} parts
+ */
 export function createViews({ client, state, plots, walkthrough }) {
   const plotSets = [plots, walkthrough.plots];
   let walkthroughAsked = 0; // the run whose whole-run walkthrough view was asked for
@@ -13,11 +23,16 @@ export function createViews({ client, state, plots, walkthrough }) {
   /** Whether the worker holds the run the plots show (not a later one that was cancelled, refused or recorded nothing). */
   const showingLastRun = () => !state.running && plots.full !== null && state.shownRun === state.runId;
 
+  /**
+   * @param {number} t0
+   * @param {number} t1
+   */
   function requestWindow(t0, t1) {
     if (!showingLastRun()) return;
     // uPlot reports each new chart's initial scale, the whole run, as a zoom; the charts already
     // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
-    if (t0 <= plots.full[0] && t1 >= plots.full[1]) return;
+    const full = /** @type {[number, number]} */ (plots.full); // the run shown has one
+    if (t0 <= full[0] && t1 >= full[1]) return;
     for (const set of plotSets) set.window = [t0, t1];
     requestViews(t0, t1);
   }
@@ -29,12 +44,21 @@ export function createViews({ client, state, plots, walkthrough }) {
     requestViews(0, Number.MAX_VALUE);
   }
 
-  /** Asks for a window of the main plots, and of the walkthrough's once they show this run. */
+  /**
+   * Asks for a window of the main plots, and of the walkthrough's once they show this run.
+   * @param {number} t0
+   * @param {number} t1
+   */
   function requestViews(t0, t1) {
     requestView('plots', t0, t1);
     if (walkthrough.drawn()) requestView('walkthrough', t0, t1);
   }
 
+  /**
+   * @param {'plots' | 'walkthrough'} set
+   * @param {number} t0
+   * @param {number} t1
+   */
   function requestView(set, t0, t1) {
     const groups = (set === 'walkthrough' ? walkthrough.plots : plots).groups();
     client.post({ type: 'view', id: state.runId, set, groups, t0, t1, buckets: buckets() });
@@ -48,15 +72,19 @@ export function createViews({ client, state, plots, walkthrough }) {
     requestView('walkthrough', 0, Number.MAX_VALUE);
   }
 
+  /** @param {number} t */
   function requestInspect(t) {
     if (!state.running && plots.full) client.post({ type: 'inspect', id: state.runId, t });
   }
 
   function compare() {
-    $('walkthrough').querySelector('.compare-result').textContent = 'Running both predictors…';
+    // The comparison is asked from its section, built with the box of its result.
+    /** @type {HTMLElement} */ ($('walkthrough').querySelector('.compare-result')).textContent =
+      'Running both predictors…';
     client.post({ type: 'compare', id: state.runId });
   }
 
+  /** @type {P.Handlers} */
   const handlers = {
     view({ id, set, view }) {
       if (id !== state.runId) return;
