@@ -9,7 +9,8 @@
 // left `imlabBoot` null, and nothing is done here. The worker's address is on this script's element
 // (`data-worker`), where the build writes the name of the worker's bundle.
 if (globalThis.imlabBoot === undefined) {
-  const address = /** @type {HTMLScriptElement} */ (document.currentScript).dataset.worker;
+  const address = /** @type {string} */ (/** @type {HTMLScriptElement} */ (document.currentScript).dataset.worker);
+  /** @type {ImlabBoot} */
   const boot = { worker: new Worker(address, { type: 'module' }), early: [], failure: null };
   boot.worker.onmessage = ({ data }) => boot.early.push(data);
   boot.worker.onerror = (e) => {

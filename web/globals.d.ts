@@ -1,6 +1,20 @@
 // What the page keeps on the window, for the compiler's check: the worker boot.js started with
 // the page (taken by the run client), and the plot sets the browser tests and the console read.
+
+/** The worker boot.js started, what it said before the run client took it, and its failure meanwhile. */
+interface ImlabBoot {
+  worker: Worker;
+  early: import('./worker/protocol.js').FromWorker[];
+  failure: string | null;
+}
+
+/** Undefined until boot.js or the run client sets it; null once the run client has taken it (or started its own). */
+declare var imlabBoot: ImlabBoot | null | undefined;
+
 interface Window {
-  imlabBoot: { worker: Worker; early: any[]; failure: string | null } | null;
-  imlab: { plots: any; walkthrough: any; overlay: { column: string; data: Float64Array[] } | null };
+  imlab: {
+    plots: import('./plots/plots.js').Plots;
+    walkthrough: import('./plots/plots.js').Plots;
+    overlay: { column: string; data: Float64Array[] } | null;
+  };
 }

@@ -4,7 +4,14 @@ import { six } from '../plots/plots.js';
 import { el } from '../ui/dom.js';
 import { plain, tex } from './tex.js';
 
+/**
+ * A sample as the core gives it: its k, its columns with their values and docs, the Kalman gain
+ * and L, a row a state.
+ * @typedef {import('../worker/protocol.js').Inspected['snapshot']} Snapshot
+ */
+
 // Terms of the inspect panel, grouped by step: [column, TeX label].
+/** @type {[string, [string, string][]][]} */
 const INSPECT = [
   [
     'Step 1',
@@ -77,17 +84,30 @@ const INSPECT = [
   ],
 ];
 
-/** Shortest text that reads back as the same double (as the CLI's CSV writes it). */
+/**
+ * Shortest text that reads back as the same double (as the CLI's CSV writes it).
+ * @param {number} v
+ */
 const exact = (v) => String(v);
 
-/** A column's doc split into its meaning and its unit: "Speed error z1 (rad/s)." → [meaning, unit]. */
+/**
+ * A column's doc split into its meaning and its unit: "Speed error z1 (rad/s)." → [meaning, unit].
+ * @param {string} doc
+ * @returns {[string, string]}
+ */
 function meaningAndUnit(doc) {
   const m = /^(.*?)\s*\(([^()]*)\)\.?$/.exec(doc);
   return m ? [m[1], m[2]] : [doc.replace(/\.$/, ''), ''];
 }
 
 /** The panel's heading: the sample's k and t (`ts`, the sampling period, rounds t to its
- * sample), the copy button and the close button, which calls `onClose`. */
+ * sample), the copy button and the close button, which calls `onClose`.
+ * @param {Snapshot} snap
+ * @param {Record<string, number>} value
+ * @param {Record<string, [string, string]>} doc
+ * @param {number} ts
+ * @param {() => void} onClose
+ */
 function panelHead(snap, value, doc, ts, onClose) {
   const digits = Math.max(0, -Math.floor(Math.log10(ts)) + 1);
   const time = value.t.toFixed(digits).replace(/0+$/, '').replace(/\.$/, '');
@@ -95,7 +115,7 @@ function panelHead(snap, value, doc, ts, onClose) {
   close.setAttribute('aria-keyshortcuts', 'Escape');
   close.addEventListener('click', onClose);
   const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
-  const lines = snap.columns.map((c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
+  const lines = snap.columns.map((/** @type {string} */ c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
   copy.addEventListener('click', async () => {
     const text = [`k\t${snap.k}`, ...lines].join('\n');
     try {
@@ -109,7 +129,10 @@ function panelHead(snap, value, doc, ts, onClose) {
   return el('div', { className: 'inspect-head' }, [title, copy, close]);
 }
 
-/** A table of columns `names`, each a column header. */
+/**
+ * A table of columns `names`, each a column header.
+ * @param {string[]} names
+ */
 const headRow = (names) =>
   el(
     'tr',
@@ -117,7 +140,11 @@ const headRow = (names) =>
     names.map((h) => el('th', { scope: 'col', textContent: h })),
   );
 
-/** One table a group of INSPECT: each term's value (6 significant digits), unit and meaning. */
+/**
+ * One table a group of INSPECT: each term's value (6 significant digits), unit and meaning.
+ * @param {Record<string, number>} value
+ * @param {Record<string, [string, string]>} doc
+ */
 function termTables(value, doc) {
   return INSPECT.map(([title, terms]) => {
     const table = el('table', {}, [
@@ -141,18 +168,21 @@ function termTables(value, doc) {
   });
 }
 
-/** The Kalman gain K_k and L = K_k/Ts, a row a state. */
+/**
+ * The Kalman gain K_k and L = K_k/Ts, a row a state.
+ * @param {Snapshot} snap
+ */
 function gainTable(snap) {
   const gain = el('table', {}, [
     el('caption', { textContent: 'Kalman gain K_k (A⁻¹ × state unit) and L = K_k/Ts (per second)' }),
     headRow(['row', 'K·1', 'K·2', 'L·1', 'L·2']),
   ]);
-  snap.gain.forEach((row, i) => {
+  snap.gain.forEach((/** @type {number[]} */ row, /** @type {number} */ i) => {
     gain.append(
       el('tr', {}, [
         el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false, `K${i + 1}·`)]),
         ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
-        ...snap.l[i].map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
+        ...snap.l[i].map((/** @type {number} */ v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
       ]),
     );
   });
@@ -162,10 +192,20 @@ function gainTable(snap) {
 /**
  * Fills `box` with the sample `snap` (the core's terms, their docs and the gain); `ts` is the
  * sampling period (s) and `onClose` closes the panel. Returns the sample's time.
+ * @param {HTMLElement} box
+ * @param {Snapshot} snap
+ * @param {number} ts
+ * @param {() => void} onClose
  */
 export function fillInspect(box, snap, ts, onClose) {
-  const value = Object.fromEntries(snap.columns.map((c, i) => [c, snap.values[i]]));
-  const doc = Object.fromEntries(snap.columns.map((c, i) => [c, meaningAndUnit(snap.docs[i])]));
+  /** @type {Record<string, number>} */
+  const value = Object.fromEntries(
+    snap.columns.map((/** @type {string} */ c, /** @type {number} */ i) => [c, snap.values[i]]),
+  );
+  /** @type {Record<string, [string, string]>} */
+  const doc = Object.fromEntries(
+    snap.columns.map((/** @type {string} */ c, /** @type {number} */ i) => [c, meaningAndUnit(snap.docs[i])]),
+  );
   box.replaceChildren(panelHead(snap, value, doc, ts, onClose));
   box.dataset.t = String(value.t);
   box.append(el('div', { className: 'inspect-grid' }, [...termTables(value, doc), gainTable(snap)]));

@@ -5,6 +5,8 @@
 import { el } from '../ui/dom.js';
 import { tex } from './tex.js';
 
+/** @typedef {import('../worker/protocol.js').Jobs} Jobs */
+
 /**
  * The block of step `law.step` (1–4): its explanation, the knob's box, the preview, the verdict
  * and the names it may use.
@@ -33,9 +35,12 @@ export function lawBlock(law) {
 /**
  * Shows the core's `preview` of `text` in `box`: the law typeset, or the error with the part of the
  * formula it concerns marked (the core counts characters from 1; 0 is the formula as a whole).
+ * @param {HTMLElement} box
+ * @param {Jobs['law-preview']['result']} preview
+ * @param {string} text
  */
 export function showPreview(box, preview, text) {
-  const out = box.querySelector('.law-preview');
+  const out = /** @type {Element} */ (box.querySelector('.law-preview'));
   const input = box.querySelector('input.formula');
   input?.setAttribute('aria-describedby', out.id);
   input?.setAttribute('aria-invalid', String(!!preview.error && text.trim() !== ''));
@@ -47,7 +52,8 @@ export function showPreview(box, preview, text) {
     out.replaceChildren(tex(preview.tex, true, `v${box.dataset.step} = ${text}`));
     return;
   }
-  const { at, len, reason } = preview.error;
+  // The core gives the TeX or the error.
+  const { at, len, reason } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
   const chars = [...text];
   const parts =
     at === 0
@@ -63,23 +69,31 @@ export function showPreview(box, preview, text) {
   );
 }
 
-/** Shows each step's verdict (the core's, for the run shown), or that the step is the paper's. */
+/**
+ * Shows each step's verdict (the core's, for the run shown), or that the step is the paper's.
+ * @param {HTMLElement} container
+ * @param {Jobs['law-verdicts']['result']} verdicts
+ */
 export function showVerdicts(container, verdicts) {
-  for (const box of container.querySelectorAll('.law')) {
+  for (const box of /** @type {NodeListOf<HTMLElement>} */ (container.querySelectorAll('.law'))) {
     const step = Number(box.dataset.step);
     const verdict = verdicts.find((v) => v.step === step);
-    const line = box.querySelector('.law-verdict');
+    const line = /** @type {Element} */ (box.querySelector('.law-verdict'));
     line.textContent = verdict?.text ?? `No law of your own yet: this step runs the paper’s v${step}.`;
     line.classList.toggle('good', verdict?.designed === true);
     line.classList.toggle('bad', verdict?.designed === false);
   }
 }
 
-/** Lists in each step's block the names its law may use (`language`, the core's) and the functions. */
+/**
+ * Lists in each step's block the names its law may use (`language`, the core's) and the functions.
+ * @param {HTMLElement} container
+ * @param {Jobs['law-language']['result']} language
+ */
 export function fillNames(container, language) {
-  for (const box of container.querySelectorAll('.law')) {
+  for (const box of /** @type {NodeListOf<HTMLElement>} */ (container.querySelectorAll('.law'))) {
     const step = Number(box.dataset.step);
-    const details = box.querySelector('.law-names');
+    const details = /** @type {HTMLDetailsElement} */ (box.querySelector('.law-names'));
     const rows = language.names
       .filter((n) => n.from_step <= step)
       .map((n) =>
@@ -98,7 +112,7 @@ export function fillNames(container, language) {
     ]);
     const functions = language.functions.map((f) => f.doc).join('; ');
     details.replaceChildren(
-      details.querySelector('summary'),
+      /** @type {HTMLElement} */ (details.querySelector('summary')),
       el('div', { className: 'table-scroll' }, [el('table', {}, [head, ...rows])]),
       el('p', { textContent: `With + − * / ^ (or · and −), parentheses, numbers and the functions ${functions}.` }),
     );

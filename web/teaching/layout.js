@@ -1,6 +1,10 @@
 // Where the walkthrough's content sits on screen: whether an element is rendered, sideways scroll
 // boxes reachable from the keyboard, and an inspected plot kept in view above the inspect sheet.
 
+/**
+ * @param {Element} e
+ * @param {Record<string, string>} attributes
+ */
 function setAttributes(e, attributes) {
   for (const [name, value] of Object.entries(attributes)) e.setAttribute(name, value);
 }
@@ -9,6 +13,7 @@ function setAttributes(e, attributes) {
  * Whether `element` is rendered: not under a hidden tab's panel, which is skipped
  * (`content-visibility`, style.css) once shown where the browser has it, and not displayed
  * otherwise.
+ * @param {HTMLElement} element
  */
 export function rendered(element) {
   return element.checkVisibility?.() ?? element.offsetParent !== null;
@@ -18,20 +23,30 @@ export function rendered(element) {
 // and named; one that fits stays out of the tab order, so the walkthrough does not gain a tab stop
 // per equation on a wide screen. Checked whenever a box changes size and when the tab is shown:
 // every box is measured before any is marked, so that the page is laid out once, not once a box.
+/** @param {HTMLElement[]} boxes */
 export function markScrollable(boxes) {
   const scrolls = boxes.map((box) => box.scrollWidth > box.clientWidth + 1);
   boxes.forEach((box, i) => {
     if (scrolls[i] === (box.getAttribute('role') === 'region')) return;
     if (scrolls[i]) {
-      setAttributes(box, { tabindex: '0', role: 'region', 'aria-label': box.dataset.label });
+      setAttributes(box, { tabindex: '0', role: 'region', 'aria-label': /** @type {string} */ (box.dataset.label) });
     } else {
       for (const name of ['tabindex', 'role', 'aria-label']) box.removeAttribute(name);
     }
   });
 }
-const scrollBoxes = new ResizeObserver((entries) => markScrollable(entries.map((e) => e.target)));
+// The sideways scroll boxes (`scrollBox` registers them), each marked again when it changes size.
+const scrollBoxes = new ResizeObserver((entries) =>
+  markScrollable(entries.map((e) => /** @type {HTMLElement} */ (e.target))),
+);
 
-/** Registers `box` as a sideways scroll box named `label`. */
+/**
+ * Registers `box` as a sideways scroll box named `label`.
+ * @template {HTMLElement} E
+ * @param {E} box
+ * @param {string} label
+ * @returns {E}
+ */
 export function scrollBox(box, label) {
   box.dataset.label = label;
   box.classList.add('scroll-box');
@@ -44,6 +59,8 @@ export function scrollBox(box, label) {
  * at the room the plot leaves (but not under about ten lines), gives the page that much room at
  * its end, and scrolls the plot into the space above the sheet. If the whole figure cannot fit,
  * its title and canvas do.
+ * @param {HTMLElement} box
+ * @param {HTMLElement | null} plot
  */
 export function keepAboveSheet(box, plot) {
   box.style.maxHeight = '';

@@ -2,10 +2,19 @@
 // lesson's context (what to look for, the question, a hint, the answer) while its plots are shown.
 import { el } from '../ui/dom.js';
 
-/** The link to `lesson`: its run, and its name, which opens its panel. */
+/** @typedef {import('./teaching.js').Lesson} Lesson */
+
+/**
+ * The link to `lesson`: its run, and its name, which opens its panel.
+ * @param {Lesson} lesson
+ */
 export const lessonLink = (lesson) => `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}`;
 
-/** Copies the link to `lesson`, saying so in `said` (or showing the link where the clipboard is refused). */
+/**
+ * Copies the link to `lesson`, saying so in `said` (or showing the link where the clipboard is refused).
+ * @param {Lesson} lesson
+ * @param {HTMLElement} said
+ */
 async function copyLink(lesson, said) {
   const link = lessonLink(lesson);
   try {
@@ -20,11 +29,14 @@ export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
    * lesson's run (a scenario string).
+   * @param {{panel: HTMLElement, list: HTMLElement, lessons: Lesson[],
+   *   onOpen: (lesson: Lesson) => Promise<void>}} parts
    */
   constructor({ panel, list, lessons, onOpen }) {
     this.panel = panel;
     this.lessons = lessons;
     this.onOpen = onOpen;
+    /** @type {number | null} the lesson open, by its place in `lessons` */
     this.index = null;
     lessons.forEach((lesson, i) => {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
@@ -41,7 +53,10 @@ export class LessonPanel {
     });
   }
 
-  /** Opens lesson `i`: shows its panel, scrolled to the top, with focus on its title, and runs it. */
+  /**
+   * Opens lesson `i`: shows its panel, scrolled to the top, with focus on its title, and runs it.
+   * @param {number} i
+   */
   async open(i) {
     this.index = i;
     const lesson = this.lessons[i];
@@ -84,7 +99,7 @@ export class LessonPanel {
     document.body.classList.add('with-lesson');
     // Keyboard and screen-reader users continue where the content is, not at the page's top.
     const started = this.onOpen(lesson);
-    this.panel.querySelector('h2').focus({ preventScroll: true });
+    /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
     await started;
   }
 

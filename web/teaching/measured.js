@@ -19,7 +19,7 @@ export function parseTables(texts) {
   for (const text of texts) {
     const [header, ...lines] = text.trim().split('\n');
     const names = header.split(',');
-    const col = (name) => names.indexOf(name);
+    const col = (/** @type {string} */ name) => names.indexOf(name);
     for (const line of lines) {
       const cells = line.split(',');
       const value = cells[col('value')];
@@ -36,6 +36,7 @@ export function parseTables(texts) {
 }
 
 // How a `show` spec scales a value: ms for seconds, % for a fraction, m for milli (mrad/s, mWb²).
+/** @type {Record<string, number>} */
 const SCALES = { '': 1, ms: 1e3, '%': 1e2, m: 1e3 };
 
 /**
@@ -105,18 +106,27 @@ export function render(template, table) {
   });
 }
 
-/** The ids a template names, in order. */
+/**
+ * The ids a template names, in order.
+ * @param {string} template
+ */
 export const namedIn = (template) => [...template.matchAll(PLACEHOLDER)].map((m) => m[1]);
 
-/** The template with its placeholders removed: what must hold no number of its own. */
+/**
+ * The template with its placeholders removed: what must hold no number of its own.
+ * @param {string} template
+ */
 export const withoutPlaceholders = (template) => template.replace(PLACEHOLDER, '⟨⟩');
 
-/** The fields of a lesson that a student reads. */
+/**
+ * The fields of a lesson that a student reads.
+ * @type {('title' | 'look' | 'question' | 'hint' | 'answer')[]}
+ */
 export const LESSON_TEXTS = ['title', 'look', 'question', 'hint', 'answer'];
 
 /**
  * `lesson` with its texts rendered from `table`.
- * @template {Record<string, any>} L
+ * @template {Record<(typeof LESSON_TEXTS)[number], string>} L
  * @param {L} lesson
  * @param {Table} table
  * @returns {L}

@@ -20,6 +20,15 @@ import lowSpeed from './lesson-text/low-speed.js';
 import modelExactness from './lesson-text/model-exactness.js';
 import deriveSteps from './lesson-text/derive-steps.js';
 
+/**
+ * A lesson: its link's name, its run, the texts a student reads, the conclusions its words state
+ * and the settings they name, the tab it opens (the Trajectories tab otherwise) and the
+ * model-error map it fills in.
+ * @typedef {{id: string, run: string, title: string, look: string, question: string, hint: string, answer: string,
+ *   holds: string[], givens: string[], tab?: string, map?: string}} Lesson
+ */
+
+/** @type {Lesson[]} */
 export const LESSONS = [
   stepResponse,
   tracking200hz,

@@ -36,15 +36,20 @@ export function loadTex() {
 
 /** A KaTeX-rendered equation (our own TeX, never text from the URL). `label`, if given, is its
  * plain-text name for screen readers (a table header needs one: axe does not read MathML). Until
- * KaTeX is in, the span shows the plain-text reading. */
+ * KaTeX is in, the span shows the plain-text reading.
+ * @param {string} source
+ * @param {boolean} [displayMode]
+ * @param {string | null} [label]
+ */
 export function tex(source, displayMode = true, label = null) {
   const span = el('span', { className: displayMode ? 'equation' : 'math', textContent: plain(source) });
   const done = () => {
     typeset(span, source, displayMode);
     if (label) {
+      // None where KaTeX could not read the TeX: it shows the error instead.
       const math = span.querySelector('.katex');
-      math.setAttribute('role', 'math');
-      math.setAttribute('aria-label', label);
+      math?.setAttribute('role', 'math');
+      math?.setAttribute('aria-label', label);
     }
   };
   if (katex) done();
@@ -52,28 +57,46 @@ export function tex(source, displayMode = true, label = null) {
   return span;
 }
 
-/** Typesets our TeX `source` into `span`. */
+/**
+ * Typesets our TeX `source` into `span`, once KaTeX is in.
+ * @param {HTMLElement} span
+ * @param {string} source
+ * @param {boolean} displayMode
+ */
 function typeset(span, source, displayMode) {
-  katex.render(source, span, { displayMode, throwOnError: false, strict: 'ignore' });
+  /** @type {NonNullable<typeof katex>} */ (katex).render(source, span, {
+    displayMode,
+    throwOnError: false,
+    strict: 'ignore',
+  });
 }
 
-/** A display equation typeset when it is first shown (see `Walkthrough.shown`). */
+/**
+ * A display equation typeset when it is first shown (see `Walkthrough.shown`).
+ * @param {string} source
+ */
 export function laterTex(source) {
   const span = el('span', { className: 'equation' });
   span.dataset.tex = source;
   return span;
 }
 
-/** Typesets the equations made by `laterTex` inside `container`, once KaTeX is in. */
+/**
+ * Typesets the equations made by `laterTex` inside `container`, once KaTeX is in.
+ * @param {HTMLElement} container
+ */
 export async function typesetWaiting(container) {
   await loadTex();
-  for (const span of container.querySelectorAll('.equation[data-tex]')) {
-    typeset(span, span.dataset.tex, true);
+  for (const span of /** @type {NodeListOf<HTMLElement>} */ (container.querySelectorAll('.equation[data-tex]'))) {
+    typeset(span, /** @type {string} */ (span.dataset.tex), true);
     delete span.dataset.tex;
   }
 }
 
-/** A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)". */
+/**
+ * A plain-text reading of a short TeX label: "a_1(x_3\\hat x_4 - x_2\\hat x_5)" → "a1(x3x̂4 − x2x̂5)".
+ * @param {string} source
+ */
 export function plain(source) {
   return source
     .replace(/\\hat ([a-z])/g, '$1\u0302')

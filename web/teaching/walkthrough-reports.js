@@ -5,7 +5,10 @@ import { STABILITY_CAUSES } from './walkthrough-text.js';
 import { TABLE } from './table.js';
 import { render } from './measured.js';
 
-/** The stability report `st` of a run, in words. */
+/**
+ * The stability report `st` of a run, in words.
+ * @param {import('../worker/protocol.js').Done['stability']} st
+ */
 export function stabilityText(st) {
   if (!st) return 'Nothing was recorded.';
   const b = st.bound;
@@ -15,7 +18,10 @@ export function stabilityText(st) {
   return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(st.first_outside.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
 }
 
-/** The runs of one scenario with each predictor (`results`), as a sentence and a table. */
+/**
+ * The runs of one scenario with each predictor (`results`), as a sentence and a table.
+ * @param {import('../worker/protocol.js').Compared['results']} results
+ */
 export function comparison(results) {
   const rows = [
     [
@@ -39,6 +45,11 @@ export function comparison(results) {
     ]);
   }
   // The first row names the columns, the first column the predictor.
+  /**
+   * @param {string} text
+   * @param {number} i
+   * @param {number} j
+   */
   const cell = (text, i, j) =>
     i === 0 || j === 0
       ? el('th', { scope: i === 0 ? 'col' : 'row', textContent: text })

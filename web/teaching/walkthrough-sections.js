@@ -9,17 +9,24 @@ import { lawBlock } from './law-editor.js';
 import { TABLE } from './table.js';
 import { render } from './measured.js';
 
-/** A template of the walkthrough's text with its measurements filled in. */
+/**
+ * A template of the walkthrough's text with its measurements filled in.
+ * @param {string} template
+ */
 const measured = (template) => render(template, TABLE);
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
 const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
 
-/** Plot definitions of every section, each drawn inside its section (`sectionDivs`, by id). */
+/**
+ * Plot definitions of every section, each drawn inside its section (`sectionDivs`, by id).
+ * @param {Record<string, HTMLElement>} sectionDivs
+ */
 export function plotDefs(sectionDivs) {
   const defs = [];
   for (const s of SECTIONS) {
-    for (const plot of [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6, s.law?.plot].filter(Boolean)) {
+    const plots = [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6, s.law?.plot];
+    for (const plot of /** @type {import('./walkthrough-text.js').SectionPlot[]} */ (plots.filter(Boolean))) {
       const constants = plot.nisBand
         ? [['2.5 % quantile'], ['97.5 % quantile']]
         : plot.bound
@@ -44,6 +51,9 @@ export function plotDefs(sectionDivs) {
  * Section `s` of SECTIONS: its prose, equations (typeset later), the boxes its results fill, its
  * knobs and the box its plots go in. `onCompare()` asks for the Euler/RK4 comparison. Returns
  * [the section, the box for its plots].
+ * @param {import('./walkthrough-text.js').Section} s
+ * @param {() => void} onCompare
+ * @returns {[HTMLElement, HTMLDivElement]}
  */
 export function sectionElement(s, onCompare) {
   const div = el('section', { className: 'step', id: `section-${s.id}` });
@@ -95,7 +105,11 @@ export function sectionElement(s, onCompare) {
   return [div, plots];
 }
 
-/** Shows, atop `container`, that the IFOC baseline drives the motor when `ifoc`; removes it otherwise. */
+/**
+ * Shows, atop `container`, that the IFOC baseline drives the motor when `ifoc`; removes it otherwise.
+ * @param {HTMLElement} container
+ * @param {boolean} ifoc
+ */
 export function ifocNote(container, ifoc) {
   let note = container.querySelector('.ifoc-note');
   if (ifoc && !note) {
@@ -112,25 +126,36 @@ export function ifocNote(container, ifoc) {
  * Fills each section's knobs in `container` with `knob(key)`, the settings control of a field.
  * Knobs are rebuilt only when the set of fields that act changes, so an edit keeps its focus and
  * the section does not move; otherwise they take the new values and lose their error marks.
+ * @param {HTMLElement} container
+ * @param {(key: string) => HTMLElement | null} knob
  */
 export function syncKnobs(container, knob) {
-  for (const box of container.querySelectorAll('.knobs')) {
-    const knobs = box.dataset.keys
-      .split(' ')
-      .map((key) => knob(key))
-      .filter(Boolean);
-    const names = (labels) => labels.map((l) => l.querySelector('input, select').name).join();
+  for (const box of /** @type {NodeListOf<HTMLElement>} */ (container.querySelectorAll('.knobs'))) {
+    // Every knobs box names its fields; a knob is a label that holds its control.
+    const knobs = /** @type {HTMLElement[]} */ (
+      /** @type {string} */ (box.dataset.keys)
+        .split(' ')
+        .map((key) => knob(key))
+        .filter(Boolean)
+    );
+    /** @param {Element} label */
+    const control = (label) =>
+      /** @type {HTMLInputElement | HTMLSelectElement} */ (label.querySelector('input, select'));
+    /** @param {Element[]} labels */
+    const names = (labels) => labels.map((l) => control(l).name).join();
     const shown = [...box.querySelectorAll('label.field')];
     if (names(knobs) !== names(shown)) {
       box.replaceChildren(...knobs);
       continue;
     }
     knobs.forEach((fresh, i) => {
-      const [now, value] = [shown[i].querySelector('input, select'), fresh.querySelector('input, select')];
+      const [now, value] = [control(shown[i]), control(fresh)];
       now.classList.remove('invalid');
       shown[i].querySelector('.knob-error')?.remove();
       if (now === document.activeElement) return;
-      if (now.type === 'checkbox') now.checked = value.checked;
+      // Both are the same field's control: a checkbox is an input in each.
+      if (now.type === 'checkbox')
+        /** @type {HTMLInputElement} */ (now).checked = /** @type {HTMLInputElement} */ (value).checked;
       else now.value = value.value;
     });
   }
@@ -138,7 +163,10 @@ export function syncKnobs(container, knob) {
 
 const LUMPED = ['a1', 'a2', 'a3', 'a5', 'a6', 'a7', 'a8', 'a9', 'a10', 'b'];
 
-/** The lumped parameters of the plant and the model (`info`, the core's description), those that differ marked. */
+/**
+ * The lumped parameters of the plant and the model (`info`, the core's description), those that differ marked.
+ * @param {import('../worker/protocol.js').Info} info
+ */
 export function lumpedTable(info) {
   const table = el('table', {}, [
     el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))]),

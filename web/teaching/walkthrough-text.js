@@ -6,8 +6,26 @@
 // conclude from it is a condition of WALKTHROUGH_HOLDS: tests/measurements.test.mjs checks both.
 const t = String.raw;
 
+/**
+ * A plot of a section: its title, its units (left and right axes), its series as the trajectory
+ * plots' (web/plots/plot-defs.js: column, label, 'y2' for the right axis, sign, the column it is
+ * about), a log scale, and its constant lines: the NIS band, or ± the scenario's field `bound`.
+ * @typedef {{title: string, unit: string, unit2?: string, log?: boolean, nisBand?: boolean, bound?: string,
+ *   series: [column: string, label: string, axis?: 'y2' | null, sign?: number, about?: string][]}} SectionPlot
+ */
+/**
+ * A section: its prose, equations and notes, a figure, the boxes its results fill (`lumped`,
+ * `stability`, `compare`), its plots, the step whose law a student may write, and its knobs.
+ * @typedef {{id: string, title: string, prose: string[], equations: string[], note?: string, shows?: string[],
+ *   figure?: {src: string, alt: string, caption: string}, lumped?: boolean, stability?: boolean, compare?: boolean,
+ *   plot?: SectionPlot, plot2?: SectionPlot, plot3?: SectionPlot, plot4?: SectionPlot, plot5?: SectionPlot,
+ *   plot6?: SectionPlot, law?: {step: number, output: string, intro: string, plot: SectionPlot},
+ *   knobs: string[]}} Section
+ */
+
 // Each section: prose paragraphs, display equations (TeX), the plot of its live signals
 // ([column, label, 'y2' for the right axis]) and the scenario fields that are its design knobs.
+/** @type {Section[]} */
 export const SECTIONS = [
   {
     id: 'model',
@@ -358,6 +376,7 @@ export const SECTIONS = [
 ];
 
 // What the stability section adds when V leaves the bound (59), by the core's most likely cause.
+/** @type {Partial<Record<string, string>>} */
 export const STABILITY_CAUSES = {
   saturation:
     'Most of those samples have a commanded voltage beyond the limit: saturation breaks the designed error dynamics the bound relies on.',

@@ -14,49 +14,67 @@ import { say } from '../ui/page.js';
 
 export { tex } from './tex.js';
 
+/** @typedef {import('../worker/protocol.js').Jobs} Jobs */
+/**
+ * A field of the core's description: its key and its value as the codec writes it.
+ * @typedef {{key: string, value: string | null}} Field
+ */
+
 export class Walkthrough {
   /**
    * `container` receives the sections, `inspectBox` the inspect panel.
    * `knob(key)` returns the settings control for a field;
    * `onCompare()` asks for the Euler/RK4 comparison.
+   * @param {{container: HTMLElement, inspectBox: HTMLElement, knob: (key: string) => HTMLElement | null,
+   *   onCompare: () => void, onWindow: (t0: number, t1: number) => void, onFull: () => void,
+   *   onPick: (t: number) => void, framing: () => {fit: boolean, from: number},
+   *   preview: (step: number, text: string) => Promise<Jobs['law-preview']['result']>,
+   *   language: () => Promise<Jobs['law-language']['result']>}} parts
    */
   constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview, language }) {
     this.container = container;
     this.inspectBox = inspectBox;
     this.knob = knob;
-    /** @type {((t: number) => void) | null} told of each inspected time */
+    /** @type {((t: number | null) => void) | null} told of each inspected time (null: the panel closed) */
     this.onInspect = null;
     inspectBox.setAttribute('aria-labelledby', 'inspect-title');
     // The plot last pressed or focused is the one an inspection comes from (a click, or the arrow
     // keys on a focused plot): the sheet must not cover it.
+    /** @type {HTMLElement | null} */
     this.lastPlot = null;
+    /** @param {Event} e */
     const remember = (e) => {
-      const plot = e.target instanceof Element ? e.target.closest('.plot') : null;
+      const plot = e.target instanceof Element ? /** @type {HTMLElement | null} */ (e.target.closest('.plot')) : null;
       if (plot) this.lastPlot = plot;
     };
     document.addEventListener('pointerdown', remember, true);
     document.addEventListener('focusin', remember, true);
+    /** @type {Record<string, HTMLElement>} each section's box for its plots, by the section's id */
     this.sectionDivs = {};
+    /** @type {number[]} the NIS band, from the core */
     this.nisBand = [0, 0];
-    this.info = null; // the core's description of the scenario shown
+    /** @type {import('../worker/protocol.js').Info | null} the core's description of the scenario shown */
+    this.info = null;
     this.stale = false; // the plots wait for the view of the last run
-    this.pending = null; // the last run's whole-run view, drawn when the walkthrough is shown
+    /** @type {import('../worker/protocol.js').View | null} the last run's view, drawn when the walkthrough is shown */
+    this.pending = null;
     this.opened = false; // whether the walkthrough has been shown
     this.onCompare = onCompare;
     /** @type {string | null} the last run's stability report */
     this.report = null;
     /** @type {(() => void) | null} told when the sections are built */
     this.onBuilt = null;
-    /** @type {() => Promise<any>} asks for the language of the steps' own laws (the core's) */
+    /** @type {() => Promise<Jobs['law-language']['result']>} asks for the language of the steps' own laws */
     this.language = language;
     /** @type {Promise<void> | null} the language's names listed in each step, once asked for */
     this.named = null;
-    /** @type {any[]} the verdicts on the own laws of the last run */
+    /** @type {Jobs['law-verdicts']['result']} the verdicts on the own laws of the last run */
     this.verdicts = [];
     // A step's own law is typeset by the core as it is typed, a moment after the last key.
-    /** @type {(step: number, text: string) => Promise<any>} */
+    /** @type {(step: number, text: string) => Promise<Jobs['law-preview']['result']>} */
     this.preview = preview;
-    let typing = null;
+    /** @type {ReturnType<typeof setTimeout> | undefined} */
+    let typing;
     container.addEventListener('input', (e) => {
       const input = e.target instanceof HTMLInputElement ? e.target : null;
       if (!input?.matches('.law .formula')) return;
@@ -73,9 +91,12 @@ export class Walkthrough {
     });
   }
 
-  /** ±`key` (h2 or h4) of the scenario described last: the bound the robust term assumes. */
+  /**
+   * ±`key` (h2 or h4) of the scenario described last: the bound the robust term assumes.
+   * @param {string} key
+   */
   bound(key) {
-    const h = Number(this.info?.fields.find((f) => f.key === key)?.value ?? 0);
+    const h = Number(this.info?.fields.find((/** @type {Field} */ f) => f.key === key)?.value ?? 0);
     return [h, -h];
   }
 
@@ -97,7 +118,8 @@ export class Walkthrough {
       this.container.append(section);
     }
     if (this.info) this.describe(this.info);
-    if (this.report !== null) this.container.querySelector('.stability-report').textContent = this.report;
+    if (this.report !== null)
+      /** @type {Element} */ (this.container.querySelector('.stability-report')).textContent = this.report;
     showVerdicts(this.container, this.verdicts);
     this.onBuilt?.();
   }
@@ -115,21 +137,31 @@ export class Walkthrough {
     );
   }
 
-  /** Shows each step's verdict on the own law of the run shown (the core's). */
+  /**
+   * Shows each step's verdict on the own law of the run shown (the core's).
+   * @param {Jobs['law-verdicts']['result']} verdicts
+   */
   showVerdicts(verdicts) {
     this.verdicts = verdicts;
     showVerdicts(this.container, verdicts);
   }
 
-  /** Says in each step with its own law that the verdicts could not be computed, and why. */
+  /**
+   * Says in each step with its own law that the verdicts could not be computed, and why.
+   * @param {string} reason
+   */
   verdictsFailed(reason) {
     for (const box of this.container.querySelectorAll('.law')) {
       if (!(/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())) continue;
-      box.querySelector('.law-verdict').textContent = `The verdict on your law could not be computed: ${reason}`;
+      /** @type {Element} */ (box.querySelector('.law-verdict')).textContent =
+        `The verdict on your law could not be computed: ${reason}`;
     }
   }
 
-  /** Shows the core's preview of the law in the knob `input`, unless it changed meanwhile. */
+  /**
+   * Shows the core's preview of the law in the knob `input`, unless it changed meanwhile.
+   * @param {HTMLInputElement} input
+   */
   async previewLaw(input) {
     const box = /** @type {HTMLElement} */ (input.closest('.law'));
     const text = input.value;
@@ -137,27 +169,33 @@ export class Walkthrough {
     if (preview && input.value === text) showPreview(box, preview, text);
   }
 
-  /** Shows the knobs (the same controls as the settings form) and the lumped parameters. */
+  /**
+   * Shows the knobs (the same controls as the settings form) and the lumped parameters.
+   * @param {import('../worker/protocol.js').Info} info
+   */
   describe(info) {
     this.info = info;
-    const ifoc = info.fields.find((f) => f.key === 'controller')?.value === 'ifoc';
+    const ifoc = info.fields.find((/** @type {Field} */ f) => f.key === 'controller')?.value === 'ifoc';
     this.ifoc = ifoc;
     if (!this.built()) return;
     ifocNote(this.container, ifoc);
     syncKnobs(this.container, (key) => this.knob(key));
-    this.container.querySelector('.lumped').replaceChildren(lumpedTable(info));
+    /** @type {Element} */ (this.container.querySelector('.lumped')).replaceChildren(lumpedTable(info));
     if (this.opened) this.previewLaws();
   }
 
   /** Typesets each step's own law (KaTeX is fetched when the walkthrough is first shown). */
   previewLaws() {
-    for (const input of this.container.querySelectorAll('.law .formula')) this.previewLaw(input);
+    const inputs = /** @type {NodeListOf<HTMLInputElement>} */ (this.container.querySelectorAll('.law .formula'));
+    for (const input of inputs) this.previewLaw(input);
   }
 
   /**
    * Takes a finished run's stability report and the NIS band (both from the core). Its plots wait
    * for their view: the run's own when the walkthrough has been opened before, otherwise one the
    * page asks for when it is (until then a run neither computes nor draws them).
+   * @param {import('../worker/protocol.js').Done['stability']} stability
+   * @param {number[]} nisBand
    */
   show(stability, nisBand) {
     this.nisBand = nisBand;
@@ -171,13 +209,15 @@ export class Walkthrough {
   /**
    * A run ended: without own laws each step says it runs the paper's; with them, the steps with
    * a law say it is being checked until the verdicts come (`showVerdicts`).
+   * @param {boolean} checking
    */
   checkingLaws(checking) {
     this.showVerdicts([]);
     if (!checking) return;
     for (const box of this.container.querySelectorAll('.law')) {
       if (/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())
-        box.querySelector('.law-verdict').textContent = 'Checking your law against the designed dynamics…';
+        /** @type {Element} */ (box.querySelector('.law-verdict')).textContent =
+          'Checking your law against the designed dynamics…';
     }
   }
 
@@ -201,7 +241,8 @@ export class Walkthrough {
     // The equations are typeset once KaTeX is in (fetched now the first time): then they learn
     // whether they scroll. Should KaTeX fail to load (the network gone), the page says so.
     typesetWaiting(this.container).then(
-      () => markScrollable([...this.container.querySelectorAll('.scroll-box')]),
+      () =>
+        markScrollable([.../** @type {NodeListOf<HTMLElement>} */ (this.container.querySelectorAll('.scroll-box'))]),
       () => say('The equations could not be loaded: check the connection and open the walkthrough again.'),
     );
     if (this.pending) {
@@ -213,6 +254,7 @@ export class Walkthrough {
   /**
    * Takes a view of its plots: the first after a run is the whole run, drawn now if the
    * walkthrough is on screen and when it is shown otherwise; later ones are zoom windows.
+   * @param {import('../worker/protocol.js').View} view
    */
   receive(view) {
     if (this.stale) {
@@ -224,20 +266,32 @@ export class Walkthrough {
     }
   }
 
-  /** Marks the knob named `key` invalid with the codec's message (null clears every mark). */
+  /**
+   * Marks the knob named `key` invalid with the codec's message (null clears every mark).
+   * @param {string | null} key
+   * @param {string} [message]
+   */
   markKnob(key, message) {
-    for (const control of this.container.querySelectorAll('.knobs input, .knobs select')) {
+    const controls = /** @type {NodeListOf<HTMLInputElement | HTMLSelectElement>} */ (
+      this.container.querySelectorAll('.knobs input, .knobs select')
+    );
+    for (const control of controls) {
       const bad = key !== null && control.name === key;
       control.classList.toggle('invalid', bad);
-      control.setAttribute('aria-invalid', bad);
-      const label = control.closest('label');
+      control.setAttribute('aria-invalid', String(bad));
+      // Every knob's control is inside its label.
+      const label = /** @type {HTMLLabelElement} */ (control.closest('label'));
       label.querySelector('.knob-error')?.remove();
       if (bad) label.append(el('span', { className: 'knob-error', role: 'alert', textContent: message }));
     }
   }
 
   /** Shows every term at one sample: 6 significant digits with units; the exact value in a
-   * tooltip and in the copied text. `ts` is the sampling period (s), for rounding t to its sample. */
+   * tooltip and in the copied text. `ts` is the sampling period (s), for rounding t to its sample.
+   * @param {import('../worker/protocol.js').Inspected['snapshot']} snap
+   * @param {number} t
+   * @param {number} ts
+   */
   inspect(snap, t, ts) {
     const box = this.inspectBox;
     const time = fillInspect(box, snap, ts, () => {
@@ -251,7 +305,10 @@ export class Walkthrough {
     this.onInspect?.(time);
   }
 
-  /** Keeps `plot`, the plot the sample was picked on, in view above the inspect sheet. */
+  /**
+   * Keeps `plot`, the plot the sample was picked on, in view above the inspect sheet.
+   * @param {HTMLElement | null} plot
+   */
   reveal(plot) {
     keepAboveSheet(this.inspectBox, plot);
   }
@@ -263,7 +320,8 @@ export class Walkthrough {
     this.onInspect?.(null);
   }
 
+  /** @param {import('../worker/protocol.js').Compared['results']} results */
   showComparison(results) {
-    this.container.querySelector('.compare-result').replaceChildren(...comparison(results));
+    /** @type {Element} */ (this.container.querySelector('.compare-result')).replaceChildren(...comparison(results));
   }
 }

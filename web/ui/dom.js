@@ -1,6 +1,13 @@
 // The page's DOM helpers: making an element, saving a download, and putting work off until the page is idle.
 
-/** A new `tag` element with `props` assigned and `children` appended. */
+/**
+ * A new `tag` element with `props` assigned and `children` appended.
+ * @template {keyof HTMLElementTagNameMap} T
+ * @param {T} tag
+ * @param {Partial<HTMLElementTagNameMap[T]>} [props]
+ * @param {(Node | string)[]} [children]
+ * @returns {HTMLElementTagNameMap[T]}
+ */
 export function el(tag, props = {}, children = []) {
   const e = Object.assign(document.createElement(tag), props);
   e.append(...children);
@@ -13,7 +20,8 @@ export function el(tag, props = {}, children = []) {
  * @param {() => void} task
  */
 export function whenIdle(task) {
-  if (globalThis.requestIdleCallback) requestIdleCallback(task, { timeout: 1000 });
+  if (/** @type {typeof requestIdleCallback | undefined} */ (globalThis.requestIdleCallback))
+    requestIdleCallback(task, { timeout: 1000 });
   else setTimeout(task, 50);
 }
 
@@ -21,7 +29,11 @@ export function whenIdle(task) {
 // takes seconds; revoking the URL earlier would fail the download.
 const REVOKE_AFTER_MS = 120_000;
 
-/** Saves `blob` as a download named `name`. */
+/**
+ * Saves `blob` as a download named `name`.
+ * @param {Blob} blob
+ * @param {string} name
+ */
 export function download(blob, name) {
   const a = el('a', { href: URL.createObjectURL(blob), download: name });
   a.click();

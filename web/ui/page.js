@@ -18,33 +18,37 @@ export function $(id, kind) {
 
 export const ui = {
   preset: $('preset', HTMLSelectElement),
-  presetDoc: $('preset-doc'),
+  presetDoc: $('preset-doc', HTMLParagraphElement),
   form: $('settings', HTMLFormElement),
   run: $('run', HTMLButtonElement),
   cancel: $('cancel', HTMLButtonElement),
   progress: $('progress', HTMLProgressElement),
-  status: $('status'),
-  message: $('message'),
+  status: $('status', HTMLParagraphElement),
+  message: $('message', HTMLParagraphElement),
   copy: $('copy-link', HTMLButtonElement),
   csv: $('export-csv', HTMLButtonElement),
   png: $('export-png', HTMLButtonElement),
-  plots: $('plots'),
+  plots: $('plots', HTMLDivElement),
   present: $('present', HTMLButtonElement),
   inspect: $('inspect'),
   settingsToggle: $('settings-toggle', HTMLButtonElement),
   embed: $('copy-embed', HTMLButtonElement),
   fullRun: $('full-run', HTMLButtonElement),
   fit: $('fit', HTMLInputElement),
-  fitLabel: $('fit-label'),
-  unrun: $('unrun'),
-  figures: $('figures'),
-  consistency: $('consistency'),
-  keyFigures: $('key-figures'),
+  fitLabel: $('fit-label', HTMLSpanElement),
+  unrun: $('unrun', HTMLParagraphElement),
+  figures: $('figures', HTMLDListElement),
+  consistency: $('consistency', HTMLParagraphElement),
+  keyFigures: $('key-figures', HTMLParagraphElement),
   figuresBar: /** @type {HTMLElement} */ (document.querySelector('.figures-bar')),
   figuresToggle: $('figures-toggle', HTMLButtonElement),
 };
 
-/** Shows `text` in the message line as an error or as `info`; an empty text clears it. */
+/**
+ * Shows `text` in the message line as an error or as `info`; an empty text clears it.
+ * @param {string} text
+ * @param {string} [kind]
+ */
 export function say(text, kind = 'error') {
   ui.message.textContent = text;
   ui.message.className = text ? kind : '';

@@ -18,14 +18,23 @@ const PRESENT_SCALE = 1.5;
 const PRESENT_MIN_HEIGHT = 260;
 const PRESENT_MARGIN = 8;
 
-/** Sets up the layout the link asks for; `fitEmbed()` sizes an embed's plots to its frame. */
+/**
+ * Sets up the layout the link asks for; `fitEmbed()` sizes an embed's plots to its frame.
+ * `state.notice` is a notice about the link that stays until the user acts.
+ * @param {{state: {notice: string | null}, plots: import('../plots/plots.js').Plots,
+ *   walkthrough: import('../teaching/walkthrough.js').Walkthrough}} parts
+ */
 export function createPresentation({ state, plots, walkthrough }) {
-  let fitEmbed = null; // sizes the embedded plots to the frame, in an embed
+  /** @type {(() => void) | null} sizes the embedded plots to the frame, in an embed */
+  let fitEmbed = null;
 
-  /** Presentation mode: larger text and plots, settings in the drawer; kept in the URL fragment. */
+  /**
+   * Presentation mode: larger text and plots, settings in the drawer; kept in the URL fragment.
+   * @param {boolean} on
+   */
   function present(on) {
     document.body.classList.toggle('present', on);
-    ui.present.setAttribute('aria-pressed', on);
+    ui.present.setAttribute('aria-pressed', String(on));
     setFragment('present', on ? '1' : null);
     const [main, small] = PLOT_HEIGHT[on ? 'present' : 'normal'];
     const scale = on ? PRESENT_SCALE : 1;
@@ -43,7 +52,8 @@ export function createPresentation({ state, plots, walkthrough }) {
   function fitPresent() {
     const body = document.body.classList;
     const first = ui.plots.querySelector('.plot');
-    if (!body.contains('present') || body.contains('embed') || !first || $('panel-plots').hidden) return;
+    if (!body.contains('present') || body.contains('embed') || !first || $('panel-plots', HTMLDivElement).hidden)
+      return;
     const box = first.getBoundingClientRect();
     const rest = box.height - plots.height; // the title and the legend
     const room = Math.floor(innerHeight - (box.top + scrollY) - rest - PRESENT_MARGIN);
@@ -60,10 +70,13 @@ export function createPresentation({ state, plots, walkthrough }) {
   window.addEventListener('resize', fitPresent);
   ui.present.addEventListener('click', () => present(!document.body.classList.contains('present')));
 
-  /** Opens or closes the settings drawer (presentation mode and small screens). */
+  /**
+   * Opens or closes the settings drawer (presentation mode and small screens).
+   * @param {boolean} open
+   */
   function openSettings(open) {
     document.body.classList.toggle('settings-open', open);
-    ui.settingsToggle.setAttribute('aria-expanded', open);
+    ui.settingsToggle.setAttribute('aria-expanded', String(open));
   }
   ui.settingsToggle.addEventListener('click', () => openSettings(!document.body.classList.contains('settings-open')));
 
@@ -71,6 +84,7 @@ export function createPresentation({ state, plots, walkthrough }) {
    * Height of each of `n` embedded plots: together they fill the frame under the run row. What is
    * not plot (the run row, the key figures, titles and legends) is measured from the page as laid
    * out, down to the last plot's bottom and a margin.
+   * @param {number} n
    */
   function embedHeight(n) {
     const shown = [...ui.plots.querySelectorAll('.plot.embedded')];
@@ -90,8 +104,8 @@ export function createPresentation({ state, plots, walkthrough }) {
     document.body.classList.add('embed');
     document.body.dataset.embed = ids.join(',');
     plots.embedded = ids;
-    for (const div of ui.plots.querySelectorAll('.plot[data-plot]'))
-      div.classList.toggle('embedded', ids.includes(div.dataset.plot));
+    for (const div of /** @type {NodeListOf<HTMLElement>} */ (ui.plots.querySelectorAll('.plot[data-plot]')))
+      div.classList.toggle('embedded', ids.includes(/** @type {string} */ (div.dataset.plot)));
     // Kept until the user acts: a load's message would otherwise clear it.
     if (unknown.length)
       state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
@@ -101,7 +115,7 @@ export function createPresentation({ state, plots, walkthrough }) {
   }
   if (fragment('present') === '1') {
     document.body.classList.add('present');
-    ui.present.setAttribute('aria-pressed', true);
+    ui.present.setAttribute('aria-pressed', 'true');
     plots.scale = walkthrough.plots.scale = PRESENT_SCALE;
     [plots.height, walkthrough.plots.height] = PLOT_HEIGHT.present;
   }

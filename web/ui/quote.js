@@ -3,6 +3,7 @@ import { count } from '../plots/numbers.js';
 
 // The characters a message escapes: the Unicode categories Cc, Cf, Zl and Zp, as the core's.
 const INVISIBLE = /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u;
+/** @type {Partial<Record<string, string>>} */
 const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
 
 /**
@@ -12,12 +13,16 @@ const ESCAPES = { '\n': '\\n', '\t': '\\t', '\r': '\\r' };
  * characters with the full length noted. The main thread holds no instance of the core (one there would compile the
  * module a second time before the worker starts, delaying the first run), so tests/quote.test.mjs
  * checks this against the core's, exported through the bindings, for every code point.
+ * @param {string} text
+ * @param {number} [max]
  */
 export function excerpt(text, max = 40) {
   const chars = [...text];
   const shown = chars
     .slice(0, max)
-    .map((c) => (INVISIBLE.test(c) ? (ESCAPES[c] ?? `\\u{${c.codePointAt(0).toString(16)}}`) : c))
+    .map((c) =>
+      INVISIBLE.test(c) ? (ESCAPES[c] ?? `\\u{${/** @type {number} */ (c.codePointAt(0)).toString(16)}}`) : c,
+    )
     .join('');
   return chars.length > max ? `${shown}… (${chars.length} characters)` : shown;
 }
@@ -25,6 +30,8 @@ export function excerpt(text, max = 40) {
 /**
  * The first few `items` joined by `sep`, and how many more there are: a message quotes a bounded
  * number of parts of an address, however many it holds.
+ * @param {string[]} items
+ * @param {string} [sep]
  */
 export function listed(items, sep = ', ') {
   const shown = items.slice(0, LISTED).join(sep);

@@ -5,17 +5,21 @@ import { presetNamed } from './url.js';
 /** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
 function plotsInView() {
   if (ui.plots.offsetParent === null) return ['speed'];
-  const inView = [...ui.plots.querySelectorAll('.plot[data-plot]')]
+  const inView = [.../** @type {NodeListOf<HTMLElement>} */ (ui.plots.querySelectorAll('.plot[data-plot]'))]
     .filter((p) => {
       const box = p.getBoundingClientRect();
       const shown = Math.min(box.bottom, innerHeight) - Math.max(box.top, 0);
       return box.height > 0 && shown >= box.height / 2;
     })
-    .map((p) => p.dataset.plot);
+    .map((p) => /** @type {string} */ (p.dataset.plot));
   return inView.length ? inView : ['speed'];
 }
 
-/** Wires Copy link and Copy embed code. */
+/**
+ * Wires Copy link and Copy embed code. `state.info` is the core's description of the scenario in
+ * the form, null until the first one comes.
+ * @param {{state: {info: import('../worker/protocol.js').Info | null}}} parts
+ */
 export function wireShare({ state }) {
   ui.copy.addEventListener('click', async () => {
     try {
@@ -27,9 +31,11 @@ export function wireShare({ state }) {
   });
 
   ui.embed.addEventListener('click', async () => {
+    const info = state.info;
+    if (!info) return; // no scenario described yet: nothing to embed
     const ids = plotsInView();
-    const src = `${location.origin}${location.pathname}?${state.info.encoded}#embed=${ids.join(',')}`;
-    const title = `IM Lab: ${presetNamed(state.info.encoded)}, ${ids.join(', ')}`.replace(
+    const src = `${location.origin}${location.pathname}?${info.encoded}#embed=${ids.join(',')}`;
+    const title = `IM Lab: ${presetNamed(info.encoded)}, ${ids.join(', ')}`.replace(
       /[&<"]/g,
       (c) => `&#${c.charCodeAt(0)};`,
     );
