@@ -69,7 +69,7 @@ function registerServiceWorker() {
  *   ranLaws: boolean,
  *   shownRun: number,
  *   transient: {t: number, reason: string} | null,
- *   figures: P.Figure[],
+ *   figures: P.RunFigure[],
  *   unreached: Unreached[],
  *   export: {serial: number, parts: Blob[]} | null,
  *   pins: string[],

@@ -19,7 +19,7 @@ const KEEP_EVERY_MS = 1000;
  * A grading: the challenge's canonical link, the class file's name, header and submissions, and
  * each submission's result by index (only what the table and the CSV need).
  * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
- *   rows: P.ClassRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
+ *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
  */
 
 /** The results kept from the last grading of `key` (none for another grading). */

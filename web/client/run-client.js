@@ -9,6 +9,15 @@ import { watch } from './watch.js';
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
 
+/** A scenario the core refused: its message, and the key of the field at fault (or null). */
+export class ScenarioRefused extends Error {
+  /** @param {P.Checked['rejected'][number]} rejected */
+  constructor({ key, message }) {
+    super(message);
+    this.key = key;
+  }
+}
+
 export class RunClient {
   /**
    * `onFailed(reason, restarting)` tells the page that the worker failed; `restarting` is false
@@ -65,12 +74,32 @@ export class RunClient {
   }
 
   /**
-   * Asks the core to validate and describe a scenario string ('recover' keeps its good fields).
+   * The core's description of a scenario string; rejects with a ScenarioRefused, which names the
+   * field at fault, when the core refuses it.
    * @param {string} scenario
-   * @param {'describe' | 'recover'} [type]
    * @returns {Promise<P.Info>}
    */
-  describe(scenario, type = 'describe') {
+  async describe(scenario) {
+    const { info, rejected } = await this.check('describe', scenario);
+    if (info === null) throw new ScenarioRefused(rejected[0]);
+    return info;
+  }
+
+  /**
+   * The core's description of what can be kept of a scenario string (null when nothing can: a
+   * bad `v` or `preset`), and every field it left out.
+   * @param {string} scenario
+   */
+  recover(scenario) {
+    return this.check('recover', scenario);
+  }
+
+  /**
+   * @param {'describe' | 'recover'} type
+   * @param {string} scenario
+   * @returns {Promise<P.Checked>}
+   */
+  check(type, scenario) {
     const req = ++this.req;
     return this.ask(`describe ${req}`, { type, req, scenario });
   }
@@ -127,7 +156,7 @@ export class RunClient {
     } else if (data.type === 'challenge-measured') {
       this.answer(`measure ${data.id}`, data.error, data.measures);
     } else if (data.type === 'described') {
-      this.answer(`describe ${data.req}`, null, data.info);
+      this.answer(`describe ${data.req}`, null, data.checked);
     } else if (data.type === 'invalid' && data.req !== undefined) {
       this.answer(`describe ${data.req}`, data.message);
     } else {

@@ -33,8 +33,8 @@ const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_fi
 
 /**
  * The compact row of key figures that stands for the strip on small screens and projectors.
- * @param {P.Figure[]} figures
- * @param {P.Figure | undefined} rated
+ * @param {P.RunFigure[]} figures
+ * @param {P.RunFigure | undefined} rated
  */
 function showKeyFigures(figures, rated) {
   const [low, high] = ['mean_nis_low', 'mean_nis_high'].map((n) => figures.find((f) => f.name === n));
@@ -60,7 +60,7 @@ function showKeyFigures(figures, rated) {
 /**
  * Whether a final value `f` had settled, in words, from its trend over the end of the run:
  * [short text, the detail for its tooltip].
- * @param {P.Figure} f
+ * @param {P.RunFigure} f
  * @returns {[string, string]}
  */
 function trendText(f) {
@@ -106,12 +106,12 @@ export function createFiguresView({ plotSets }) {
   /**
    * The figures strip: each figure of the run with its unit and window, and in place of a figure
    * the run had not reached by its end, the words that say so (all from the core).
-   * @param {P.Figure[]} figures
+   * @param {P.RunFigure[]} figures
    * @param {Warning[]} [warnings]
    * @param {Unreached[]} [unreached]
    */
   function show(figures, warnings = [], unreached = []) {
-    /** @param {P.Figure} f */
+    /** @param {P.RunFigure} f */
     const fmt = (f) => {
       if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
       if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;

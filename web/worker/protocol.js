@@ -7,6 +7,15 @@
 // reply carries the same key back. Buffers of views, overlays and CSV chunks are transferred.
 export {};
 
+/**
+ * The core's own types, declared in its bindings' `.d.ts` from the Rust structures (tsify): what
+ * a reply carries is what the core wrote.
+ * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, Checked, ClassRow, ClassView,
+ *   Composed, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
+ *   Metrics, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
+ *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
+ */
+
 // ---------------------------------------------------------------------------------------------
 // What the worker sends back: the parts shared by several replies.
 
@@ -32,21 +41,24 @@ export {};
  */
 
 /**
- * A scenario as the core describes it (the core's `describe`): its canonical text in `encoded`,
- * its fields and the keys it changes of its preset; `rejected` holds the messages of the fields a
- * `recover` dropped, each naming its field. The core's binding documents the other fields.
- * @typedef {{encoded: string, rejected?: string[], [field: string]: any}} Info
+ * A scenario as the core describes it: its canonical text in `encoded`, its preset, its fields
+ * and the keys it changes of its preset.
+ * @typedef {Description} Info
  */
-
 /**
- * A figure of a finished run (the core's report).
- * @typedef {{name: string, label: string, value: number, unit: string, [more: string]: any}} Figure
+ * A figure of a finished run, as the core's report writes it.
+ * @typedef {Figure} RunFigure
  */
+/** @typedef {ClassRow} ClassFileRow */
 
 // ---------------------------------------------------------------------------------------------
 // Page → worker.
 
-/** @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest */
+/**
+ * A scenario checked by the core: 'describe' refuses it at its first fault, 'recover' keeps its
+ * acceptable fields and lists the others.
+ * @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest
+ */
 /**
  * Starts run `id` (a new run ends the last). `overlay`, a column or null, is kept as the run goes
  * for the overlay with the pins.
@@ -122,50 +134,33 @@ export {};
  *   CSV's header and the submissions; 'grade-link' one submission graded, its runs run and its
  *   CSV row written. The CSV is the header and then each row's `csv`, in file order.
  * @typedef {{
- *   sweep: {req: {scenario: string, changes: [string, string][], freq: number, amp: number, duration: number, offset: number}, result: any},
- *   seed: {req: {scenario: string, seed: number, every: number}, result: any},
+ *   sweep: {req: {scenario: string, changes: [string, string][], freq: number, amp: number, duration: number, offset: number}, result: SweepPoint},
+ *   seed: {req: {scenario: string, seed: number, every: number}, result: SeedRun},
  *   grid: {req: {lo: number, hi: number, n: number}, result: number[]},
  *   'seed-range': {req: {first: number, n: number}, result: number[]},
- *   bands: {req: {runs: any[]}, result: any},
- *   summary: {req: {points: any[]}, result: any},
- *   'sweep-csv': {req: {points: any[]}, result: string},
- *   'seeds-csv': {req: {results: any[]}, result: string},
- *   'map-plan': {req: {scenario: string, text: string}, result: {map: any, figures: any[]}},
- *   'map-run': {req: {scenario: string, seed: number}, result: any},
- *   'map-cells': {req: {map: any, runs: any[]}, result: any[]},
- *   'map-csv': {req: {map: any, cells: any[]}, result: string},
- *   challenge: {req: {text: string}, result: any},
- *   'challenge-submission': {req: {text: string, submission: string}, result: any},
- *   'challenge-tries': {req: {text: string, tries: [string, string][]}, result: any},
- *   'challenge-compose': {req: {parts: any}, result: {encoded: string | null, brief: string | null, error: {key: string, message: string} | null}},
+ *   bands: {req: {runs: SeedRun[]}, result: SeedBands},
+ *   summary: {req: {points: SweepPoint[]}, result: SweepSummary},
+ *   'sweep-csv': {req: {points: SweepPoint[]}, result: string},
+ *   'seeds-csv': {req: {results: SeedResult[]}, result: string},
+ *   'map-plan': {req: {scenario: string, text: string}, result: {map: RobustMap, figures: FigureInfo[]}},
+ *   'map-run': {req: {scenario: string, seed: number}, result: MapRun},
+ *   'map-cells': {req: {map: RobustMap, runs: MapRun[]}, result: Cell[]},
+ *   'map-csv': {req: {map: RobustMap, cells: Cell[]}, result: string},
+ *   challenge: {req: {text: string}, result: ChallengeView},
+ *   'challenge-submission': {req: {text: string, submission: string}, result: SubmissionView},
+ *   'challenge-tries': {req: {text: string, tries: [string, string][]}, result: SubmissionView},
+ *   'challenge-compose': {req: {parts: ChallengeParts}, result: Composed},
  *   'challenge-designs': {req: {text: string, max: number}, result: [string, string][][]},
- *   'challenge-judge': {req: {text: string, runs: any[]}, result: any},
- *   'challenge-run': {req: {scenario: string}, result: any},
- *   'challenge-builtins': {req: {}, result: {name: string, summary: string, text: string, solution: string}[]},
- *   'challenge-figures': {req: {}, result: {name: string, label: string, unit: string}[]},
- *   'law-language': {req: {}, result: {names: any[], functions: {name: string, doc: string}[]}},
- *   'law-preview': {req: {step: number, text: string}, result: {tex: string | null, error: {at: number, len: number, reason: string} | null, designed: string}},
- *   'law-verdicts': {req: {scenario: string}, result: {step: number, designed: boolean, worst: number, finding: string | null, text: string}[]},
- *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassFile},
- *   'grade-link': {req: {text: string, row: ClassRow}, result: Graded},
+ *   'challenge-judge': {req: {text: string, runs: Measures[]}, result: ChallengeVerdict},
+ *   'challenge-run': {req: {scenario: string}, result: Measures},
+ *   'challenge-builtins': {req: {}, result: BuiltinView[]},
+ *   'challenge-figures': {req: {}, result: FigureInfo[]},
+ *   'law-language': {req: {}, result: Language},
+ *   'law-preview': {req: {step: number, text: string}, result: Preview},
+ *   'law-verdicts': {req: {scenario: string}, result: LawVerdict[]},
+ *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassView},
+ *   'grade-link': {req: {text: string, row: ClassRow}, result: GradedView},
  * }} Jobs
- */
-
-/**
- * A submission of a class's file: its line, its link, the cells carried from a CSV export, and a
- * status when it was graded as it was read (a line that is not text).
- * @typedef {{line: number, link: string, carried: string[], status: string | null}} ClassRow
- */
-/**
- * A class's file read: the CSV header line (with its line end), the carried columns, the column
- * of links, the submissions; `error` when the challenge or the file is refused whole.
- * @typedef {{header: string, columns: string[], link_column: string | null, rows: ClassRow[],
- *   error: string | null}} ClassFile
- */
-/**
- * A graded submission: its status ("ok", or why it was not judged), whether it passed, the
- * core's verdict, and its CSV row (with its line end).
- * @typedef {{line: number, link: string, status: string, pass: boolean, verdict: any, csv: string}} Graded
  */
 
 /**
@@ -178,16 +173,17 @@ export {};
 
 /**
  * Unprompted, once the core is loaded: the presets and the NIS band of the EKF's consistency.
- * @typedef {{type: 'ready', presets: any[], nisBand: any}} Ready
+ * @typedef {{type: 'ready', presets: PresetInfo[], nisBand: number[]}} Ready
  */
 /**
  * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
  * error. The worker never calls the core again; the page replaces it.
  * @typedef {{type: 'crashed', message: string}} Crashed
  */
-/** @typedef {{type: 'described', req: number, info: Info}} Described */
+/** @typedef {{type: 'described', req: number, checked: Checked}} Described */
 /**
- * A request the core refused: `req` for a describe, `id` for a run's request.
+ * A request the core refused: `req` for a describe that failed other than by its scenario's
+ * fault, `id` for a run's request.
  * @typedef {{type: 'invalid', req?: number, id?: number, message: string}} Invalid
  */
 /** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
@@ -195,8 +191,9 @@ export {};
  * Run `id` ended: `view` is the whole run's view of its `groups` (null when it recorded nothing),
  * `failure` why it stopped early, and the core's report (figures, warnings, …).
  * @typedef {{type: 'done', id: number, rows: number, failure: string | null, view: View | null,
- *   computeMs: number, stability: any, figures: Figure[], unreached: any[], transient: any,
- *   warnings: any[]}} Done
+ *   computeMs: number, stability: Stability | null, figures: Figure[],
+ *   unreached: Report['unreached'], transient: Report['transient'] | null,
+ *   warnings: Report['warnings']}} Done
  */
 /** @typedef {{type: 'cancelled', id: number}} Cancelled */
 /** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */
@@ -205,9 +202,9 @@ export {};
  * @typedef {{type: 'csv', serial: number, bytes: Uint8Array, rows: number, total: number}} CsvChunk
  * @typedef {{type: 'csv-failed', serial: number, message: string}} CsvFailed
  */
-/** @typedef {{type: 'inspected', id: number, t: number, snapshot: any}} Inspected */
+/** @typedef {{type: 'inspected', id: number, t: number, snapshot: Snapshot}} Inspected */
 /**
- * @typedef {{type: 'compared', id: number, results: {predictor: string, scenario: string, metrics: any}[]}} Compared
+ * @typedef {{type: 'compared', id: number, results: {predictor: string, scenario: string, metrics: Metrics | null}[]}} Compared
  */
 /**
  * @typedef {{type: 'pin-progress', index: number, count: number, done: number, total: number}} PinProgress
@@ -219,9 +216,12 @@ export {};
  */
 /**
  * `measures` is null when the worker no longer holds run `id`.
- * @typedef {{type: 'challenge-measured', id: number, measures: any, error?: string}} Measured
+ * @typedef {{type: 'challenge-measured', id: number, measures: Measures | null, error?: string}} Measured
  */
-/** @typedef {{type: 'job', job: number, result?: any, error?: string}} JobReply */
+/**
+ * A job's result (the `result` of its kind in Jobs), or why it failed.
+ * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string}} JobReply
+ */
 
 /**
  * Every message the worker sends.

@@ -24,18 +24,13 @@ const ready = init({ module_or_path: WASM_URL }).then(() => {
 });
 
 /**
- * A scenario described by the core ('recover' keeps the acceptable fields of a bad one and
- * lists the rejected ones).
+ * A scenario checked by the core ('recover' keeps the acceptable fields of a bad one and lists
+ * the rejected ones, each with its key).
  * @param {P.DescribeRequest} request
  */
 function describeScenario({ type, req, scenario }) {
   try {
-    if (type === 'describe') {
-      post({ type: 'described', req, info: describe(scenario) });
-    } else {
-      const { encoded, rejected } = recover(scenario);
-      post({ type: 'described', req, info: { ...describe(encoded), rejected } });
-    }
+    post({ type: 'described', req, checked: type === 'describe' ? describe(scenario) : recover(scenario) });
   } catch (e) {
     if (!trapped(e)) post({ type: 'invalid', req, message: String(e) });
   }
