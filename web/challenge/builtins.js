@@ -1,9 +1,13 @@
 // The built-in challenges, listed in the Lessons tab: each a link that opens it.
 import { el } from '../ui/dom.js';
 
+/** @import { RunClient } from '../client/run-client.js' */
+
 /**
  * Lists the built-in challenges in `list` (the Lessons tab), each a link that opens it; `client`
  * is the page's worker.
+ * @param {RunClient} client
+ * @param {HTMLElement} list
  */
 export async function listBuiltins(client, list) {
   try {

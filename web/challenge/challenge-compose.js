@@ -10,14 +10,34 @@ import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
 
 /**
+ * @import * as P from '../worker/protocol.js'
+ * @import { RunClient } from '../client/run-client.js'
+ * @import { PageState } from './challenge.js'
+ */
+
+/**
+ * A challenge the core composed: its link and its task in words.
+ * @typedef {{encoded: string, brief: string}} Composed
+ */
+
+/**
  * What "Make the challenge link" shows for the core's `desc` ({encoded, brief}): the link and the
  * task in words, each with its copy button, and `checkBox` (the check's) beside the link.
+ * @param {Composed} desc
+ * @param {HTMLElement} checkBox
  */
 function made(desc, checkBox) {
   const url = `${location.origin}${location.pathname}?${desc.encoded}`;
   const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
   const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
   const copied = el('p', { className: 'hint', role: 'status' });
+  /**
+   * A button that copies `text2` (`what`, as the message names it).
+   * @param {string} id
+   * @param {string} label
+   * @param {string} what
+   * @param {string} text2
+   */
   const copier = (id, label, what, text2) =>
     button(id, label, async () => {
       try {
@@ -48,14 +68,19 @@ function made(desc, checkBox) {
   ];
 }
 
-/** The compose form in `box`; `client` is the page's worker and `state` the page's state. */
+/**
+ * The compose form in `box`; `client` is the page's worker and `state` the page's state.
+ * @param {{client: RunClient, state: PageState}} page
+ */
 export function createCompose({ client, state }) {
   const box = $('compose');
   const status = el('p', { id: 'compose-status', className: 'hint', role: 'status' });
   const error = el('p', { id: 'compose-error', className: 'challenge-error', role: 'alert', hidden: true });
   const output = el('div', { id: 'compose-output', hidden: true });
-  let figures = null; // what criteria may name, from the core
-  let base = null; // the scenario the form was filled from
+  /** @type {P.Jobs['challenge-figures']['result'] | null} what criteria may name, from the core */
+  let figures = null;
+  /** @type {P.Info | null} the scenario the form was filled from */
+  let base = null;
   const checker = createCheck({ client });
 
   async function fill() {
@@ -95,10 +120,15 @@ export function createCompose({ client, state }) {
     document.body.dataset.compose = 'filled';
   }
 
+  /**
+   * Shows the error `text` (empty clears it) and marks the row of the part at fault, `key`.
+   * @param {string} text
+   * @param {string | null} [key]
+   */
   function fail(text, key = null) {
     error.textContent = text;
     error.hidden = !text;
-    for (const r of box.querySelectorAll('[data-key]')) {
+    for (const r of /** @type {NodeListOf<HTMLElement>} */ (box.querySelectorAll('[data-key]'))) {
       const bad = r.dataset.key === key;
       r.classList.toggle('invalid', bad);
       for (const c of r.querySelectorAll('input, select')) c.toggleAttribute('aria-invalid', bad);
@@ -107,20 +137,31 @@ export function createCompose({ client, state }) {
 
   /** The parts of the challenge the form describes, for the core to check and write. */
   function parts() {
-    const value = (row, name) => row.querySelector(`[name=${name}]`).value;
-    const allow = [...$('compose-allow').children].map((row) =>
+    /**
+     * The value of the control named `name` in `row`.
+     * @param {HTMLElement} row
+     * @param {string} name
+     */
+    const value = (row, name) =>
+      /** @type {HTMLInputElement | HTMLSelectElement} */ (row.querySelector(`[name=${name}]`)).value;
+    const allow = /** @type {HTMLElement[]} */ ([...$('compose-allow').children]).map((row) =>
       row.querySelector('[name=options]')
         ? { field: row.dataset.field, options: value(row, 'options') }
         : { field: row.dataset.field, lo: value(row, 'lo'), hi: value(row, 'hi') },
     );
-    const used = [...$('compose-need').children].filter((row) => row.querySelector('[name=use]').checked);
+    const used = /** @type {HTMLElement[]} */ ([...$('compose-need').children]).filter(
+      (row) => /** @type {HTMLInputElement} */ (row.querySelector('[name=use]')).checked,
+    );
     return {
-      title: $('compose-title').value,
-      base: base.encoded,
+      title: $('compose-title', HTMLInputElement).value,
+      // The form is filled before its Make button exists.
+      base: /** @type {P.Info} */ (base).encoded,
       allow,
       need: used.map((row) => ({ figure: row.dataset.figure, op: value(row, 'op'), bound: value(row, 'bound') })),
-      vary: $('compose-vary').value,
-      robust: used.filter((row) => row.querySelector('[name=robust]').checked).map((row) => row.dataset.figure),
+      vary: $('compose-vary', HTMLInputElement).value,
+      robust: used
+        .filter((row) => /** @type {HTMLInputElement} */ (row.querySelector('[name=robust]')).checked)
+        .map((row) => row.dataset.figure),
     };
   }
 
@@ -133,16 +174,18 @@ export function createCompose({ client, state }) {
       document.body.dataset.compose = 'invalid';
       return;
     }
+    // Without an error, the core gives the link and the task.
+    const composed = /** @type {Composed} */ (desc);
     fail('');
-    output.replaceChildren(...made(desc, checker.box));
+    output.replaceChildren(...made(composed, checker.box));
     output.hidden = false;
     document.body.dataset.compose = 'made';
-    checker.check(desc.encoded);
+    checker.check(composed.encoded);
   }
 
   let filled = false;
-  $('compose-fill').addEventListener('click', fill);
-  $('tab-challenge').addEventListener('click', () => {
+  $('compose-fill', HTMLButtonElement).addEventListener('click', fill);
+  $('tab-challenge', HTMLButtonElement).addEventListener('click', () => {
     if (!filled && state.info) {
       filled = true;
       fill();

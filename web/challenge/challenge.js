@@ -11,7 +11,21 @@ import { el } from '../ui/dom.js';
 import { plural, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 
-/** Says that a link claims built-in challenge `name` with other terms. */
+/** @import * as P from '../worker/protocol.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Control, Allowed } from './knobs.js' */
+/** @import { Submission } from './checklist.js' */
+
+/**
+ * The core's description of a challenge, one of its criteria, the challenge in the address, and
+ * the page's state as the challenge reads it: the scenario in the form (null until described), the last run.
+ * @typedef {P.Jobs['challenge']['result']} Challenge
+ * @typedef {Challenge['need'][number]} Need
+ * @typedef {NonNullable<ReturnType<typeof challengeFromUrl>>} Link
+ * @typedef {{info: P.Info | null, runId: number, running: boolean, ranScenario: string | null}} PageState
+ */
+
+/** Says that a link claims built-in challenge `name` with other terms. @param {string} name */
 const editedNote = (name) =>
   el('p', {
     id: 'challenge-edited',
@@ -22,7 +36,11 @@ const editedNote = (name) =>
 /** The page's state attributes, which the tests wait on. */
 const body = () => document.body.dataset;
 
-/** The panel's parts that outlive a render: the checklist, the check's progress and the copy. */
+/**
+ * The panel's parts that outlive a render: the checklist, the check's progress and the copy.
+ * @returns {{checklist: HTMLElement, verdict: HTMLElement, progress: HTMLProgressElement, cancel: HTMLButtonElement,
+ *   copy: HTMLButtonElement, copied: HTMLElement, alert: HTMLElement}}
+ */
 function panelParts() {
   const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
   const verdict = el('p', { id: 'challenge-verdict', className: 'verdict', role: 'status' });
@@ -46,18 +64,22 @@ function panelParts() {
  * to the room the panel leaves them.
  */
 export class ChallengePanel {
+  /** @param {{client: RunClient, state: PageState, relayout: () => void}} page */
   constructor({ client, state, relayout }) {
     this.client = client;
     this.state = state;
     this.relayout = relayout;
     this.panel = $('challenge-panel');
     this.link = challengeFromUrl();
-    this.desc = null; // the core's description of the open challenge
-    this.refused = null; // why the link's submission was refused, until the student runs their own
+    /** @type {Challenge | null} the core's description of the open challenge */
+    this.desc = null;
+    /** @type {string | null} why the link's submission was refused, until the student runs their own */
+    this.refused = null;
     this.grading = 0; // checks started: a newer one supersedes the one under way
     /** @type {Pool | null} workers for the variants, started at the first check that has some */
     this.pool = null;
-    this.knobs = new Map(); // field → the panel's control
+    /** @type {Map<string, Control>} field → the panel's control */
+    this.knobs = new Map();
     this.parts = panelParts();
   }
 
@@ -66,7 +88,7 @@ export class ChallengePanel {
     return this.link !== null && this.desc !== null;
   }
 
-  /** Shows the error `text` in the panel (empty clears it). */
+  /** Shows the error `text` in the panel (empty clears it). @param {string} text */
   fail(text) {
     this.parts.alert.textContent = text;
     this.parts.alert.hidden = !text;
@@ -82,7 +104,9 @@ export class ChallengePanel {
     try {
       return await this.openLink();
     } catch (e) {
-      this.fail(`The challenge could not be opened: ${e.message}. The page shows the default scenario instead.`);
+      this.fail(
+        `The challenge could not be opened: ${/** @type {Error} */ (e).message}. The page shows the default scenario instead.`,
+      );
       body().challenge = 'failed';
       this.desc = null;
       return scenarioFromUrl();
@@ -90,7 +114,8 @@ export class ChallengePanel {
   }
 
   async openLink() {
-    const { client, link } = this;
+    const { client } = this;
+    const link = /** @type {Link} */ (this.link);
     document.body.classList.add('with-challenge');
     this.panel.hidden = false;
     body().challenge = 'loading';
@@ -98,7 +123,9 @@ export class ChallengePanel {
     try {
       this.desc = await client.job('challenge', { text: link.challenge });
     } catch (e) {
-      this.fail(`This challenge link was rejected: ${e.message}. The page shows the default scenario instead.`);
+      this.fail(
+        `This challenge link was rejected: ${/** @type {Error} */ (e).message}. The page shows the default scenario instead.`,
+      );
       body().challenge = 'malformed';
       return scenarioFromUrl();
     }
@@ -121,7 +148,8 @@ export class ChallengePanel {
   }
 
   render() {
-    const { desc, parts, knobs } = this;
+    const { parts, knobs } = this;
+    const desc = /** @type {Challenge} */ (this.desc);
     const run = el('button', { type: 'button', id: 'challenge-run', textContent: 'Run and check' });
     run.addEventListener('click', () => {
       for (const [field, control] of knobs) copyToForm(field, control);
@@ -144,7 +172,7 @@ export class ChallengePanel {
       el('h3', { textContent: 'Your settings' }),
       el('p', {
         className: 'hint',
-        textContent: `Only ${desc.allow.map((a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.`,
+        textContent: `Only ${desc.allow.map((/** @type {Allowed} */ a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.`,
       }),
       knobBox,
       el('div', { className: 'buttons' }, [run, parts.cancel]),
@@ -162,7 +190,9 @@ export class ChallengePanel {
     this.relayout();
     parts.verdict.textContent = 'Not checked yet: the first run is being computed.';
     parts.checklist.replaceChildren(
-      ...desc.need.map((n) => el('li', { textContent: `${n.label} (${n.figure}): not checked yet` })),
+      ...desc.need.map((/** @type {Need} */ n) =>
+        el('li', { textContent: `${n.label} (${n.figure}): not checked yet` }),
+      ),
     );
   }
 
@@ -174,7 +204,7 @@ export class ChallengePanel {
   lock() {
     if (!this.desc) return;
     ui.preset.disabled = true;
-    const allowed = new Set(this.desc.allow.map((a) => a.field));
+    const allowed = new Set(this.desc.allow.map((/** @type {Allowed} */ a) => a.field));
     const controls = /** @type {NodeListOf<HTMLInputElement | HTMLSelectElement>} */ (
       document.querySelectorAll(
         '#settings input, #settings select, #walkthrough .knobs input, #walkthrough .knobs select',
@@ -183,7 +213,10 @@ export class ChallengePanel {
     for (const c of controls) c.disabled = !allowed.has(c.name);
   }
 
-  /** After each description of the form: the fields are locked, and the panel follows the form. */
+  /**
+   * After each description of the form: the fields are locked, and the panel follows the form.
+   * @param {P.Info} info
+   */
   described(info) {
     if (!this.desc) return;
     this.lock();
@@ -192,26 +225,36 @@ export class ChallengePanel {
     }
   }
 
-  /** The student's values of the allowed fields in `info` that differ from the base's. */
+  /**
+   * The student's values of the allowed fields in `info` that differ from the base's.
+   * @param {P.Info} info
+   * @returns {[string, string][]}
+   */
   tries(info) {
-    return this.desc.allow
-      .map((a) => [a.field, fieldValue(info, a.field)])
-      .filter(([f, v]) => v !== null && v !== this.desc.allow.find((a) => a.field === f).value);
+    const desc = /** @type {Challenge} */ (this.desc);
+    return desc.allow
+      .map((/** @type {Allowed} */ a) => [a.field, fieldValue(info, a.field)])
+      .filter(
+        (/** @type {[string, string | null]} */ [f, v]) =>
+          v !== null && v !== desc.allow.find((/** @type {Allowed} */ a) => a.field === f).value,
+      );
   }
 
   /**
    * Whether the scenario `info` may run: `true` at once with no challenge open; with one, a
    * promise of it, as a valid answer (the address then names the run on screen); a value outside
    * the allowed range is refused before any run, and said.
+   * @param {P.Info} info
    * @returns {true | Promise<boolean>}
    */
   mayRun(info) {
     return this.desc ? this.answers(info) : true;
   }
 
-  /** Whether `info` is a valid answer to the open challenge; a refusal is said. */
+  /** Whether `info` is a valid answer to the open challenge; a refusal is said. @param {P.Info} info */
   async answers(info) {
-    const sub = await this.client.job('challenge-tries', { text: this.desc.encoded, tries: this.tries(info) });
+    const desc = /** @type {Challenge} */ (this.desc);
+    const sub = await this.client.job('challenge-tries', { text: desc.encoded, tries: this.tries(info) });
     if (sub.kind === 'ok') return true;
     // A check under way is of the settings before this edit: it ends here.
     this.grading++;
@@ -225,7 +268,9 @@ export class ChallengePanel {
   /** The description of the scenario run last (the form's, unless it has been edited since). */
   ranInfo() {
     const { state } = this;
-    return state.info.encoded === state.ranScenario ? state.info : this.client.describe(state.ranScenario);
+    // Both are set once a run has started, which a check follows.
+    const info = /** @type {P.Info} */ (state.info);
+    return info.encoded === state.ranScenario ? info : this.client.describe(/** @type {string} */ (state.ranScenario));
   }
 
   /**
@@ -252,10 +297,10 @@ export class ChallengePanel {
       await this.grade(me, runId);
     } catch (e) {
       if (me !== this.grading) return;
-      const cancelled = e.message === 'cancelled';
+      const cancelled = /** @type {Error} */ (e).message === 'cancelled';
       verdict.textContent = cancelled
         ? '✗ Check cancelled: not graded. Run again to check.'
-        : `✗ The check failed: ${e.message}. Not graded.`;
+        : `✗ The check failed: ${/** @type {Error} */ (e).message}. Not graded.`;
       body().challenge = cancelled ? 'cancelled' : 'failed';
     } finally {
       if (me === this.grading) {
@@ -266,9 +311,14 @@ export class ChallengePanel {
     }
   }
 
-  /** The check `me` of run `runId`: its submission, its runs measured, and the core's verdict. */
+  /**
+   * The check `me` of run `runId`: its submission, its runs measured, and the core's verdict.
+   * @param {number} me
+   * @param {number} runId
+   */
   async grade(me, runId) {
-    const { client, desc, state, parts } = this;
+    const { client, state, parts } = this;
+    const desc = /** @type {Challenge} */ (this.desc);
     const sub = await client.job('challenge-tries', { text: desc.encoded, tries: this.tries(await this.ranInfo()) });
     if (me !== this.grading) return;
     if (sub.kind !== 'ok') {
@@ -298,6 +348,8 @@ export class ChallengePanel {
   /**
    * Measures `scenarios` in the pool with progress (the nominal run is the first of them unless
    * the page `held` it); rejects with 'cancelled' on Cancel.
+   * @param {string[]} scenarios
+   * @param {boolean} held
    */
   async measureRuns(scenarios, held) {
     if (!scenarios.length) return [];
@@ -309,7 +361,7 @@ export class ChallengePanel {
     cancel.disabled = false;
     const total = scenarios.length + (held ? 1 : 0);
     const me = this.grading;
-    const tell = (done) => {
+    const tell = (/** @type {number} */ done) => {
       if (me !== this.grading) return;
       progress.value = (done + (held ? 1 : 0)) / total;
       verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
@@ -321,7 +373,11 @@ export class ChallengePanel {
     );
   }
 
-  /** Says why the student's settings are no answer (`what`: not run, or not graded). */
+  /**
+   * Says why the student's settings are no answer (`what`: not run, or not graded).
+   * @param {Submission} sub
+   * @param {string} what
+   */
   showRefusal(sub, what) {
     const text = `Your settings are not a valid answer: ${sub.message}.`;
     this.fail(`${text} ${what}.`);

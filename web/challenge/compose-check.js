@@ -7,18 +7,40 @@ import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { formatValue, plural } from './checklist.js';
 
+/**
+ * @import * as P from '../worker/protocol.js'
+ * @import { RunClient } from '../client/run-client.js'
+ * @import { Criterion, Verdict } from './checklist.js'
+ * @import { Challenge, Need } from './challenge.js'
+ */
+
+/**
+ * A design ([field, value] pairs, none for the base), the measures of a run, a design tried (its
+ * runs' measures and the core's verdict on them), and a check under way.
+ * @typedef {[string, string][]} Design
+ * @typedef {P.Jobs['challenge-run']['result']} Measures
+ * @typedef {{tries: Design, runs: Measures[], verdict: Verdict}} Tried
+ * @typedef {{cancelled: boolean}} Check
+ */
+
 /** The most runs a check takes: as many designs as fit, each with its nominal run and variants. */
 export const RUN_BUDGET = 300;
 
-/** A design in words: `k1=600, k2=1200`, or the base. */
+/**
+ * A design in words: `k1=600, k2=1200`, or the base.
+ * @param {Design} tries
+ */
 const designText = (tries) =>
   tries.length ? tries.map(([field, value]) => `${field}=${value}`).join(', ') : 'the base, with no field changed';
 
-/** The criteria a verdict fails, in words: `current_peak: 3.21 A vs ≤ 0.1 A`. */
+/**
+ * The criteria a verdict fails, in words: `current_peak: 3.21 A vs ≤ 0.1 A`.
+ * @param {Verdict} verdict
+ */
 function failures(verdict) {
   return verdict.criteria
-    .filter((c) => !c.pass)
-    .map((c) => {
+    .filter((/** @type {Criterion} */ c) => !c.pass)
+    .map((/** @type {Criterion} */ c) => {
       if (c.value === null) return `${c.figure}: ${c.reason}`;
       const still = c.reason === 'still changing' ? ', still changing' : '';
       return `${c.figure}: ${formatValue(c.value, c.unit)} vs ${c.bound}${still}`;
@@ -29,14 +51,28 @@ function failures(verdict) {
 /**
  * How far failing criterion `c` (verdict) of `need` is beyond its bound, relative to the bound
  * (for the mean NIS, to its band's width on `run`, the measures of the run judged).
+ * @param {Criterion} c
+ * @param {Need} need
+ * @param {Measures | undefined} run
+ * @returns {number}
  */
 function excess(c, need, run) {
   if (c.value === null || !Number.isFinite(c.value)) return Infinity;
+  /**
+   * `over` relative to `scale` (a bound of zero counts as one), none below zero.
+   * @param {number} over
+   * @param {number} scale
+   */
   const rel = (over, scale) => Math.max(0, over / (Math.abs(scale) || 1));
   if (need.op === 'max') return rel(c.value - need.bound, need.bound);
   if (need.op === 'min') return rel(need.bound - c.value, need.bound);
   if (need.op === 'abs') return rel(Math.abs(c.value) - need.bound, need.bound);
-  const band = (name) => run?.figures.find((f) => f.name === name)?.value;
+  /**
+   * The value of the run's figure `name`, if it has one.
+   * @param {string} name
+   * @returns {number | undefined}
+   */
+  const band = (name) => run?.figures.find((/** @type {Measures['figures'][number]} */ f) => f.name === name)?.value;
   const [lo, hi] = [band('mean_nis_low'), band('mean_nis_high')];
   return lo === undefined || hi === undefined ? 1 : rel(Math.max(lo - c.value, c.value - hi), hi - lo);
 }
@@ -44,26 +80,38 @@ function excess(c, need, run) {
 /**
  * How far a tried design is from passing, to find the closest: the criteria it fails, then the
  * largest relative excess among them.
+ * @param {Tried} tried
+ * @param {Challenge} desc
+ * @param {string[]} labels
+ * @returns {[number, number]}
  */
 function shortfall(tried, desc, labels) {
-  const failed = tried.verdict.criteria.filter((c) => !c.pass);
+  /** @type {Criterion[]} */
+  const failed = tried.verdict.criteria.filter((/** @type {Criterion} */ c) => !c.pass);
   const worst = failed.map((c) =>
     excess(
       c,
-      desc.need.find((n) => n.figure === c.figure),
+      desc.need.find((/** @type {Need} */ n) => n.figure === c.figure),
       tried.runs[labels.indexOf(c.run)],
     ),
   );
   return [failed.length, Math.max(0, ...worst)];
 }
 
-/** The first of `tried` with the smallest shortfall. */
+/**
+ * The first of `tried` with the smallest shortfall (null when none was tried).
+ * @param {Tried[]} tried
+ * @param {Challenge} desc
+ * @param {string[]} labels
+ */
 function closest(tried, desc, labels) {
+  /** @type {Tried | null} */
   let best = null;
+  /** @type {[number, number] | null} the shortfall of `best` */
   let bestKey = null;
   for (const t of tried) {
     const key = shortfall(t, desc, labels);
-    if (!best || key[0] < bestKey[0] || (key[0] === bestKey[0] && key[1] < bestKey[1])) {
+    if (!bestKey || key[0] < bestKey[0] || (key[0] === bestKey[0] && key[1] < bestKey[1])) {
       best = t;
       bestKey = key;
     }
@@ -71,7 +119,10 @@ function closest(tried, desc, labels) {
   return best;
 }
 
-/** What a finished check found, in words: the verdict line and the details (the base, the bound). */
+/**
+ * What a finished check found, in words: the verdict line and the details (the base, the bound).
+ * @param {{desc: Challenge, labels: string[], tried: Tried[], runs: number}} found
+ */
 function findings({ desc, labels, tried, runs }) {
   const m = tried.length;
   const passing = tried.filter((t) => t.verdict.pass);
@@ -90,7 +141,8 @@ function findings({ desc, labels, tried, runs }) {
       details: baseLine + bound,
     };
   }
-  const near = closest(tried, desc, labels);
+  // A check tries the base at least, whose submission runs.
+  const near = /** @type {Tried} */ (closest(tried, desc, labels));
   return {
     solvable: false,
     line: `✗ No design of the ${m} tried passes: the bounds may be out of reach; the closest was ${designText(near.tries)} (${failures(near.verdict)}).`,
@@ -102,18 +154,24 @@ function findings({ desc, labels, tried, runs }) {
  * The check's part of the compose form: `box` to show beside the link, `check(text)` to check the
  * challenge `text` (a newer check supersedes one under way) and `stop()` to cancel it.
  * `client` is the page's worker.
+ * @param {{client: RunClient}} page
  */
 export function createCheck({ client }) {
   const line = el('p', { id: 'compose-check', className: 'verdict', role: 'status' });
   const details = el('p', { id: 'compose-check-details', className: 'hint' });
-  const progress = el('progress', { id: 'compose-check-progress', max: 1, value: 0, hidden: true });
+  const progress = /** @type {HTMLProgressElement} */ (
+    el('progress', { id: 'compose-check-progress', max: 1, value: 0, hidden: true })
+  );
   progress.setAttribute('aria-label', 'Challenge check: runs done');
-  const cancel = el('button', {
-    type: 'button',
-    id: 'compose-check-cancel',
-    textContent: 'Cancel check',
-    disabled: true,
-  });
+  const cancel = /** @type {HTMLButtonElement} */ (
+    el('button', {
+      type: 'button',
+      id: 'compose-check-cancel',
+      textContent: 'Cancel check',
+      disabled: true,
+    })
+  );
+  /** @type {HTMLElement} */
   const box = el('div', { className: 'compose-check' }, [
     line,
     el('div', { className: 'buttons' }, [progress, cancel]),
@@ -122,7 +180,8 @@ export function createCheck({ client }) {
   const state = document.body.dataset;
   /** @type {Pool | null} */
   let pool = null;
-  let current = null; // the check under way: {cancelled}
+  /** @type {Check | null} the check under way */
+  let current = null;
 
   function stop() {
     if (current) current.cancelled = true;
@@ -130,7 +189,12 @@ export function createCheck({ client }) {
   }
   cancel.addEventListener('click', stop);
 
-  /** Runs `jobs` in the pool, unless check `me` was cancelled. */
+  /**
+   * Runs `jobs` in the pool, unless check `me` was cancelled; `onDone(count)` as each ends.
+   * @param {Check} me
+   * @param {P.JobRequest[]} jobs
+   * @param {(count: number) => void} [onDone]
+   */
   async function inPool(me, jobs, onDone) {
     if (me.cancelled) throw new Error('cancelled');
     pool ??= new Pool(1);
@@ -140,7 +204,11 @@ export function createCheck({ client }) {
     return results;
   }
 
-  /** Check `me` of challenge `text`: its designs, each one's runs measured, and their verdicts. */
+  /**
+   * Check `me` of challenge `text`: its designs, each one's runs measured, and their verdicts.
+   * @param {Check} me
+   * @param {string} text
+   */
   async function search(me, text) {
     const desc = await client.job('challenge', { text });
     const labels = ['nominal', ...desc.variants];
@@ -151,7 +219,7 @@ export function createCheck({ client }) {
       designs.map((tries) => ({ kind: 'challenge-tries', text, tries })),
     );
     const scenarios = subs.flatMap((s) => s.scenarios);
-    const tell = (done) => {
+    const tell = (/** @type {number} */ done) => {
       progress.value = done / scenarios.length;
       line.textContent = `Checking whether a design within the allowed ranges passes: ${done} of ${plural(scenarios.length, 'run')} (${plural(designs.length, 'design')})…`;
     };
@@ -162,6 +230,7 @@ export function createCheck({ client }) {
       tell,
     );
     let at = 0;
+    /** @type {Tried[]} */
     const tried = designs
       .map((tries, i) => ({ tries, runs: measures.slice(at, (at += subs[i].scenarios.length)), verdict: null }))
       .filter((t) => t.runs.length > 0);
@@ -173,6 +242,10 @@ export function createCheck({ client }) {
     return { desc, labels, tried, runs: scenarios.length };
   }
 
+  /**
+   * Checks challenge `text`, ending the check under way.
+   * @param {string} text
+   */
   async function check(text) {
     stop();
     const me = { cancelled: false };
@@ -191,10 +264,10 @@ export function createCheck({ client }) {
       state.composeCheck = found.solvable ? 'solvable' : 'unsolved';
     } catch (e) {
       if (current !== me) return;
-      const cancelled = e.message === 'cancelled';
+      const cancelled = /** @type {Error} */ (e).message === 'cancelled';
       line.textContent = cancelled
         ? 'Check cancelled: whether a design within the allowed ranges passes is not known. Make the link again to check.'
-        : `The check failed: ${e.message}.`;
+        : `The check failed: ${/** @type {Error} */ (e).message}.`;
       state.composeCheck = cancelled ? 'cancelled' : 'failed';
     } finally {
       if (current === me) {

@@ -4,13 +4,30 @@
 import { fieldValue } from '../ui/scenario.js';
 import { el } from '../ui/dom.js';
 
-/** `x` to two significant digits, as the codec writes numbers. */
+/** @import * as P from '../worker/protocol.js' */
+
+/**
+ * A field of the scenario (the core's description of it), a figure a criterion may name, and the
+ * measures of a run with one of its figures.
+ * @typedef {P.Info['fields'][number]} Field
+ * @typedef {P.Jobs['challenge-figures']['result'][number]} FigureInfo
+ * @typedef {P.Jobs['challenge-run']['result']} Measures
+ * @typedef {Measures['figures'][number]} Measure
+ */
+
+/**
+ * `x` to two significant digits, as the codec writes numbers.
+ * @param {number} x
+ */
 const round2 = (x) => Number(x.toPrecision(2));
 
 // Final values are bounded on both sides; the mean NIS by its band.
 const ABS = new Set(['speed_error_final', 'flux_error_final', 'speed_estimate_error_final']);
 
-/** A range around the field's value: half to twice it, within the field's own range. */
+/**
+ * A range around the field's value: half to twice it, within the field's own range.
+ * @param {Field} f
+ */
 function rangeAround(f) {
   const v = Number(f.value);
   if (f.integer && f.min === 0 && f.max === 1) return [0, 1];
@@ -18,24 +35,35 @@ function rangeAround(f) {
   lo = Math.max(lo, f.min);
   hi = Math.min(hi, f.max);
   if (f.integer) [lo, hi] = [Math.ceil(lo), Math.floor(hi)];
-  const nice = (x) => (Number.isFinite(x) && x !== 0 ? Number(x.toPrecision(3)) : x);
+  const nice = (/** @type {number} */ x) => (Number.isFinite(x) && x !== 0 ? Number(x.toPrecision(3)) : x);
   return [nice(lo), nice(hi)];
 }
 
-/** A button that calls `onClick`. */
+/**
+ * A button that calls `onClick`.
+ * @param {string} id
+ * @param {string} text
+ * @param {() => void} onClick
+ */
 export function button(id, text, onClick) {
-  const b = el('button', { type: 'button', id, textContent: text });
+  const b = /** @type {HTMLButtonElement} */ (el('button', { type: 'button', id, textContent: text }));
   b.addEventListener('click', onClick);
   return b;
 }
 
-/** The fields a student may change: a picker and a row for each field added. */
+/**
+ * The fields a student may change: a picker and a row for each field added.
+ * @param {P.Info} info
+ */
 export function allowSet(info) {
-  const fields = info.fields.filter((f) => f.value !== null && f.acts && f.key !== 'seed');
-  const picker = el(
-    'select',
-    { id: 'compose-field' },
-    fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })),
+  /** @type {Field[]} */
+  const fields = info.fields.filter((/** @type {Field} */ f) => f.value !== null && f.acts && f.key !== 'seed');
+  const picker = /** @type {HTMLSelectElement} */ (
+    el(
+      'select',
+      { id: 'compose-field' },
+      fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })),
+    )
   );
   const rows = el('div', { id: 'compose-allow' });
   const add = button('compose-add', 'Add', () => {
@@ -49,6 +77,10 @@ export function allowSet(info) {
   ]);
 }
 
+/**
+ * The row of field `f`: its choices, or the range it may take.
+ * @param {Field} f
+ */
 function allowRow(f) {
   const row = el('div', { className: 'compose-row' });
   row.dataset.key = `allow.${f.key}`;
@@ -87,11 +119,13 @@ function allowRow(f) {
 /**
  * The criteria: a row for each figure the core lets a criterion name (`figures`), prefilled from
  * the run's `measures` when there are some.
+ * @param {FigureInfo[]} figures
+ * @param {Measures | null} measures
  */
 export function needSet(figures, measures) {
   const rows = el('div', { id: 'compose-need' });
   for (const fig of figures) {
-    const m = measures?.figures.find((x) => x.name === fig.name);
+    const m = measures?.figures.find((/** @type {Measure} */ x) => x.name === fig.name);
     // This scenario does not measure it (no step, no load step); a law's residual is offered
     // for a challenge that allows one, though its base has none.
     if (measures && !m && fig.name !== 'law_residual') continue;
@@ -107,6 +141,11 @@ export function needSet(figures, measures) {
   ]);
 }
 
+/**
+ * The row of a criterion on figure `fig`, its bound prefilled from the run's measure `m`, if any.
+ * @param {FigureInfo} fig
+ * @param {Measure | undefined} m
+ */
 function needRow(fig, m) {
   const id = `compose-need-${fig.name}`;
   const row = el('div', { className: 'compose-row' });
@@ -115,19 +154,23 @@ function needRow(fig, m) {
   const unit = fig.unit ? ` ${fig.unit}` : '';
   const now = m ? ` — now ${m.value === Infinity ? '∞' : Number(m.value.toPrecision(4))}${unit}` : '';
   const band = fig.name === 'mean_nis';
-  const op = el(
-    'select',
-    { id: `${id}-op`, name: 'op' },
-    (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) =>
-      el('option', {
-        value: o,
-        textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o],
-      }),
-    ),
+  const op = /** @type {HTMLSelectElement} */ (
+    el(
+      'select',
+      { id: `${id}-op`, name: 'op' },
+      (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) =>
+        el('option', {
+          value: o,
+          textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o],
+        }),
+      ),
+    )
   );
   if (ABS.has(fig.name)) op.value = 'abs';
-  const bound = el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' });
-  if (m && Number.isFinite(m.value)) bound.value = round2((op.value === 'min' ? 1.2 : 0.8) * Math.abs(m.value));
+  const bound = /** @type {HTMLInputElement} */ (
+    el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' })
+  );
+  if (m && Number.isFinite(m.value)) bound.value = String(round2((op.value === 'min' ? 1.2 : 0.8) * Math.abs(m.value)));
   const syncBound = () => {
     bound.disabled = op.value === 'band';
   };
@@ -148,13 +191,18 @@ function needRow(fig, m) {
   return row;
 }
 
-/** The robustness variants: seeds, or settings applied on top of the student's. */
+/**
+ * The robustness variants: seeds, or settings applied on top of the student's.
+ * @param {P.Info} info
+ */
 export function varySet(info) {
-  const vary = el('input', {
-    id: 'compose-vary',
-    size: 40,
-    placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024',
-  });
+  const vary = /** @type {HTMLInputElement} */ (
+    el('input', {
+      id: 'compose-vary',
+      size: 40,
+      placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024',
+    })
+  );
   const j = Number(fieldValue(info, 'model.j'));
   const seeds = button('compose-seeds', 'Seeds 2 to 10', () => {
     vary.value = 'seeds:2..10';

@@ -9,7 +9,10 @@ import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { download } from '../ui/dom.js';
 
-/** @import * as P from '../worker/protocol.js' */
+/**
+ * @import * as P from '../worker/protocol.js'
+ * @import { RunClient } from '../client/run-client.js'
+ */
 
 const STORE = 'imlab-grading';
 // The kept grading is written at most this often while it goes (ms), and at its end.
@@ -22,7 +25,11 @@ const KEEP_EVERY_MS = 1000;
  *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
  */
 
-/** The results kept from the last grading of `key` (none for another grading). */
+/**
+ * The results kept from the last grading of `key` (none for another grading).
+ * @param {string} key
+ * @returns {Grading['results']}
+ */
 function kept(key) {
   try {
     const record = JSON.parse(localStorage.getItem(STORE) ?? 'null');
@@ -32,7 +39,10 @@ function kept(key) {
   }
 }
 
-/** Keeps `job`'s results for the next time; says whether the browser's storage took them. */
+/**
+ * Keeps `job`'s results for the next time; says whether the browser's storage took them.
+ * @param {Grading} job
+ */
 function keep(job) {
   try {
     localStorage.setItem(STORE, JSON.stringify({ key: job.key, results: job.results }));
@@ -44,9 +54,10 @@ function keep(job) {
 
 /** The class file's bytes: the chosen file, or else the pasted text (as UTF-8). */
 async function classBytes() {
-  const file = $('grade-file').files[0];
+  // A file input's list of files is never null.
+  const file = /** @type {FileList} */ ($('grade-file', HTMLInputElement).files)[0];
   if (file) return { bytes: new Uint8Array(await file.arrayBuffer()), name: file.name.replace(/\.\w+$/, '') };
-  return { bytes: new TextEncoder().encode($('grade-paste').value), name: 'pasted' };
+  return { bytes: new TextEncoder().encode($('grade-paste', HTMLTextAreaElement).value), name: 'pasted' };
 }
 
 /**
@@ -61,7 +72,11 @@ function csvOf(job) {
   return { text, whole: i === job.rows.length, rows: i };
 }
 
-/** Draws `job` in `table`: a row for each submission, graded or not yet. */
+/**
+ * Draws `job` in `table`: a row for each submission, graded or not yet.
+ * @param {HTMLTableElement} table
+ * @param {Grading} job
+ */
 function drawTable(table, job) {
   const names = [...job.columns, 'line', 'link', 'status', 'pass'];
   const head = el(
@@ -79,7 +94,12 @@ function drawTable(table, job) {
   );
 }
 
-/** The table's row of submission `i`. */
+/**
+ * The table's row of submission `i`.
+ * @param {Grading} job
+ * @param {P.ClassRow} row
+ * @param {number} i
+ */
 function rowOf(job, row, i) {
   const result = job.results[i];
   const tr = el('tr', {}, [
@@ -94,20 +114,35 @@ function rowOf(job, row, i) {
   return tr;
 }
 
-/** The Grade section of the Challenge tab; `client` is the page's worker. */
+/**
+ * Offers the built-in challenges' names in the challenge field; `client` is the page's worker.
+ * @param {RunClient} client
+ */
+async function offerBuiltins(client) {
+  const builtins = await client.job('challenge-builtins').catch(() => []);
+  $('grade-builtins').replaceChildren(...builtins.map((b) => el('option', { value: b.name, label: b.summary })));
+}
+
+/**
+ * The Grade section of the Challenge tab; `client` is the page's worker.
+ * @param {{client: RunClient}} page
+ */
 export function createGrading({ client }) {
   const status = $('grade-status');
   const count = $('grade-count');
-  const progress = $('grade-progress');
-  const table = $('grade-table');
+  const progress = $('grade-progress', HTMLProgressElement);
+  const table = $('grade-table', HTMLTableElement);
   const body = document.body.dataset;
   const pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
   /** @type {Grading | null} the grading shown */
   let job = null;
 
-  /** Reads the class file against the challenge; returns the grading, or null having said why not. */
+  /**
+   * Reads the class file against the challenge; returns the grading, or throws why not.
+   * @returns {Promise<Grading>}
+   */
   async function read() {
-    const text = $('grade-challenge').value.trim();
+    const text = $('grade-challenge', HTMLInputElement).value.trim();
     if (!text) throw new Error('name a challenge: a built-in’s name or a challenge link');
     const { bytes, name } = await classBytes();
     if (bytes.length === 0) throw new Error('choose a class file, or paste the links, one a line');
@@ -130,16 +165,16 @@ export function createGrading({ client }) {
   }
 
   async function grade() {
-    $('grade-run').disabled = true;
-    $('grade-cancel').disabled = false;
-    $('grade-cancel').focus();
+    $('grade-run', HTMLButtonElement).disabled = true;
+    $('grade-cancel', HTMLButtonElement).disabled = false;
+    $('grade-cancel', HTMLButtonElement).focus();
     body.grading = 'reading';
     status.textContent = 'Reading the class file…';
     try {
       job = await read();
     } catch (e) {
       body.grading = 'refused';
-      status.textContent = `Not graded: ${e.message}.`;
+      status.textContent = `Not graded: ${/** @type {Error} */ (e).message}.`;
       return done();
     }
     drawTable(table, job);
@@ -152,14 +187,17 @@ export function createGrading({ client }) {
   function done() {
     progress.hidden = true;
     count.textContent = '';
-    $('grade-cancel').disabled = true;
-    $('grade-run').disabled = false;
-    if (document.activeElement === document.body || document.activeElement === $('grade-cancel'))
-      $('grade-run').focus();
-    $('grade-csv').disabled = !job || csvOf(job).rows === 0;
+    $('grade-cancel', HTMLButtonElement).disabled = true;
+    $('grade-run', HTMLButtonElement).disabled = false;
+    if (document.activeElement === document.body || document.activeElement === $('grade-cancel', HTMLButtonElement))
+      $('grade-run', HTMLButtonElement).focus();
+    $('grade-csv', HTMLButtonElement).disabled = !job || csvOf(job).rows === 0;
   }
 
-  /** Grades what `mine` lacks, keeping each result as it comes. */
+  /**
+   * Grades what `mine` lacks, keeping each result as it comes.
+   * @param {Grading} mine
+   */
   async function run(mine) {
     const todo = mine.rows.map((_, i) => i).filter((i) => !mine.results[i]);
     const total = mine.rows.length;
@@ -168,7 +206,7 @@ export function createGrading({ client }) {
     body.grading = 'running';
     status.textContent = `Grading ${total} submissions${from ? `, ${from} kept from the last grading` : ''}…`;
     let keptAt = 0;
-    const tell = (done) => {
+    const tell = (/** @type {number} */ done) => {
       progress.value = (from + done) / total;
       count.textContent = `Graded ${from + done} of ${total}`;
     };
@@ -199,33 +237,31 @@ export function createGrading({ client }) {
         ? 'kept in this browser; Grade goes on from there'
         : 'not kept (the browser’s storage refused them)';
       status.textContent =
-        e.message === 'cancelled'
+        /** @type {Error} */ (e).message === 'cancelled'
           ? `Cancelled: ${n} of ${total} graded, ${where}.`
-          : `The grading stopped: ${e.message}. ${n} of ${total} graded, ${where}.`;
-      body.grading = e.message === 'cancelled' ? 'cancelled' : 'failed';
+          : `The grading stopped: ${/** @type {Error} */ (e).message}. ${n} of ${total} graded, ${where}.`;
+      body.grading = /** @type {Error} */ (e).message === 'cancelled' ? 'cancelled' : 'failed';
     }
   }
 
-  /** Offers the built-in challenges' names in the challenge field. */
-  async function offerBuiltins() {
-    const builtins = await client.job('challenge-builtins').catch(() => []);
-    $('grade-builtins').replaceChildren(...builtins.map((b) => el('option', { value: b.name, label: b.summary })));
-  }
-
-  $('grade-challenge').addEventListener('focus', offerBuiltins, { once: true });
-  $('grade-run').addEventListener('click', grade);
-  $('grade-cancel').addEventListener('click', () => pool.cancel());
-  $('grade-csv').addEventListener('click', () => {
-    const { text, whole, rows } = csvOf(job);
-    download(new Blob([text], { type: 'text/csv' }), `imlab-grade-${job.name}${whole ? '' : '-partial'}.csv`);
+  $('grade-challenge', HTMLInputElement).addEventListener('focus', () => offerBuiltins(client), { once: true });
+  $('grade-run', HTMLButtonElement).addEventListener('click', grade);
+  $('grade-cancel', HTMLButtonElement).addEventListener('click', () => pool.cancel());
+  $('grade-csv', HTMLButtonElement).addEventListener('click', () => {
+    // Download is enabled once a grading is shown.
+    const shown = /** @type {Grading} */ (job);
+    const { text, whole, rows } = csvOf(shown);
+    download(new Blob([text], { type: 'text/csv' }), `imlab-grade-${shown.name}${whole ? '' : '-partial'}.csv`);
     if (!whole)
-      status.textContent = `Downloaded the first ${rows} of ${job.rows.length} rows, in order: Grade goes on from where it stopped, and imlab grade --resume can finish the file.`;
+      status.textContent = `Downloaded the first ${rows} of ${shown.rows.length} rows, in order: Grade goes on from where it stopped, and imlab grade --resume can finish the file.`;
   });
   // A class file dropped anywhere on the section is the one graded.
   const zone = $('grade-section');
   zone.addEventListener('dragover', (e) => e.preventDefault());
   zone.addEventListener('drop', (e) => {
     e.preventDefault();
-    if (e.dataTransfer.files.length) $('grade-file').files = e.dataTransfer.files;
+    // A drop's data is never null.
+    const data = /** @type {DataTransfer} */ (e.dataTransfer);
+    if (data.files.length) $('grade-file', HTMLInputElement).files = data.files;
   });
 }

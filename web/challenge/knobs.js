@@ -4,32 +4,47 @@ import { ui } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { setField } from '../run/controls.js';
 
-/** Copies a panel knob's value to the settings form's control of `field` (the run reads the form). */
+/** @import * as P from '../worker/protocol.js' */
+
+/**
+ * A field the challenge allows (the core's description of it), and a panel knob's control.
+ * @typedef {P.Jobs['challenge']['result']['allow'][number]} Allowed
+ * @typedef {HTMLInputElement | HTMLSelectElement} Control
+ */
+
+/**
+ * Copies a panel knob's value to the settings form's control of `field` (the run reads the form).
+ * @param {string} field
+ * @param {Control} control
+ */
 export const copyToForm = (field, control) => setField(ui.form, field, control.value);
 
 /**
  * The panel's control for an allowed field `a` (the core's description), kept in `knobs` by field;
  * its edits go to the settings form.
+ * @param {Allowed} a
+ * @param {Map<string, Control>} knobs
  */
 export function knob(a, knobs) {
   const id = `challenge-${a.field}`;
-  const control =
+  const control = /** @type {Control} */ (
     a.kind === 'choice'
       ? el(
           'select',
           { name: a.field, id },
-          a.options.map((o) => el('option', { value: o, textContent: o })),
+          a.options.map((/** @type {string} */ o) => el('option', { value: o, textContent: o })),
         )
       : a.kind === 'formula'
         ? el('input', { type: 'text', name: a.field, id, spellcheck: false, className: 'formula', autocomplete: 'off' })
-        : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false });
+        : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false })
+  );
   control.value = a.value ?? '';
   const unit = a.unit ? ` ${a.unit}` : '';
-  const range = {
+  const range = /** @type {Record<string, () => string>} */ ({
     choice: () => `one of ${a.options.join(', ')}`,
     formula: () => `a formula of your own (${a.unit}; the walkthrough’s “Write this step” lists the names)`,
     range: () => `${a.lo} to ${a.hi}${unit}`,
-  }[a.kind]();
+  })[a.kind]();
   const rangeId = `${id}-range`;
   control.setAttribute('aria-describedby', rangeId);
   knobs.set(a.field, control);
@@ -38,7 +53,7 @@ export function knob(a, knobs) {
     ui.form.dispatchEvent(new Event('change'));
   });
   control.addEventListener('keydown', (e) => {
-    if (e.key !== 'Enter') return;
+    if (/** @type {KeyboardEvent} */ (e).key !== 'Enter') return;
     e.preventDefault();
     copyToForm(a.field, control);
     ui.run.click();
