@@ -4,7 +4,6 @@
 // it and the task in words, both to copy; its message names the field at fault. Then the page
 // checks that a design within the allowed ranges passes (compose-check.js) and says so.
 import { $ } from '../ui/page.js';
-import { presetNamed } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
@@ -104,7 +103,7 @@ export function createCompose({ client, state }) {
       el('p', { className: 'compose-base' }, ['Base: ', el('code', { textContent: info.encoded })]),
       el('label', { className: 'compose-title' }, [
         'Title ',
-        el('input', { id: 'compose-title', value: `Challenge: ${presetNamed(info.encoded)}`, maxLength: 120 }),
+        el('input', { id: 'compose-title', value: `Challenge: ${info.preset}`, maxLength: 120 }),
       ]),
       allowSet(info),
       needSet(figures, measures),

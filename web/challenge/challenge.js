@@ -232,12 +232,13 @@ export class ChallengePanel {
    */
   tries(info) {
     const desc = /** @type {Challenge} */ (this.desc);
-    return desc.allow
-      .map((/** @type {Allowed} */ a) => [a.field, fieldValue(info, a.field)])
-      .filter(
-        (/** @type {[string, string | null]} */ [f, v]) =>
-          v !== null && v !== desc.allow.find((/** @type {Allowed} */ a) => a.field === f).value,
-      );
+    /** @type {[string, string][]} */
+    const tries = [];
+    for (const a of desc.allow) {
+      const v = fieldValue(info, a.field);
+      if (v !== null && v !== a.value) tries.push([a.field, v]);
+    }
+    return tries;
   }
 
   /**

@@ -30,13 +30,13 @@ const ABS = new Set(['speed_error_final', 'flux_error_final', 'speed_estimate_er
  */
 function rangeAround(f) {
   const v = Number(f.value);
-  if (f.integer && f.min === 0 && f.max === 1) return [0, 1];
+  if (f.integer && f.min === 0 && f.max === 1) return ['0', '1'];
   let [lo, hi] = v > 0 ? [v / 2, v * 2] : v < 0 ? [v * 2, v / 2] : [f.min, f.max];
   lo = Math.max(lo, f.min);
   hi = Math.min(hi, f.max);
   if (f.integer) [lo, hi] = [Math.ceil(lo), Math.floor(hi)];
   const nice = (/** @type {number} */ x) => (Number.isFinite(x) && x !== 0 ? Number(x.toPrecision(3)) : x);
-  return [nice(lo), nice(hi)];
+  return [String(nice(lo)), String(nice(hi))];
 }
 
 /**

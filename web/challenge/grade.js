@@ -97,7 +97,7 @@ function drawTable(table, job) {
 /**
  * The table's row of submission `i`.
  * @param {Grading} job
- * @param {P.ClassRow} row
+ * @param {P.ClassFileRow} row
  * @param {number} i
  */
 function rowOf(job, row, i) {

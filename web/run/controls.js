@@ -171,12 +171,16 @@ export function composeScenario(form, preset) {
   return parts.join('&');
 }
 
-/** Marks the field a codec error message names (`field 'k1' ...`), clearing the others. */
-export function markInvalid(form, message) {
-  const match = /field '([^']+)'/.exec(message ?? '');
-  if (match) controlOf(form, match[1]);
+/**
+ * Marks the control of field `key` (the field the core refused; null for none), clearing the
+ * others.
+ * @param {HTMLFormElement} form
+ * @param {string | null} key
+ */
+export function markInvalid(form, key) {
+  if (key !== null) controlOf(form, key);
   for (const control of form.querySelectorAll('input, select')) {
-    control.classList.toggle('invalid', match !== null && control.name === match[1]);
+    control.classList.toggle('invalid', key !== null && /** @type {HTMLInputElement} */ (control).name === key);
   }
 }
 

@@ -3,7 +3,6 @@
 import { count } from '../plots/numbers.js';
 import { say, ui } from '../ui/page.js';
 import { png } from './png.js';
-import { presetNamed } from '../ui/url.js';
 import { download } from '../ui/dom.js';
 
 /** @import * as P from '../worker/protocol.js' */
@@ -57,7 +56,7 @@ export function createExport({ client, state, plots, walkthrough }) {
 
   function fileStem() {
     // Only a run's download is named, and a run has a described scenario.
-    return `imlab-${presetNamed(/** @type {P.Info} */ (state.info).encoded)}-${state.runId}`;
+    return `imlab-${/** @type {P.Info} */ (state.info).preset}-${state.runId}`;
   }
 
   /** The lines the PNG export carries above the plots: the scenario and the run's figures. */

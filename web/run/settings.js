@@ -3,8 +3,8 @@
 // picker, and Run.
 import { $, say, ui } from '../ui/page.js';
 import { composeScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
-import { WorkerFailed } from '../client/run-client.js';
-import { DEFAULT_SCENARIO, presetNamed, scenarioFromUrl, showScenario } from '../ui/url.js';
+import { ScenarioRefused, WorkerFailed } from '../client/run-client.js';
+import { DEFAULT_PRESET, DEFAULT_SCENARIO, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listed } from '../ui/quote.js';
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
@@ -26,19 +26,20 @@ async function describeLoaded(client, state, text) {
     say(state.notice ?? '', 'info');
     return info;
   } catch (e) {
-    if (e instanceof WorkerFailed) throw e;
-    try {
-      // Keep what is valid; name every field that was left out.
-      const info = await client.describe(text, 'recover');
+    if (!(e instanceof ScenarioRefused)) throw e;
+    // Keep what is valid; name every field that was left out.
+    const { info, rejected } = await client.recover(text);
+    if (info !== null) {
       say(
-        `Some settings in the address were rejected and left at the preset's values: ${listed(info.rejected, '; ')}.`,
+        `Some settings in the address were rejected and left at the preset's values: ${listed(
+          rejected.map((r) => r.message),
+          '; ',
+        )}.`,
       );
       return info;
-    } catch (again) {
-      if (again instanceof WorkerFailed) throw again;
-      say(`The scenario in the address was rejected: ${e.message}. Showing ${presetNamed(DEFAULT_SCENARIO)} instead.`);
-      return client.describe(DEFAULT_SCENARIO);
     }
+    say(`The scenario in the address was rejected: ${e.message}. Showing ${DEFAULT_PRESET} instead.`);
+    return client.describe(DEFAULT_SCENARIO);
   }
 }
 
@@ -92,13 +93,13 @@ export function createSettings({
 
   /** Shows `info` in the form, which showed `before` (re-built only where its fields differ). */
   function applyDescription(info, before = state.info) {
-    const presetChanged = ui.preset.value !== presetNamed(info.encoded);
+    const presetChanged = ui.preset.value !== info.preset;
     state.info = info;
     knobs.reset();
     if (shownFields(before) !== shownFields(info) || presetChanged) renderFields(ui.form, info);
     else syncFields(ui.form, info);
     walkthrough.describe(info);
-    ui.preset.value = presetNamed(info.encoded);
+    ui.preset.value = info.preset;
     // The preset's description, and what this run changes of it (a lesson's run may hold another
     // speed or length than the preset says).
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
@@ -154,13 +155,12 @@ export function createSettings({
       say('');
       return true;
     } catch (e) {
-      if (e instanceof WorkerFailed) return false;
+      if (!(e instanceof ScenarioRefused)) return false;
       markUnrun(true);
-      markInvalid(ui.form, e.message);
+      markInvalid(ui.form, e.key);
       // The field must be visible to be fixed: open the drawer where the settings live in one.
       if (ui.form.offsetParent === null && ui.form.querySelector('.invalid')) openSettings(true);
-      const field = /field '([^']+)'/.exec(e.message)?.[1] ?? null;
-      walkthrough.markKnob(field, e.message);
+      walkthrough.markKnob(e.key, e.message);
       ui.run.disabled = true;
       say(e.message);
       return false;

@@ -1,6 +1,5 @@
 // The links the page hands out: the address of this run, and an embed code for the plots in view.
 import { say, ui } from './page.js';
-import { presetNamed } from './url.js';
 
 /** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
 function plotsInView() {
@@ -35,10 +34,7 @@ export function wireShare({ state }) {
     if (!info) return; // no scenario described yet: nothing to embed
     const ids = plotsInView();
     const src = `${location.origin}${location.pathname}?${info.encoded}#embed=${ids.join(',')}`;
-    const title = `IM Lab: ${presetNamed(info.encoded)}, ${ids.join(', ')}`.replace(
-      /[&<"]/g,
-      (c) => `&#${c.charCodeAt(0)};`,
-    );
+    const title = `IM Lab: ${info.preset}, ${ids.join(', ')}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
     // The plots share whatever height the frame has; this one gives each about 300 px.
     const height = 140 + 300 * ids.length;
     const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="100%" height="${height}" style="border:0;max-width:960px" loading="lazy"></iframe>`;

@@ -2,7 +2,9 @@
 // History entries carry {scenario, ran}: an edit replaces an entry that has not been run yet and
 // pushes a new one after a run, so Back and Forward move between scenarios that were run.
 
-export const DEFAULT_SCENARIO = 'v=1&preset=sine200';
+/** The preset the page opens with when the address names no scenario. */
+export const DEFAULT_PRESET = 'sine200';
+export const DEFAULT_SCENARIO = `v=1&preset=${DEFAULT_PRESET}`;
 
 /** The scenario text in the address bar, or the default when there is none. */
 export function scenarioFromUrl() {
@@ -30,12 +32,6 @@ let heldQuery = null;
 export function holdAddress(query) {
   heldQuery = query;
   history.replaceState(history.state, '', `${location.pathname}?${query}${location.hash}`);
-}
-
-/** The preset named in a (possibly invalid) scenario string, for falling back. */
-export function presetNamed(text) {
-  const match = /(?:^|&)preset=([A-Za-z0-9_-]+)/.exec(text);
-  return match ? match[1] : null;
 }
 
 // The fragment (#sweep=...) holds the analysis settings and stays across scenario edits.

@@ -10,7 +10,7 @@ export {};
 /**
  * The core's own types, declared in its bindings' `.d.ts` from the Rust structures (tsify): what
  * a reply carries is what the core wrote.
- * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, Checked, ClassRow, ClassView,
+ * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
  *   Composed, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
  *   Metrics, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
@@ -50,6 +50,10 @@ export {};
  * @typedef {Figure} RunFigure
  */
 /** @typedef {ClassRow} ClassFileRow */
+/**
+ * A scenario checked: its description, or null when refused, and the fields refused.
+ * @typedef {import('../../pkg/imlab.js').Checked} Checked
+ */
 
 // ---------------------------------------------------------------------------------------------
 // Page → worker.
@@ -173,7 +177,7 @@ export {};
 
 /**
  * Unprompted, once the core is loaded: the presets and the NIS band of the EKF's consistency.
- * @typedef {{type: 'ready', presets: PresetInfo[], nisBand: number[]}} Ready
+ * @typedef {{type: 'ready', presets: PresetInfo[], nisBand: Float64Array}} Ready
  */
 /**
  * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
