@@ -232,13 +232,10 @@ export class ChallengePanel {
    */
   tries(info) {
     const desc = /** @type {Challenge} */ (this.desc);
-    /** @type {[string, string][]} */
-    const tries = [];
-    for (const a of desc.allow) {
+    return desc.allow.flatMap((a) => {
       const v = fieldValue(info, a.field);
-      if (v !== null && v !== a.value) tries.push([a.field, v]);
-    }
-    return tries;
+      return v !== null && v !== a.value ? [/** @type {[string, string]} */ ([a.field, v])] : [];
+    });
   }
 
   /**
