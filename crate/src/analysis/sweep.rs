@@ -467,7 +467,7 @@ pub fn sweep_csv(points: &[SweepPoint]) -> String {
     derive(tsify::Tsify),
     tsify(missing_as_null, hashmap_as_object)
 )]
-#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct SweepSummary {
     /// First frequency where the gain falls below 1/√2, interpolated in log frequency (Hz).
     pub bandwidth: Option<f64>,
@@ -479,6 +479,16 @@ pub struct SweepSummary {
     pub phase_at_200: Option<f64>,
     /// Completed points that had not settled.
     pub unsettled: usize,
+    /// Points whose run failed.
+    pub failed: usize,
+    /// The largest share of saturated samples over the points that ran (none when none ran).
+    pub worst_saturation: Option<f64>,
+    /// The largest |i_s| over the points that ran (A).
+    pub peak_current: Option<f64>,
+    /// The scenario's rated current (A).
+    pub rated_current: Option<f64>,
+    /// The frequencies (Hz) of the points whose |i_s| went above the rating.
+    pub over_rating: Vec<f64>,
 }
 
 fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
@@ -492,6 +502,17 @@ fn interpolate_log(f0: f64, f1: f64, y0: f64, y1: f64, target: f64) -> f64 {
 /// them has not settled. The phase is interpolated between settled points only.
 pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
     let cutoff = std::f64::consts::FRAC_1_SQRT_2;
+    let ran: Vec<&SweepPoint> = points.iter().filter(|p| p.failure.is_none()).collect();
+    let largest = |f: fn(&SweepPoint) -> f64| ran.iter().map(|p| f(p)).reduce(f64::max);
+    let worst_saturation = largest(|p| p.saturated);
+    let peak_current = largest(|p| p.peak_current);
+    let rated_current = ran.first().map(|p| p.rated_current);
+    let over_rating = ran
+        .iter()
+        .filter(|p| p.peak_current > p.rated_current)
+        .map(|p| p.freq)
+        .collect();
+    let failed = points.len() - ran.len();
     // Only completed points, in increasing frequency, one per frequency.
     let mut points: Vec<&SweepPoint> = points
         .iter()
@@ -534,6 +555,11 @@ pub fn summarise(points: &[SweepPoint]) -> SweepSummary {
         bandwidth_unsettled,
         phase_at_200,
         unsettled,
+        failed,
+        worst_saturation,
+        peak_current,
+        rated_current,
+        over_rating,
     }
 }
 

@@ -11,16 +11,20 @@ use serde::Serialize;
 use tsify::Ts;
 use wasm_bindgen::prelude::*;
 
-/// The closed-loop response of `scenario` at `freq` (Hz): `{freq, gain, phase, gain_hat, ...}`.
+/// The closed-loop response of the variant `variant` (a name of [`analysis::SWEEP_VARIANTS`]) of
+/// `scenario` at `freq` (Hz).
 #[wasm_bindgen]
 pub fn sweep_point(
     scenario: &str,
+    variant: &str,
     freq: f64,
     amp: f64,
     duration: f64,
     offset: f64,
 ) -> Result<Ts<analysis::SweepPoint>, JsValue> {
-    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let base = Scenario::parse(scenario).map_err(js_error)?;
+    let s = analysis::variant_scenario(&base, analysis::sweep_variant(variant).map_err(js_error)?)
+        .map_err(js_error)?;
     let settings = analysis::SweepSettings {
         amp,
         duration,
@@ -29,10 +33,60 @@ pub fn sweep_point(
     to_js(&analysis::sweep_point(&s, freq, &settings).map_err(js_error)?)
 }
 
-/// `count` log-spaced frequencies from `lo` to `hi` (Hz); throws for a bad grid.
+/// A sweep's plan as the page runs it: the plan, its text (a link's `#sweep=`), its
+/// frequencies, its variants' labels and what a reader of its results must know.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct PlanView {
+    plan: analysis::SweepPlan,
+    text: String,
+    frequencies: Vec<f64>,
+    labels: Vec<&'static str>,
+    caveats: Vec<String>,
+}
+
+fn plan_view(plan: Result<analysis::SweepPlan, String>) -> Result<Ts<PlanView>, JsValue> {
+    let plan = plan.map_err(js_error)?;
+    let labels = plan
+        .variants
+        .iter()
+        .map(|v| analysis::sweep_variant(v).map(|v| v.label))
+        .collect::<Result<_, _>>()
+        .map_err(js_error)?;
+    to_js(&PlanView {
+        text: plan.text(),
+        frequencies: plan.frequencies().map_err(js_error)?,
+        labels,
+        caveats: plan.caveats(),
+        plan,
+    })
+}
+
+/// The sweep plan `text` (`LO,HI,N,AMP,OFFSET,DURATION,VARIANT.VARIANT…`, as `imlab sweep --plan`
+/// reads it); throws the message naming the first part that is not acceptable.
 #[wasm_bindgen]
-pub fn log_grid(lo: f64, hi: f64, count: usize) -> Result<Vec<f64>, JsValue> {
-    analysis::checked_grid(lo, hi, count).map_err(js_error)
+pub fn sweep_plan(text: &str) -> Result<Ts<PlanView>, JsValue> {
+    plan_view(analysis::SweepPlan::parse(text))
+}
+
+/// The sweep plan of a form's parts as written: `numbers` `[lo, hi, n, amp, offset, duration]`,
+/// `variants` their names; throws as [`sweep_plan`] does.
+#[wasm_bindgen]
+pub fn sweep_plan_of(numbers: Vec<String>, variants: Vec<String>) -> Result<Ts<PlanView>, JsValue> {
+    let numbers: [&str; 6] = numbers
+        .iter()
+        .map(String::as_str)
+        .collect::<Vec<_>>()
+        .try_into()
+        .map_err(|_| {
+            js_error("a sweep's plan has six numbers: lo, hi, n, amp, offset, duration")
+        })?;
+    let variants: Vec<&str> = variants.iter().map(String::as_str).collect();
+    plan_view(analysis::SweepPlan::from_parts(numbers, &variants))
 }
 
 /// `{bandwidth, phase_at_200}` of sweep points sorted by frequency.

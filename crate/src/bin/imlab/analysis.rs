@@ -4,7 +4,8 @@ use crate::cli::number;
 use crate::output::{stdout_stop, to_stderr, Stop};
 use imlab::analysis::{
     checked_grid, seed_range, seed_run, seeds_csv, summarise, sweep_csv, sweep_point,
-    SweepSettings, MAX_SEED_RUNS,
+    sweep_variant, variant_scenario, SweepPlan, SweepSettings, AMP_RULE, DURATION_RULE,
+    MAX_SEED_RUNS, OFFSET_RULE,
 };
 use imlab::scenario::Scenario;
 use imlab::text::excerpt;
@@ -44,23 +45,18 @@ pub(crate) fn sweep_settings(
     duration: &str,
 ) -> Result<SweepSettings, String> {
     Ok(SweepSettings {
-        amp: number(
-            "--amp",
-            amp,
-            |a: &f64| *a > 0.0 && *a <= 1000.0,
-            "0 < A ≤ 1000 rad/s",
-        )?,
+        amp: number("--amp", amp, |a: &f64| AMP_RULE.0(*a), AMP_RULE.1)?,
         offset: number(
             "--offset",
             offset,
-            |w: &f64| w.abs() <= 1000.0,
-            "|W| ≤ 1000 rad/s",
+            |w: &f64| OFFSET_RULE.0(*w),
+            OFFSET_RULE.1,
         )?,
         duration: number(
             "--duration",
             duration,
-            |d: &f64| *d > 0.0 && *d <= 20.0,
-            "0 < D ≤ 20 s",
+            |d: &f64| DURATION_RULE.0(*d),
+            DURATION_RULE.1,
         )?,
     })
 }
@@ -117,6 +113,22 @@ pub(crate) fn sweep(
     }
     out.write_all(sweep_csv(&points).as_bytes())
         .map_err(stdout_stop)
+}
+
+/// Runs the plan `text` (a link's `#sweep=`): each of its variants of the scenario in turn, its
+/// CSV after a line `# variant=NAME`, with what a reader must know of the plan on stderr.
+pub(crate) fn sweep_plan(s: &Scenario, text: &str, out: &mut impl Write) -> Result<(), Stop> {
+    let plan = SweepPlan::parse(text).map_err(|e| format!("--plan: {e}"))?;
+    for caveat in plan.caveats() {
+        to_stderr(format_args!("imlab sweep: {caveat}\n"));
+    }
+    let freqs = plan.frequencies()?;
+    for name in &plan.variants {
+        let variant = variant_scenario(s, sweep_variant(name)?).map_err(|e| e.to_string())?;
+        writeln!(out, "# variant={name}").map_err(stdout_stop)?;
+        sweep(&variant, &freqs, &plan.settings(), out)?;
+    }
+    Ok(())
 }
 
 /// Runs the scenario with each seed of `range`, with progress on stderr, and writes each run's

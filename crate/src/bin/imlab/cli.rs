@@ -109,6 +109,16 @@ pub(crate) enum Command {
             allow_hyphen_values = true
         )]
         duration: String,
+        /// A sweep's plan, as a link's #sweep= holds it: LO,HI,N,AMP,OFFSET,DURATION and the
+        /// variants joined by '.' (euler, rk4, perfect, delay, ifoc, ifocpi); runs each variant
+        /// of the scenario in turn, its CSV after a line '# variant=NAME'
+        #[arg(
+            long,
+            value_name = "PLAN",
+            conflicts_with_all = ["freqs", "amp", "offset", "duration"],
+            allow_hyphen_values = true
+        )]
+        plan: Option<String>,
     },
     /// Run the scenario once per seed and print each seed's figures as CSV
     Seeds {

@@ -95,8 +95,12 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
             amp,
             offset,
             duration,
+            plan,
         } => {
             let s = target.parse()?;
+            if let Some(plan) = plan {
+                return analysis::sweep_plan(&s, &plan, out);
+            }
             let freqs = analysis::frequencies(&freqs)?;
             let settings = analysis::sweep_settings(&amp, &offset, &duration)?;
             analysis::sweep(&s, &freqs, &settings, out)
