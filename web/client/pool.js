@@ -6,6 +6,12 @@ import { watch } from './watch.js';
 /** @import * as P from '../worker/protocol.js' */
 
 /**
+ * A reply a member waits for: the worker's 'ready', or a job's reply.
+ * @typedef {{type: 'ready' | 'job', job: number | undefined, resolve: (data: P.Ready | P.JobReply) => void,
+ *   reject: (error: Error) => void}} Waiting
+ */
+
+/**
  * One worker of a pool. A crash (the worker's 'crashed' message, or an error event) terminates
  * it and rejects the reply it was waiting for; the pool then starts a fresh one.
  */
@@ -14,11 +20,17 @@ class Member {
     // A pool's worker answers stateless jobs only: `role=pool` tells it to hold no pins and to
     // skip the run worker's warm-up.
     this.worker = new Worker(new URL('?role=pool', WORKER_URL), { type: 'module' });
-    this.failed = null; // why the worker failed
-    this.waiting = null; // {type, job, resolve, reject}: the reply awaited
+    /** @type {string | null} why the worker failed */
+    this.failed = null;
+    /** @type {Waiting | null} the reply awaited */
+    this.waiting = null;
     watch(this.worker, {
       onMessage: (data) => {
-        if (this.waiting && data.type === this.waiting.type && data.job === this.waiting.job) {
+        if (
+          this.waiting &&
+          data.type === this.waiting.type &&
+          /** @type {{job?: number}} */ (data).job === this.waiting.job
+        ) {
           const { resolve } = this.waiting;
           this.waiting = null;
           resolve(data);
@@ -32,6 +44,20 @@ class Member {
   /**
    * Resolves with the worker's next message of `type` (for `job`), or rejects if it fails first.
    * A newer wait (another run took the pool) cancels the older one.
+   * @overload
+   * @param {'ready'} type
+   * @returns {Promise<P.Ready>}
+   */
+  /**
+   * @overload
+   * @param {'job'} type
+   * @param {number} job
+   * @returns {Promise<P.JobReply>}
+   */
+  /**
+   * @param {Waiting['type']} type
+   * @param {number} [job]
+   * @returns {Promise<P.Ready | P.JobReply>}
    */
   reply(type, job) {
     this.waiting?.reject(new Error('cancelled'));
@@ -41,6 +67,11 @@ class Member {
     });
   }
 
+  /**
+   * Ends the worker for `reason`, rejecting the reply awaited with `error`.
+   * @param {string} reason
+   * @param {Error} [error]
+   */
   fail(reason, error = new Error(`a worker failed (${reason}); the next run starts a fresh one`)) {
     if (this.failed) return;
     this.failed = reason;
@@ -52,8 +83,10 @@ class Member {
 
 /** Workers running stateless jobs; results come back in job order. */
 export class Pool {
+  /** @param {number} size */
   constructor(size) {
     this.size = size;
+    /** @type {Member[]} */
     this.members = [];
     this.generation = 0;
     this.jobs = 0; // job ids, unique over the pool's life so a late reply never matches a new job
@@ -77,11 +110,12 @@ export class Pool {
   async run(jobs, onDone = () => {}) {
     await this.start();
     const generation = ++this.generation;
+    /** @type {unknown[]} */
     const results = new Array(jobs.length);
     let next = 0;
     let done = 0;
     let failed = false; // a job failed: the other workers stop after their current one
-    const work = async (member) => {
+    const work = async (/** @type {Member} */ member) => {
       while (next < jobs.length) {
         if (this.generation !== generation || failed) throw new Error('cancelled');
         const index = next++;

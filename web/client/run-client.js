@@ -6,6 +6,12 @@ import { watch } from './watch.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
+/**
+ * A request awaiting its answer. `resolve` takes the answer of the request's own type (ask's
+ * `T`): it is declared as a method, so that each request's own `resolve` can be kept here.
+ * @typedef {{resolve(answer: unknown): void, reject: (error: Error) => void}} Pending
+ */
+
 /** A request the worker could not answer because it failed; the page has said so already. */
 export class WorkerFailed extends Error {}
 
@@ -22,15 +28,18 @@ export class RunClient {
   /**
    * `onFailed(reason, restarting)` tells the page that the worker failed; `restarting` is false
    * when it never started, which a restart would only repeat.
+   * @param {(reason: string, restarting: boolean) => void} onFailed
    */
   constructor(onFailed) {
     this.onFailed = onFailed;
     /** @type {P.Handlers} the page's handlers of the worker's messages, by type */
     this.handlers = {};
+    /** @type {Worker | null} the current worker, from start() on */
     this.worker = null;
     this.ready = false; // whether the current worker has loaded the core
     this.req = 0;
-    this.pending = new Map(); // requests awaiting their answer: key → {resolve, reject}
+    /** @type {Map<string, Pending>} requests awaiting their answer, by key */
+    this.pending = new Map();
     this.failures = 0; // workers failed so far
   }
 
@@ -65,12 +74,15 @@ export class RunClient {
   }
 
   listen() {
-    watch(this.worker, { onMessage: (data) => this.receive(data), onFail: (reason) => this.fail(reason) });
+    watch(/** @type {Worker} */ (this.worker), {
+      onMessage: (data) => this.receive(data),
+      onFail: (reason) => this.fail(reason),
+    });
   }
 
   /** @param {P.ToWorker} message */
   post(message) {
-    this.worker.postMessage(message);
+    /** @type {Worker} */ (this.worker).postMessage(message);
   }
 
   /**
@@ -106,14 +118,15 @@ export class RunClient {
 
   /**
    * Sends `message` and resolves with the answer that carries `key` (see receive).
+   * @template T the answer's type
    * @param {string} key
    * @param {P.ToWorker} message
-   * @returns {Promise<any>}
+   * @returns {Promise<T>}
    */
   ask(key, message) {
     return new Promise((resolve, reject) => {
       this.pending.set(key, { resolve, reject });
-      this.worker.postMessage(message);
+      /** @type {Worker} */ (this.worker).postMessage(message);
     });
   }
 
@@ -132,12 +145,18 @@ export class RunClient {
   /**
    * The challenge measures of run `id`, if the worker still holds it (else null).
    * @param {number} id
+   * @returns {Promise<P.Measured['measures']>}
    */
   measure(id) {
     return this.ask(`measure ${id}`, { type: 'challenge-measure', id });
   }
 
-  /** Settles the request `key`: rejects it with `error` when there is one, else resolves it with `result`. */
+  /**
+   * Settles the request `key`: rejects it with `error` when there is one, else resolves it with `result`.
+   * @param {string} key
+   * @param {string | null | undefined} error
+   * @param {unknown} [result]
+   */
   answer(key, error, result) {
     const p = this.pending.get(key);
     this.pending.delete(key);
@@ -170,10 +189,11 @@ export class RunClient {
    * The worker crashed (a trap in the core, or an uncaught error): it and everything it held (the
    * run, the pins) are gone. Ends what waited on it and starts a fresh one, unless it never
    * started, which a restart would only repeat.
+   * @param {string} reason
    */
   fail(reason) {
     this.failures++;
-    this.worker.terminate();
+    /** @type {Worker} */ (this.worker).terminate();
     for (const { reject } of this.pending.values()) reject(new WorkerFailed(reason));
     this.pending.clear();
     const restarting = this.ready;

@@ -2,9 +2,15 @@
 // fail (its 'crashed' message, an uncaught error, a message that cannot be read) to `onFail`
 // once, with the reason in words.
 
-/** Wires `worker` to `onMessage(data)` and `onFail(reason)`. */
+/** @import * as P from '../worker/protocol.js' */
+
+/**
+ * Wires `worker` to `onMessage(data)` and `onFail(reason)`.
+ * @param {Worker} worker
+ * @param {{onMessage: (data: P.FromWorker) => void, onFail: (reason: string) => void}} handlers
+ */
 export function watch(worker, { onMessage, onFail }) {
-  worker.onmessage = ({ data }) => {
+  worker.onmessage = (/** @type {MessageEvent<P.FromWorker>} */ { data }) => {
     if (data.type === 'crashed') onFail(data.message);
     else onMessage(data);
   };

@@ -13,9 +13,21 @@ import {
   Simulation,
 } from '../../pkg/imlab.js';
 
+/** @import {Jobs} from './protocol.js' */
+/** @import {Measures} from '../../pkg/imlab.js' */
+
+/**
+ * The kinds of the challenge jobs: the challenges' and the grading's.
+ * @typedef {Extract<keyof Jobs, `challenge${string}` | `grade-${string}`>} ChallengeKind
+ */
+
 /**
  * `f(challenge)` on the challenge `text` opens (a challenge link, a submission link, a built-in's
  * name), freed afterwards.
+ * @template T
+ * @param {string} text
+ * @param {(challenge: Challenge) => T} f
+ * @returns {T}
  */
 function withChallenge(text, f) {
   const challenge = Challenge.from_link(text);
@@ -29,6 +41,8 @@ function withChallenge(text, f) {
 /**
  * Runs `scenario` to its end in one call and measures it; a run that stops early is measured
  * as far as it went, and the measures say why it failed.
+ * @param {string} scenario
+ * @returns {Measures}
  */
 function measureRun(scenario) {
   const sim = new Simulation(scenario);
@@ -48,6 +62,7 @@ function measureRun(scenario) {
   }
 }
 
+/** @type {{[K in ChallengeKind]: (d: Jobs[K]['req']) => Jobs[K]['result']}} */
 export const CHALLENGE_JOBS = {
   challenge: (d) => withChallenge(d.text, (c) => c.describe()),
   'challenge-submission': (d) => withChallenge(d.text, (c) => c.submission(d.submission)),

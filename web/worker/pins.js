@@ -18,13 +18,19 @@ export function holdPins() {
 }
 
 /**
+ * The pins' store. The page sends the pins' requests to the run worker only, which handles no
+ * message before holdPins has created the store.
+ */
+const pins = () => /** @type {Comparison} */ (comparison);
+
+/**
  * The pins message, naming each scenario refused or not run.
  * @param {{scenario: string, message: string}[]} rejected
  * @returns {P.Pins}
  */
 function pinsMessage(rejected = []) {
   const sim = heldSim();
-  return { type: 'pins', scenarios: comparison.scenarios(), legends: sim ? comparison.legends(sim) : [], rejected };
+  return { type: 'pins', scenarios: pins().scenarios(), legends: sim ? pins().legends(sim) : [], rejected };
 }
 
 /**
@@ -43,7 +49,7 @@ export async function pinAll({ scenarios, column }) {
     }
     let sim;
     try {
-      comparison.check_room();
+      pins().check_room();
       sim = new Simulation(scenario);
       sim.keep_column(column);
     } catch (e) {
@@ -69,7 +75,7 @@ export async function pinAll({ scenarios, column }) {
       continue;
     }
     try {
-      comparison.adopt(sim); // takes the run; `sim` is spent
+      pins().adopt(sim); // takes the run; `sim` is spent
     } catch (e) {
       if (trapped(e)) return;
       rejected.push({ scenario, message: String(e) });
@@ -85,13 +91,13 @@ export function cancelPins() {
 
 /** @param {P.UnpinRequest} request */
 export function unpin({ index }) {
-  comparison.unpin(index);
+  pins().unpin(index);
   post(pinsMessage());
 }
 
 /** Unpins every run. */
 export function unpinAll() {
-  for (let i = comparison.scenarios().length; i > 0; i--) comparison.unpin(i - 1);
+  for (let i = pins().scenarios().length; i > 0; i--) pins().unpin(i - 1);
   post(pinsMessage());
 }
 
@@ -103,7 +109,8 @@ export function overlay({ id, column, t0, t1, buckets }) {
   const me = held(id);
   if (!me) return;
   try {
-    const data = [...comparison.overlay(me.sim, column, t0, t1, buckets)];
+    // The core's declaration types the envelopes loosely: each is a Float64Array.
+    const data = [.../** @type {Float64Array[]} */ (pins().overlay(me.sim, column, t0, t1, buckets))];
     post(
       { type: 'overlay', id, column, data },
       null,

@@ -5,6 +5,7 @@ import { challenge_measure, Simulation, variant } from '../../pkg-run/imlab.js';
 import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
 
 /** @import * as P from './protocol.js' */
+/** @import {Metrics} from '../../pkg-run/imlab.js' */
 
 // Rows per CSV chunk, about 22 MB: neither the worker nor the page holds more than a chunk or two
 // of a CSV that can reach 1.3 GB, past what one JS string can hold.
@@ -16,10 +17,15 @@ const CSV_ROWS = 20_000;
 const BOUND = 'lyapunov_bound';
 const DISTURBANCES = ['d2_tilde', 'd4_tilde'];
 const RESIDUALS = ['law_r1', 'law_r2', 'law_r3', 'law_r4'];
-/** The replayed series, each set with the core's method that gives it (an envelope [t, ...]). */
+/**
+ * A set of replayed series: their names, and the core's method that gives them over [t0, t1] in
+ * `buckets` buckets (an envelope [t, ...]).
+ * @typedef {{names: string[], of: (sim: Simulation, t0: number, t1: number, buckets: number) => Float64Array[]}} Replayed
+ */
+/** @type {Replayed[]} the replayed series, each set with the core's method that gives it */
 const REPLAYED = [
-  { names: DISTURBANCES, of: (/** @type {Simulation} */ sim, t0, t1, b) => sim.disturbances(t0, t1, b) },
-  { names: RESIDUALS, of: (/** @type {Simulation} */ sim, t0, t1, b) => sim.law_residuals(t0, t1, b) },
+  { names: DISTURBANCES, of: (sim, t0, t1, b) => sim.disturbances(t0, t1, b) },
+  { names: RESIDUALS, of: (sim, t0, t1, b) => sim.law_residuals(t0, t1, b) },
 ];
 const replayed = (/** @type {string[]} */ names) => REPLAYED.find((r) => names.some((c) => r.names.includes(c)));
 const derived = (/** @type {string} */ c) => c === BOUND || REPLAYED.some((r) => r.names.includes(c));
@@ -66,6 +72,7 @@ function view(run, groups, t0, t1, buckets) {
   /** @type {Record<string, P.PlotView>} */
   const plots = {};
   // Each replayed set is replayed once for all the plots that show part of it.
+  /** @type {Map<Replayed, Float64Array[]>} */
   const replays = new Map();
   Object.entries(groups).forEach(([id, names], g) => {
     // A plot of replayed series shows them alone, on the times of their own envelope.
@@ -84,7 +91,7 @@ function view(run, groups, t0, t1, buckets) {
         }
       }
       // Copies: each plot's buffers are moved to the page on their own.
-      const cols = replays.get(replay).map((/** @type {Float64Array} */ c) => c.slice());
+      const cols = /** @type {Float64Array[]} */ (replays.get(replay)).map((c) => c.slice());
       const asked = replay.names.filter((c) => names.includes(c));
       plots[id] = {
         t: cols[0],
@@ -154,7 +161,7 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
   }
   const recorded = sim.rows > 0;
   const v = recorded ? view(me, groups, 0, Number.MAX_VALUE, buckets) : null;
-  const stability = recorded ? sim.stability() : null;
+  const stability = recorded ? (sim.stability() ?? null) : null;
   const report = recorded ? sim.report() : null;
   post(
     {
@@ -267,6 +274,7 @@ export function csvAnswer({ type, serial }) {
 /**
  * Runs `scenario` to the end in slices, yielding between them; returns its metrics.
  * @param {string} scenario
+ * @returns {Promise<Metrics | null>}
  */
 async function runToEnd(scenario) {
   const sim = new Simulation(scenario);
@@ -275,7 +283,7 @@ async function runToEnd(scenario) {
       sim.step_for(SLICE_MS);
       await yieldToMessages();
     }
-    return sim.metrics();
+    return sim.metrics() ?? null;
   } catch (e) {
     trapped(e);
     throw e;

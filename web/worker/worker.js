@@ -57,6 +57,19 @@ function loadTools() {
   return tools;
 }
 
+/**
+ * Job `kind` of `jobs` on its fields `d`.
+ * @template {keyof P.Jobs} K
+ * @param {typeof import('./jobs.js').JOBS} jobs
+ * @param {K} kind
+ * @param {P.Jobs[K]['req']} d
+ * @returns {P.Jobs[K]['result']}
+ */
+function runJob(jobs, kind, d) {
+  const jobOf = jobs[kind];
+  return jobOf(d);
+}
+
 /** @param {P.JobMessage} request */
 async function job(request) {
   let jobs;
@@ -72,8 +85,7 @@ async function job(request) {
   }
   if (isCrashed()) return;
   try {
-    const jobOf = /** @type {(d: any) => any} */ (jobs[request.kind]);
-    post({ type: 'job', job: request.job, result: jobOf(request) });
+    post({ type: 'job', job: request.job, result: runJob(jobs, request.kind, request) });
   } catch (e) {
     if (!trapped(e)) post({ type: 'job', job: request.job, error: String(e) });
   }
@@ -117,6 +129,6 @@ self.onmessage = async ({ data }) => {
     case 'csv-cancel':
       return csvAnswer(data);
     default:
-      throw new Error(`unknown message type ${/** @type {any} */ (data).type}`);
+      throw new Error(`unknown message type ${/** @type {{type: unknown}} */ (data).type}`);
   }
 };
