@@ -160,7 +160,8 @@ export function createCompose({ client, state }) {
       vary: $('compose-vary', HTMLInputElement).value,
       robust: used
         .filter((row) => /** @type {HTMLInputElement} */ (row.querySelector('[name=robust]')).checked)
-        .map((row) => row.dataset.figure),
+        // Every criterion's row names its figure (compose-rows.js).
+        .map((row) => /** @type {string} */ (row.dataset.figure)),
     };
   }
 

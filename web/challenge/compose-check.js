@@ -64,9 +64,11 @@ function excess(c, need, run) {
    * @param {number} scale
    */
   const rel = (over, scale) => Math.max(0, over / (Math.abs(scale) || 1));
-  if (need.op === 'max') return rel(c.value - need.bound, need.bound);
-  if (need.op === 'min') return rel(need.bound - c.value, need.bound);
-  if (need.op === 'abs') return rel(Math.abs(c.value) - need.bound, need.bound);
+  // Every op but 'band' has a bound (the core's `Op`), and only they read it.
+  const bound = /** @type {number} */ (need.bound);
+  if (need.op === 'max') return rel(c.value - bound, bound);
+  if (need.op === 'min') return rel(bound - c.value, bound);
+  if (need.op === 'abs') return rel(Math.abs(c.value) - bound, bound);
   /**
    * The value of the run's figure `name`, if it has one.
    * @param {string} name
@@ -88,10 +90,11 @@ function excess(c, need, run) {
 function shortfall(tried, desc, labels) {
   /** @type {Criterion[]} */
   const failed = tried.verdict.criteria.filter((/** @type {Criterion} */ c) => !c.pass);
+  // The verdict has a criterion for each of the challenge's needs, on the same figure.
   const worst = failed.map((c) =>
     excess(
       c,
-      desc.need.find((/** @type {Need} */ n) => n.figure === c.figure),
+      /** @type {Need} */ (desc.need.find((/** @type {Need} */ n) => n.figure === c.figure)),
       tried.runs[labels.indexOf(c.run)],
     ),
   );
@@ -230,15 +233,16 @@ export function createCheck({ client }) {
       tell,
     );
     let at = 0;
-    /** @type {Tried[]} */
-    const tried = designs
-      .map((tries, i) => ({ tries, runs: measures.slice(at, (at += subs[i].scenarios.length)), verdict: null }))
+    /** @type {Omit<Tried, 'verdict'>[]} */
+    const ran = designs
+      .map((tries, i) => ({ tries, runs: measures.slice(at, (at += subs[i].scenarios.length)) }))
       .filter((t) => t.runs.length > 0);
     const verdicts = await inPool(
       me,
-      tried.map((t) => ({ kind: 'challenge-judge', text, runs: t.runs })),
+      ran.map((t) => ({ kind: 'challenge-judge', text, runs: t.runs })),
     );
-    tried.forEach((t, i) => (t.verdict = verdicts[i]));
+    /** @type {Tried[]} */
+    const tried = ran.map((t, i) => ({ ...t, verdict: verdicts[i] }));
     return { desc, labels, tried, runs: scenarios.length };
   }
 

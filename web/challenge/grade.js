@@ -102,8 +102,10 @@ function drawTable(table, job) {
  */
 function rowOf(job, row, i) {
   const result = job.results[i];
+  // A row the core read carries its cells (none only in a row the page sends to the core).
+  const carried = /** @type {string[]} */ (row.carried);
   const tr = el('tr', {}, [
-    ...row.carried.map((cell) => el('td', { textContent: cell })),
+    ...carried.map((cell) => el('td', { textContent: cell })),
     el('td', { textContent: String(row.line) }),
     el('td', { className: 'link', textContent: row.link }),
     el('td', { textContent: result ? result.status : 'not graded yet' }),

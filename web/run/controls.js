@@ -2,6 +2,16 @@
 // Text from the URL or the core only ever reaches the page through textContent and values.
 import { el } from '../ui/dom.js';
 
+/** @import * as P from '../worker/protocol.js' */
+
+/**
+ * A field of the core's description, one of those with a value (the ones the form holds), and a
+ * field's control in the form or a walkthrough knob.
+ * @typedef {P.Info['fields'][number]} Field
+ * @typedef {Field & {value: string}} HeldField
+ * @typedef {HTMLInputElement | HTMLSelectElement} Control
+ */
+
 const GROUPS = {
   reference: 'Reference',
   controller: 'Controller: backstepping or classical IFOC',
@@ -17,6 +27,10 @@ const GROUPS = {
 };
 const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 
+/**
+ * The values field `f` allows, in words.
+ * @param {Field} f
+ */
 function allowed(f) {
   if (f.options.length) return f.options.join(' | ');
   if (f.formula) return 'a formula of the names the walkthrough’s “Write this step” lists; empty: the paper’s law';
@@ -25,18 +39,25 @@ function allowed(f) {
   return `${f.min} ${lo} ${f.key} ≤ ${f.max}${unit}${f.integer ? ', whole number' : ''}`;
 }
 
+/**
+ * The input or select of field `f`, holding its value.
+ * @param {Field} f
+ * @returns {Control}
+ */
 function input(f) {
+  // Only a field with a value gets a control: the form and the knobs leave the others out.
+  const value = /** @type {string} */ (f.value);
   if (f.options.length) {
     const select = el('select', { name: f.key });
     for (const o of f.options) select.append(el('option', { value: o, textContent: o }));
-    select.value = f.value;
+    select.value = value;
     return select;
   }
   if (f.formula) {
     return el('input', {
       type: 'text',
       name: f.key,
-      value: f.value,
+      value,
       className: 'formula',
       spellcheck: false,
       autocomplete: 'off',
@@ -44,31 +65,54 @@ function input(f) {
     });
   }
   if (f.integer && f.min === 0 && f.max === 1) {
-    return el('input', { type: 'checkbox', name: f.key, checked: f.value === '1' });
+    return el('input', { type: 'checkbox', name: f.key, checked: value === '1' });
   }
   return el('input', {
     type: 'text',
     inputMode: 'decimal',
     name: f.key,
-    value: f.value,
+    value,
     spellcheck: false,
   });
 }
 
-/** The description each form shows: the fields of a group not built yet are read from it. */
+/**
+ * The description each form shows: the fields of a group not built yet are read from it.
+ * @type {WeakMap<HTMLFormElement, P.Info>}
+ */
 const shown = new WeakMap();
 
-/** The fields of `info` in `group` that the form holds (a field with no value is not in the scenario). */
-const fieldsOf = (info, group) => info.fields.filter((f) => f.group === group && f.value !== null);
+/**
+ * The fields of `info` in `group` that the form holds (a field with no value is not in the scenario).
+ * @param {P.Info} info
+ * @param {string} group
+ * @returns {HeldField[]}
+ */
+const fieldsOf = (info, group) =>
+  info.fields.filter(/** @returns {f is HeldField} */ (f) => f.group === group && f.value !== null);
+
+/**
+ * The form's control of field `key` (its input or select), or null when it has none.
+ * @param {HTMLFormElement} form
+ * @param {string} key
+ */
+function namedControl(form, key) {
+  const control = form.elements.namedItem(key);
+  return control instanceof HTMLInputElement || control instanceof HTMLSelectElement ? control : null;
+}
 
 /**
  * Builds the fields of group `details` of `form`, once. A field that does not act on this
  * scenario keeps its value (it stays in the scenario string) but is not shown.
+ * @param {HTMLFormElement} form
+ * @param {HTMLDetailsElement} details
  */
 function fill(form, details) {
   if (details.dataset.built !== undefined) return;
   details.dataset.built = '';
-  for (const f of fieldsOf(shown.get(form), details.dataset.group)) {
+  // A group is made by `renderFields`, which names it and keeps the description it shows.
+  const info = /** @type {P.Info} */ (shown.get(form));
+  for (const f of fieldsOf(info, /** @type {string} */ (details.dataset.group))) {
     const control = fieldControl(f, 'field');
     control.hidden = !f.acts;
     details.append(control);
@@ -78,6 +122,8 @@ function fill(form, details) {
 /**
  * Builds the groups of `form` not built yet (of `groups`, else all); says so with a `fieldsbuilt`
  * event on the form (an open challenge then locks their fields).
+ * @param {HTMLFormElement} form
+ * @param {Iterable<HTMLDetailsElement>} [groups]
  */
 export function buildGroups(form, groups = form.querySelectorAll('details')) {
   const unbuilt = [...groups].filter((details) => details.dataset.built === undefined);
@@ -90,9 +136,12 @@ export function buildGroups(form, groups = form.querySelectorAll('details')) {
  * built at once; the closed ones' when one is opened, when a field of theirs is needed (a knob's
  * edit, a challenge's control, an error to mark), or by `buildGroups` (once a run is drawn
  * and the page is idle): most of the form is closed, and the first run need not wait for it.
+ * @param {HTMLFormElement} form
+ * @param {P.Info} info
  */
 export function renderFields(form, info) {
-  const open = new Set([...form.querySelectorAll('details[open]')].map((d) => d.dataset.group));
+  const openGroups = /** @type {NodeListOf<HTMLDetailsElement>} */ (form.querySelectorAll('details[open]'));
+  const open = new Set([...openGroups].map((d) => d.dataset.group));
   const first = form.childElementCount === 0;
   shown.set(form, info);
   form.replaceChildren();
@@ -113,28 +162,46 @@ export function renderFields(form, info) {
   }
 }
 
-/** Sets `control` to `value` as the scenario string holds it (a checkbox's '0' or '1'). */
+/**
+ * Sets `control` to `value` as the scenario string holds it (a checkbox's '0' or '1').
+ * @param {Control} control
+ * @param {string} value
+ */
 function write(control, value) {
-  if (control.type === 'checkbox') control.checked = value === '1';
+  if (control instanceof HTMLInputElement && control.type === 'checkbox') control.checked = value === '1';
   else control.value = value;
 }
 
-/** Shows the values of `info` in the form's built controls, except the one being edited. */
+/**
+ * Shows the values of `info` in the form's built controls, except the one being edited.
+ * @param {HTMLFormElement} form
+ * @param {P.Info} info
+ */
 export function syncFields(form, info) {
   shown.set(form, info);
   for (const f of info.fields) {
-    const control = f.value === null ? null : form.elements.namedItem(f.key);
+    if (f.value === null) continue;
+    const control = namedControl(form, f.key);
     if (control && control !== document.activeElement) write(control, f.value);
   }
 }
 
-/** The form's control of field `key`, the closed groups built first if need be (null if it has none). */
+/**
+ * The form's control of field `key`, the closed groups built first if need be (null if it has none).
+ * @param {HTMLFormElement} form
+ * @param {string} key
+ */
 function controlOf(form, key) {
-  if (!form.elements.namedItem(key)) buildGroups(form);
-  return form.elements.namedItem(key);
+  if (!namedControl(form, key)) buildGroups(form);
+  return namedControl(form, key);
 }
 
-/** A labelled control for field `f` with id `${prefix}-${key}`, showing its unit and range. */
+/**
+ * A labelled control for field `f` (one with a value) with id `${prefix}-${key}`, showing its
+ * unit and range.
+ * @param {Field} f
+ * @param {string} prefix
+ */
 export function fieldControl(f, prefix) {
   const control = input(f);
   control.id = `${prefix}-${f.key}`;
@@ -148,9 +215,12 @@ export function fieldControl(f, prefix) {
   ]);
 }
 
-/** A control's value as the scenario string holds it. */
+/**
+ * A control's value as the scenario string holds it.
+ * @param {Control} control
+ */
 function valueOf(control) {
-  if (control.type === 'checkbox') return control.checked ? '1' : '0';
+  if (control instanceof HTMLInputElement && control.type === 'checkbox') return control.checked ? '1' : '0';
   // A formula as typed: the core's positions in it are those the walkthrough's preview marks.
   return control.classList.contains('formula') ? control.value : control.value.trim();
 }
@@ -158,13 +228,15 @@ function valueOf(control) {
 /**
  * The scenario string the form describes: the preset plus every field it holds, in the form's
  * order, each as its control holds it (as the description says where the group is not built).
+ * @param {HTMLFormElement} form
+ * @param {string} preset
  */
 export function composeScenario(form, preset) {
   const info = shown.get(form);
   const parts = ['v=1', `preset=${preset}`];
   for (const group of Object.keys(GROUPS)) {
     for (const f of info ? fieldsOf(info, group) : []) {
-      const control = form.elements.namedItem(f.key);
+      const control = namedControl(form, f.key);
       parts.push(`${f.key}=${encodeURIComponent(control ? valueOf(control) : f.value)}`);
     }
   }
@@ -184,13 +256,22 @@ export function markInvalid(form, key) {
   }
 }
 
-/** Sets the form's control of field `key` (if it has one) to `value` as the scenario string holds it. */
+/**
+ * Sets the form's control of field `key` (if it has one) to `value` as the scenario string holds it.
+ * @param {HTMLFormElement} form
+ * @param {string} key
+ * @param {string} value
+ */
 export function setField(form, key, value) {
   const target = controlOf(form, key);
   if (target) write(target, value);
 }
 
-/** Copies a knob's value into the settings form's control for the same field and reports a change. */
+/**
+ * Copies a knob's value into the settings form's control for the same field and reports a change.
+ * @param {HTMLFormElement} form
+ * @param {Control} knob
+ */
 export function forwardKnob(form, knob) {
   const target = controlOf(form, knob.name);
   if (!target) return;

@@ -79,7 +79,10 @@ export function createExport({ client, state, plots, walkthrough }) {
       return;
     }
     // The plots' series are labelled with text.
-    download(await png(/** @type {PlotImage[]} */ (await set.figures()), pngHeader()), `${fileStem()}.png`);
+    const image = await png(/** @type {PlotImage[]} */ (await set.figures()), pngHeader());
+    // The browser gives no image for a canvas it cannot encode.
+    if (image === null) throw new Error('the browser could not encode the plots as a PNG');
+    download(image, `${fileStem()}.png`);
   });
 
   /** @type {P.Handlers} */

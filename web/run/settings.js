@@ -9,7 +9,16 @@ import { listed } from '../ui/quote.js';
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
 
-/** The fields the form shows for description `info`, and whether each acts: what its build follows. */
+/** @import * as P from '../worker/protocol.js' */
+/** @import { State } from '../main.js' */
+/** @import { RunClient } from '../client/run-client.js' */
+/** @import { Walkthrough } from '../teaching/walkthrough.js' */
+/** @import { Control } from './knobs.js' */
+
+/**
+ * The fields the form shows for description `info`, and whether each acts: what its build follows.
+ * @param {P.Info | null} info
+ */
 const shownFields = (info) =>
   info?.fields
     .filter((f) => f.value !== null)
@@ -19,6 +28,10 @@ const shownFields = (info) =>
 /**
  * The core's description of `text`, else of its valid fields, else of the default; says which
  * (`state.notice` when all of it is valid).
+ * @param {RunClient} client
+ * @param {State} state
+ * @param {string} text
+ * @returns {Promise<P.Info>}
  */
 async function describeLoaded(client, state, text) {
   try {
@@ -49,13 +62,16 @@ async function describeLoaded(client, state, text) {
  * starts, its description waits in the worker's queue behind the core's loading and comes just
  * after `ready` (the worker answers in order); `again()` lets a worker restarted after a crash ask
  * once more.
+ * @param {State} state
+ * @param {() => string | null | Promise<string>} first
+ * @param {(text: string) => Promise<void>} load
  */
 function firstLoader(state, first, load) {
   let asked = false;
   const loadFirst = () => {
     if (state.info !== null || asked) return;
     asked = true;
-    Promise.resolve(first()).then((text) => text !== null && load(text));
+    Promise.resolve(first()).then((text) => (text === null ? undefined : load(text)));
   };
   loadFirst.again = () => {
     asked = false;
@@ -70,6 +86,10 @@ function firstLoader(state, first, load) {
  * follows every description the form takes; `mayRun(info)` is asked before every run (an open
  * challenge refuses a value outside its ranges): `true` at once when nothing needs asking, else a
  * promise of the answer.
+ * @param {{client: RunClient, state: State, walkthrough: Walkthrough, startRun: () => void,
+ *   markUnrun: (unrun: boolean) => void, openSettings: (open: boolean) => void,
+ *   first?: () => string | null | Promise<string>, described?: (info: P.Info) => void,
+ *   mayRun?: (info: P.Info) => true | Promise<boolean>}} parts
  */
 export function createSettings({
   client,
@@ -78,20 +98,27 @@ export function createSettings({
   startRun,
   markUnrun,
   openSettings,
-  first = /** @type {() => string | null | Promise<string>} */ (scenarioFromUrl),
-  described = /** @type {(info: any) => void} */ (() => {}),
-  mayRun = /** @type {(info: any) => true | Promise<boolean>} */ (() => true),
+  first = scenarioFromUrl,
+  described = () => {},
+  mayRun = () => true,
 }) {
+  /** @type {P.Ready['presets']} */
   let presets = []; // the core's presets: {name, description}
-  // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why).
+  // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why). It is asked
+  // only once the core has accepted the form's scenario, whose description the page then holds.
   const startChecked = async () => {
-    if (await mayRun(state.info)) startRun();
+    if (await mayRun(/** @type {P.Info} */ (state.info))) startRun();
   };
+  /** @type {string | null} */
   let composed = null; // the scenario the form held when last checked
   let checking = Promise.resolve(true); // that check: whether the core accepted it
   const knobs = knobMaker(state); // the walkthrough's knobs, with unique ids
 
-  /** Shows `info` in the form, which showed `before` (re-built only where its fields differ). */
+  /**
+   * Shows `info` in the form, which showed `before` (re-built only where its fields differ).
+   * @param {P.Info} info
+   * @param {P.Info | null} [before]
+   */
   function applyDescription(info, before = state.info) {
     const presetChanged = ui.preset.value !== info.preset;
     state.info = info;
@@ -113,8 +140,12 @@ export function createSettings({
     described(info);
   }
 
-  /** Loads a scenario string (from the URL, a preset or history); a bad one keeps its valid fields. */
+  /**
+   * Loads a scenario string (from the URL, a preset or history); a bad one keeps its valid fields.
+   * @param {string} text
+   */
   async function load(text) {
+    /** @type {P.Info} */
     let info;
     try {
       info = await describeLoaded(client, state, text);
@@ -167,7 +198,10 @@ export function createSettings({
     }
   }
 
-  /** A walkthrough knob was edited: check it and re-run, so its section's plots follow. */
+  /**
+   * A walkthrough knob was edited: check it and re-run, so its section's plots follow.
+   * @param {Control} control
+   */
   async function knobChanged(control) {
     forwardKnob(ui.form, control);
     if (await formChanged()) await startChecked();
@@ -185,7 +219,7 @@ export function createSettings({
   // Enter in a settings field runs the scenario (a form of many fields and no submit button has no
   // implicit submission, so Enter is taken here).
   ui.form.addEventListener('keydown', (e) => {
-    if (e.key !== 'Enter' || !e.target.matches('input, select')) return;
+    if (e.key !== 'Enter' || !(e.target instanceof Element && e.target.matches('input, select'))) return;
     e.preventDefault();
     runForm();
   });
@@ -199,13 +233,15 @@ export function createSettings({
 
   const loadFirst = firstLoader(state, first, load);
 
+  /** @type {P.Handlers} */
   const handlers = {
     ready({ presets: offered, nisBand }) {
       // A worker started after a crash is ready too: the presets are listed already, and the
       // scenario stays as it is unless none was loaded yet.
       if (!presets.length) {
         presets = offered;
-        state.nisBand = nisBand;
+        // The core's band, [low, high].
+        state.nisBand = [nisBand[0], nisBand[1]];
         listPresets(ui.preset, presets);
       } else loadFirst.again();
       loadFirst();

@@ -6,6 +6,11 @@ import { TABLE } from './table.js';
 import { render } from './measured.js';
 
 /**
+ * The metrics of a finished run that recorded something.
+ * @typedef {NonNullable<import('../worker/protocol.js').Compared['results'][number]['metrics']>} Metrics
+ */
+
+/**
  * The stability report `st` of a run, in words.
  * @param {import('../worker/protocol.js').Done['stability']} st
  */
@@ -15,7 +20,9 @@ export function stabilityText(st) {
   const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
   if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
   const why = render(STABILITY_CAUSES[st.cause] ?? '', TABLE);
-  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(st.first_outside.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
+  // V is above the bound at some sample, so at a first one.
+  const first = /** @type {number} */ (st.first_outside);
+  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(first.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
 }
 
 /**
@@ -35,6 +42,8 @@ export function comparison(results) {
   ];
   for (const r of results) {
     const m = r.metrics;
+    // The core gives no metrics for a run that recorded nothing.
+    if (!m) throw new Error(`the ${r.predictor} run recorded nothing`);
     rows.push([
       r.predictor,
       m.tracking_rms.toPrecision(3),
@@ -65,9 +74,10 @@ export function comparison(results) {
       ),
     ),
   );
+  // Every run's metrics are there, as the rows above found.
   return [
     el('p', {
-      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${results[0].metrics.transient_end.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
+      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${/** @type {Metrics} */ (results[0].metrics).transient_end.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
     }),
     table,
   ];

@@ -9,6 +9,9 @@ import { lawBlock } from './law-editor.js';
 import { TABLE } from './table.js';
 import { render } from './measured.js';
 
+/** @import * as P from '../worker/protocol.js' */
+/** @import { PlotDef } from '../plots/plot-defs.js' */
+
 /**
  * A template of the walkthrough's text with its measurements filled in.
  * @param {string} template
@@ -23,10 +26,12 @@ const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
  * @param {Record<string, HTMLElement>} sectionDivs
  */
 export function plotDefs(sectionDivs) {
+  /** @type {PlotDef[]} */
   const defs = [];
   for (const s of SECTIONS) {
     const plots = [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6, s.law?.plot];
     for (const plot of /** @type {import('./walkthrough-text.js').SectionPlot[]} */ (plots.filter(Boolean))) {
+      /** @type {PlotDef['constants']} */
       const constants = plot.nisBand
         ? [['2.5 % quantile'], ['97.5 % quantile']]
         : plot.bound
@@ -161,17 +166,18 @@ export function syncKnobs(container, knob) {
   }
 }
 
+/** @type {(keyof P.Info['plant'])[]} */
 const LUMPED = ['a1', 'a2', 'a3', 'a5', 'a6', 'a7', 'a8', 'a9', 'a10', 'b'];
 
 /**
  * The lumped parameters of the plant and the model (`info`, the core's description), those that differ marked.
- * @param {import('../worker/protocol.js').Info} info
+ * @param {P.Info} info
  */
 export function lumpedTable(info) {
   const table = el('table', {}, [
     el('tr', {}, [el('td'), ...LUMPED.map((k) => el('th', { scope: 'col', textContent: k }))]),
   ]);
-  for (const which of ['plant', 'model']) {
+  for (const which of /** @type {const} */ (['plant', 'model'])) {
     table.append(
       el('tr', {}, [
         el('th', { scope: 'row', textContent: which }),

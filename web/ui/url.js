@@ -24,17 +24,27 @@ export function challengeFromUrl() {
   return { challenge: text, submission: text };
 }
 
-// While a challenge is open the address holds its link (then the student's submission link),
-// not the scenario: edits and runs leave it alone.
+/**
+ * While a challenge is open the address holds its link (then the student's submission link),
+ * not the scenario: edits and runs leave it alone.
+ * @type {string | null}
+ */
 let heldQuery = null;
 
-/** Holds `query` (a challenge or submission link) in the address bar, in place of the scenario. */
+/**
+ * Holds `query` (a challenge or submission link) in the address bar, in place of the scenario.
+ * @param {string} query
+ */
 export function holdAddress(query) {
   heldQuery = query;
   history.replaceState(history.state, '', `${location.pathname}?${query}${location.hash}`);
 }
 
-// The fragment (#sweep=...) holds the analysis settings and stays across scenario edits.
+/**
+ * The address of `scenario`: the fragment (#sweep=...) holds the analysis settings and stays
+ * across scenario edits.
+ * @param {string} scenario
+ */
 function urlFor(scenario) {
   return `${location.pathname}?${scenario}${location.hash}`;
 }
@@ -47,7 +57,10 @@ function fragmentEntries() {
     .map((p) => p.split('=', 2));
 }
 
-/** The value of `key` in the URL fragment (`#key=value&...`), or null. Values are kept as written. */
+/**
+ * The value of `key` in the URL fragment (`#key=value&...`), or null. Values are kept as written.
+ * @param {string} key
+ */
 export function fragment(key) {
   return fragmentEntries().find(([k]) => k === key)?.[1] ?? null;
 }
@@ -55,6 +68,7 @@ export function fragment(key) {
 /**
  * The pinned scenarios of a `pins` fragment value (`a|b|...`, each URI-encoded), and the parts
  * that do not decode, which are left out.
+ * @param {string} value
  */
 export function decodePins(value) {
   const scenarios = [];
@@ -69,7 +83,11 @@ export function decodePins(value) {
   return { scenarios, malformed };
 }
 
-/** Sets (or, with null, removes) `key` in the URL fragment without a new history entry. */
+/**
+ * Sets (or, with null, removes) `key` in the URL fragment without a new history entry.
+ * @param {string} key
+ * @param {string | null} value
+ */
 export function setFragment(key, value) {
   const entries = fragmentEntries().filter(([k]) => k !== key);
   if (value !== null) entries.push([key, value]);
@@ -80,18 +98,31 @@ export function setFragment(key, value) {
   );
 }
 
-/** Puts `scenario` in the address bar as an edit of the current entry. */
+/**
+ * A history entry's state: the scenario in the address bar and whether it was run.
+ * @typedef {{scenario: string, ran: boolean}} Entry
+ */
+
+/**
+ * Puts `scenario` in the address bar as an edit of the current entry.
+ * @param {string} scenario
+ */
 export function showScenario(scenario) {
   if (heldQuery !== null) return;
+  /** @type {Entry | null} */
   const state = history.state;
   if (state && state.scenario === scenario) return;
   if (state && state.ran) history.pushState({ scenario, ran: false }, '', urlFor(scenario));
   else history.replaceState({ scenario, ran: false }, '', urlFor(scenario));
 }
 
-/** Marks the current entry as run (pushing it first if the address bar holds another scenario). */
+/**
+ * Marks the current entry as run (pushing it first if the address bar holds another scenario).
+ * @param {string} scenario
+ */
 export function markRun(scenario) {
   if (heldQuery !== null) return;
+  /** @type {Entry | null} */
   const state = history.state;
   if (state && state.scenario !== scenario && state.ran) {
     history.pushState({ scenario, ran: true }, '', urlFor(scenario));
