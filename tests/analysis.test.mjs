@@ -100,6 +100,10 @@ test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
     const parallel = await download(page, '#sweep-csv');
     const expected = cliSweep('v=1&preset=step', '--freqs', '10:1000:12', '--amp', '0.02', '--duration', '0.2');
     assert.equal(parallel, expected);
+    // The link's plan, given to the CLI as it is, runs the same variants: the first is the CSV above.
+    const plan = cliSweep('v=1&preset=step', '--plan', '10,1000,12,0.02,0,0.2,euler.ifocpi');
+    const [euler, ifocpiPlan] = plan.split(/^# variant=\w+\n/m).slice(1);
+    assert.equal(euler, expected);
     assert.equal(await page.locator('#sweep-table tr[data-variant]').count(), 2);
     // The peak current each point needs, its largest in the table against the rated 4 A of the
     // step preset, for each variant as the CLI measures it.
@@ -114,6 +118,7 @@ test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
       '--duration',
       '0.2',
     );
+    assert.equal(ifocpiPlan, ifocpi);
     for (const [variant, csv] of [
       ['euler', expected],
       ['ifocpi', ifocpi],

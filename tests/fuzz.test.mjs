@@ -11,7 +11,7 @@ import {
   columns,
   Comparison,
   describe,
-  log_grid,
+  sweep_plan,
   presets,
   recover,
   seed_bands,
@@ -316,7 +316,7 @@ const oddArg = (...more) => rng.pick([...ODD_ARGS, ...more]);
 
 /** Every exported function on `s` (and random further arguments); frees all it made. */
 function exercise(s) {
-  const info = attempt('describe', describe, s);
+  const info = attempt('describe', describe, s)?.info ?? undefined;
   attempt('recover', recover, s);
   attempt('variant', variant, s, rng.pick(KEYS), rng.chance(0.5) ? rng.pick(ODD_NUMBERS) : validScenario());
   attempt('variant', variant, validScenario(), rng.pick(KEYS), s);
@@ -329,12 +329,21 @@ function exercise(s) {
     'sweep_point',
     sweep_point,
     s,
+    rng.pick(['euler', 'ifocpi', 'constructor', '', oddArg()]),
     oddArg(50, 200),
     oddArg(0.02),
     rng.pick([0.01, 0.02, 0.05, -1, NaN, 0]),
     oddArg(0),
   );
-  attempt('log_grid', log_grid, oddArg(10), oddArg(1000), rng.pick([0, 1, 20, 200, 201, -1, 2.5, 2 ** 32 + 5, NaN]));
+  const plan = [
+    oddArg(10),
+    oddArg(1000),
+    rng.pick([0, 1, 20, 200, 201, -1, 2.5, 2 ** 32 + 5, NaN]),
+    oddArg(0.02),
+    oddArg(0),
+    oddArg(0.2),
+  ];
+  attempt('sweep_plan', sweep_plan, [...plan, rng.pick(['euler', 'rk4.ifocpi', 'nope', '', oddArg()])].join(','));
 
   const sim = attempt('new Simulation', (text) => new Simulation(text), s);
   const comparison = new Comparison();

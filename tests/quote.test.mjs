@@ -7,7 +7,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { initSync, excerpt as core } from '../dist/pkg/imlab.js';
-import { excerpt as page } from '../web/ui/url.js';
+import { excerpt as page } from '../web/ui/quote.js';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 

@@ -326,13 +326,14 @@ test('hostile fragments are named in a message and the rest of the link still wo
   }
 });
 
-test('the sweep form refuses a fractional number of points', () =>
+test("the sweep form refuses a fractional number of points with the core's message, as a link's", () =>
   withPage('?v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');
     await page.click('[data-tab=analysis]');
     await page.fill('#sweep-form [name=n]', '2.5');
     await page.click('#sweep-run');
-    assert.equal(await page.textContent('#sweep-status'), 'points = 2.5: expected a whole number.');
+    await page.waitForFunction(() => document.getElementById('sweep-status').textContent !== '');
+    assert.equal(await page.textContent('#sweep-status'), 'n = 2.5: expected a whole number of points.');
     assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
   }));
 

@@ -1,66 +1,19 @@
 // Analysis tab: frequency-response sweeps and seed sweeps run as independent jobs on a pool of
 // workers (one per core); every figure is computed by the core in those workers.
 import uPlot from '../../vendor/uPlot.esm.js';
-import { excerpt } from '../ui/quote.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { fittedRange } from '../plots/ranges.js';
 import { pageNumbers } from '../plots/numbers.js';
 
-// Variants offered for the sweep: the field changes that make each from the current scenario.
-export const VARIANTS = {
-  euler: {
-    label: 'Backstepping + Euler EKF (paper)',
-    changes: [
-      ['controller', 'backstepping'],
-      ['perfect', '0'],
-      ['ekf', 'euler'],
-    ],
-  },
-  rk4: {
-    label: 'Backstepping + RK4 EKF',
-    changes: [
-      ['controller', 'backstepping'],
-      ['perfect', '0'],
-      ['ekf', 'rk4'],
-    ],
-  },
-  perfect: {
-    label: 'Backstepping + perfect observer',
-    changes: [
-      ['controller', 'backstepping'],
-      ['perfect', '1'],
-    ],
-  },
-  delay: {
-    label: 'Backstepping + Euler EKF, one-sample delay',
-    changes: [
-      ['controller', 'backstepping'],
-      ['perfect', '0'],
-      ['ekf', 'euler'],
-      ['delay', '1'],
-      ['delay.comp', '0'],
-    ],
-  },
-  // The like-for-like baseline feeds the reference's torque forward, as the backstepping feeds
-  // ω̇_d forward; `ifocpi` is the plain PI speed loop.
-  ifoc: {
-    label: 'Classical IFOC + MRAS, torque feedforward',
-    changes: [
-      ['controller', 'ifoc'],
-      ['perfect', '0'],
-      ['ifoc.ff', '1'],
-    ],
-  },
-  ifocpi: {
-    label: 'Classical IFOC + MRAS, no feedforward',
-    changes: [
-      ['controller', 'ifoc'],
-      ['perfect', '0'],
-      ['ifoc.ff', '0'],
-    ],
-  },
-};
+/** @import * as P from '../worker/protocol.js' */
+/** @typedef {P.Jobs['sweep-plan']['result']} PlanView */
+/** @typedef {P.Jobs['sweep']['result']} SweepPoint */
+/** @typedef {P.Jobs['summary']['result']} SweepSummary */
+/** @typedef {{label: string, points: SweepPoint[], summary: SweepSummary}} VariantSweep */
+
+// Each variant's colour on the Bode plots, by its name in the core's plan.
+/** @type {Record<string, string>} */
 const COLORS = {
   euler: '#d62728',
   rk4: '#1f77b4',
@@ -71,44 +24,19 @@ const COLORS = {
 };
 
 /**
- * Whether `n` can be a number of points: the core takes it as a 32-bit integer, and the
- * conversion would silently truncate 2.5 to 2 or wrap 2^32 + 5 to 5. The core checks the range.
+ * A series of a Bode plot: its label, colour, values (null where a point is not drawn), dash,
+ * and whether it holds unsettled points.
+ * @typedef {[string, string, (number | null)[], number[] | undefined, boolean?]} BodeSeries
  */
-export function isCount(n) {
-  return Number.isInteger(n) && n >= 0 && n < 2 ** 32;
-}
-
-const SWEEP_KEYS = ['lo', 'hi', 'n', 'amp', 'offset', 'duration'];
 
 /**
- * Sweep settings as written in the URL fragment: `sweep=lo,hi,n,amp,offset,duration,v1.v2`.
- * Throws a short message naming the first part that is not acceptable.
- */
-export function parseSweep(text) {
-  const parts = text.split(',');
-  if (parts.length !== 7) throw new Error(`expected 7 parts lo,hi,n,amp,offset,duration,variants, not ${parts.length}`);
-  const settings = {};
-  for (const [i, key] of SWEEP_KEYS.entries()) {
-    const value = Number(parts[i]);
-    if (parts[i].trim() === '' || !Number.isFinite(value))
-      throw new Error(`${key} = '${excerpt(parts[i])}' is not a number`);
-    settings[key] = value;
-  }
-  if (!isCount(settings.n)) throw new Error(`n = ${excerpt(parts[2])}: expected a whole number of points`);
-  settings.variants = parts[6].split('.');
-  const unknown = settings.variants.find((v) => !Object.hasOwn(VARIANTS, v));
-  if (unknown !== undefined)
-    throw new Error(`variant '${excerpt(unknown)}' is unknown (expected ${Object.keys(VARIANTS).join(', ')})`);
-  return settings;
-}
-
-export function formatSweep(s) {
-  return [s.lo, s.hi, s.n, s.amp, s.offset, s.duration, s.variants.join('.')].join(',');
-}
-
-/**
- * Bode plot of `series` ([label, color, values, dash, unsettled]); a series of unsettled points
- * is drawn as hollow markers without a line.
+ * Bode plot of `series`; a series of unsettled points is drawn as hollow markers without a line.
+ * @param {string} title
+ * @param {string} unit
+ * @param {number[]} freqs
+ * @param {BodeSeries[]} series
+ * @param {number} width
+ * @param {[string, number] | null} marker
  * @returns {[uPlot.Options, uPlot.AlignedData]}
  */
 function bodePlot(title, unit, freqs, series, width, marker) {
@@ -133,79 +61,119 @@ function bodePlot(title, unit, freqs, series, width, marker) {
     opts.series.push({ label: marker[0], stroke: '#999', dash: [4, 4], width: 1.5 });
     data.push(freqs.map(() => marker[1]));
   }
-  return [opts, data];
+  return [opts, /** @type {uPlot.AlignedData} */ (data)];
 }
 
 /**
  * The table cell of the largest stator current |i_s| a variant's points need (each over its fit
- * window, from the core), against the scenario's rated current; the points above the rating are
- * listed and the cell is marked.
+ * window), against the scenario's rated current, with the points above the rating listed and the
+ * cell marked: every figure from the core's summary.
+ * @param {SweepSummary} summary
  */
-function peakCell(points) {
-  const measured = points.filter((p) => !p.failure);
-  if (!measured.length) return el('td', { textContent: 'none measured' });
-  const peak = Math.max(...measured.map((p) => p.peak_current));
-  const rated = measured[0].rated_current;
-  const above = measured.filter((p) => p.peak_current > p.rated_current).map((p) => `${p.freq.toPrecision(4)} Hz`);
+function peakCell({ peak_current: peak, rated_current: rated, over_rating: above }) {
+  if (peak === null || rated === null) return el('td', { textContent: 'none measured' });
   const text = `${peak.toPrecision(3)} (rated ${rated.toPrecision(3)})`;
   return above.length
     ? el('td', {
         className: 'over-rating',
-        textContent: `${text}; above the rating at ${above.length}: ${above.join(', ')}`,
+        textContent: `${text}; above the rating at ${above.length}: ${above.map(hz).join(', ')}`,
       })
     : el('td', { textContent: text });
 }
 
+/** @param {number} f */
+const hz = (f) => `${f.toPrecision(4)} Hz`;
+
 export class Analysis {
+  /** @param {{scenario: () => string}} parts */
   constructor({ scenario }) {
     this.scenario = scenario;
     this.pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
+    /** @type {Record<string, VariantSweep>} */
     this.points = {};
+    /** @type {uPlot[]} */
+    this.seedCharts = [];
   }
 
   /**
-   * Runs a sweep of the current scenario; resolves with {variant: {points, summary}}.
-   * @param {any} settings
+   * A sweep's plan read by the core from its text (a link's `#sweep=`); rejects with the message
+   * naming the first part that is not acceptable.
+   * @param {string} text
+   * @returns {Promise<PlanView>}
+   */
+  async plan(text) {
+    const [view] = await this.pool.run([{ kind: 'sweep-plan', text }]);
+    return /** @type {PlanView} */ (view);
+  }
+
+  /**
+   * A sweep's plan from a form's parts as written, checked by the core as a link's would be.
+   * @param {string[]} numbers lo, hi, n, amp, offset, duration
+   * @param {string[]} variants
+   * @returns {Promise<PlanView>}
+   */
+  async planOf(numbers, variants) {
+    const [view] = await this.pool.run([{ kind: 'sweep-plan-of', numbers, variants }]);
+    return /** @type {PlanView} */ (view);
+  }
+
+  /**
+   * Runs the sweep `view` plans of the current scenario; resolves with each variant's points and
+   * summary, by its name.
+   * @param {PlanView} view
    * @param {{onProgress?: (share: number) => void, workers?: number}} [options]
    */
-  async sweep(settings, { onProgress = () => {}, workers } = {}) {
+  async sweep({ plan, frequencies, labels }, { onProgress = () => {}, workers } = {}) {
     if (workers) this.pool.size = workers;
-    const [freqs] = await this.pool.run([{ kind: 'grid', lo: settings.lo, hi: settings.hi, n: settings.n }]);
-    const jobs = settings.variants.flatMap((v) =>
-      freqs.map((freq) => ({
-        kind: 'sweep',
-        scenario: this.scenario(),
-        changes: VARIANTS[v].changes,
+    const scenario = this.scenario();
+    const jobs = plan.variants.flatMap((variant) =>
+      frequencies.map((freq) => ({
+        kind: /** @type {const} */ ('sweep'),
+        scenario,
+        variant,
         freq,
-        amp: settings.amp,
-        duration: settings.duration,
-        offset: settings.offset,
+        amp: plan.amp,
+        duration: plan.duration,
+        offset: plan.offset,
       })),
     );
-    const results = await this.pool.run(jobs, (done) => onProgress(done / jobs.length));
+    const results = /** @type {SweepPoint[]} */ (await this.pool.run(jobs, (done) => onProgress(done / jobs.length)));
+    /** @type {Record<string, VariantSweep>} */
     const out = {};
-    for (const [i, v] of settings.variants.entries()) {
-      const points = results.slice(i * freqs.length, (i + 1) * freqs.length);
+    for (const [i, v] of plan.variants.entries()) {
+      const points = results.slice(i * frequencies.length, (i + 1) * frequencies.length);
       const [summary] = await this.pool.run([{ kind: 'summary', points }]);
-      out[v] = { points, summary };
+      out[v] = { label: labels[i], points, summary: /** @type {SweepSummary} */ (summary) };
     }
     this.points = out;
     return out;
   }
 
+  /** @param {string} variant */
   async sweepCsv(variant) {
     const [csv] = await this.pool.run([{ kind: 'sweep-csv', points: this.points[variant].points }]);
-    return csv;
+    return /** @type {string} */ (csv);
   }
 
+  /**
+   * Draws a sweep's Bode plots in `bodeBox` and its summary in `table`.
+   * @param {Record<string, VariantSweep>} out
+   * @param {HTMLElement} bodeBox
+   * @param {HTMLTableElement} table
+   */
   showSweep(out, bodeBox, table) {
     const variants = Object.keys(out);
     const freqs = out[variants[0]].points.map((p) => p.freq);
     // Failed points are gaps (null), never drawn; unsettled points are drawn apart, as hollow
     // markers, and left out of the line.
+    /**
+     * @param {string} v
+     * @param {'gain_db' | 'phase'} key
+     * @param {boolean} unsettled
+     */
     const column = (v, key, unsettled) =>
       out[v].points.map((p) => (p.failure || Boolean(p.unsettled) !== unsettled ? null : p[key]));
-    const flagged = variants.flatMap((v) => out[v].points.filter((p) => p.unsettled).map((p) => [v, p]));
+    const flagged = variants.flatMap((v) => out[v].points.filter((p) => p.unsettled).map((p) => ({ v, p })));
     bodeBox.replaceChildren();
     if (flagged.length) {
       bodeBox.append(
@@ -216,24 +184,33 @@ export class Analysis {
           el(
             'ul',
             {},
-            flagged.map(([v, p]) =>
-              el('li', { textContent: `${VARIANTS[v].label}, ${p.freq.toPrecision(4)} Hz: ${p.unsettled}` }),
-            ),
+            flagged.map(({ v, p }) => el('li', { textContent: `${out[v].label}, ${hz(p.freq)}: ${p.unsettled}` })),
           ),
         ]),
       );
     }
     const width = Math.max(400, bodeBox.clientWidth - 10);
     // Dashed lines for variants drawn on top of others, so overlapping curves stay visible.
+    /** @type {Record<string, number[]>} */
     const dash = { rk4: [6, 4], perfect: [2, 3], ifocpi: [6, 4] };
-    for (const [title, unit, key, marker] of [
+    /** @type {[string, string, 'gain_db' | 'phase', [string, number] | null][]} */
+    const plots = [
       ['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]],
       ['Phase of ω against ω_d', 'degrees', 'phase', null],
-    ]) {
+    ];
+    for (const [title, unit, key, marker] of plots) {
       const series = variants.flatMap((v) => [
-        [VARIANTS[v].label, COLORS[v], column(v, key, false), dash[v]],
+        /** @type {BodeSeries} */ ([out[v].label, COLORS[v], column(v, key, false), dash[v]]),
         ...(out[v].summary.unsettled
-          ? [[`${VARIANTS[v].label}, not settled`, COLORS[v], column(v, key, true), null, true]]
+          ? [
+              /** @type {BodeSeries} */ ([
+                `${out[v].label}, not settled`,
+                COLORS[v],
+                column(v, key, true),
+                undefined,
+                true,
+              ]),
+            ]
           : []),
       ]);
       const [opts, data] = bodePlot(title, unit, freqs, series, width, marker);
@@ -257,9 +234,13 @@ export class Analysis {
       ),
     );
     for (const v of variants) {
-      const { points, summary } = out[v];
+      const { points, summary, label } = out[v];
+      /**
+       * @param {number | null} x
+       * @param {string} unit
+       * @param {string} missing
+       */
       const fmt = (x, unit, missing) => (x == null ? missing : `${x.toPrecision(4)} ${unit}`);
-      const worst = Math.max(...points.map((p) => (p.failure ? 0 : p.saturated)));
       const bandwidth = summary.bandwidth_unsettled
         ? 'not given: it would rest on a point that had not settled'
         : summary.below_grid
@@ -271,20 +252,20 @@ export class Analysis {
         '°',
         summary.unsettled ? 'not reached by the settled points' : 'not reached in the grid',
       );
-      const unsettled = points.filter((p) => p.unsettled).map((p) => `${p.freq.toPrecision(4)} Hz`);
+      const unsettled = points.filter((p) => p.unsettled).map((p) => hz(p.freq));
       const row = el(
         'tr',
         {},
         [
-          VARIANTS[v].label,
+          label,
           bandwidth,
           phase,
-          `${worst.toPrecision(3)} of samples`,
-          String(points.filter((p) => p.failure).length),
+          `${(summary.worst_saturation ?? 0).toPrecision(3)} of samples`,
+          String(summary.failed),
           unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0',
         ].map((c) => el('td', { textContent: c })),
       );
-      row.append(peakCell(points));
+      row.append(peakCell(summary));
       row.dataset.variant = v;
       table.append(row);
     }
@@ -293,18 +274,27 @@ export class Analysis {
   /**
    * Runs `n` seeds from `first`; resolves with {results, bands}. The core gives the seeds, and
    * refuses a range past the largest seed before any run.
+   * @param {number} n
+   * @param {number} first
+   * @param {number} steps the scenario's steps, of which about 1000 are kept
+   * @param {(share: number) => void} [onProgress]
    */
-  async seeds(n, first, steps, onProgress = /** @type {(share: number) => void} */ (() => {})) {
+  async seeds(n, first, steps, onProgress = () => {}) {
     const every = Math.max(1, Math.floor(steps / 1000));
     const [seeds] = await this.pool.run([{ kind: 'seed-range', first, n }]);
-    const jobs = seeds.map((seed) => ({ kind: 'seed', scenario: this.scenario(), seed, every }));
+    const jobs = seeds.map((seed) => ({ kind: /** @type {const} */ ('seed'), scenario: this.scenario(), seed, every }));
     const runs = await this.pool.run(jobs, (done) => onProgress(done / n));
     const [bands] = await this.pool.run([{ kind: 'bands', runs }]);
     const [csv] = await this.pool.run([{ kind: 'seeds-csv', results: runs.map((r) => r.result) }]);
     return { results: runs.map((r) => r.result), bands, csv };
   }
 
-  /** Draws the seed bands; with `framing().fit` the y-axes leave out t < framing().from. */
+  /**
+   * Draws the seed bands; with `framing().fit` the y-axes leave out t < framing().from.
+   * @param {{bands: P.Jobs['bands']['result']}} seeds
+   * @param {HTMLElement} box
+   * @param {() => {fit: boolean, from: number}} framing
+   */
   showSeeds({ bands }, box, framing) {
     box.replaceChildren();
     // The y range over the samples after the start-up transient (all of them when framing is off).
@@ -312,10 +302,12 @@ export class Analysis {
     const range = (u, _min, _max, key) => fittedRange(u, key, false, framing());
     this.seedCharts = [];
     // The same colours as ω − ω_d and ω − ω̂ on the Trajectories tab.
-    for (const [title, b, color] of [
+    /** @type {[string, P.Jobs['bands']['result']['error'], string][]} */
+    const plots = [
       ['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'],
       ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b'],
-    ]) {
+    ];
+    for (const [title, b, color] of plots) {
       /** @type {uPlot.Options} */
       const opts = {
         title,

@@ -6,20 +6,20 @@ import { excerpt } from '../ui/quote.js';
 
 /**
  * Reads the fragment `name` now and returns `afterRun()`: the first call fills the tool's form from
- * it (`fill(text)`, which throws on text it cannot take), opens the Analysis tab with
+ * it (`fill(text)`, which rejects text it cannot take), opens the Analysis tab with
  * `showTab(name)` and starts `run()`; a refused text is said, naming the tool as `what`. Later
  * calls do nothing.
- * @param {{name: string, what: string, fill: (text: string) => void, run: () => unknown,
+ * @param {{name: string, what: string, fill: (text: string) => unknown, run: () => unknown,
  *   showTab: (name: string) => void}} tool
  */
 export function runFromLink({ name, what, fill, run, showTab }) {
   let shared = fragment(name); // from the link that opened the page
-  return function afterRun() {
+  return async function afterRun() {
     const text = shared;
     shared = null;
     if (!text) return;
     try {
-      fill(text);
+      await fill(text);
       showTab('analysis');
       run();
     } catch (e) {

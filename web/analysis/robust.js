@@ -83,8 +83,9 @@ async function runCells(pool, map, status, progress) {
   let cellsDone = 0;
   let cancelled = false;
   try {
-    /** @type {import('../worker/protocol.js').JobRequest[]} */
-    const jobs = map.cells.flatMap((c) => map.seeds.map((seed) => ({ kind: 'map-run', scenario: c.scenario, seed })));
+    const jobs = map.cells.flatMap((c) =>
+      map.seeds.map((seed) => ({ kind: /** @type {const} */ ('map-run'), scenario: c.scenario, seed })),
+    );
     await pool.run(jobs, (done, index, result) => {
       runs[index] = result;
       if (++finished[Math.floor(index / per)] === per) document.body.dataset.mapCells = String(++cellsDone);

@@ -1,79 +1,85 @@
 // The Analysis tab's frequency-response sweeps from their form, their progress and status line,
 // and their CSV download; the seed runs beside them (seeds.js). A link's sweep (`#sweep=`) runs once.
 import { $ } from '../ui/page.js';
-import { formatSweep, isCount, parseSweep } from './analysis.js';
 import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { runFromLink } from './from-link.js';
 import { createSeeds } from './seeds.js';
 
-/** `analysis` runs the jobs and draws their results; `showTab(name)` opens a tab. */
+/**
+ * The sweep form, its run and its link. `analysis` runs the jobs and draws their results;
+ * `showTab(name)` opens a tab.
+ * @param {{state: import('../main.js').State, analysis: import('./analysis.js').Analysis,
+ *   framing: () => {fit: boolean, from: number}, showTab: (name: string) => void}} parts
+ */
 export function createSweeps({ state, analysis, framing, showTab }) {
-  const sweepForm = $('sweep-form');
-  sweepForm.elements.namedItem('workers').value = analysis.pool.size;
+  const sweepForm = $('sweep-form', HTMLFormElement);
+  const status = $('sweep-status');
+  const runButton = $('sweep-run', HTMLButtonElement);
+  const cancelButton = $('sweep-cancel', HTMLButtonElement);
+  const csvButton = $('sweep-csv', HTMLButtonElement);
+  /** @param {string} name */
+  const input = (name) => /** @type {HTMLInputElement} */ (sweepForm.elements.namedItem(name));
+  const variantBoxes = () => /** @type {HTMLInputElement[]} */ ([...sweepForm.querySelectorAll('[name=variant]')]);
+  input('workers').value = String(analysis.pool.size);
 
+  /** The form's plan, checked by the core as a link's would be; rejects with its message. */
   function readSweepForm() {
-    const f = sweepForm.elements;
-    const num = (name) => Number(f.namedItem(name).value);
-    return {
-      lo: num('lo'),
-      hi: num('hi'),
-      n: num('n'),
-      amp: num('amp'),
-      offset: num('offset'),
-      duration: num('duration'),
-      variants: [...sweepForm.querySelectorAll('[name=variant]:checked')].map((c) => c.value),
-      workers: num('workers'),
-    };
+    const numbers = ['lo', 'hi', 'n', 'amp', 'offset', 'duration'].map((name) => input(name).value);
+    const variants = variantBoxes()
+      .filter((c) => c.checked)
+      .map((c) => c.value);
+    return analysis.planOf(numbers, variants);
   }
 
-  function fillSweepForm(s) {
-    for (const key of ['lo', 'hi', 'n', 'amp', 'offset', 'duration']) sweepForm.elements.namedItem(key).value = s[key];
-    for (const c of sweepForm.querySelectorAll('[name=variant]')) c.checked = s.variants.includes(c.value);
+  /** @param {import('./analysis.js').PlanView['plan']} plan */
+  function fillSweepForm(plan) {
+    for (const key of /** @type {const} */ (['lo', 'hi', 'n', 'amp', 'offset', 'duration']))
+      input(key).value = String(plan[key]);
+    for (const c of variantBoxes()) c.checked = plan.variants.includes(c.value);
   }
 
   async function runSweep() {
-    const settings = readSweepForm();
-    const status = $('sweep-status');
-    if (!settings.variants.length) {
-      status.textContent = 'Choose at least one variant.';
+    const workers = Number(input('workers').value);
+    if (!(Number.isInteger(workers) && workers >= 1 && workers <= 8)) {
+      status.textContent = `workers = ${input('workers').value}: expected a whole number from 1 to 8.`;
       return;
     }
-    if (!isCount(settings.n)) {
-      status.textContent = `points = ${sweepForm.elements.namedItem('n').value}: expected a whole number.`;
+    let view;
+    try {
+      view = await readSweepForm();
+    } catch (e) {
+      status.textContent = `${/** @type {Error} */ (e).message}.`;
       return;
     }
-    if (!(Number.isInteger(settings.workers) && settings.workers >= 1 && settings.workers <= 8)) {
-      status.textContent = `workers = ${sweepForm.elements.namedItem('workers').value}: expected a whole number from 1 to 8.`;
-      return;
-    }
-    setFragment('sweep', formatSweep(settings));
-    $('sweep-run').disabled = true;
-    $('sweep-cancel').disabled = false;
+    setFragment('sweep', view.text);
+    runButton.disabled = true;
+    cancelButton.disabled = false;
     const started = performance.now();
     status.textContent = 'Sweeping…';
     try {
-      const out = await analysis.sweep(settings, {
-        workers: settings.workers,
+      const out = await analysis.sweep(view, {
+        workers,
         onProgress: (p) => {
-          $('sweep-progress').value = p;
+          $('sweep-progress', HTMLProgressElement).value = p;
         },
       });
-      analysis.showSweep(out, $('bode'), $('sweep-table'));
+      analysis.showSweep(out, $('bode'), $('sweep-table', HTMLTableElement));
       const ms = performance.now() - started;
-      status.textContent = `${settings.variants.length} × ${settings.n} runs in ${ms.toFixed(0)} ms on ${settings.workers} worker${settings.workers > 1 ? 's' : ''}.`;
-      if (settings.variants.some((v) => v.startsWith('ifoc')) && Math.abs(settings.offset) < 20) {
-        status.textContent +=
-          ' The IFOC figures are not meaningful here: its MRAS cannot estimate the speed near standstill. Sweep it about an operating speed (offset ≥ 20 rad/s) with longer runs (3 s).';
-      }
+      const runs = `${view.plan.variants.length} × ${view.plan.n} runs`;
+      status.textContent = [
+        `${runs} in ${ms.toFixed(0)} ms on ${workers} worker${workers > 1 ? 's' : ''}.`,
+        ...view.caveats,
+      ].join(' ');
       Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
-      $('sweep-csv').disabled = false;
+      csvButton.disabled = false;
     } catch (e) {
-      status.textContent = e.message === 'cancelled' ? 'Sweep cancelled.' : `Sweep failed: ${e.message}`;
-      document.body.dataset.sweep = e.message === 'cancelled' ? 'cancelled' : 'failed';
+      const { message } = /** @type {Error} */ (e);
+      status.textContent = message === 'cancelled' ? 'Sweep cancelled.' : `Sweep failed: ${message}`;
+      document.body.dataset.sweep = message === 'cancelled' ? 'cancelled' : 'failed';
     } finally {
-      $('sweep-run').disabled = false;
-      $('sweep-cancel').disabled = true;
+      runButton.disabled = false;
+      cancelButton.disabled = true;
     }
   }
 
@@ -81,14 +87,14 @@ export function createSweeps({ state, analysis, framing, showTab }) {
   const afterRun = runFromLink({
     name: 'sweep',
     what: 'sweep',
-    fill: (text) => fillSweepForm(parseSweep(text)),
+    fill: async (text) => fillSweepForm((await analysis.plan(text)).plan),
     run: runSweep,
     showTab,
   });
 
-  $('sweep-run').addEventListener('click', runSweep);
-  $('sweep-cancel').addEventListener('click', () => analysis.pool.cancel());
-  $('sweep-csv').addEventListener('click', async () => {
+  runButton.addEventListener('click', runSweep);
+  cancelButton.addEventListener('click', () => analysis.pool.cancel());
+  csvButton.addEventListener('click', async () => {
     const first = Object.keys(analysis.points)[0];
     download(new Blob([await analysis.sweepCsv(first)], { type: 'text/csv' }), `imlab-sweep-${first}.csv`);
   });

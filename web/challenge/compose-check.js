@@ -194,8 +194,9 @@ export function createCheck({ client }) {
 
   /**
    * Runs `jobs` in the pool, unless check `me` was cancelled; `onDone(count)` as each ends.
+   * @template {keyof P.Jobs} K
    * @param {Check} me
-   * @param {P.JobRequest[]} jobs
+   * @param {({kind: K} & P.Jobs[K]['req'])[]} jobs
    * @param {(count: number) => void} [onDone]
    */
   async function inPool(me, jobs, onDone) {
@@ -219,7 +220,7 @@ export function createCheck({ client }) {
     const designs = await client.job('challenge-designs', { text, max });
     const subs = await inPool(
       me,
-      designs.map((tries) => ({ kind: 'challenge-tries', text, tries })),
+      designs.map((tries) => ({ kind: /** @type {const} */ ('challenge-tries'), text, tries })),
     );
     const scenarios = subs.flatMap((s) => s.scenarios);
     const tell = (/** @type {number} */ done) => {
@@ -229,7 +230,7 @@ export function createCheck({ client }) {
     tell(0);
     const measures = await inPool(
       me,
-      scenarios.map((scenario) => ({ kind: 'challenge-run', scenario })),
+      scenarios.map((scenario) => ({ kind: /** @type {const} */ ('challenge-run'), scenario })),
       tell,
     );
     let at = 0;
@@ -239,7 +240,7 @@ export function createCheck({ client }) {
       .filter((t) => t.runs.length > 0);
     const verdicts = await inPool(
       me,
-      ran.map((t) => ({ kind: 'challenge-judge', text, runs: t.runs })),
+      ran.map((t) => ({ kind: /** @type {const} */ ('challenge-judge'), text, runs: t.runs })),
     );
     /** @type {Tried[]} */
     const tried = ran.map((t, i) => ({ ...t, verdict: verdicts[i] }));

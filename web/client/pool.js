@@ -102,15 +102,17 @@ export class Pool {
 
   /**
    * Runs `jobs` (messages without `type`/`job`); `onDone(count, index, result)` reports each
-   * job as it ends, so that a caller can keep what finished before a cancel.
-   * @param {P.JobRequest[]} jobs
-   * @param {(count: number, index: number, result: any) => void} [onDone]
-   * @returns {Promise<any[]>}
+   * job as it ends, so that a caller can keep what finished before a cancel. The jobs of one
+   * call are of one kind, so the results are of that kind's type.
+   * @template {keyof P.Jobs} K
+   * @param {({kind: K} & P.Jobs[K]['req'])[]} jobs
+   * @param {(count: number, index: number, result: P.Jobs[K]['result']) => void} [onDone]
+   * @returns {Promise<P.Jobs[K]['result'][]>}
    */
   async run(jobs, onDone = () => {}) {
     await this.start();
     const generation = ++this.generation;
-    /** @type {unknown[]} */
+    /** @type {P.Jobs[K]['result'][]} */
     const results = new Array(jobs.length);
     let next = 0;
     let done = 0;
@@ -121,13 +123,13 @@ export class Pool {
         const index = next++;
         const job = ++this.jobs;
         const reply = member.reply('job', job);
-        /** @type {P.JobMessage} */
-        const message = { type: 'job', job, ...jobs[index] };
+        const message = /** @type {P.JobMessage} */ ({ type: 'job', job, ...jobs[index] });
         member.worker.postMessage(message);
         const data = await reply;
         if (data.error) throw new Error(data.error);
-        results[index] = data.result;
-        onDone(++done, index, data.result);
+        const result = /** @type {P.Jobs[K]['result']} */ (data.result);
+        results[index] = result;
+        onDone(++done, index, result);
       }
     };
     try {

@@ -90,16 +90,6 @@ const INSPECT = [
  */
 const exact = (v) => String(v);
 
-/**
- * A column's doc split into its meaning and its unit: "Speed error z1 (rad/s)." → [meaning, unit].
- * @param {string} doc
- * @returns {[string, string]}
- */
-function meaningAndUnit(doc) {
-  const m = /^(.*?)\s*\(([^()]*)\)\.?$/.exec(doc);
-  return m ? [m[1], m[2]] : [doc.replace(/\.$/, ''), ''];
-}
-
 /** The panel's heading: the sample's k and t (`ts`, the sampling period, rounds t to its
  * sample), the copy button and the close button, which calls `onClose`.
  * @param {Snapshot} snap
@@ -204,7 +194,7 @@ export function fillInspect(box, snap, ts, onClose) {
   );
   /** @type {Record<string, [string, string]>} */
   const doc = Object.fromEntries(
-    snap.columns.map((/** @type {string} */ c, /** @type {number} */ i) => [c, meaningAndUnit(snap.docs[i])]),
+    snap.columns.map((/** @type {string} */ c, /** @type {number} */ i) => [c, [snap.meanings[i], snap.units[i]]]),
   );
   box.replaceChildren(panelHead(snap, value, doc, ts, onClose));
   box.dataset.t = String(value.t);

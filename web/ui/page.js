@@ -4,7 +4,7 @@
  * The element of index.html with `id`, of the kind `kind` (any element by default). Throws,
  * naming the id, when the page has none or one of another kind, so a renamed element fails
  * where it is looked up rather than where it is first used.
- * @template {abstract new (...args: any) => HTMLElement} [K=typeof HTMLElement]
+ * @template {abstract new () => HTMLElement} [K=typeof HTMLElement]
  * @param {string} id
  * @param {K} [kind]
  * @returns {InstanceType<K>}

@@ -8,7 +8,7 @@ export const DEFAULT_SCENARIO = `v=1&preset=${DEFAULT_PRESET}`;
 
 /** The scenario text in the address bar, or the default when there is none. */
 export function scenarioFromUrl() {
-  const text = location.search.replace(/^\?/, '');
+  const text = location.search.slice(1);
   return text === '' || challengeFromUrl() ? DEFAULT_SCENARIO : text;
 }
 
@@ -18,9 +18,10 @@ export function scenarioFromUrl() {
  * opens the challenge from (it reads no `try.` part) and the whole submission text, if any.
  */
 export function challengeFromUrl() {
-  const text = location.search.replace(/^\?/, '');
-  if (/^challenge=[A-Za-z0-9_-]+$/.test(text)) return { challenge: text, submission: null };
-  if (!/^c=/.test(text)) return null;
+  const text = location.search.slice(1);
+  const keys = [...new URLSearchParams(text).keys()];
+  if (keys.length === 1 && keys[0] === 'challenge') return { challenge: text, submission: null };
+  if (keys[0] !== 'c') return null;
   return { challenge: text, submission: text };
 }
 

@@ -5,7 +5,6 @@ import initTools, {
   law_language,
   law_preview,
   law_verdicts,
-  log_grid,
   panic_message,
   robust_cells,
   robust_csv,
@@ -17,9 +16,10 @@ import initTools, {
   seed_run,
   seeds_csv,
   sweep_csv,
+  sweep_plan,
+  sweep_plan_of,
   sweep_point,
   sweep_summary,
-  variant,
 } from '../../pkg/imlab.js';
 import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
@@ -27,19 +27,11 @@ export { initTools, panic_message };
 
 /** @typedef {import('./protocol.js').Jobs} Jobs */
 
-/**
- * `scenario` with the field changes `[[key, value], ...]` applied by the core.
- * @param {string} scenario
- * @param {[string, string][]} changes
- */
-function withChanges(scenario, changes) {
-  return changes.reduce((s, [key, value]) => variant(s, key, value), scenario);
-}
-
 /** @type {{[K in keyof Jobs]: (d: Jobs[K]['req']) => Jobs[K]['result']}} */
 export const JOBS = {
-  grid: (d) => [...log_grid(d.lo, d.hi, d.n)],
-  sweep: (d) => sweep_point(withChanges(d.scenario, d.changes), d.freq, d.amp, d.duration, d.offset),
+  'sweep-plan': (d) => sweep_plan(d.text),
+  'sweep-plan-of': (d) => sweep_plan_of(d.numbers, d.variants),
+  sweep: (d) => sweep_point(d.scenario, d.variant, d.freq, d.amp, d.duration, d.offset),
   'seed-range': (d) => [...seed_range(d.first, d.n)],
   seed: (d) => seed_run(d.scenario, d.seed, d.every),
   bands: (d) => seed_bands(d.runs),

@@ -12,7 +12,7 @@ export {};
  * a reply carries is what the core wrote.
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
  *   Composed, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
- *   Metrics, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
+ *   Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
  */
 
@@ -115,9 +115,12 @@ export {};
 
 /**
  * Every job, by kind: `req` its fields, `result` what it resolves with.
- * - 'sweep': one point of a frequency sweep of `scenario` with `changes` ([key, value] pairs).
+ * - 'sweep-plan': a sweep's plan read from its text (a link's `#sweep=`, as `imlab sweep --plan`
+ *   takes it); 'sweep-plan-of' from a form's parts as written (`numbers` lo, hi, n, amp, offset,
+ *   duration; `variants` their names): the plan, its text, frequencies, labels and caveats.
+ * - 'sweep': one point of a frequency sweep of `variant` (a name in a plan) of `scenario`.
  * - 'seed': `scenario` run with `seed`, its figures kept every `every` samples.
- * - 'grid', 'seed-range': the core's log-spaced frequencies and seed list.
+ * - 'seed-range': the core's seed list.
  * - 'bands', 'summary', 'sweep-csv', 'seeds-csv': summaries and CSVs of finished points and runs.
  * - 'map-plan': the model-error map `text` over `scenario` (its cells and seeds) and the figures
  *   it keeps; 'map-run' one cell's scenario with one seed; 'map-cells' the cells of `runs`;
@@ -138,9 +141,10 @@ export {};
  *   CSV's header and the submissions; 'grade-link' one submission graded, its runs run and its
  *   CSV row written. The CSV is the header and then each row's `csv`, in file order.
  * @typedef {{
- *   sweep: {req: {scenario: string, changes: [string, string][], freq: number, amp: number, duration: number, offset: number}, result: SweepPoint},
+ *   'sweep-plan': {req: {text: string}, result: PlanView},
+ *   'sweep-plan-of': {req: {numbers: string[], variants: string[]}, result: PlanView},
+ *   sweep: {req: {scenario: string, variant: string, freq: number, amp: number, duration: number, offset: number}, result: SweepPoint},
  *   seed: {req: {scenario: string, seed: number, every: number}, result: SeedRun},
- *   grid: {req: {lo: number, hi: number, n: number}, result: number[]},
  *   'seed-range': {req: {first: number, n: number}, result: number[]},
  *   bands: {req: {runs: SeedRun[]}, result: SeedBands},
  *   summary: {req: {points: SweepPoint[]}, result: SweepSummary},

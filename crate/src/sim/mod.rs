@@ -311,6 +311,10 @@ pub struct Snapshot {
     pub columns: &'static [&'static str],
     /// What each column is, with its unit.
     pub docs: &'static [&'static str],
+    /// What each column is, without its unit.
+    pub meanings: Vec<&'static str>,
+    /// Each column's unit ("" for none).
+    pub units: Vec<&'static str>,
     /// The values of sample k, in the same order.
     pub values: Vec<f64>,
     /// Kalman gain K_k (5×2).
@@ -350,9 +354,42 @@ impl Simulation {
             k,
             columns: COLUMNS,
             docs: COLUMN_DOCS,
+            meanings: COLUMN_DOCS.iter().map(|d| meaning_and_unit(d).0).collect(),
+            units: COLUMN_DOCS.iter().map(|d| meaning_and_unit(d).1).collect(),
             values: row.values().to_vec(),
             gain,
             l: gain.map(|r| r.map(|g| g * self.lp.rate)),
+        }
+    }
+}
+
+/// A column's doc split into its meaning and its unit: "Speed error z1 (rad/s)." gives
+/// ("Speed error z1", "rad/s"); a doc that ends in no parenthesis has no unit.
+fn meaning_and_unit(doc: &'static str) -> (&'static str, &'static str) {
+    let doc = doc.strip_suffix('.').unwrap_or(doc);
+    doc.strip_suffix(')')
+        .and_then(|d| d.rsplit_once('('))
+        .filter(|(_, unit)| !unit.contains(')'))
+        .map_or((doc, ""), |(meaning, unit)| (meaning.trim_end(), unit))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::meaning_and_unit;
+    use crate::record::COLUMN_DOCS;
+
+    #[test]
+    fn a_doc_splits_into_its_meaning_and_its_unit() {
+        assert_eq!(
+            meaning_and_unit("Speed error z1 (rad/s)."),
+            ("Speed error z1", "rad/s")
+        );
+        assert_eq!(meaning_and_unit("Mean NIS."), ("Mean NIS", ""));
+        assert_eq!(meaning_and_unit("A (b) c"), ("A (b) c", ""));
+        for doc in COLUMN_DOCS {
+            let (meaning, unit) = meaning_and_unit(doc);
+            assert!(!meaning.is_empty() && !meaning.ends_with(' '), "{doc}");
+            assert!(!unit.contains(['(', ')']), "{doc}");
         }
     }
 }

@@ -89,7 +89,7 @@ pub fn sweep_plan_of(numbers: Vec<String>, variants: Vec<String>) -> Result<Ts<P
     plan_view(analysis::SweepPlan::from_parts(numbers, &variants))
 }
 
-/// `{bandwidth, phase_at_200}` of sweep points sorted by frequency.
+/// The bandwidth, the phase at 200 Hz and the counts and peaks of sweep points.
 #[wasm_bindgen]
 pub fn sweep_summary(
     points: Vec<Ts<analysis::SweepPoint>>,
