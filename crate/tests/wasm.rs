@@ -6,6 +6,7 @@ use imlab::record::COLUMNS;
 use imlab::scenario::Scenario;
 use imlab::sim;
 use imlab::wasm::{describe, Simulation};
+use tsify::Ts;
 use wasm_bindgen_test::wasm_bindgen_test;
 
 fn error_text(e: wasm_bindgen::JsValue) -> String {
@@ -82,8 +83,32 @@ fn views_match_the_core() {
 fn errors_are_readable_messages() {
     let e = error_text(Simulation::new("v=1&preset=step&k1=-3").err().unwrap());
     assert!(e.contains("'k1'") && e.contains("0 < k1"), "{e}");
-    let e = error_text(describe("v=1&preset=nope").err().unwrap());
-    assert!(e.contains("unknown preset"), "{e}");
+    // A refused scenario is described as refused, with the key of the field at fault.
+    #[derive(serde::Deserialize)]
+    struct Rejected {
+        key: Option<String>,
+        message: String,
+    }
+    #[derive(serde::Deserialize)]
+    struct Checked {
+        info: Option<serde::de::IgnoredAny>,
+        rejected: Vec<Rejected>,
+    }
+    let checked = |text: &str| -> Checked {
+        serde_wasm_bindgen::from_value(describe(text).unwrap().into()).unwrap()
+    };
+    let c = checked("v=1&preset=nope");
+    assert!(c.info.is_none() && c.rejected.len() == 1);
+    assert_eq!(c.rejected[0].key.as_deref(), Some("preset"));
+    assert!(
+        c.rejected[0].message.contains("unknown preset"),
+        "{}",
+        c.rejected[0].message
+    );
+    let c = checked("v=1&preset=step&k1=-3");
+    assert_eq!(c.rejected[0].key.as_deref(), Some("k1"));
+    let c = checked("v=1&preset=step&k1=600");
+    assert!(c.info.is_some() && c.rejected.is_empty());
     let e = error_text(
         Simulation::new("v=1&preset=step&init_err=1")
             .unwrap()
@@ -126,7 +151,7 @@ fn figures_and_transient_are_the_core_values() {
         transient: Transient,
         figures: Option<Vec<Figure>>,
     }
-    let report: Report = serde_wasm_bindgen::from_value(js.report().unwrap()).unwrap();
+    let report: Report = serde_wasm_bindgen::from_value(js.report().unwrap().into()).unwrap();
     let got = report.figures.unwrap();
     let expected = core.figures().unwrap();
     assert_eq!(got.len(), expected.len());
@@ -147,7 +172,8 @@ fn figures_and_transient_are_the_core_values() {
     assert_eq!((got.t, got.reason), (expected.t, expected.reason));
     // Before any sample: no figures.
     let report: Report =
-        serde_wasm_bindgen::from_value(Simulation::new("step").unwrap().report().unwrap()).unwrap();
+        serde_wasm_bindgen::from_value(Simulation::new("step").unwrap().report().unwrap().into())
+            .unwrap();
     assert!(report.figures.is_none());
 }
 
@@ -211,17 +237,17 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
     );
     let plan = robust_plan(scenario, text).unwrap();
     let map = robust::Map::parse(&Scenario::parse(scenario).unwrap(), text).unwrap();
-    let runs = js_sys::Array::new();
+    let mut runs = Vec::new();
     let mut core_cells = Vec::new();
     for cell in &map.cells {
         let mut core_runs = Vec::new();
         for &seed in &map.seeds {
-            runs.push(&robust_run(&cell.scenario, seed as f64).unwrap());
+            runs.push(robust_run(&cell.scenario, seed as f64).unwrap());
             core_runs.push(robust::map_run(&cell.scenario, seed).unwrap());
         }
         core_cells.push(robust::summarise(cell, &core_runs));
     }
-    let cells = robust_cells(plan.clone(), runs.into()).unwrap();
+    let cells = robust_cells(plan.clone(), runs).unwrap();
     assert_eq!(
         robust_csv(plan, cells).unwrap(),
         robust::map_csv(&map, &core_cells)
@@ -248,22 +274,28 @@ fn challenge_links_are_written_and_opened_by_the_core() {
     );
     // The student's values give the canonical submission link, which reads back as it is.
     let pairs = |p: &[(&str, &str)]| serde_wasm_bindgen::to_value(p).unwrap();
-    let link = c
-        .submit(pairs(&[("k2", "2000"), ("k1", "2000.0")]))
-        .unwrap();
+    #[derive(Deserialize)]
+    struct Written {
+        encoded: String,
+    }
+    let written: Written = serde_wasm_bindgen::from_value(
+        c.submission_of(pairs(&[("k2", "2000"), ("k1", "2000.0")]))
+            .unwrap()
+            .into(),
+    )
+    .unwrap();
+    let link = written.encoded;
     assert_eq!(link, format!("{}&try.k1=2000&try.k2=2000", b.text));
     #[derive(Deserialize)]
     struct Sub {
         kind: String,
         encoded: String,
     }
-    let sub: Sub = serde_wasm_bindgen::from_value(c.submission(&link).unwrap()).unwrap();
+    let sub: Sub = serde_wasm_bindgen::from_value(c.submission(&link).unwrap().into()).unwrap();
     assert_eq!(
         (sub.kind.as_str(), sub.encoded.as_str()),
         ("ok", link.as_str())
     );
-    let e = error_text(c.submit(pairs(&[("k1", "9000")])).unwrap_err());
-    assert_eq!(e, "refused: k1=9000 is outside 300..5000");
     // The same as the view a submission link gives, without the link.
     #[derive(Deserialize)]
     struct View {
@@ -272,17 +304,21 @@ fn challenge_links_are_written_and_opened_by_the_core() {
         encoded: String,
         scenarios: Vec<String>,
     }
-    let view = |v| -> View { serde_wasm_bindgen::from_value(v).unwrap() };
+    let view = |v: wasm_bindgen::JsValue| -> View { serde_wasm_bindgen::from_value(v).unwrap() };
     let of = view(
         c.submission_of(pairs(&[("k1", "2000"), ("k2", "2000")]))
-            .unwrap(),
+            .unwrap()
+            .into(),
     );
     assert_eq!(
         (of.kind.as_str(), of.encoded.as_str()),
         ("ok", link.as_str())
     );
-    assert_eq!(of.scenarios, view(c.submission(&link).unwrap()).scenarios);
-    let refused = view(c.submission_of(pairs(&[("k1", "9000")])).unwrap());
+    assert_eq!(
+        of.scenarios,
+        view(c.submission(&link).unwrap().into()).scenarios
+    );
+    let refused = view(c.submission_of(pairs(&[("k1", "9000")])).unwrap().into());
     assert_eq!(refused.kind, "refused");
     assert_eq!(refused.message, "k1=9000 is outside 300..5000");
     assert!(refused.encoded.is_empty() && refused.scenarios.is_empty());
@@ -300,7 +336,8 @@ fn challenge_links_are_written_and_opened_by_the_core() {
         error: Option<Fault>,
     }
     let made: Composed =
-        serde_wasm_bindgen::from_value(challenge_compose(c.parts().unwrap()).unwrap()).unwrap();
+        serde_wasm_bindgen::from_value(challenge_compose(c.parts().unwrap()).unwrap().into())
+            .unwrap();
     assert_eq!(made.encoded.as_deref(), Some(b.text));
     assert_eq!(made.brief, Some(b.challenge().brief()));
     assert!(made.error.is_none());
@@ -314,7 +351,11 @@ fn challenge_links_are_written_and_opened_by_the_core() {
         ..ChallengeParts::default()
     };
     let bad: Composed = serde_wasm_bindgen::from_value(
-        challenge_compose(serde_wasm_bindgen::to_value(&parts).unwrap()).unwrap(),
+        challenge_compose(Ts::new_unchecked(
+            serde_wasm_bindgen::to_value(&parts).unwrap(),
+        ))
+        .unwrap()
+        .into(),
     )
     .unwrap();
     assert!(bad.encoded.is_none() && bad.brief.is_none());
@@ -343,7 +384,7 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
         error: Option<String>,
     }
     let read = |challenge: &str, bytes: &[u8]| -> Read {
-        serde_wasm_bindgen::from_value(grade_class(challenge, bytes).unwrap()).unwrap()
+        serde_wasm_bindgen::from_value(grade_class(challenge, bytes).unwrap().into()).unwrap()
     };
     let mut bytes = format!(
         "Name,Link\r\n\"Lovelace, Ada\",{QUICK}&try.k1=1200\r\n=cmd,=1+1?{QUICK}&try.k1=9000\r\n"
@@ -372,7 +413,8 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
         csv: String,
     }
     let grade = |row: wasm_bindgen::JsValue| -> Graded {
-        serde_wasm_bindgen::from_value(grade_link(QUICK, row).unwrap()).unwrap()
+        serde_wasm_bindgen::from_value(grade_link(QUICK, Ts::new_unchecked(row)).unwrap().into())
+            .unwrap()
     };
     let (mut csv, mut expected) = (js.header.clone(), js.header.clone());
     for row in &js.rows {
@@ -421,7 +463,7 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
     }
     let describe = |text: &str| -> Described {
         let c = JsChallenge::new(text).unwrap();
-        serde_wasm_bindgen::from_value(c.describe().unwrap()).unwrap()
+        serde_wasm_bindgen::from_value(c.describe().unwrap().into()).unwrap()
     };
     let b = imlab::challenge::builtin("step-tune").unwrap();
     let original = describe(b.name);
