@@ -39,6 +39,7 @@ test: dist
 	node_modules/.bin/eslint --max-warnings=0 .
 	node_modules/.bin/tsc -p tsconfig.json
 	node_modules/.bin/tsc -p web/worker/tsconfig.json
+	node_modules/.bin/tsc -p tsconfig.bindings.json
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --release -- -D warnings
 	cargo clippy --lib --target wasm32-unknown-unknown --no-default-features -- -D warnings

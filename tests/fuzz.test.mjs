@@ -49,7 +49,7 @@ function generator(seed) {
 }
 
 const rng = generator(SEED);
-const FIELDS = describe('v=1&preset=step').fields;
+const FIELDS = describe('v=1&preset=step').info.fields;
 const KEYS = ['v', 'preset', ...FIELDS.map((f) => f.key)];
 const PRESETS = presets().map((p) => p.name);
 const COLUMNS = columns();
@@ -329,7 +329,7 @@ function exercise(s) {
     'sweep_point',
     sweep_point,
     s,
-    rng.pick(['euler', 'ifocpi', 'constructor', '', oddArg()]),
+    rng.pick(['euler', 'ifocpi', 'constructor', '', 'rk4\u0000', 'é'.repeat(40)]),
     oddArg(50, 200),
     oddArg(0.02),
     rng.pick([0.01, 0.02, 0.05, -1, NaN, 0]),

@@ -452,16 +452,9 @@ fn from_js<T: Tsify + serde::de::DeserializeOwned>(value: &Ts<T>) -> Result<T, J
     serde_wasm_bindgen::from_value(value.js_value()).map_err(js_error)
 }
 
-#[cfg(feature = "tools")]
-/// Each of `values` as [`from_js`] reads it.
-fn from_js_list<T: Tsify + serde::de::DeserializeOwned>(
-    values: &[Ts<T>],
-) -> Result<Vec<T>, JsValue> {
-    values.iter().map(from_js).collect()
-}
-
-/// An argument whose type the binding names itself (`unchecked_param_type`: lists of strings,
-/// pairs), read by the same rules.
+/// An argument whose type the binding names itself (`unchecked_param_type`): lists, which
+/// wasm-bindgen would otherwise copy whole before any check, and pairs. A value of another shape
+/// is refused with serde's message.
 fn read_js<T: serde::de::DeserializeOwned>(value: JsValue) -> Result<T, JsValue> {
     serde_wasm_bindgen::from_value(value).map_err(js_error)
 }

@@ -237,19 +237,20 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
     );
     let plan = robust_plan(scenario, text).unwrap();
     let map = robust::Map::parse(&Scenario::parse(scenario).unwrap(), text).unwrap();
-    let mut runs = Vec::new();
+    let runs = js_sys::Array::new();
     let mut core_cells = Vec::new();
     for cell in &map.cells {
         let mut core_runs = Vec::new();
         for &seed in &map.seeds {
-            runs.push(robust_run(&cell.scenario, seed as f64).unwrap());
+            runs.push(&robust_run(&cell.scenario, seed as f64).unwrap().into());
             core_runs.push(robust::map_run(&cell.scenario, seed).unwrap());
         }
         core_cells.push(robust::summarise(cell, &core_runs));
     }
-    let cells = robust_cells(plan.clone(), runs).unwrap();
+    let cells = robust_cells(plan.clone(), runs.into()).unwrap();
+    let cells: js_sys::Array = cells.into_iter().map(wasm_bindgen::JsValue::from).collect();
     assert_eq!(
-        robust_csv(plan, cells).unwrap(),
+        robust_csv(plan, cells.into()).unwrap(),
         robust::map_csv(&map, &core_cells)
     );
     let e = error_text(robust_plan(scenario, "k1=1..2:2").unwrap_err());

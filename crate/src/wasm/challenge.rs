@@ -1,7 +1,7 @@
 //! The challenge bindings: a challenge parsed once, its description, submissions, the measures of
 //! a run and the verdict on them.
 
-use super::{from_js, from_js_list, js_error, read_js, to_js, to_js_list};
+use super::{from_js, js_error, read_js, to_js, to_js_list};
 use crate::challenge::ErrorKind;
 use crate::scenario::Scenario;
 use serde::Serialize;
@@ -299,9 +299,9 @@ impl Challenge {
     /// pass, reason}], pass}`; throws when the count of runs is wrong.
     pub fn judge(
         &self,
-        runs: Vec<Ts<crate::challenge::Measures>>,
+        #[wasm_bindgen(unchecked_param_type = "Measures[]")] runs: JsValue,
     ) -> Result<Ts<crate::challenge::Verdict>, JsValue> {
-        let runs = from_js_list(&runs)?;
+        let runs: Vec<crate::challenge::Measures> = read_js(runs)?;
         let verdict = crate::challenge::judge(&self.inner, &runs).map_err(js_error)?;
         to_js(&verdict)
     }

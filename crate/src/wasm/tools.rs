@@ -3,7 +3,7 @@
 //! `tools` feature, into the module the page fetches when a tool is first used; the first run
 //! needs none of them.
 
-use super::{from_js, from_js_list, js_error, to_js, to_js_list};
+use super::{from_js, js_error, read_js, to_js, to_js_list};
 use crate::analysis;
 use crate::analysis::robust;
 use crate::scenario::{Scenario, MAX_SEED};
@@ -76,7 +76,12 @@ pub fn sweep_plan(text: &str) -> Result<Ts<PlanView>, JsValue> {
 /// The sweep plan of a form's parts as written: `numbers` `[lo, hi, n, amp, offset, duration]`,
 /// `variants` their names; throws as [`sweep_plan`] does.
 #[wasm_bindgen]
-pub fn sweep_plan_of(numbers: Vec<String>, variants: Vec<String>) -> Result<Ts<PlanView>, JsValue> {
+pub fn sweep_plan_of(
+    #[wasm_bindgen(unchecked_param_type = "string[]")] numbers: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "string[]")] variants: JsValue,
+) -> Result<Ts<PlanView>, JsValue> {
+    let numbers: Vec<String> = read_js(numbers)?;
+    let variants: Vec<String> = read_js(variants)?;
     let numbers: [&str; 6] = numbers
         .iter()
         .map(String::as_str)
@@ -92,16 +97,18 @@ pub fn sweep_plan_of(numbers: Vec<String>, variants: Vec<String>) -> Result<Ts<P
 /// The bandwidth, the phase at 200 Hz and the counts and peaks of sweep points.
 #[wasm_bindgen]
 pub fn sweep_summary(
-    points: Vec<Ts<analysis::SweepPoint>>,
+    #[wasm_bindgen(unchecked_param_type = "SweepPoint[]")] points: JsValue,
 ) -> Result<Ts<analysis::SweepSummary>, JsValue> {
-    let points = from_js_list(&points)?;
+    let points: Vec<analysis::SweepPoint> = read_js(points)?;
     to_js(&analysis::summarise(&points))
 }
 
 /// Sweep points as the CSV `imlab sweep` prints.
 #[wasm_bindgen]
-pub fn sweep_csv(points: Vec<Ts<analysis::SweepPoint>>) -> Result<String, JsValue> {
-    let points = from_js_list(&points)?;
+pub fn sweep_csv(
+    #[wasm_bindgen(unchecked_param_type = "SweepPoint[]")] points: JsValue,
+) -> Result<String, JsValue> {
+    let points: Vec<analysis::SweepPoint> = read_js(points)?;
     Ok(analysis::sweep_csv(&points))
 }
 
@@ -127,15 +134,19 @@ pub fn seed_run(scenario: &str, seed: f64, every: usize) -> Result<Ts<analysis::
 
 /// Mean and min–max bands over seed runs (in seed order).
 #[wasm_bindgen]
-pub fn seed_bands(runs: Vec<Ts<analysis::SeedRun>>) -> Result<Ts<analysis::SeedBands>, JsValue> {
-    let runs = from_js_list(&runs)?;
+pub fn seed_bands(
+    #[wasm_bindgen(unchecked_param_type = "SeedRun[]")] runs: JsValue,
+) -> Result<Ts<analysis::SeedBands>, JsValue> {
+    let runs: Vec<analysis::SeedRun> = read_js(runs)?;
     to_js(&analysis::seed_bands(&runs).map_err(js_error)?)
 }
 
 /// Per-seed figures as the CSV `imlab seeds` prints.
 #[wasm_bindgen]
-pub fn seeds_csv(results: Vec<Ts<analysis::SeedResult>>) -> Result<String, JsValue> {
-    let results = from_js_list(&results)?;
+pub fn seeds_csv(
+    #[wasm_bindgen(unchecked_param_type = "SeedResult[]")] results: JsValue,
+) -> Result<String, JsValue> {
+    let results: Vec<analysis::SeedResult> = read_js(results)?;
     Ok(analysis::seeds_csv(&results))
 }
 
@@ -157,10 +168,10 @@ pub fn robust_run(scenario: &str, seed: f64) -> Result<Ts<robust::MapRun>, JsVal
 #[wasm_bindgen]
 pub fn robust_cells(
     map: Ts<robust::Map>,
-    runs: Vec<Ts<robust::MapRun>>,
+    #[wasm_bindgen(unchecked_param_type = "MapRun[]")] runs: JsValue,
 ) -> Result<Vec<Ts<robust::Cell>>, JsValue> {
     let map = from_js(&map)?;
-    let runs = from_js_list(&runs)?;
+    let runs: Vec<robust::MapRun> = read_js(runs)?;
     let per = map.seeds.len();
     if per == 0 || runs.len() != map.cells.len() * per {
         return Err(js_error(format!(
@@ -181,9 +192,12 @@ pub fn robust_cells(
 /// A map's rows as the CSV `imlab robust` prints; `cells` may be some of `map`'s (a stopped map),
 /// which the CSV then says.
 #[wasm_bindgen]
-pub fn robust_csv(map: Ts<robust::Map>, cells: Vec<Ts<robust::Cell>>) -> Result<String, JsValue> {
+pub fn robust_csv(
+    map: Ts<robust::Map>,
+    #[wasm_bindgen(unchecked_param_type = "Cell[]")] cells: JsValue,
+) -> Result<String, JsValue> {
     let map = from_js(&map)?;
-    let cells = from_js_list(&cells)?;
+    let cells: Vec<robust::Cell> = read_js(cells)?;
     Ok(robust::map_csv(&map, &cells))
 }
 
