@@ -317,6 +317,8 @@ test('hostile fragments are named in a message and the rest of the link still wo
   ]) {
     await withPage(`?v=1&preset=step#sweep=${sweep}`, async (page) => {
       assert.equal(await settled(page), 'done');
+      // The core reads the plan in a pool's worker, after the run.
+      await page.waitForFunction(() => document.getElementById('message').textContent.startsWith('The sweep'));
       const message = await page.textContent('#message');
       assert.match(message, /^The sweep in the address \(#sweep=.*\) was not run: /);
       assert.match(message, expected);

@@ -409,6 +409,17 @@ pub fn describe(scenario: &str) -> Result<Ts<Checked>, JsValue> {
     })
 }
 
+/// Checks the scenario of a form: `preset` with each of `fields` (`[key, value]` pairs, each
+/// value as its control holds it) set, read by the codec's rules as [`describe`] reads a text.
+#[wasm_bindgen]
+pub fn describe_form(
+    preset: &str,
+    #[wasm_bindgen(unchecked_param_type = "[string, string][]")] fields: JsValue,
+) -> Result<Ts<Checked>, JsValue> {
+    let fields: Vec<(String, String)> = read_js(fields)?;
+    describe(&crate::scenario::compose(preset, &fields))
+}
+
 /// `scenario` with its bad fields left out: the description of what is kept and every field
 /// left out; only the fault of a bad `v` or `preset` keeps nothing.
 #[wasm_bindgen]

@@ -24,6 +24,15 @@ export class ScenarioRefused extends Error {
   }
 }
 
+/**
+ * The description of a checked scenario, or a ScenarioRefused naming the field at fault.
+ * @param {P.Checked} checked
+ */
+function described({ info, rejected }) {
+  if (info === null) throw new ScenarioRefused(rejected[0]);
+  return info;
+}
+
 export class RunClient {
   /**
    * `onFailed(reason, restarting)` tells the page that the worker failed; `restarting` is false
@@ -92,9 +101,17 @@ export class RunClient {
    * @returns {Promise<P.Info>}
    */
   async describe(scenario) {
-    const { info, rejected } = await this.check('describe', scenario);
-    if (info === null) throw new ScenarioRefused(rejected[0]);
-    return info;
+    return described(await this.check({ type: 'describe', req: ++this.req, scenario }));
+  }
+
+  /**
+   * The core's description of a form's scenario, which the core writes from its parts; rejects
+   * as describe() does.
+   * @param {P.FormScenario} form
+   * @returns {Promise<P.Info>}
+   */
+  async describeForm(form) {
+    return described(await this.check({ type: 'describe-form', req: ++this.req, form }));
   }
 
   /**
@@ -103,17 +120,15 @@ export class RunClient {
    * @param {string} scenario
    */
   recover(scenario) {
-    return this.check('recover', scenario);
+    return this.check({ type: 'recover', req: ++this.req, scenario });
   }
 
   /**
-   * @param {'describe' | 'recover'} type
-   * @param {string} scenario
+   * @param {P.DescribeRequest} request
    * @returns {Promise<P.Checked>}
    */
-  check(type, scenario) {
-    const req = ++this.req;
-    return this.ask(`describe ${req}`, { type, req, scenario });
+  check(request) {
+    return this.ask(`describe ${request.req}`, request);
   }
 
   /**

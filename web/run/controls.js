@@ -226,21 +226,24 @@ function valueOf(control) {
 }
 
 /**
- * The scenario string the form describes: the preset plus every field it holds, in the form's
- * order, each as its control holds it (as the description says where the group is not built).
+ * The scenario the form describes, for the core to write and check: the preset, and every field
+ * the form holds, in the form's order, each as its control holds it (as the description says
+ * where the group is not built).
  * @param {HTMLFormElement} form
  * @param {string} preset
+ * @returns {import('../worker/protocol.js').FormScenario}
  */
-export function composeScenario(form, preset) {
+export function formScenario(form, preset) {
   const info = shown.get(form);
-  const parts = ['v=1', `preset=${preset}`];
+  /** @type {[string, string][]} */
+  const fields = [];
   for (const group of Object.keys(GROUPS)) {
     for (const f of info ? fieldsOf(info, group) : []) {
       const control = namedControl(form, f.key);
-      parts.push(`${f.key}=${encodeURIComponent(control ? valueOf(control) : f.value)}`);
+      fields.push([f.key, control ? valueOf(control) : String(f.value)]);
     }
   }
-  return parts.join('&');
+  return { preset, fields };
 }
 
 /**

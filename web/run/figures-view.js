@@ -32,24 +32,29 @@ import { el } from '../ui/dom.js';
 const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_final'];
 
 /**
+ * What the core derived from the figures: the peak and RMS currents as multiples of the rated
+ * current, whether the mean NIS is inside its band.
+ * @typedef {Pick<P.Done, 'peak_to_rated' | 'rms_to_rated' | 'nis_inside'>} Derived
+ */
+
+/**
  * The compact row of key figures that stands for the strip on small screens and projectors.
  * @param {P.RunFigure[]} figures
- * @param {P.RunFigure | undefined} rated
+ * @param {Derived} derived
  */
-function showKeyFigures(figures, rated) {
-  const [low, high] = ['mean_nis_low', 'mean_nis_high'].map((n) => figures.find((f) => f.name === n));
+function showKeyFigures(figures, { peak_to_rated: toRated, nis_inside: inside }) {
   const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name))
     .filter((f) => f !== undefined)
     .map((f) => {
       const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
       const span = document.createElement('span');
-      if (f.name === 'current_peak' && rated)
-        span.textContent = `peak |i_s| ${value} (${Number((f.value / rated.value).toPrecision(2))}× rated)`;
+      if (f.name === 'current_peak' && toRated !== null)
+        span.textContent = `peak |i_s| ${value} (${Number(toRated.toPrecision(2))}× rated)`;
       else if (f.name === 'speed_error_final' && f.trend) {
         span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', drifting: 'drifting', fluctuating: 'fluctuating', 'ran away': 'ran away' }[/** @type {Trend} */ (f.trend).state]})`;
         if (!f.trend.settled) span.className = 'unsettled';
-      } else if (f.name === 'mean_nis' && low && high) {
-        span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${f.value >= low.value && f.value <= high.value ? 'inside' : 'outside'} its 95 % band)`;
+      } else if (f.name === 'mean_nis' && inside !== null) {
+        span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${inside ? 'inside' : 'outside'} its 95 % band)`;
       } else span.textContent = `${f.label} ${value}`;
       return span;
     });
@@ -98,6 +103,9 @@ function unreachedItem(u) {
   return item;
 }
 
+/** @type {Derived} */
+const NONE = { peak_to_rated: null, rms_to_rated: null, nis_inside: null };
+
 /**
  * The figures display; the plots in `plotSets` carry the figures in their text alternatives.
  * @param {{plotSets: Plots[]}} parts
@@ -109,8 +117,9 @@ export function createFiguresView({ plotSets }) {
    * @param {P.RunFigure[]} figures
    * @param {Warning[]} [warnings]
    * @param {Unreached[]} [unreached]
+   * @param {Derived} [derived]
    */
-  function show(figures, warnings = [], unreached = []) {
+  function show(figures, warnings = [], unreached = [], derived = NONE) {
     /** @param {P.RunFigure} f */
     const fmt = (f) => {
       if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
@@ -126,12 +135,12 @@ export function createFiguresView({ plotSets }) {
         if (!('value' in f)) return unreachedItem(f);
         if (['mean_nis_low', 'mean_nis_high', 'current_rated'].includes(f.name)) return null;
         let text = fmt(f);
-        if (rated && ['current_peak', 'current_rms'].includes(f.name)) {
-          text += ` (${Number((f.value / rated.value).toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
+        const toRated = { current_peak: derived.peak_to_rated, current_rms: derived.rms_to_rated }[f.name] ?? null;
+        if (rated && toRated !== null) {
+          text += ` (${Number(toRated.toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
         }
-        if (f.name === 'mean_nis' && 'mean_nis_low' in nis) {
-          const inside = f.value >= nis.mean_nis_low && f.value <= nis.mean_nis_high;
-          text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${inside ? 'inside' : 'outside'})`;
+        if (f.name === 'mean_nis' && 'mean_nis_low' in nis && derived.nis_inside !== null) {
+          text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${derived.nis_inside ? 'inside' : 'outside'})`;
         }
         const item = /** @type {HTMLElement} */ (el('div', { className: 'figure' }));
         item.dataset.name = f.name;
@@ -167,7 +176,7 @@ export function createFiguresView({ plotSets }) {
     ui.consistency.hidden = !warning;
     ui.figures.replaceChildren(...items);
     ui.figures.hidden = items.length === 0;
-    showKeyFigures(figures, rated);
+    showKeyFigures(figures, derived);
     // The plots' text alternatives carry the same figures.
     const sentence = items
       // Every item has its label (dt) and its value or words (dd).

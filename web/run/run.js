@@ -197,7 +197,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       ui.progress.value = done / total;
       ui.status.textContent = `Running: ${count(done)} of ${count(total)} samples`;
     },
-    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings }) {
+    async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings, ...derived }) {
       if (id !== state.runId) return;
       setBusy(false);
       ui.progress.value = 1;
@@ -209,7 +209,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
       // The plots first: they read the page's layout before the rest of the run changes it.
       if (view) plots.show(view, { ifoc: fieldValue(state.info, 'controller') === 'ifoc' });
       showTransient(transient);
-      figuresView.show(figures, warnings, unreached);
+      figuresView.show(figures, warnings, unreached, derived);
       if (view) {
         state.shownRun = id;
         walkthrough.show(stability, state.nisBand);

@@ -2,7 +2,7 @@
 // lesson), checking each edit of the form or of a walkthrough knob with the core, the preset
 // picker, and Run.
 import { $, say, ui } from '../ui/page.js';
-import { composeScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
+import { formScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
 import { ScenarioRefused, WorkerFailed } from '../client/run-client.js';
 import { DEFAULT_PRESET, DEFAULT_SCENARIO, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listed } from '../ui/quote.js';
@@ -175,10 +175,10 @@ export function createSettings({
   }
 
   async function checkForm() {
-    const text = composeScenario(ui.form, ui.preset.value);
-    composed = text;
+    const form = formScenario(ui.form, ui.preset.value);
+    composed = JSON.stringify(form);
     try {
-      const info = await client.describe(text);
+      const info = await client.describeForm(form);
       applyDescription(info);
       // The address keeps describing the run on screen until these settings run.
       markUnrun(info.encoded !== state.ranScenario);
@@ -209,7 +209,7 @@ export function createSettings({
 
   // An edit still being checked by the core must land before the run starts.
   async function runForm() {
-    const fresh = composeScenario(ui.form, ui.preset.value) !== composed;
+    const fresh = JSON.stringify(formScenario(ui.form, ui.preset.value)) !== composed;
     if (!(await (fresh ? formChanged() : checking))) return;
     if (!ui.run.disabled) await startChecked();
   }

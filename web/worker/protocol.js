@@ -60,8 +60,14 @@ export {};
 
 /**
  * A scenario checked by the core: 'describe' refuses it at its first fault, 'recover' keeps its
- * acceptable fields and lists the others.
- * @typedef {{type: 'describe' | 'recover', req: number, scenario: string}} DescribeRequest
+ * acceptable fields and lists the others; 'describe-form' checks a form's scenario, its preset and
+ * each field's value as its control holds it, which the core writes into a scenario.
+ * @typedef {{type: 'describe' | 'recover', req: number, scenario: string}
+ *   | {type: 'describe-form', req: number, form: FormScenario}} DescribeRequest
+ */
+/**
+ * A form's scenario: its preset, and each field's key and value as its control holds it.
+ * @typedef {{preset: string, fields: [string, string][]}} FormScenario
  */
 /**
  * Starts run `id` (a new run ends the last). `overlay`, a column or null, is kept as the run goes
@@ -197,11 +203,13 @@ export {};
 /** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
 /**
  * Run `id` ended: `view` is the whole run's view of its `groups` (null when it recorded nothing),
- * `failure` why it stopped early, and the core's report (figures, warnings, …).
+ * `failure` why it stopped early, and the core's report (figures, warnings, the peak and RMS
+ * currents as multiples of the rated current, whether the mean NIS is inside its band, …).
  * @typedef {{type: 'done', id: number, rows: number, failure: string | null, view: View | null,
  *   computeMs: number, stability: Stability | null, figures: Figure[],
  *   unreached: Report['unreached'], transient: Report['transient'] | null,
- *   warnings: Report['warnings']}} Done
+ *   warnings: Report['warnings'], peak_to_rated: number | null, rms_to_rated: number | null,
+ *   nis_inside: boolean | null}} Done
  */
 /** @typedef {{type: 'cancelled', id: number}} Cancelled */
 /** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */

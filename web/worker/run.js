@@ -176,6 +176,9 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
       unreached: report?.unreached ?? [],
       transient: report?.transient ?? null,
       warnings: report?.warnings ?? [],
+      peak_to_rated: report?.peak_to_rated ?? null,
+      rms_to_rated: report?.rms_to_rated ?? null,
+      nis_inside: report?.nis_inside ?? null,
     },
     v,
   );

@@ -4,7 +4,7 @@
 //
 // The run worker holds one run (run.js) and the pins (pins.js). A pool's worker (`?role=pool`)
 // answers jobs only (jobs.js): it holds no pins and skips the warm-up for a run's first slices.
-import init, { describe, nis_band, presets, recover } from '../../pkg-run/imlab.js';
+import init, { describe, describe_form, nis_band, presets, recover } from '../../pkg-run/imlab.js';
 import { cancelPins, holdPins, overlay, pinAll, unpin, unpinAll } from './pins.js';
 import { cancel, compare, csvAnswer, exportCsv, inspect, measure, run, viewOf, warmUp } from './run.js';
 import { addPanicSource, isCrashed, post, trapped } from './runtime.js';
@@ -28,9 +28,16 @@ const ready = init({ module_or_path: WASM_URL }).then(() => {
  * the rejected ones, each with its key).
  * @param {P.DescribeRequest} request
  */
-function describeScenario({ type, req, scenario }) {
+function describeScenario(request) {
+  const { req } = request;
   try {
-    post({ type: 'described', req, checked: type === 'describe' ? describe(scenario) : recover(scenario) });
+    const checked =
+      request.type === 'describe-form'
+        ? describe_form(request.form.preset, request.form.fields)
+        : request.type === 'describe'
+          ? describe(request.scenario)
+          : recover(request.scenario);
+    post({ type: 'described', req, checked });
   } catch (e) {
     if (!trapped(e)) post({ type: 'invalid', req, message: String(e) });
   }
@@ -97,6 +104,7 @@ self.onmessage = async ({ data }) => {
   if (isCrashed()) return;
   switch (data.type) {
     case 'describe':
+    case 'describe-form':
     case 'recover':
       return describeScenario(data);
     case 'run':

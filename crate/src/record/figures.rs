@@ -233,6 +233,13 @@ pub struct Report {
     pub unreached: Vec<Unreached>,
     /// What the figures must not be read without, in words (see [`Warning`]).
     pub warnings: Vec<Warning>,
+    /// The peak and the RMS stator current as multiples of the rated current (none before any
+    /// sample).
+    pub peak_to_rated: Option<f64>,
+    /// See [`Report::peak_to_rated`].
+    pub rms_to_rated: Option<f64>,
+    /// Whether the mean NIS lies within its 95 % band (none before any sample).
+    pub nis_inside: Option<bool>,
 }
 
 /// A figure the run had not reached by its last sample: a step's settling time while ω is still
@@ -320,6 +327,9 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
             figures: None,
             unreached: Vec::new(),
             warnings: Vec::new(),
+            peak_to_rated: None,
+            rms_to_rated: None,
+            nis_inside: None,
         };
     }
     let last = rows.row(len - 1);
@@ -361,11 +371,15 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
             ),
         ));
     }
+    let mean_nis = w.nis / n;
     Report {
         transient: end,
         figures: Some(out),
         unreached,
         warnings,
+        peak_to_rated: Some(w.current_peak / s.i_rated),
+        rms_to_rated: Some((w.current_sq / n).sqrt() / s.i_rated),
+        nis_inside: Some(mean_nis >= band.0 && mean_nis <= band.1),
     }
 }
 
