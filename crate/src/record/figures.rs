@@ -7,15 +7,13 @@
 use super::row::Row;
 use super::samples::Samples;
 use super::transient::{transient, Transient};
+use super::warnings::{mean_nis_band, warnings_of, Warning, WarningKind};
 use super::window::{Settling, Summand, Tenths, Window, TREND_TENTHS};
 #[cfg(test)]
 use crate::control::Reference;
 use crate::scenario::Scenario;
-use crate::text::{rounded, time_text};
+use crate::text::time_text;
 use serde::Serialize;
-
-/// Standard-normal quantile of 97.5 %: the 95 % two-sided band.
-const Z_975: f64 = 1.959963984540054;
 
 /// One figure of a run.
 #[cfg_attr(
@@ -265,47 +263,6 @@ pub struct Unreached {
     /// In words, e.g. "not settled by the end of the run (t = 99.95 ms)".
     pub text: String,
 }
-
-/// What a [`Warning`] is about; the page and the JSON see it as "runaway" or "inconsistent".
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
-pub enum WarningKind {
-    /// The true state left the region the design holds it in, so the run failed as a control
-    /// run, however its samples look.
-    Runaway,
-    /// The EKF's mean NIS is far outside the band of a filter whose model fits, so its estimates
-    /// cannot be trusted.
-    Inconsistent,
-}
-
-/// A finding about the whole run that its figures alone would hide.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
-#[derive(Clone, Debug, PartialEq, Serialize)]
-pub struct Warning {
-    /// What it is about.
-    pub kind: WarningKind,
-    /// One or two sentences that name what happened, with the run's numbers.
-    pub text: String,
-}
-
-/// A mean NIS this many times past an end of its 95 % band is called inconsistent.
-const FAR_OUTSIDE: f64 = 5.0;
-
-/// A run has run away when its true speed ends further than this from the reference, beyond
-/// twice the largest reference of the window (rad/s)...
-const RUNAWAY_SPEED: f64 = 100.0;
-
-/// ... or its true flux modulus ends above this multiple of the flux target √ψ_d.
-const RUNAWAY_FLUX: f64 = 4.0;
 
 /// The transient and the figures of the rows `rows` recorded from scenario `s`, computed together:
 /// [`transient`], then the figures over the rows recorded so far, in this order:
@@ -593,51 +550,6 @@ fn approach(m: [f64; TREND_TENTHS]) -> Option<f64> {
     (q > 0.0 && q < 1.0).then(|| (d2 * q / (1.0 - q)).abs())
 }
 
-/// The warnings of a run whose last row is `last`, whose reference stayed within
-/// ±`reference_peak` over the window, and whose mean NIS over it is `nis` against `band`.
-fn warnings_of(last: &Row, reference_peak: f64, nis: f64, band: (f64, f64)) -> Vec<Warning> {
-    let mut out = Vec::new();
-    let target = last.flux_ref;
-    if last.omega_err.abs() > 2.0 * reference_peak + RUNAWAY_SPEED
-        || last.flux > RUNAWAY_FLUX * target
-    {
-        out.push(Warning {
-            kind: WarningKind::Runaway,
-            text: format!(
-                "The run ran away: at its end the true speed is {} rad/s from the reference, the speed estimate {} rad/s from the true speed, and the flux {} Wb against its target of {} Wb. The controller regulates the EKF's estimates; Theorem 4.6 bounds the closed loop only while the estimation errors stay bounded, and when they do not (a start-up error held only by the voltage limit, a wrong model at low speed) nothing bounds the motor.",
-                rounded(last.omega_err, 3),
-                rounded(-last.omega_est_err, 3),
-                rounded(last.flux, 3),
-                rounded(target, 3)
-            ),
-        });
-    }
-    let (low, high) = band;
-    let describe = |side: &str, meaning: &str| {
-        Warning {
-        kind: WarningKind::Inconsistent,
-        text: format!(
-            "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
-            rounded(nis, 4),
-            rounded(low, 3),
-            rounded(high, 3)
-        ),
-    }
-    };
-    if nis > FAR_OUTSIDE * high {
-        out.push(describe(
-            "above",
-            "Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.",
-        ));
-    } else if nis < low / FAR_OUTSIDE {
-        out.push(describe(
-            "below",
-            "It assumes more noise than there is, so it follows the measurements more slowly than it could.",
-        ));
-    }
-    out
-}
-
 /// The 2 % settling time of the true speed after a step reference, and the step time (s):
 /// the last recorded time after the step with |ω − (ω_d before the step + size)| above 2 % of
 /// |size|, minus the step time; 0 when ω never leaves the band. None for other references, when
@@ -656,28 +568,11 @@ fn settling_time(reference: &Reference, ts: f64, rows: &dyn Samples) -> Option<(
     Some(settling.result())
 }
 
-/// The 95 % band (low, high) of the mean NIS of a consistent filter over `samples` samples.
-///
-/// For a consistent filter with 2 measurements, each NIS is χ²(2); if the samples were
-/// independent, N·mean would be χ²(2N). Its quantiles come from the Wilson–Hilferty
-/// approximation k(1 − 2/(9k) + z·(2/(9k))^½)³ with k = 2N, z = ∓1.96. The NIS of a filter that
-/// is not consistent is correlated from sample to sample, so the band only tells a consistent
-/// filter from one that is not; it is not a confidence interval for an inconsistent one.
-fn mean_nis_band(samples: usize) -> (f64, f64) {
-    let n = samples as f64;
-    let k = 2.0 * n;
-    let a = 2.0 / (9.0 * k);
-    let quantile = |z: f64| {
-        let c = 1.0 - a + z * a.sqrt();
-        k * c * c * c / n
-    };
-    (quantile(-Z_975), quantile(Z_975))
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::record::samples::testing::{trace, TS};
+    use crate::record::warnings::Z_975;
     use crate::scenario::preset;
 
     fn value(figures: &[Figure], name: &str) -> Option<f64> {

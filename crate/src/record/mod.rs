@@ -18,11 +18,11 @@ mod samples;
 mod tally;
 mod trace;
 mod transient;
+mod warnings;
 mod window;
 
 pub use figures::{
-    figure_info, report, Figure, FigureInfo, Report, Trend, TrendState, Unreached, Warning,
-    WarningKind, FIGURE_INFO,
+    figure_info, report, Figure, FigureInfo, Report, Trend, TrendState, Unreached, FIGURE_INFO,
 };
 pub use m4::{m4, M4};
 pub use metrics::{metrics, Metrics};
@@ -35,4 +35,5 @@ pub use samples::Samples;
 pub use tally::{Stability, StabilityCause, StabilityTally, TransientTally, CHECKPOINT_EVERY};
 pub use trace::{Column, Overview, Trace};
 pub use transient::{transient, Transient};
+pub use warnings::{Warning, WarningKind};
 pub use window::WindowTally;
