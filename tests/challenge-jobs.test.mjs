@@ -56,6 +56,11 @@ test('a run that runs away fails every criterion, with the reason, however lenie
   assert.match(verdict.criteria[0].reason, /ran away/);
   const figures = jobs['challenge-figures']({});
   assert.ok(figures.some((f) => f.name === 'load_recovery_time'));
+  // The bounds each figure may take, the first offered and the one a composer starts with.
+  const policy = (name) => figures.find((f) => f.name === name);
+  assert.deepEqual([policy('mean_nis').ops, policy('mean_nis').op], [['band', 'max', 'min'], 'band']);
+  assert.deepEqual([policy('speed_error_final').ops, policy('speed_error_final').op], [['max', 'min', 'abs'], 'abs']);
+  assert.equal(policy('current_peak').op, 'max');
 });
 
 test('a check’s designs: [field, value] pairs within the allowed ranges, the base first, as many as asked', () => {

@@ -21,8 +21,8 @@ import { el } from '../ui/dom.js';
  */
 const round2 = (x) => Number(x.toPrecision(2));
 
-// Final values are bounded on both sides; the mean NIS by its band.
-const ABS = new Set(['speed_error_final', 'flux_error_final', 'speed_estimate_error_final']);
+/** A criterion's bound in words, by its name in the codec. @type {Record<string, string>} */
+const OP_WORDS = { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' };
 
 /**
  * A range around the field's value: half to twice it, within the field's own range.
@@ -153,20 +153,20 @@ function needRow(fig, m) {
   row.dataset.figure = fig.name;
   const unit = fig.unit ? ` ${fig.unit}` : '';
   const now = m ? ` — now ${m.value === Infinity ? '∞' : Number(m.value.toPrecision(4))}${unit}` : '';
-  const band = fig.name === 'mean_nis';
+  // The bounds the core lets this figure take, and the one it starts with.
   const op = /** @type {HTMLSelectElement} */ (
     el(
       'select',
       { id: `${id}-op`, name: 'op' },
-      (band ? ['band', 'max', 'min'] : ['max', 'min', 'abs']).map((o) =>
+      fig.ops.map((o) =>
         el('option', {
           value: o,
-          textContent: { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' }[o],
+          textContent: OP_WORDS[o] ?? o,
         }),
       ),
     )
   );
-  if (ABS.has(fig.name)) op.value = 'abs';
+  op.value = fig.op;
   const bound = /** @type {HTMLInputElement} */ (
     el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' })
   );

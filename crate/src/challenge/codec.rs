@@ -1,7 +1,7 @@
 //! The challenge codec's text: a query's `key=value` pieces, percent coding, and each key's value
 //! read and checked against the base scenario.
 
-use super::judge::{figure_info, figures};
+use super::judge::{criterion_ops, figure_info, figures};
 use super::{
     builtin, Allow, Allowed, Challenge, ChallengeError, Criterion, Op, Variants, BUILTINS,
     CHALLENGE_VERSION, MAX_CHALLENGE_BYTES, MAX_CRITERIA, MAX_TITLE_CHARS, MAX_VARIANTS,
@@ -409,7 +409,7 @@ fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, C
         )));
     }
     let op = if value == "band" {
-        if figure != "mean_nis" {
+        if !criterion_ops(figure).0.contains(&"band") {
             return Err(ChallengeError::malformed(format!(
                 "field '{key}' = 'band': only mean_nis has a band"
             )));

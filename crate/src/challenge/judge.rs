@@ -25,6 +25,24 @@ pub fn figures() -> impl Iterator<Item = &'static FigureInfo> {
         .chain(std::iter::once(&LOAD_RECOVERY_INFO))
 }
 
+/// The bounds a criterion on figure `name` may take, in the order a composer offers them, and
+/// the one it starts with: the mean NIS inside its band (the only figure with one); a final
+/// value, which may end on either side of zero, by its size; any other figure from above.
+pub fn criterion_ops(name: &str) -> (&'static [&'static str], &'static str) {
+    const FINALS: [&str; 3] = [
+        "speed_error_final",
+        "flux_error_final",
+        "speed_estimate_error_final",
+    ];
+    if name == "mean_nis" {
+        (&["band", "max", "min"], "band")
+    } else if FINALS.contains(&name) {
+        (&["max", "min", "abs"], "abs")
+    } else {
+        (&["max", "min", "abs"], "max")
+    }
+}
+
 /// The figure named `name`, if criteria may name it.
 pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
     figures().find(|f| f.name == name)

@@ -40,7 +40,7 @@ pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use error::{ChallengeError, ErrorKind};
 pub use judge::{
-    figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
+    criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
 };
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;

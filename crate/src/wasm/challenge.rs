@@ -360,10 +360,39 @@ pub fn challenge_builtins() -> Result<Vec<Ts<BuiltinView>>, JsValue> {
     to_js_list(&list)
 }
 
-/// The figures a challenge's criteria may name: `[{name, label, unit}]`.
+/// A figure a challenge's criterion may name, with the bounds it may take.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct CriterionFigure {
+    name: &'static str,
+    label: &'static str,
+    unit: &'static str,
+    /// The bounds (`max`, `min`, `abs`, `band`) in the order a composer offers them.
+    ops: &'static [&'static str],
+    /// The bound a composer starts with.
+    op: &'static str,
+}
+
+/// The figures a challenge's criteria may name, each with the bounds it may take.
 #[wasm_bindgen]
-pub fn challenge_figures() -> Result<Vec<Ts<crate::record::FigureInfo>>, JsValue> {
-    to_js_list(&crate::challenge::figures().copied().collect::<Vec<_>>())
+pub fn challenge_figures() -> Result<Vec<Ts<CriterionFigure>>, JsValue> {
+    let figures: Vec<_> = crate::challenge::figures()
+        .map(|f| {
+            let (ops, op) = crate::challenge::criterion_ops(f.name);
+            CriterionFigure {
+                name: f.name,
+                label: f.label,
+                unit: f.unit,
+                ops,
+                op,
+            }
+        })
+        .collect();
+    to_js_list(&figures)
 }
 
 /// What [`challenge_compose`] gives: the link and the task in words, or the part at fault.
