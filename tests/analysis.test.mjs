@@ -212,7 +212,9 @@ test("a malformed sweep request is refused with the core's message, before any r
     await page.click('[data-tab=analysis]');
     await page.fill('#sweep-form [name=lo]', '-5');
     await page.click('#sweep-run');
-    await page.waitForFunction(() => document.getElementById('sweep-status').textContent !== '');
+    await page.waitForFunction(
+      () => !['', 'Checking the sweep…'].includes(document.getElementById('sweep-status').textContent),
+    );
     assert.match(await page.textContent('#sweep-status'), /^frequency grid -5:1000:20: expected 0 < lo ≤ hi/);
     assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
   }));

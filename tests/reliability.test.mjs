@@ -334,7 +334,9 @@ test("the sweep form refuses a fractional number of points with the core's messa
     await page.click('[data-tab=analysis]');
     await page.fill('#sweep-form [name=n]', '2.5');
     await page.click('#sweep-run');
-    await page.waitForFunction(() => document.getElementById('sweep-status').textContent !== '');
+    await page.waitForFunction(
+      () => !['', 'Checking the sweep…'].includes(document.getElementById('sweep-status').textContent),
+    );
     assert.equal(await page.textContent('#sweep-status'), 'n = 2.5: expected a whole number of points.');
     assert.equal(await page.evaluate(() => document.body.dataset.sweep), undefined);
   }));

@@ -163,7 +163,7 @@ walkthrough.onBuilt = () => challenge.lock();
 ui.form.addEventListener('fieldsbuilt', () => challenge.lock());
 const plotSets = [plots, walkthrough.plots];
 // The analyses run the scenario the core last described.
-const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.info).encoded });
+const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.info).encoded, client });
 
 const views = createViews({ client, state, plots, walkthrough });
 const presentation = createPresentation({ state, plots, walkthrough });
@@ -237,7 +237,7 @@ const lessons = new LessonPanel({
     pins.clear();
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
-    if (lesson.map) robust.fill(lesson.map);
+    if (lesson.map) robust.fill(lesson.map).catch((e) => say(`The lesson's map was not read: ${e.message}.`));
     window.scrollTo(0, 0);
     await settings.load(lesson.run);
   },

@@ -12,11 +12,6 @@ use crate::params::Lumped;
 use serde::{Deserialize, Serialize};
 
 /// Shape of the set of voltages the inverter can apply.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum Shape {
     /// |u_a|, |u_b| ≤ vmax each: the paper's limit (its corners need a DC link of 2.37·vmax, 946 V for 400 V).

@@ -4,11 +4,6 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Physical parameters of the induction motor and its load (SI units).
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct MotorParams {
     /// Stator resistance R_s (Ω).

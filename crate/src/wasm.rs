@@ -232,24 +232,21 @@ impl Simulation {
         Ok(Float64Array::from(values.as_slice()))
     }
 
-    /// How V(t) compares with the bound (59): `{bound, samples, outside, outside_saturated, ...}`.
+    /// How V(t) compares with the bound (59); undefined when nothing is recorded.
     pub fn stability(&self) -> Result<Option<Ts<crate::record::Stability>>, JsValue> {
         self.inner.stability().as_ref().map(to_js).transpose()
     }
 
     /// RMS tracking and estimation errors, mean NIS and saturation of the run, by the report's
-    /// names where it gives the figure too: `{transient_end, tracking_rms, tracking_peak,
-    /// speed_estimate_error_rms, flux_estimate_error_rms, mean_nis, saturated_share}`, or null
-    /// when nothing is recorded.
+    /// names where it gives the figure too; undefined when nothing is recorded.
     pub fn metrics(&self) -> Result<Option<Ts<crate::record::Metrics>>, JsValue> {
         self.inner.metrics().as_ref().map(to_js).transpose()
     }
 
-    /// Where the start-up transient ends and the figures of the run so far:
-    /// `{transient: {t, reason}, figures: [{name, label, value, unit, window, trend}] | null,
-    /// unreached: [{name, label, index, window, end, text}], warnings: [{kind, text}]}`, the
-    /// figures as `imlab metrics` prints them (null when nothing is recorded), with the figures
-    /// the run had not reached by its end in words.
+    /// Where the start-up transient ends and the figures of the run so far, as `imlab metrics`
+    /// prints them (null when nothing is recorded), with the figures the run had not reached by
+    /// its end in words, the warnings, and what the page derives from the figures (see
+    /// [`crate::record::Report`]).
     pub fn report(&self) -> Result<Ts<crate::record::Report>, JsValue> {
         to_js(&self.inner.report())
     }
@@ -386,7 +383,8 @@ impl Rejected {
 #[derive(Serialize)]
 pub struct Checked {
     /// The description; null when the scenario is refused (a fault that is not a field's too) or, for
-    /// [`recover`], when nothing of it can be kept (a bad `v` or `preset`).
+    /// [`recover`], when nothing of it can be kept (no `v` or `preset`, or a bad one; a text too
+    /// long; motors that are not physical).
     info: Option<Description>,
     /// The fields refused: the one fault that refuses the scenario, or every field [`recover`]
     /// left out.
@@ -421,7 +419,7 @@ pub fn describe_form(
 }
 
 /// `scenario` with its bad fields left out: the description of what is kept and every field
-/// left out; only the fault of a bad `v` or `preset` keeps nothing.
+/// left out; a fault that is no one field's keeps nothing (see [`Checked`]).
 #[wasm_bindgen]
 pub fn recover(scenario: &str) -> Result<Ts<Checked>, JsValue> {
     to_js(&match Scenario::parse_lenient(scenario) {
@@ -573,6 +571,7 @@ impl Comparison {
     /// envelopes over t in [t0, t1]: an array of `Float64Array`s [t, current, pins..., diffs...].
     /// Each run keeps the column (one replay for a run that did not yet), so that the next
     /// overlay of it replays none.
+    #[wasm_bindgen(unchecked_return_type = "Float64Array[]")]
     pub fn overlay(
         &mut self,
         current: &mut Simulation,

@@ -135,7 +135,10 @@ fn a_refused_try_names_its_key_or_field() {
 #[test]
 fn a_figure_takes_a_band_exactly_when_its_bounds_offer_one() {
     for f in imlab::challenge::figures() {
-        let link = format!("c=1&title=t&base=v%3D1%26preset%3Dstep&need.{}=band", f.name);
+        let link = format!(
+            "c=1&title=t&base=v%3D1%26preset%3Dstep&need.{}=band",
+            f.name
+        );
         let (ops, op) = imlab::challenge::criterion_ops(f.name);
         assert!(ops.contains(&op), "{}", f.name);
         assert_eq!(

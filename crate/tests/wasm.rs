@@ -235,7 +235,8 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
         "v=1&preset=step&duration=0.06",
         "plant.rr=0%..10%:2;seeds=1..2",
     );
-    let plan = robust_plan(scenario, text).unwrap();
+    let axes = serde_wasm_bindgen::to_value(&["plant.rr=0%..10%:2", ""]).unwrap();
+    let plan = robust_plan(scenario, axes, Some("1..2".to_string())).unwrap();
     let map = robust::Map::parse(&Scenario::parse(scenario).unwrap(), text).unwrap();
     let runs = js_sys::Array::new();
     let mut core_cells = Vec::new();
@@ -253,7 +254,8 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
         robust_csv(plan, cells.into()).unwrap(),
         robust::map_csv(&map, &core_cells)
     );
-    let e = error_text(robust_plan(scenario, "k1=1..2:2").unwrap_err());
+    let axes = serde_wasm_bindgen::to_value(&["k1=1..2:2"]).unwrap();
+    let e = error_text(robust_plan(scenario, axes, None).unwrap_err());
     assert!(e.contains("not a motor or model parameter"), "{e}");
 }
 

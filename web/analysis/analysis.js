@@ -85,9 +85,14 @@ function peakCell({ peak_current: peak, rated_current: rated, over_rating: above
 const hz = (f) => `${f.toPrecision(4)} Hz`;
 
 export class Analysis {
-  /** @param {{scenario: () => string}} parts */
-  constructor({ scenario }) {
+  /**
+   * `scenario()` is the current scenario's text; `client` the run worker, which reads a sweep's
+   * plan without touching the pool's jobs.
+   * @param {{scenario: () => string, client: import('../client/run-client.js').RunClient}} parts
+   */
+  constructor({ scenario, client }) {
     this.scenario = scenario;
+    this.client = client;
     this.pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
     /** @type {Record<string, VariantSweep>} */
     this.points = {};
@@ -101,9 +106,8 @@ export class Analysis {
    * @param {string} text
    * @returns {Promise<PlanView>}
    */
-  async plan(text) {
-    const [view] = await this.pool.run([{ kind: 'sweep-plan', text }]);
-    return /** @type {PlanView} */ (view);
+  plan(text) {
+    return this.client.job('sweep-plan', { text });
   }
 
   /**
@@ -112,9 +116,8 @@ export class Analysis {
    * @param {string[]} variants
    * @returns {Promise<PlanView>}
    */
-  async planOf(numbers, variants) {
-    const [view] = await this.pool.run([{ kind: 'sweep-plan-of', numbers, variants }]);
-    return /** @type {PlanView} */ (view);
+  planOf(numbers, variants) {
+    return this.client.job('sweep-plan-of', { numbers, variants });
   }
 
   /**

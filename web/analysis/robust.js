@@ -7,46 +7,22 @@ import { $ } from '../ui/page.js';
 import { Pool } from '../client/pool.js';
 import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
-import { fillMapForm, mapFormText } from './map-form.js';
+import { fillMapForm, mapFormParts } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';
 import { runFromLink } from './from-link.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
 
 /**
- * One axis of a map, as the core checks it: its scenario key, its text `KEY=LO..HI:N`, whether it
- * was written in relative errors (then read in per cent), its words for a plot, its values in
- * order, and each value's relative error against the other side's value in the base scenario.
- * @typedef {{key: string, text: string, relative: boolean, label: string, values: number[],
- *   errors: number[]}} MapAxis
- */
-/**
- * One cell of a map's plan: its place and value on each axis, and the scenario that runs there.
- * @typedef {{index: number[], values: number[], scenario: string}} CellPlan
- */
-/**
- * A map as the core checks it: the base scenario, its axes (one or two), its cells (the last
- * axis varying fastest), the seeds run at every cell, the plant steps it takes, and its text.
- * @typedef {{scenario: string, axes: MapAxis[], cells: CellPlan[], seeds: number[], work: number,
- *   text: string}} RobustMap
- */
-/**
- * One run of one cell: its seed, its figures (in the order of the map's figures, NaN where it has
- * none), what went wrong, and why it stopped early, if it did.
- * @typedef {{seed: number, figures: number[], ran_away: boolean, inconsistent: boolean,
- *   over_rating: boolean, unsettled: boolean, failure: string | null}} MapRun
- */
-/**
- * A cell's row as the core summarises its runs: the cell's place, values and scenario, its runs,
- * how many ran away, were inconsistent, passed the rated current or did not settle, and each
- * figure's [minimum, median, maximum] over the runs that completed (NaN when none has it).
- * @typedef {{index: number[], values: number[], scenario: string, runs: number, ran_away: number,
- *   inconsistent: number, over_rating: number, unsettled: number,
- *   stats: [number, number, number][]}} MapCell
- */
-/**
- * A figure a map keeps: its machine name, its words and its unit ('' for ratios).
- * @typedef {{name: string, label: string, unit: string}} MapFigure
+ * A map as the core checks it (its axes, its cells' plans, the seeds, its work and its text), one
+ * run of one cell, a cell's row as the core summarises its runs, and a figure a map keeps: the
+ * core's own types.
+ * @typedef {import('../worker/protocol.js').Jobs['map-plan']['result']['map']} RobustMap
+ * @typedef {RobustMap['axes'][number]} MapAxis
+ * @typedef {RobustMap['cells'][number]} CellPlan
+ * @typedef {import('../worker/protocol.js').Jobs['map-run']['result']} MapRun
+ * @typedef {import('../worker/protocol.js').Jobs['map-cells']['result'][number]} MapCell
+ * @typedef {import('../worker/protocol.js').Jobs['map-plan']['result']['figures'][number]} MapFigure
  */
 /**
  * A map as drawn: the cells kept (`map`), the map asked for (`full`), the rows of the cells that
@@ -115,8 +91,12 @@ export function createRobust({ state, analysis, open, showTab }) {
   const status = $('map-status');
   const progress = $('map-progress', HTMLProgressElement);
 
-  /** @param {string} text */
-  const fill = (text) => fillMapForm(form, text);
+  /**
+   * Fills the form from a map's text, split by the core (in the run worker, so that a map under
+   * way goes on); rejects with the core's message.
+   * @param {string} text
+   */
+  const fill = async (text) => fillMapForm(form, await analysis.client.job('map-parts', { text }));
 
   /**
    * The core's plan of the form's map, or null (said) if it refuses it.
@@ -125,7 +105,7 @@ export function createRobust({ state, analysis, open, showTab }) {
   async function plan() {
     try {
       const info = /** @type {Info} */ (state.info);
-      const [planned] = await pool.run([{ kind: 'map-plan', scenario: info.encoded, text: mapFormText(form) }]);
+      const [planned] = await pool.run([{ kind: 'map-plan', scenario: info.encoded, ...mapFormParts(form) }]);
       return planned;
     } catch (e) {
       status.textContent = `The map was not run: ${/** @type {Error} */ (e).message}.`;

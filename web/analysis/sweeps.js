@@ -45,15 +45,17 @@ export function createSweeps({ state, analysis, framing, showTab }) {
       status.textContent = `workers = ${input('workers').value}: expected a whole number from 1 to 8.`;
       return;
     }
+    runButton.disabled = true;
+    status.textContent = 'Checking the sweep…';
     let view;
     try {
       view = await readSweepForm();
     } catch (e) {
       status.textContent = `${/** @type {Error} */ (e).message}.`;
+      runButton.disabled = false;
       return;
     }
     setFragment('sweep', view.text);
-    runButton.disabled = true;
     cancelButton.disabled = false;
     const started = performance.now();
     status.textContent = 'Sweeping…';

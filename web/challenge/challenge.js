@@ -184,7 +184,7 @@ export class ChallengePanel {
       parts.copied,
       el('details', { className: 'brief', open: true }, [
         el('summary', { textContent: 'The task in full' }),
-        el('div', { className: 'brief-text', textContent: desc.brief.split('\n').slice(2).join('\n').trim() }),
+        el('div', { className: 'brief-text', textContent: desc.task }),
       ]),
     );
     this.relayout();

@@ -7,25 +7,12 @@ import { el } from '../ui/dom.js';
 /** @import { Plots } from '../plots/plots.js' */
 
 /**
- * How a final value was still moving at the end of the run (the core's `Trend`): the slope of the
- * line through the last tenth (per s) over its span `over` (s), the tolerance and scatter about
- * the line, the change the approach still has to go (null when it traces none), and its state.
- * @typedef {{rate: number, over: number, tolerance: number, scatter: number, to_go: number | null,
- *   state: 'settled' | 'changing' | 'drifting' | 'fluctuating' | 'ran away', settled: boolean,
- *   settled_in_last_tenth: boolean}} Trend
- */
-
-/**
- * A figure the run had not reached by its end (the core's `Unreached`): its name and label, its
- * place among the figures (before the figure at `index`), the part of the run it covers, the time
- * of the last sample and the words that stand in place of its value.
- * @typedef {{name: string, label: string, index: number, window: string, end: number, text: string}} Unreached
- */
-
-/**
- * What the figures must not be read without (the core's `Warning`): a run that ran away, or an
- * inconsistent filter, in words.
- * @typedef {{kind: 'runaway' | 'inconsistent', text: string}} Warning
+ * How a final value was still moving at the end of the run, a figure the run had not reached by
+ * its end (in words, in place of its value), and what the figures must not be read without: the
+ * core's `Trend`, `Unreached` and `Warning`.
+ * @typedef {NonNullable<P.RunFigure['trend']>} Trend
+ * @typedef {P.Done['unreached'][number]} Unreached
+ * @typedef {P.Done['warnings'][number]} Warning
  */
 
 // The figures the compact row shows, in this order.

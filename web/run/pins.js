@@ -180,20 +180,19 @@ export function createPins({ client, state, plots }) {
       }
       document.body.dataset.pinning = 'running';
     },
-    pins({ scenarios, legends, rejected }) {
+    pins({ scenarios, legends, rejected, cancelled }) {
       if (state.pinning) {
         state.pinning = false;
         ui.cancel.disabled = !state.running && state.export === null;
-        if (!state.running)
-          ui.status.textContent = rejected.some((r) => /cancel/.test(r.message)) ? 'Pinning cancelled' : 'Pinned';
+        if (!state.running) ui.status.textContent = cancelled ? 'Pinning cancelled' : 'Pinned';
       }
-      document.body.dataset.pinning = rejected.some((r) => /cancel/.test(r.message)) ? 'cancelled' : 'done';
+      document.body.dataset.pinning = cancelled ? 'cancelled' : 'done';
       if (rejected.length)
         say(
-          listed(
-            rejected.map((r) => `could not pin ${excerpt(r.scenario)}: ${r.message}`),
-            '; ',
-          ).replace(/^c/, 'C') + '.',
+          `Could not pin ${listed(
+            rejected.map((r) => `${excerpt(r.scenario)}: ${r.message}`),
+            '; could not pin ',
+          )}.`,
         );
       show(scenarios, legends);
     },

@@ -39,9 +39,12 @@ async function describeLoaded(client, state, text) {
     say(state.notice ?? '', 'info');
     return info;
   } catch (e) {
-    if (!(e instanceof ScenarioRefused)) throw e;
+    if (e instanceof WorkerFailed) throw e;
     // Keep what is valid; name every field that was left out.
-    const { info, rejected } = await client.recover(text);
+    const { info, rejected } = await client.recover(text).catch((again) => {
+      if (again instanceof WorkerFailed) throw again;
+      return { info: null, rejected: [] };
+    });
     if (info !== null) {
       say(
         `Some settings in the address were rejected and left at the preset's values: ${listed(
@@ -51,7 +54,9 @@ async function describeLoaded(client, state, text) {
       );
       return info;
     }
-    say(`The scenario in the address was rejected: ${e.message}. Showing ${DEFAULT_PRESET} instead.`);
+    say(
+      `The scenario in the address was rejected: ${/** @type {Error} */ (e).message}. Showing ${DEFAULT_PRESET} instead.`,
+    );
     return client.describe(DEFAULT_SCENARIO);
   }
 }
@@ -186,14 +191,16 @@ export function createSettings({
       say('');
       return true;
     } catch (e) {
-      if (!(e instanceof ScenarioRefused)) return false;
+      if (e instanceof WorkerFailed) return false;
+      const key = e instanceof ScenarioRefused ? e.key : null;
       markUnrun(true);
-      markInvalid(ui.form, e.key);
+      markInvalid(ui.form, key);
       // The field must be visible to be fixed: open the drawer where the settings live in one.
       if (ui.form.offsetParent === null && ui.form.querySelector('.invalid')) openSettings(true);
-      walkthrough.markKnob(e.key, e.message);
+      const { message } = /** @type {Error} */ (e);
+      walkthrough.markKnob(key, message);
       ui.run.disabled = true;
-      say(e.message);
+      say(message);
       return false;
     }
   }

@@ -4,12 +4,11 @@
 /** @import * as P from '../worker/protocol.js' */
 
 /**
- * The value the scenario holds for `key`, as the codec writes it, or null. `info` may be the
- * page's description (`state.info`, null until a scenario is loaded), which is read only once one
- * is loaded.
+ * The value the scenario holds for `key`, as the codec writes it, or null (also while no
+ * scenario is loaded: `state.info` is null until one is).
  * @param {P.Info | null} info
  * @param {string} key
  */
 export function fieldValue(info, key) {
-  return /** @type {P.Info} */ (info).fields.find((f) => f.key === key)?.value ?? null;
+  return info?.fields.find((f) => f.key === key)?.value ?? null;
 }

@@ -21,7 +21,7 @@ export function challengeFromUrl() {
   const text = location.search.slice(1);
   const keys = [...new URLSearchParams(text).keys()];
   if (keys.length === 1 && keys[0] === 'challenge') return { challenge: text, submission: null };
-  if (keys[0] !== 'c') return null;
+  if (!text.startsWith('c=')) return null;
   return { challenge: text, submission: text };
 }
 

@@ -24,13 +24,15 @@ export function holdPins() {
 const pins = () => /** @type {Comparison} */ (comparison);
 
 /**
- * The pins message, naming each scenario refused or not run.
+ * The pins message, naming each scenario refused or not run, and whether pinning was cancelled.
  * @param {{scenario: string, message: string}[]} rejected
+ * @param {boolean} cancelled
  * @returns {P.Pins}
  */
-function pinsMessage(rejected = []) {
+function pinsMessage(rejected = [], cancelled = false) {
   const sim = heldSim();
-  return { type: 'pins', scenarios: pins().scenarios(), legends: sim ? pins().legends(sim) : [], rejected };
+  const legends = sim ? pins().legends(sim) : [];
+  return { type: 'pins', scenarios: pins().scenarios(), legends, rejected, cancelled };
 }
 
 /**
@@ -82,7 +84,7 @@ export async function pinAll({ scenarios, column }) {
     }
   }
   if (pinning === me) pinning = null;
-  post(pinsMessage(rejected));
+  post(pinsMessage(rejected, me.cancelled));
 }
 
 export function cancelPins() {

@@ -11,8 +11,8 @@ export {};
  * The core's own types, declared in its bindings' `.d.ts` from the Rust structures (tsify): what
  * a reply carries is what the core wrote.
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
- *   Composed, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
- *   Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
+ *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
+ *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
  */
 
@@ -128,7 +128,8 @@ export {};
  * - 'seed': `scenario` run with `seed`, its figures kept every `every` samples.
  * - 'seed-range': the core's seed list.
  * - 'bands', 'summary', 'sweep-csv', 'seeds-csv': summaries and CSVs of finished points and runs.
- * - 'map-plan': the model-error map `text` over `scenario` (its cells and seeds) and the figures
+ * - 'map-parts': a map's text in its parts (axes, seeds), for the form; 'map-plan': the
+ *   model-error map of `axes` and `seeds` over `scenario` (its cells and seeds) and the figures
  *   it keeps; 'map-run' one cell's scenario with one seed; 'map-cells' the cells of `runs`;
  *   'map-csv' the map's CSV.
  * - 'challenge': the description of the challenge a link opens (a challenge link, a submission
@@ -139,7 +140,7 @@ export {};
  *   allowed ranges for a check to try (each [field, value] pairs, the base's empty one first);
  *   'challenge-judge' the verdict on the measures of its runs; 'challenge-run' one
  *   scenario run to its end and measured; 'challenge-builtins' and 'challenge-figures' the
- *   built-in challenges and the figures a criterion may name.
+ *   built-in challenges and the figures a criterion may name, each with the bounds it may take.
  * - 'law-language': the names and functions a step's own law may use; 'law-preview' the law
  *   `text` of `step` as typed (its TeX, or where and why it is refused); 'law-verdicts' the
  *   verdict on each own law of `scenario` against its step's designed dynamics.
@@ -156,7 +157,8 @@ export {};
  *   summary: {req: {points: SweepPoint[]}, result: SweepSummary},
  *   'sweep-csv': {req: {points: SweepPoint[]}, result: string},
  *   'seeds-csv': {req: {results: SeedResult[]}, result: string},
- *   'map-plan': {req: {scenario: string, text: string}, result: {map: RobustMap, figures: FigureInfo[]}},
+ *   'map-parts': {req: {text: string}, result: MapParts},
+ *   'map-plan': {req: {scenario: string, axes: string[], seeds: string | null}, result: {map: RobustMap, figures: FigureInfo[]}},
  *   'map-run': {req: {scenario: string, seed: number}, result: MapRun},
  *   'map-cells': {req: {map: RobustMap, runs: MapRun[]}, result: Cell[]},
  *   'map-csv': {req: {map: RobustMap, cells: Cell[]}, result: string},
@@ -168,7 +170,7 @@ export {};
  *   'challenge-judge': {req: {text: string, runs: Measures[]}, result: ChallengeVerdict},
  *   'challenge-run': {req: {scenario: string}, result: Measures},
  *   'challenge-builtins': {req: {}, result: BuiltinView[]},
- *   'challenge-figures': {req: {}, result: FigureInfo[]},
+ *   'challenge-figures': {req: {}, result: CriterionFigure[]},
  *   'law-language': {req: {}, result: Language},
  *   'law-preview': {req: {step: number, text: string}, result: Preview},
  *   'law-verdicts': {req: {scenario: string}, result: LawVerdict[]},
@@ -224,7 +226,8 @@ export {};
  */
 /**
  * @typedef {{type: 'pin-progress', index: number, count: number, done: number, total: number}} PinProgress
- * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: {scenario: string, message: string}[]}} Pins
+ * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: {scenario: string, message: string}[],
+ *   cancelled: boolean}} Pins
  */
 /**
  * The overlay's samples: times, the current run, each pin, then each pin's difference to the run.

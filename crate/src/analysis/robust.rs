@@ -434,18 +434,63 @@ impl Map {
     /// Parses the map's text `AXIS[;AXIS][;seeds=A..B]` (AXIS as in [`Axis::parse`]; seeds 1..10
     /// when not given) against `base`, then checks it (see [`Map::plan`]).
     pub fn parse(base: &Scenario, text: &str) -> Result<Map, String> {
-        let mut axes = Vec::new();
-        let mut seeds = None;
+        let parts = MapParts::split(text)?;
+        Map::from_parts(base, &parts.axes, parts.seeds.as_deref())
+    }
+
+    /// The map of its parts as written (a form's): each axis's text (empty ones left out) and
+    /// the seeds' `A..B` (1..10 when none), read against `base` and checked as [`Map::parse`]
+    /// reads a map's text.
+    pub fn from_parts(
+        base: &Scenario,
+        axes: &[String],
+        seeds: Option<&str>,
+    ) -> Result<Map, String> {
+        let axes = axes
+            .iter()
+            .filter(|a| !a.trim().is_empty())
+            .map(|a| Axis::parse(base, a))
+            .collect::<Result<Vec<_>, _>>()?;
+        let seeds = match seeds {
+            Some(range) => parse_seeds(range)?,
+            None => (1..=10).collect(),
+        };
+        Map::plan(base, axes, seeds)
+    }
+}
+
+/// A map's text in its parts, as written: the axes' texts and the seeds' `A..B`, if given.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MapParts {
+    /// Each axis's text, in order.
+    pub axes: Vec<String>,
+    /// The seeds' range as written after `seeds=`, if given.
+    pub seeds: Option<String>,
+}
+
+impl MapParts {
+    /// Splits a map's text `AXIS[;AXIS…][;seeds=A..B]` at its `;`, reading no part but for
+    /// seeds given twice.
+    pub fn split(text: &str) -> Result<MapParts, String> {
+        let mut parts = MapParts {
+            axes: Vec::new(),
+            seeds: None,
+        };
         for part in text.split(';').filter(|p| !p.trim().is_empty()) {
             match part.trim().strip_prefix("seeds=") {
-                Some(_) if seeds.is_some() => {
+                Some(_) if parts.seeds.is_some() => {
                     return Err("seeds are given twice: give them once".to_string())
                 }
-                Some(range) => seeds = Some(parse_seeds(range)?),
-                None => axes.push(Axis::parse(base, part)?),
+                Some(range) => parts.seeds = Some(range.to_string()),
+                None => parts.axes.push(part.to_string()),
             }
         }
-        Map::plan(base, axes, seeds.unwrap_or_else(|| (1..=10).collect()))
+        Ok(parts)
     }
 }
 

@@ -10,11 +10,6 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// How one frequency is measured.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct SweepSettings {
     /// Amplitude of the sinusoidal speed reference (rad/s).

@@ -4,7 +4,7 @@
 
 use super::sweep::{checked_grid, SweepSettings};
 use crate::scenario::{Scenario, ScenarioError};
-use crate::text::excerpt;
+use crate::text::{excerpt, short};
 use serde::{Deserialize, Serialize};
 
 /// A variant of the scenario a sweep compares: its name in the plan, its label on a plot, and the
@@ -199,16 +199,18 @@ impl SweepPlan {
         Ok(())
     }
 
-    /// The plan's text, as [`SweepPlan::parse`] reads it.
+    /// The plan's text, as [`SweepPlan::parse`] reads it: each number in its shortest form
+    /// (scientific where that is long), −0 as 0.
     pub fn text(&self) -> String {
+        let number = |v: f64| short(v + 0.0);
         format!(
             "{},{},{},{},{},{},{}",
-            self.lo,
-            self.hi,
+            number(self.lo),
+            number(self.hi),
             self.n,
-            self.amp,
-            self.offset,
-            self.duration,
+            number(self.amp),
+            number(self.offset),
+            number(self.duration),
             self.variants.join(".")
         )
     }
@@ -227,7 +229,7 @@ impl SweepPlan {
         checked_grid(self.lo, self.hi, self.n)
     }
 
-    /// What a reader of the plan's results must know: today, that an IFOC variant swept near
+    /// What a reader of the plan's results must know: that an IFOC variant swept near
     /// standstill measures nothing meaningful.
     pub fn caveats(&self) -> Vec<String> {
         let ifoc = self.variants.iter().any(|v| v.starts_with("ifoc"));
@@ -239,6 +241,68 @@ impl SweepPlan {
             )]
         } else {
             Vec::new()
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_plan_reads_back_from_its_text() {
+        let plan = SweepPlan::parse("10,1000,20,0.02,-0,0.2,euler.rk4").unwrap();
+        assert_eq!(plan.text(), "10,1000,20,0.02,0,0.2,euler.rk4");
+        assert_eq!(SweepPlan::parse(&plan.text()).unwrap(), plan);
+        assert_eq!(plan.frequencies().unwrap().len(), 20);
+        let far = SweepPlan::parse("1,1e300,2,0.02,0,0.2,euler").unwrap();
+        assert_eq!(far.text(), "1,1e300,2,0.02,0,0.2,euler");
+    }
+
+    #[test]
+    fn a_bad_plan_names_its_first_bad_part() {
+        for (text, message) in [
+            ("10,1000,20", "expected 7 parts"),
+            ("x,1000,2.5,0.02,0,0.2,euler", "lo = 'x' is not a number"),
+            (
+                "10,1000,2.5,0.02,0,0.2,euler",
+                "n = 2.5: expected a whole number of points",
+            ),
+            ("-5,1000,20,0.02,0,0.2,euler", "frequency grid -5:1000:20"),
+            (
+                "10,1000,20,0,0,0.2,euler",
+                "amp = 0: expected 0 < A ≤ 1000 rad/s",
+            ),
+            (
+                "10,1000,20,0.02,0,30,euler",
+                "duration = 30: expected 0 < D ≤ 20 s",
+            ),
+            ("10,1000,20,0.02,0,0.2,", "no variant"),
+            (
+                "10,1000,20,0.02,0,0.2,euler.constructor",
+                "variant 'constructor' is unknown",
+            ),
+        ] {
+            let e = SweepPlan::parse(text).unwrap_err();
+            assert!(e.starts_with(message), "{text}: {e}");
+        }
+    }
+
+    #[test]
+    fn an_ifoc_variant_near_standstill_carries_its_caveat() {
+        let near = SweepPlan::parse("10,1000,20,0.02,0,0.2,euler.ifocpi").unwrap();
+        assert_eq!(near.caveats().len(), 1);
+        let about = SweepPlan::parse("10,1000,20,0.02,40,0.2,ifoc").unwrap();
+        assert!(about.caveats().is_empty());
+        let backstepping = SweepPlan::parse("10,1000,20,0.02,0,0.2,euler").unwrap();
+        assert!(backstepping.caveats().is_empty());
+    }
+
+    #[test]
+    fn every_variant_makes_a_scenario_of_the_preset() {
+        let base = Scenario::parse("v=1&preset=step").unwrap();
+        for v in SWEEP_VARIANTS {
+            variant_scenario(&base, v).unwrap();
         }
     }
 }

@@ -13,15 +13,19 @@ impl Challenge {
     /// start from, what may change (with ranges, units and the base's values), each criterion
     /// with its bound and unit, and the variants.
     pub fn brief(&self) -> String {
-        let base = self.base_scenario();
-        let mut out = String::new();
         let title = if self.title.is_empty() {
             "Design challenge".to_string()
         } else {
             escape_invisible(&self.title)
         };
-        let _ = writeln!(out, "{title}");
-        let _ = writeln!(out, "\nStart from the scenario {}", self.base);
+        format!("{title}\n\n{}", self.task())
+    }
+
+    /// The brief without its title: from the scenario to start from to the variants.
+    pub fn task(&self) -> String {
+        let base = self.base_scenario();
+        let mut out = String::new();
+        let _ = writeln!(out, "Start from the scenario {}", self.base);
         if self.allow.is_empty() {
             let _ = writeln!(
                 out,

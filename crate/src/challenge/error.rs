@@ -4,11 +4,6 @@ use serde::Serialize;
 use std::fmt;
 
 /// What kind of refusal an error is: the grading table's status names it.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ErrorKind {

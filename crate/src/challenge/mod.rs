@@ -40,7 +40,8 @@ pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use error::{ChallengeError, ErrorKind};
 pub use judge::{
-    criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures, Verdict,
+    criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
+    Verdict,
 };
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
@@ -62,11 +63,6 @@ pub const MAX_VARIANTS: usize = 20;
 pub const MAX_CRITERIA: usize = 20;
 
 /// What a student may set a field to.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Allowed {
@@ -98,11 +94,6 @@ impl Allowed {
 }
 
 /// One field the student may set.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Allow {
     /// The scenario field.
@@ -112,11 +103,6 @@ pub struct Allow {
 }
 
 /// How a criterion bounds its figure.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 #[serde(tag = "op", content = "bound", rename_all = "lowercase")]
 pub enum Op {
@@ -143,11 +129,6 @@ impl Op {
 }
 
 /// One criterion: a figure and its bound.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Criterion {
     /// The figure's name, e.g. `settling_time`.
@@ -157,11 +138,6 @@ pub struct Criterion {
 }
 
 /// The robustness variants of a challenge.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Variants {
@@ -192,11 +168,6 @@ impl Variants {
 }
 
 /// A design task: the scenario to start from, what may change and the criteria.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object, rename = "ChallengeSpec")
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Challenge {
     /// Short title.

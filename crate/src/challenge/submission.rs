@@ -8,15 +8,9 @@ use crate::text::{excerpt, short};
 use serde::Serialize;
 
 /// A challenge with the values a student set.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Submission {
     /// The challenge answered.
-    #[cfg_attr(target_arch = "wasm32", tsify(type = "ChallengeSpec"))]
     pub challenge: Challenge,
     /// The fields set and their values (canonical codec text), in the challenge's allow order.
     pub tries: Vec<(String, String)>,

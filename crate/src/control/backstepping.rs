@@ -19,11 +19,6 @@ use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Design gains of the controller (closed-loop error rates, 1/s) and the robust terms.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Gains {
     /// k1: closed-loop rate of the speed error z1 (1/s).

@@ -27,11 +27,6 @@ use crate::params::MotorParams;
 use serde::{Deserialize, Serialize};
 
 /// Bandwidths of the IFOC loops and its current limit.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct IfocTuning {
     /// Current-loop bandwidth α_c/2π (Hz).

@@ -4,11 +4,6 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// A speed reference ω_d(t) (rad/s).
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Reference {

@@ -11,11 +11,6 @@ use serde::{Deserialize, Serialize};
 mod five;
 
 /// How the EKF predicts x̂_{k|k−1} from x̂_{k−1|k−1} over one sample.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Predictor {
@@ -26,11 +21,6 @@ pub enum Predictor {
 }
 
 /// Tuning of the EKF.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EkfConfig {
     /// Predictor discretisation.

@@ -32,11 +32,6 @@ pub const CODEC_VERSION: u32 = 1;
 /// about 2 KiB, so 16 KiB leaves room without letting a pasted megabyte block the parser.
 pub const MAX_SCENARIO_BYTES: usize = 16 * 1024;
 /// An extra load torque applied from a given time on, unknown to the controller and observer.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct LoadStep {
     /// Time the step is applied (s).
@@ -47,11 +42,6 @@ pub struct LoadStep {
 
 /// What a real drive adds between the controller and the motor, all off by default (the paper's
 /// idealised loop: u_k applied at t_k, ±vmax per component, ideal averaged voltages).
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Drive {
     /// Computation delay: u_k, computed from the sample at t_k, is applied over
@@ -71,11 +61,6 @@ pub struct Drive {
 }
 
 /// Which controller drives the motor.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum ControllerKind {
@@ -86,11 +71,6 @@ pub enum ControllerKind {
 }
 
 /// Every setting of one simulation run.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Scenario {
     /// Name of the preset this scenario starts from.

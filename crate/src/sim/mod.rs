@@ -309,8 +309,6 @@ pub struct Snapshot {
     pub k: usize,
     /// Column names, in CSV order.
     pub columns: &'static [&'static str],
-    /// What each column is, with its unit.
-    pub docs: &'static [&'static str],
     /// What each column is, without its unit.
     pub meanings: Vec<&'static str>,
     /// Each column's unit ("" for none).
@@ -353,7 +351,6 @@ impl Simulation {
         Snapshot {
             k,
             columns: COLUMNS,
-            docs: COLUMN_DOCS,
             meanings: COLUMN_DOCS.iter().map(|d| meaning_and_unit(d).0).collect(),
             units: COLUMN_DOCS.iter().map(|d| meaning_and_unit(d).1).collect(),
             values: row.values().to_vec(),

@@ -104,6 +104,8 @@ pub struct ChallengeView {
     /// Each variant's override string (`seed=2`, `model.j=0.016`).
     variants: Vec<String>,
     brief: String,
+    /// The brief without its title (see [`crate::challenge::Challenge::task`]).
+    task: String,
     /// [`crate::challenge::Challenge::fingerprint`]: `7KQ2-M9XD`.
     fingerprint: String,
     /// The built-in this challenge passes for while it differs from it
@@ -261,6 +263,7 @@ impl Challenge {
             need,
             variants: c.run_labels().into_iter().skip(1).collect(),
             brief: c.brief(),
+            task: c.task().trim_end().to_string(),
             fingerprint: c.fingerprint(),
             edited_from: c.edited_builtin(),
         })

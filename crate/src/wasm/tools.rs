@@ -150,12 +150,25 @@ pub fn seeds_csv(
     Ok(analysis::seeds_csv(&results))
 }
 
-/// The model-error map `text` (`AXIS[;AXIS][;seeds=A..B]`, as `imlab robust` reads its
-/// options) of `scenario`, checked and bounded before any run: its axes, cells and seeds.
+/// A map's text (`AXIS[;AXIS][;seeds=A..B]`, as `imlab robust` reads its options) in its parts,
+/// for a form to show; throws for seeds given twice.
 #[wasm_bindgen]
-pub fn robust_plan(scenario: &str, text: &str) -> Result<Ts<robust::Map>, JsValue> {
+pub fn robust_parts(text: &str) -> Result<Ts<robust::MapParts>, JsValue> {
+    to_js(&robust::MapParts::split(text).map_err(js_error)?)
+}
+
+/// The model-error map of `scenario` with the axes `axes` (each `KEY=LO..HI:N`; empty ones left
+/// out) and the seeds `seeds` (`A..B`; 1..10 when null), checked and bounded before any run: its
+/// axes, cells and seeds.
+#[wasm_bindgen]
+pub fn robust_plan(
+    scenario: &str,
+    #[wasm_bindgen(unchecked_param_type = "string[]")] axes: JsValue,
+    seeds: Option<String>,
+) -> Result<Ts<robust::Map>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;
-    to_js(&robust::Map::parse(&s, text).map_err(js_error)?)
+    let axes: Vec<String> = read_js(axes)?;
+    to_js(&robust::Map::from_parts(&s, &axes, seeds.as_deref()).map_err(js_error)?)
 }
 
 /// One run of a map's cell: its scenario as the plan wrote it, with noise seed `seed`.

@@ -25,11 +25,6 @@ use crate::text::excerpt;
 use serde::{Deserialize, Serialize};
 
 /// A class's file, read: the submissions to grade, in file order.
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Class {
     /// The headers of the columns carried to the grades (those of a CSV export but the links'),

@@ -27,11 +27,6 @@ use serde::Serialize;
 
 /// One graded submission: its line, the link, and the status with the verdict (None unless the
 /// runs were judged).
-#[cfg_attr(
-    target_arch = "wasm32",
-    derive(tsify::Tsify),
-    tsify(missing_as_null, hashmap_as_object)
-)]
 #[derive(Clone, Debug, PartialEq, Serialize)]
 pub struct Graded {
     /// The line of the class's file the submission starts on.
@@ -41,7 +36,6 @@ pub struct Graded {
     /// `ok`, `malformed: …`, `refused: …`, `another challenge` or `run failed: …`.
     pub status: String,
     /// The verdict, when the runs were judged.
-    #[cfg_attr(target_arch = "wasm32", tsify(type = "ChallengeVerdict | null"))]
     pub verdict: Option<Verdict>,
 }
 
