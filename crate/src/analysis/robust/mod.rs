@@ -7,8 +7,11 @@
 use crate::record::WarningKind;
 use crate::scenario::{Scenario, MAX_SEED};
 use crate::sim::Simulation;
-use crate::text::{csv, excerpt, short};
+use crate::text::{excerpt, short};
 use serde::{Deserialize, Serialize};
+
+mod table;
+pub use table::{csv_preamble, csv_row, map_csv};
 
 /// The figures a map keeps of each run, by their `imlab metrics` names.
 pub const MAP_FIGURES: &[&str] = &[
@@ -315,7 +318,7 @@ impl Axis {
 }
 
 /// `v` to 12 significant digits: the rounding of a product such as 4.95 × 1.05 removed.
-fn rounded(v: f64) -> f64 {
+pub(super) fn rounded(v: f64) -> f64 {
     format!("{v:.11e}").parse().unwrap_or(v)
 }
 
@@ -573,97 +576,6 @@ pub fn summarise(cell: &CellPlan, runs: &[MapRun]) -> Cell {
             })
             .collect(),
     }
-}
-
-/// The header of a map's CSV.
-fn csv_header(map: &Map) -> String {
-    let mut cols: Vec<String> = Vec::new();
-    for a in &map.axes {
-        let other = if a.key.starts_with("plant.") {
-            "model"
-        } else {
-            "plant"
-        };
-        cols.push(a.key.clone());
-        cols.push(format!("{}_vs_{other}_pct", a.key));
-    }
-    cols.extend(
-        [
-            "runs",
-            "ran_away",
-            "inconsistent",
-            "over_rating",
-            "unsettled",
-        ]
-        .map(String::from),
-    );
-    for f in MAP_FIGURES {
-        for s in ["min", "median", "max"] {
-            cols.push(format!("{f}_{s}"));
-        }
-    }
-    cols.push("scenario".to_string());
-    cols.join(",") + "\n"
-}
-
-/// A number for the CSV: empty when it is not finite.
-fn field(v: f64) -> String {
-    if v.is_finite() {
-        v.to_string()
-    } else {
-        String::new()
-    }
-}
-
-/// One row of a map's CSV.
-pub fn csv_row(map: &Map, cell: &Cell) -> String {
-    let mut cols: Vec<String> = Vec::new();
-    for ((a, v), &i) in map.axes.iter().zip(&cell.values).zip(&cell.index) {
-        cols.push(field(*v));
-        cols.push(field(rounded(100.0 * a.errors[i])));
-    }
-    cols.extend(
-        [
-            cell.runs,
-            cell.ran_away,
-            cell.inconsistent,
-            cell.over_rating,
-            cell.unsettled,
-        ]
-        .map(|n| n.to_string()),
-    );
-    for s in &cell.stats {
-        cols.extend(s.iter().map(|v| field(*v)));
-    }
-    cols.push(cell.scenario.clone());
-    csv::line(&cols) + "\n"
-}
-
-/// The whole CSV of a map: a comment line with the map's text and seeds, the header, one row a
-/// cell. When `cells` holds only some of the map's cells (it was stopped), a second comment line
-/// says how many.
-pub fn map_csv(map: &Map, cells: &[Cell]) -> String {
-    let mut out = csv_preamble(map);
-    if cells.len() < map.cells.len() {
-        let at = out.find('\n').map_or(0, |i| i + 1);
-        out.insert_str(
-            at,
-            &format!(
-                "# {} of {} cells: the map was stopped before the others ran\n",
-                cells.len(),
-                map.cells.len()
-            ),
-        );
-    }
-    for c in cells {
-        out.push_str(&csv_row(map, c));
-    }
-    out
-}
-
-/// The comment line and header that start a map's CSV.
-pub fn csv_preamble(map: &Map) -> String {
-    format!("# {} over {}\n{}", map.scenario, map.text, csv_header(map))
 }
 
 #[cfg(test)]
