@@ -146,8 +146,22 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
         (1, "-si1 + dwd + a3*wd + a2 - 400*z1", "decays at 400 /s, not 1200 /s"),
         // step's k1s1 = 1200 − 0.05 written as its number: right here, wrong for other values.
         (1, "-si1 + dwd + a3*wd + a2 - 1199.95*z1", "written as its number"),
-        (3, "-(-2*a8*(x4h*x4h + x5h*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*z3", "missing"),
-        (3, "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h)) - k3*z3", "missing"),
+        // A missing term is named with one sign, its own minus folded in.
+        (
+            3,
+            "-(-2*a8*(x4h*x4h + x5h*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*z3",
+            "the term +2·a10·(xt2·x4h + xt3·x5h) of the paper's law is missing",
+        ),
+        (
+            3,
+            "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h)) - k3*z3",
+            "the term −2·(x4h·si4 + x5h·si5) of the paper's law is missing",
+        ),
+        (
+            3,
+            "-(-2*a10*(xt2*x4h + xt3*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*z3",
+            "the term +2·a8·(x4h·x4h + x5h·x5h) of the paper's law is missing",
+        ),
         (
             3,
             "-(-2*a8*(x4h*x4h + x5h*x5h) - 2*a10*(xt2*x4h + xt3*x5h) + 2*(x4h*si4 + x5h*si5)) - k3*(x4h*x4h + x5h*x5h - psi_d*psi_d)",
@@ -159,6 +173,9 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
         assert!(!v.designed, "{text}: {}", v.text);
         assert!(v.text.contains(needle), "{text}: {}", v.text);
     }
+    // n_p = a9 = 2 on the paper's motor: a law that writes one for the other is refused.
+    let swapped = PAPER[2].replace("-2*a8", "-a9*a8");
+    assert!(!verdict(3, &swapped).designed);
     // Step 2: a missing −z1, k2 for k2s1 and the printed (31)'s typos.
     let v2 = PAPER[1];
     let missing_z1 = v2
@@ -170,6 +187,20 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
     assert!(verdict(2, &v2.replace("(-k2s1*z2", "(-k2*z2"))
         .text
         .contains("k2 where (36) has k2s1"));
+    let robust = imlab::control::law::check(
+        2,
+        &v2.replace(" + -robust*h2*h2/(4*eps2)*z2", ""),
+        &Scenario::parse("step").unwrap().model.lumped().unwrap(),
+        &Scenario::parse("v=1&preset=step&robust=1").unwrap().gains,
+    )
+    .unwrap();
+    assert!(
+        robust
+            .text
+            .contains("the term −robust·h2·h2/(4·eps2)·z2 of the paper's law is missing"),
+        "{}",
+        robust.text
+    );
     assert!(verdict(2, &v2.replace("a3*dwd", "a3*wd"))
         .text
         .contains("printed in (31)"));

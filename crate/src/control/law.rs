@@ -329,7 +329,8 @@ fn draw(rng: &mut Rng, model: &Lumped, gains: &Gains, vary: bool) -> (Backsteppi
         a6: pos(model.a6),
         a7: pos(model.a7),
         a8: pos(model.a8),
-        a9: model.a9,
+        // n_p too: a law that writes 2 for a9 is right only for a two-pole-pair motor.
+        a9: pos(model.a9),
         a10: pos(model.a10),
         b: pos(model.b),
         j: model.j,
@@ -529,11 +530,7 @@ fn single_term(terms: &[(f64, &Node)], rows: &[Vec<f64>], diffs: &[f64]) -> Opti
         if !fits {
             continue;
         }
-        let term = format!(
-            "{}{}",
-            if *sign < 0.0 { "−" } else { "+" },
-            formula::text(node)
-        );
+        let term = signed(*sign, &formula::text(node));
         let what = if (c + 1.0).abs() < 1e-6 {
             format!("the term {term} of the paper's law is missing")
         } else if (c + 2.0).abs() < 1e-6 {
@@ -549,6 +546,17 @@ fn single_term(terms: &[(f64, &Node)], rows: &[Vec<f64>], diffs: &[f64]) -> Opti
         return Some(what);
     }
     None
+}
+
+/// A term of the paper's law with its sign in front: one sign, the term's own minus folded into
+/// it (−2·a8·… rather than +−2·a8·…).
+fn signed(sign: f64, text: &str) -> String {
+    let (minus, body) = match text.strip_prefix('−').or_else(|| text.strip_prefix('-')) {
+        Some(body) => (true, body),
+        None => (false, text),
+    };
+    let negative = (sign < 0.0) != minus;
+    format!("{}{body}", if negative { "−" } else { "+" })
 }
 
 /// With the scenario's own parameters and gains, a law that is the paper's plus c·z_i gives

@@ -191,10 +191,30 @@ impl Parser<'_> {
             None => Err(FormulaError::new(
                 at,
                 len,
-                format!("unknown name '{id}' (see the list of names)"),
+                match unmeasured(id) {
+                    Some(why) => format!("'{id}' is {why}"),
+                    None => format!("unknown name '{id}' (see the list of names)"),
+                },
             )),
         }
     }
+}
+
+/// Why a name of the true state or of an unmeasured error is not in the language: a sensorless
+/// controller has only the measured currents and its own estimates.
+fn unmeasured(id: &str) -> Option<&'static str> {
+    Some(match id {
+        "x1" => {
+            "the true speed, which a sensorless controller does not have: write its estimate x1h"
+        }
+        "x4" | "x5" => "a true rotor flux, which no drive measures: write its estimate x4h or x5h",
+        "xt1" | "xt4" | "xt5" => {
+            "an estimation error of an unmeasured state, which a sensorless controller cannot \
+             know: the paper leaves such terms in d̃2 and d̃4, which the robust term \
+             (robust·h²/(4ε)·z) bounds"
+        }
+        _ => return None,
+    })
 }
 
 /// Parses `text` as the law of step `step` (1–4).
@@ -243,6 +263,13 @@ mod tests {
             ("1 + 2)", 1, 6, "no '('"),
             ("2 x1h", 1, 3, "expected an operator"),
             ("foo + 1", 1, 1, "unknown name 'foo'"),
+            ("x1 + 1", 1, 1, "'x1' is the true speed"),
+            (
+                "2*xt4",
+                1,
+                3,
+                "'xt4' is an estimation error of an unmeasured state",
+            ),
             ("z2 + 1", 1, 1, "not known in step 1"),
             ("1 + z4", 3, 5, "not known in step 3"),
             ("sqrt(1, 2)", 1, 1, "takes 1 argument"),
