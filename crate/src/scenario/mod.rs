@@ -321,15 +321,20 @@ pub fn compose(preset: &str, fields: &[(String, String)]) -> String {
 mod tests {
     #[test]
     fn a_forms_fields_compose_to_the_scenario_the_codec_reads() {
-        let fields = [
-            ("k1".to_string(), "600".to_string()),
-            ("law.v1".to_string(), "-k1s1*z1 + a3*x1h & 1".to_string()),
-        ];
-        let text = super::compose("step", &fields);
-        let s = Scenario::parse(&text).unwrap_err();
-        assert!(s.to_string().contains("law.v1"), "{s}");
-        let fields = [("k1".to_string(), "600".to_string())];
-        let s = Scenario::parse(&super::compose("step", &fields)).unwrap();
+        let field = |k: &str, v: &str| (k.to_string(), v.to_string());
+        // A value keeps its `+`, its spaces and its `=`: the law read back is the law typed.
+        let law = "-si1 + dwd + a3*wd + a2 - k1s1*z1";
+        let s = Scenario::parse(&super::compose(
+            "step",
+            &[field("k1", "600"), field("law.v1", law)],
+        ))
+        .unwrap();
+        assert_eq!(s.gains.k1, 600.0);
+        assert_eq!(s.law[0].as_deref(), Some(law));
+        // A `&` inside a value stays in that value: the refusal names its field, not a piece.
+        let e = Scenario::parse(&super::compose("step", &[field("law.v1", "z1 & 1")])).unwrap_err();
+        assert_eq!(e.key(), Some("law.v1"), "{e}");
+        let s = Scenario::parse(&super::compose("step", &[field("k1", "600")])).unwrap();
         assert_eq!(s.encode(), "v=1&preset=step&k1=600");
     }
 

@@ -211,7 +211,7 @@ fn unmeasured(id: &str) -> Option<&'static str> {
         "xt1" | "xt4" | "xt5" => {
             "an estimation error of an unmeasured state, which a sensorless controller cannot \
              know: the paper leaves such terms in d̃2 and d̃4, which the robust term \
-             (robust·h²/(4ε)·z) bounds"
+             (robust·h²/(4ε)·z) is designed against"
         }
         _ => return None,
     })
