@@ -125,9 +125,21 @@ fn a_finite_law_that_drives_a_papers_step_past_every_bound_ends_the_run_as_diver
     );
 }
 
+/// The verdict of step `step` written as `text`, the other steps the paper's.
 fn verdict(step: u8, text: &str) -> imlab::control::law::Verdict {
+    chain(&[(step, text)]).pop().unwrap()
+}
+
+/// The verdicts of the steps written in `laws`, the other steps the paper's, on `step`.
+fn chain(laws: &[(u8, &str)]) -> Vec<imlab::control::law::Verdict> {
     let s = Scenario::parse("step").unwrap();
-    check(step, text, &s.model.lumped().unwrap(), &s.gains).unwrap()
+    let mut texts: [Option<String>; 4] = Default::default();
+    for (step, text) in laws {
+        texts[*step as usize - 1] = Some(text.to_string());
+    }
+    laws.iter()
+        .map(|(step, _)| check(*step, &texts, &s.model.lumped().unwrap(), &s.gains).unwrap())
+        .collect()
 }
 
 #[test]
@@ -187,9 +199,11 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
     assert!(verdict(2, &v2.replace("(-k2s1*z2", "(-k2*z2"))
         .text
         .contains("k2 where (36) has k2s1"));
+    let mut texts: [Option<String>; 4] = Default::default();
+    texts[1] = Some(v2.replace(" + -robust*h2*h2/(4*eps2)*z2", ""));
     let robust = imlab::control::law::check(
         2,
-        &v2.replace(" + -robust*h2*h2/(4*eps2)*z2", ""),
+        &texts,
         &Scenario::parse("step").unwrap().model.lumped().unwrap(),
         &Scenario::parse("v=1&preset=step&robust=1").unwrap().gains,
     )
@@ -204,6 +218,39 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
     assert!(verdict(2, &v2.replace("a3*dwd", "a3*wd"))
         .text
         .contains("printed in (31)"));
+    // The printed (31) copied whole, both typos at once.
+    assert!(verdict(2, &v2.replace("a3*dwd + da2", "a3*wd + a2"))
+        .text
+        .contains("with both of its typos"));
+    // The robust terms written without their switch, which is off on `step`.
+    assert!(verdict(2, &v2.replace("-robust*h2", "-h2"))
+        .text
+        .contains("without the switch robust"));
+    assert!(verdict(4, &PAPER[3].replace("-robust*h4", "-h4"))
+        .text
+        .contains("without the switch robust"));
+    // Step 3: the factor 2 dropped throughout, and one injection missing.
+    let v3 = PAPER[2];
+    let halved = v3.replace("-2*a8", "-a8").replace("- 2*a10", "- a10").replace("+ 2*(x4h", "+ (x4h");
+    assert!(verdict(3, &halved).text.contains("drops the factor 2 throughout ψ3"));
+    let one = verdict(3, &v3.replace("2*(x4h*si4 + x5h*si5)", "2*(x4h*si4)"));
+    assert!(
+        one.text.contains(
+            "the part −2·x5h·si5 of the term −2·(x4h·si4 + x5h·si5) of the paper's law is missing"
+        ),
+        "{}",
+        one.text
+    );
+    // Step 4: half of k3·(−k3·z3 + z4), f̂4 for x̂̇4 and si4 missing from the factor of x̂̇4.
+    let half = verdict(4, &PAPER[3].replace("k3*(-k3*z3 + z4)", "k3*z4"));
+    assert!(half.text.contains("the part +k3·k3·z3 of the term"), "{}", half.text);
+    let drift = PAPER[3]
+        .replace("*dx4h", "*(-a8*x4h - a9*x1h*x5h + a10*x2h)")
+        .replace("*dx5h", "*(-a8*x5h + a9*x1h*x4h + a10*x3h)");
+    assert!(verdict(4, &drift).text.contains("the model's drifts f̂4, f̂5"));
+    assert!(verdict(4, &PAPER[3].replace("2*(si4 + a10*x2h", "2*(a10*x2h"))
+        .text
+        .contains("the factor of x̂̇4 leaves out si4"));
     // Step 4: a missing −z3 and the forgotten k3·(−k3·z3 + z4).
     let v4 = PAPER[3];
     assert!(verdict(4, &v4.replace(") - z3 +", ") +"))
@@ -216,6 +263,34 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
     )
     .text
     .contains("missing"));
+}
+
+#[test]
+fn step_2_and_step_4_are_judged_on_the_students_own_earlier_step() {
+    // k1 where (28) has k1s1: then ż1 = −(k1 + a3)·z1 + z2, and a v2 that differentiates this v1
+    // with that ż1 gives step 2's designed dynamics.
+    let v1 = "-si1 + dwd + a3*wd + a2 - k1*z1";
+    let v2 = PAPER[1].replace("-k1s1*(-k1*z1 + z2)", "-k1*(-(k1 + a3)*z1 + z2)");
+    let [one, two] = <[_; 2]>::try_from(chain(&[(1, v1), (2, &v2)])).unwrap();
+    assert!(!one.designed && one.text.contains("k1 where (28) has k1s1"), "{}", one.text);
+    assert!(two.designed && two.text.contains("with your own v1"), "{}", two.text);
+    // The paper's v2 after that v1 differentiates the paper's v1, not the student's.
+    let paper_after = chain(&[(1, v1), (2, PAPER[1])]).pop().unwrap();
+    assert!(!paper_after.designed, "{}", paper_after.text);
+    // After the paper's v1 written as the student's own, the paper's v2 holds.
+    let both = chain(&[(1, "dwd - si1 + a2 + a3*x1h - k1*z1"), (2, PAPER[1])]);
+    assert!(both.iter().all(|v| v.designed), "{both:?}");
+    // Step 4 on a v3 with twice the gain: ż3 = −2·k3·z3 + z4.
+    let v3 = PAPER[2].replace("- k3*z3", "- 2*k3*z3");
+    let v4 = PAPER[3].replace("k3*(-k3*z3 + z4)", "2*k3*(-2*k3*z3 + z4)");
+    let [three, four] = <[_; 2]>::try_from(chain(&[(3, &v3), (4, &v4)])).unwrap();
+    assert!(!three.designed, "{}", three.text);
+    assert!(four.designed && four.text.contains("with your own v3"), "{}", four.text);
+    // A v1 whose rate needs the voltage (it reads x2): step 2 is judged on the paper's v1, and
+    // says so.
+    let v1 = "-si1 + dwd + a3*wd + a2 - k1s1*z1 + 0*x2";
+    let two = chain(&[(1, v1), (2, PAPER[1])]).pop().unwrap();
+    assert!(two.designed && two.text.contains("reads x2"), "{}", two.text);
 }
 
 #[test]
@@ -235,6 +310,10 @@ fn a_challenge_allows_a_law_and_grades_it_by_its_residual_like_any_other_field()
     assert!(submit("dwd - si1 + a2 + a3*x1h - k1*z1").pass());
     let wrong = submit("-si1 + dwd + a3*wd + a2 - k1*z1");
     assert!(!wrong.pass() && wrong.status == "ok", "{wrong:?}");
+    // A gain written as its number is right on this motor only: the check's drawn parameter
+    // values fail it, as they fail the verdict.
+    let number = submit("-si1 + dwd + a3*wd + a2 - 1199.95*z1");
+    assert!(!number.pass() && number.status == "ok", "{number:?}");
     // A formula that does not parse is refused with the field and the reason.
     let bad = submit("-si1 + foo");
     assert!(
@@ -249,4 +328,30 @@ fn a_challenge_allows_a_law_and_grades_it_by_its_residual_like_any_other_field()
         .unwrap_err()
         .to_string();
     assert!(e.contains("allow.law.v1=formula"), "{e}");
+}
+
+#[test]
+fn a_run_judges_step_2_on_the_students_own_v1_as_the_verdict_does() {
+    let pct = |t: &str| t.bytes().map(|b| format!("%{b:02X}")).collect::<String>();
+    // z1 decaying at k1 − 100 /s: a v1 off by 100·z1, which the run's step changes a lot.
+    let v1 = "-si1 + dwd + a3*wd + a2 - k1s1*z1 + 100*z1";
+    let largest_r2 = |v2: &str| {
+        let link = format!(
+            "v=1&preset=step&duration=0.05&law.v1={}&law.v2={}",
+            pct(v1),
+            pct(v2)
+        );
+        let mut sim = Simulation::traced(&Scenario::parse(&link).unwrap()).unwrap();
+        sim.run().unwrap();
+        // Columns t, r1, r2, r3, r4.
+        let columns = sim.law_residuals(0.0, 0.05, 200).unwrap();
+        columns[2].iter().fold(0.0f64, |m, r| m.max(r.abs()))
+    };
+    let own = largest_r2(&PAPER[1].replace(
+        "-k1s1*(-k1*z1 + z2)",
+        "-(k1s1 - 100)*(-(k1 - 100)*z1 + z2)",
+    ));
+    // The paper's v2 differentiates the paper's v1: its residual is the chain's correction.
+    let paper = largest_r2(PAPER[1]);
+    assert!(own <= 1e-6 * paper, "{own} against {paper}");
 }

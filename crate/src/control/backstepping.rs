@@ -11,7 +11,7 @@
 //! The unknown disturbances d̃2 and d̃4 (which vanish when x̃1 = x̃4 = x̃5 = 0) are left out of the
 //! feedforward. Names follow the paper, hence `non_snake_case` is not needed but short names are.
 
-use crate::control::formula::{at, SIGNALS};
+use crate::control::formula::SIGNALS;
 use crate::control::RefSample;
 use crate::model::State;
 use crate::params::Lumped;
@@ -215,14 +215,6 @@ fn chosen<C: Custom>(
     } else {
         Err(ControlError::Law { step, value })
     }
-}
-
-/// The index of signal `name` in the signal vector, found when compiled.
-macro_rules! sig {
-    ($name:literal) => {{
-        const I: usize = at($name);
-        I
-    }};
 }
 
 impl fmt::Display for ControlError {

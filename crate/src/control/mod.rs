@@ -2,7 +2,16 @@
 //! terms d̃2 and d̃4 evaluated from the simulated truth, the Lyapunov bound of Theorem 4.6, and the
 //! laws a student writes for its steps.
 
+/// The index of signal `name` in the signal vector, found when compiled.
+macro_rules! sig {
+    ($name:literal) => {{
+        const I: usize = $crate::control::formula::at($name);
+        I
+    }};
+}
+
 mod backstepping;
+mod chain;
 mod disturbance;
 pub mod formula;
 mod ifoc;

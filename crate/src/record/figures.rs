@@ -203,7 +203,7 @@ pub const FIGURE_INFO: &[FigureInfo] = &[
     ),
     fig(
         "law_residual",
-        "largest residual of your laws' designed dynamics, relative to the paper's law",
+        "largest residual of your laws' designed dynamics, over the run and at the verdict's drawn states, relative to the paper's law",
         "",
     ),
 ];

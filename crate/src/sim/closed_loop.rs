@@ -157,6 +157,11 @@ pub(super) struct Loop {
     /// With them, each step's largest |v_i − v_i,paper| and largest |v_i,paper| over the samples
     /// run (a replay runs the same samples again, which leaves the largest values as they are).
     law_peaks: Cell<[[f64; 2]; 4]>,
+    /// With them, the largest difference of a law from the one that gives its step's designed
+    /// dynamics at the verdict's drawn states and parameter values (see
+    /// [`crate::control::law::check`]): what the run's own samples cannot tell, as a parameter
+    /// written as its number.
+    law_drawn: Option<f64>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -197,12 +202,7 @@ fn custom_terms(
     residuals: &Cell<[f64; 4]>,
     peaks: &Cell<[[f64; 2]; 4]>,
 ) -> Result<Terms, SimError> {
-    let kept = law::Residuals {
-        laws,
-        last: Cell::new([0.0; 4]),
-        paper: Cell::new([0.0; 4]),
-        failed: Cell::new(None),
-    };
+    let kept = law::Residuals::new(laws);
     let terms = controller.control_with(&input, adapted.as_ref(), &kept);
     let (r, paper) = (kept.last.get(), kept.paper.get());
     residuals.set(r);
@@ -313,6 +313,9 @@ impl Loop {
             },
             law_residuals: Cell::new([0.0; 4]),
             law_peaks: Cell::new([[0.0; 2]; 4]),
+            law_drawn: law::verdicts(&scenario.law, &model, &scenario.gains)
+                .ok()
+                .and_then(|v| v.iter().map(|v| v.worst).reduce(f64::max)),
             model,
             limit: scenario.limit(),
             steps: scenario.steps(),
@@ -335,20 +338,22 @@ impl Loop {
         self.law_residuals.get()
     }
 
-    /// The largest residual of the own laws' designed dynamics over the samples run, relative to
-    /// the paper's law: max over the steps with an own law of max|v_i − v_i,paper| / max|v_i,paper|
-    /// (None without own laws, or before a sample).
+    /// The largest residual of the own laws' designed dynamics, relative to the paper's law: over
+    /// the samples run, max over the steps with an own law of max|v_i − v_i,ref| / max|v_i,paper|,
+    /// and at the verdict's drawn states and parameter values, whichever is larger (None without
+    /// own laws, or before a sample).
     pub(super) fn law_residual(&self) -> Option<f64> {
         let laws = self.laws.as_ref().filter(|_| self.has_laws())?;
         let peaks = self.law_peaks.get();
-        (1..=4u8)
+        let run = (1..=4u8)
             .filter(|&step| laws.step(step).is_some())
             .map(|step| {
                 let [r, paper] = peaks[step as usize - 1];
                 r / paper
             })
             .reduce(f64::max)
-            .filter(|v| !v.is_nan())
+            .filter(|v| !v.is_nan())?;
+        Some(self.law_drawn.map_or(run, |drawn| run.max(drawn)))
     }
 
     /// Whether the scenario has its own laws (that drive the motor).

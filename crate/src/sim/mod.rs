@@ -279,7 +279,7 @@ impl Simulation {
                 label: info.label,
                 value,
                 unit: info.unit,
-                window: "the whole run".to_string(),
+                window: "the whole run and the verdict's drawn states".to_string(),
                 trend: None,
             });
         }

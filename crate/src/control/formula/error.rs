@@ -19,7 +19,7 @@ pub struct FormulaError {
 }
 
 impl FormulaError {
-    pub(super) fn new(at: usize, len: usize, reason: impl Into<String>) -> FormulaError {
+    pub(crate) fn new(at: usize, len: usize, reason: impl Into<String>) -> FormulaError {
         FormulaError {
             at,
             len: len.max(1),

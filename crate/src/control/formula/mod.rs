@@ -9,8 +9,8 @@
 //!
 //! One job per file: `names` (the signals a formula may read), `functions` (the functions it may
 //! call), `error` (why a formula is refused), `tree` (the parsed formula and its terms), `lexer`
-//! and `parser` (text to tree), `program` (the compiled form), `eval` (its value each sample) and
-//! `print` (the tree as plain text and as TeX).
+//! and `parser` (text to tree), `program` (the compiled form), `eval` (its value each sample),
+//! `rate` (its time derivative, by forward mode) and `print` (the tree as plain text and as TeX).
 
 mod error;
 mod eval;
@@ -20,6 +20,7 @@ mod names;
 mod parser;
 mod print;
 mod program;
+mod rate;
 mod tree;
 
 pub use error::FormulaError;
@@ -28,7 +29,7 @@ pub use names::{at, index, Name, NAMES, SIGNALS};
 pub use parser::parse;
 pub use print::{tex, text};
 pub use program::Program;
-pub use tree::{terms, BinOp, Node};
+pub use tree::{monomials, terms, BinOp, Node};
 
 /// Longest formula accepted (characters): the paper's v4 written out takes 283.
 pub const MAX_CHARS: usize = 2000;

@@ -1,0 +1,455 @@
+//! The verdict on a step's law: its designed dynamics checked at drawn states and parameter
+//! values, and what a wrong law misses.
+
+use super::mistakes::mistakes;
+use super::{step_values, Laws, DESIGNED, OUTPUTS, PAPER};
+use crate::control::backstepping::{Adapted, Backstepping, ControlInput, Gains};
+use crate::control::chain;
+use crate::control::formula::{self, FormulaError, Node, Program, SIGNALS};
+use crate::control::RefSample;
+use crate::params::Lumped;
+use crate::rng::Rng;
+
+/// How a step's law compares with its designed dynamics.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object, rename = "LawVerdict")
+)]
+#[derive(Clone, Debug, PartialEq, serde::Serialize)]
+pub struct Verdict {
+    /// The step (1–4).
+    pub step: u8,
+    /// The law checked, as written.
+    pub law: String,
+    /// Whether it gives the designed dynamics (to rounding) at every drawn state.
+    pub designed: bool,
+    /// The largest |v_i − v_i,paper| over the drawn states, relative to the size of the paper's
+    /// terms there.
+    pub worst: f64,
+    /// What it gets wrong, when it can be named.
+    pub finding: Option<String>,
+    /// The verdict in words.
+    pub text: String,
+}
+
+/// States drawn for the verdict.
+pub const DRAWS: usize = 200;
+/// The relative residual below which a law gives the designed dynamics: rounding in a sum of
+/// about 30 terms, with a margin.
+pub const TOLERANCE: f64 = 1e-9;
+
+/// A drawn state: estimates, measurements, residuals, observer gains, reference and flux target;
+/// with `vary`, every lumped parameter and gain too, each the scenario's own scaled by a factor
+/// between 0.5 and 2 (the small ones, as a3, raised first), so that no term of the law is small
+/// beside the others.
+fn draw(rng: &mut Rng, model: &Lumped, gains: &Gains, vary: bool) -> (Backstepping, ControlInput) {
+    // A parameter scaled by 0.5–2 (when `vary`), a signal of either sign up to `scale`.
+    let mut pos = |v: f64| {
+        if vary {
+            v * (0.5 + 1.5 * rng.uniform())
+        } else {
+            v
+        }
+    };
+    let p = Lumped {
+        a1: pos(model.a1),
+        a2: pos(if vary {
+            model.a2.abs().max(1.0)
+        } else {
+            model.a2
+        }),
+        a3: pos(if vary { model.a3.max(0.01) } else { model.a3 }),
+        a5: pos(model.a5),
+        a6: pos(model.a6),
+        a7: pos(model.a7),
+        a8: pos(model.a8),
+        // n_p too: a law that writes 2 for a9 is right only for a two-pole-pair motor.
+        a9: pos(model.a9),
+        a10: pos(model.a10),
+        b: pos(model.b),
+        j: model.j,
+    };
+    let g = Gains {
+        k1: pos(gains.k1),
+        k2: pos(gains.k2),
+        k3: pos(gains.k3),
+        k4: pos(gains.k4),
+        robust: gains.robust,
+        eps2: pos(gains.eps2),
+        h2: pos(if vary { gains.h2.max(1.0) } else { gains.h2 }),
+        eps4: pos(gains.eps4),
+        h4: pos(if vary { gains.h4.max(1.0) } else { gains.h4 }),
+    };
+    let mut v = |scale: f64| scale * (2.0 * rng.uniform() - 1.0);
+    let x_hat = [v(100.0), v(5.0), v(5.0), v(0.7), v(0.7)];
+    let y = [x_hat[1] + v(0.1), x_hat[2] + v(0.1)];
+    let input = ControlInput {
+        x_hat,
+        y,
+        l: std::array::from_fn(|_| [v(1e3), v(1e3)]),
+        residual: [y[0] - x_hat[1], y[1] - x_hat[2]],
+        speed_ref: RefSample {
+            value: v(100.0),
+            d1: v(1e3),
+            d2: v(1e4),
+        },
+        psi_d: 0.5 + v(0.25).abs(),
+    };
+    (Backstepping::new(p, g), input)
+}
+
+/// One drawn state as step `step` saw it.
+struct Drawn {
+    /// The signals the step read.
+    s: [f64; SIGNALS],
+    /// The signals the step before read.
+    before: [f64; SIGNALS],
+    /// The law's v_i.
+    mine: f64,
+    /// The v_i that gives the designed dynamics: the paper's, corrected for the student's own
+    /// earlier step.
+    reference: f64,
+    /// The paper's v_i at the same signals.
+    paper: f64,
+    /// The correction's rate not known: the earlier step is taken as the paper's.
+    unchained: bool,
+}
+
+/// Step `step` of `laws` at one state drawn around `model` and `gains` (with `vary`, every
+/// parameter and gain drawn too, and dâ2/dt).
+fn sample(
+    step: u8,
+    laws: &Laws,
+    rng: &mut Rng,
+    model: &Lumped,
+    gains: &Gains,
+    vary: bool,
+) -> Drawn {
+    let (controller, input) = draw(rng, model, gains, vary);
+    // dâ2/dt drawn too: the law must hold with the EKF's load state as without it.
+    let adapted = vary.then(|| Adapted {
+        model: *controller.model(),
+        d_a2: 1e3 * (2.0 * rng.uniform() - 1.0),
+    });
+    let (seen, _) = step_values(&controller, &input, adapted.as_ref(), laws);
+    let i = step as usize - 1;
+    let law = laws.step(step).expect("the step has its own law");
+    let s = seen.signals[i];
+    let before = if i > 0 { seen.signals[i - 1] } else { s };
+    let paper = seen.paper[i];
+    let (reference, unchained) = match laws.chained(step) {
+        Some(_) => {
+            let c = laws.correction(step, &before);
+            if c.is_finite() {
+                (paper + c, false)
+            } else {
+                (paper, true)
+            }
+        }
+        None => (paper, false),
+    };
+    Drawn {
+        mine: law.program.eval(&s),
+        s,
+        before,
+        reference,
+        paper,
+        unchained,
+    }
+}
+
+/// Checks the law of step `step` in `texts` (one per step; None: the paper's) against its
+/// designed dynamics at [`DRAWS`] states drawn around the scenario's `model` and `gains`. Step 2
+/// (4) is judged on the student's own v1 (v3) when `texts` has one; the other steps are the
+/// paper's.
+pub fn check(
+    step: u8,
+    texts: &[Option<String>; 4],
+    model: &Lumped,
+    gains: &Gains,
+) -> Result<Verdict, FormulaError> {
+    let i = step as usize - 1;
+    let mut own: [Option<String>; 4] = Default::default();
+    own[i] = texts[i].clone();
+    if step % 2 == 0 {
+        own[i - 1] = texts[i - 1].clone();
+    }
+    let laws = Laws::parse(&own).map_err(|(_, e)| e)?;
+    if laws.step(step).is_none() {
+        return Err(FormulaError::new(
+            0,
+            0,
+            "the step has no law of its own".to_string(),
+        ));
+    }
+    let paper = formula::parse(PAPER[i], step).expect("the paper's law parses");
+    let mistakes = mistakes(step);
+    let terms = formula::terms(&paper);
+    let term_programs: Vec<(f64, Program)> = terms
+        .iter()
+        .map(|(sign, node)| (*sign, Program::new(node).expect("a term compiles")))
+        .collect();
+    let parts = parts(&terms);
+    let mut rng = Rng::new(SEED);
+    let mut worst = 0.0f64;
+    let mut diffs = Vec::with_capacity(DRAWS);
+    let mut rows = Vec::with_capacity(DRAWS);
+    let mut mistake_match = vec![true; mistakes.len()];
+    let mut unchained = None;
+    for _ in 0..DRAWS {
+        let d = sample(step, &laws, &mut rng, model, gains, true);
+        let s = &d.s;
+        if d.unchained && unchained.is_none() {
+            let (before, _) = laws.chained(step).expect("chained");
+            unchained = Some(chain::without_rate(before, &d.before));
+        }
+        // The size of the paper's law here: the largest of its terms.
+        let scale = term_programs
+            .iter()
+            .map(|(_, t)| t.eval(s).abs())
+            .fold(f64::MIN_POSITIVE, f64::max);
+        let diff = d.mine - d.reference;
+        worst = worst.max(if diff.is_nan() {
+            f64::INFINITY
+        } else {
+            diff.abs() / scale
+        });
+        for (m, (p, _)) in mistake_match.iter_mut().zip(&mistakes) {
+            *m &= (p.eval(s) - d.paper - diff).abs() <= TOLERANCE * scale;
+        }
+        diffs.push(diff / scale);
+        rows.push(
+            parts
+                .iter()
+                .map(|p| p.sign * p.program.eval(s) / scale)
+                .collect::<Vec<_>>(),
+        );
+    }
+    let (symbol, unit) = OUTPUTS[i];
+    let designed = worst <= TOLERANCE;
+    let before = if i > 0 { OUTPUTS[i - 1].0 } else { "" };
+    // Whose earlier step the step is judged on.
+    let (on, theirs) = match (laws.chained(step), &unchained) {
+        (Some(_), None) => (format!(" with your own {before}"), "the one that gives them"),
+        _ => (String::new(), "the paper's"),
+    };
+    let caveat = unchained.map_or_else(String::new, |names| {
+        format!(
+            " Your {before} reads {names}, whose rate the loop does not have before this step chooses the voltage, so this step is judged on the paper's {before}."
+        )
+    });
+    if designed {
+        return Ok(Verdict {
+            step,
+            law: texts[i].clone().unwrap_or_default(),
+            designed,
+            worst,
+            finding: None,
+            text: format!(
+                "Your step {step} gives the designed dynamics {}{on}: your {symbol} equals {theirs} to {:.0e} of its size at {DRAWS} drawn states and parameter values.{caveat}",
+                DESIGNED[i],
+                worst.max(f64::EPSILON)
+            ),
+        });
+    }
+    let finding = mistakes
+        .iter()
+        .zip(&mistake_match)
+        .find(|(_, m)| **m)
+        .map(|((_, why), _)| why.to_string())
+        .or_else(|| single_term(&parts, &rows, &diffs))
+        .or_else(|| rate_of_z(&laws, step, model, gains));
+    let text = format!(
+        "Your step {step} does not give the designed dynamics {}{on}: your {symbol} ({unit}) differs from {theirs} by up to {} of its size at {DRAWS} drawn states. {}{caveat}",
+        DESIGNED[i],
+        three(worst),
+        finding.as_deref().map_or_else(
+            || "The difference is not one term of the paper's law: compare your law with the step's derivation term by term.".to_string(),
+            |f| format!("The difference: {f}."),
+        )
+    );
+    Ok(Verdict {
+        step,
+        law: texts[i].clone().unwrap_or_default(),
+        designed,
+        worst,
+        finding,
+        text,
+    })
+}
+
+/// The verdict of every step with its own law in `texts`, checked with the scenario's `model`
+/// and `gains` (step 2 and 4 on the student's own earlier step); a law that does not parse is
+/// refused with its step.
+pub fn verdicts(
+    texts: &[Option<String>; 4],
+    model: &Lumped,
+    gains: &Gains,
+) -> Result<Vec<Verdict>, (u8, FormulaError)> {
+    Laws::parse(texts)?;
+    let mut out = Vec::new();
+    for (i, text) in texts.iter().enumerate() {
+        let step = i as u8 + 1;
+        if text.as_ref().is_some_and(|t| !t.trim().is_empty()) {
+            out.push(check(step, texts, model, gains).map_err(|e| (step, e))?);
+        }
+    }
+    Ok(out)
+}
+
+/// The drawn states' seed: the same draws for every check.
+const SEED: u64 = 20_150_601;
+
+/// A term of the paper's law, or a part of one multiplied out, that a difference may be.
+struct Part {
+    sign: f64,
+    program: Program,
+    /// "the term +x" or "the part +y of the term +x".
+    label: String,
+}
+
+/// The paper's terms, then the parts of those that are products of sums (2·(a + b)·c gives
+/// 2·a·c and 2·b·c): one of them missing, as one injection, is named too.
+fn parts(terms: &[(f64, &Node)]) -> Vec<Part> {
+    let mut out: Vec<Part> = terms
+        .iter()
+        .map(|(sign, node)| Part {
+            sign: *sign,
+            program: Program::new(node).expect("a term compiles"),
+            label: format!("the term {}", signed(*sign, &formula::text(node))),
+        })
+        .collect();
+    for (sign, node) in terms {
+        let monomials = formula::monomials(node);
+        if monomials.len() < 2 {
+            continue;
+        }
+        let whole = signed(*sign, &formula::text(node));
+        for (s, m) in monomials {
+            out.push(Part {
+                sign: sign * s,
+                program: Program::new(&m).expect("a part compiles"),
+                label: format!(
+                    "the part {} of the term {whole}",
+                    signed(sign * s, &formula::text(&m))
+                ),
+            });
+        }
+    }
+    out
+}
+
+/// A difference that is one of the paper's terms or parts times a constant: that term missing
+/// (−1), with its sign flipped (−2) or twice (+1), or scaled.
+fn single_term(parts: &[Part], rows: &[Vec<f64>], diffs: &[f64]) -> Option<String> {
+    for (j, part) in parts.iter().enumerate() {
+        let (mut dot, mut norm) = (0.0, 0.0);
+        for (row, d) in rows.iter().zip(diffs) {
+            dot += row[j] * d;
+            norm += row[j] * row[j];
+        }
+        if norm == 0.0 {
+            continue;
+        }
+        let c = dot / norm;
+        let fits = rows
+            .iter()
+            .zip(diffs)
+            .all(|(row, d)| (d - c * row[j]).abs() <= 1e3 * TOLERANCE);
+        if !fits {
+            continue;
+        }
+        let label = &part.label;
+        let what = if (c + 1.0).abs() < 1e-6 {
+            format!("{label} of the paper's law is missing")
+        } else if (c + 2.0).abs() < 1e-6 {
+            format!("{label} has the wrong sign")
+        } else if (c - 1.0).abs() < 1e-6 {
+            format!("{label} is there twice")
+        } else {
+            format!("{label} is {} times what it should be", three(1.0 + c))
+        };
+        return Some(what);
+    }
+    None
+}
+
+/// A term of the paper's law with its sign in front: one sign, the term's own minus folded into
+/// it (−2·a8·… rather than +−2·a8·…).
+fn signed(sign: f64, text: &str) -> String {
+    let (minus, body) = match text.strip_prefix('−').or_else(|| text.strip_prefix('-')) {
+        Some(body) => (true, body),
+        None => (false, text),
+    };
+    let negative = (sign < 0.0) != minus;
+    format!("{}{body}", if negative { "−" } else { "+" })
+}
+
+/// With the scenario's own parameters and gains, a law that is the paper's plus c·z_i gives
+/// ż_i = −(k_i − c)·z_i + (coupling): the rate its error decays at, against the designed one.
+fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<String> {
+    let i = step as usize - 1;
+    let z = formula::index(["z1", "z2", "z3", "z4"][i]).expect("named");
+    let mut rng = Rng::new(SEED);
+    let (mut dot, mut norm, mut points) = (0.0, 0.0, Vec::with_capacity(DRAWS));
+    for _ in 0..DRAWS {
+        let d = sample(step, laws, &mut rng, model, gains, false);
+        let (zi, diff) = (d.s[z], d.mine - d.reference);
+        dot += zi * diff;
+        norm += zi * zi;
+        points.push((zi, diff, d.paper.abs()));
+    }
+    let c = dot / norm;
+    let fits = norm > 0.0
+        && points
+            .iter()
+            .all(|(zi, d, size)| (d - c * zi).abs() <= 1e-6 * size.max(1.0));
+    if !fits {
+        return None;
+    }
+    // The same law at this scenario's values, not at the values drawn.
+    if points
+        .iter()
+        .all(|(_, d, size)| d.abs() <= TOLERANCE * size.max(1.0))
+    {
+        return Some(
+            "it equals the paper's law at this scenario's parameter values and gains only: a \
+             parameter or a gain is written as its number where the law needs its name"
+                .to_string(),
+        );
+    }
+    let robust = |h: f64, eps: f64| {
+        if gains.robust {
+            h * h / (4.0 * eps)
+        } else {
+            0.0
+        }
+    };
+    let designed = [
+        gains.k1,
+        gains.k2 + robust(gains.h2, gains.eps2),
+        gains.k3,
+        gains.k4 + robust(gains.h4, gains.eps4),
+    ][i];
+    Some(format!(
+        "it is the paper's law plus {}·z{step}: with this scenario's parameters your z{step} decays at {} /s, not {} /s; check the gain and the sign of your z{step} terms",
+        three(c),
+        three(designed - c),
+        three(designed)
+    ))
+}
+
+/// `v` to three significant digits, as plain decimals where they are short (400, 0.833, 1.2e-5).
+fn three(v: f64) -> String {
+    if v == 0.0 || !v.is_finite() {
+        return format!("{v}");
+    }
+    let e = v.abs().log10().floor() as i32;
+    if !(-3..6).contains(&e) {
+        return format!("{v:.2e}");
+    }
+    let factor = 10f64.powi(2 - e);
+    format!("{}", (v * factor).round() / factor)
+}
+
