@@ -52,6 +52,22 @@ test('a law of step 1 is typeset as it is typed, run at 20 kHz, judged, and its 
     assert.match(await page.textContent('#section-step1 .law-verdict'), /gives the designed dynamics/);
     await page.waitForFunction(() => window.imlab.walkthrough.charts.length === window.imlab.walkthrough.defs.length);
     assert.ok((await residuals(page)).every((r) => r === 0));
+
+    // The settings' own-law field shows the same verdict.
+    await page.click('details[data-group=law] > summary');
+    await page.waitForFunction(() => {
+      const [own, settings] = ['#section-step1 .law-verdict', '#settings .law-field .law-verdict'].map(
+        (s) => document.querySelector(s)?.textContent,
+      );
+      return own === settings && /gives the designed dynamics/.test(own ?? '');
+    });
+    // A formula edited since the run, here one that does not parse, is not what the verdict is
+    // about: the verdict says which law it is of, and is neither good nor bad.
+    await field(page).fill('-si1 + dwd + foo*wd');
+    await page.waitForSelector('#section-step1 .law-verdict.stale');
+    const stale = await page.textContent('#section-step1 .law-verdict');
+    assert.ok(stale.startsWith('Not the law typed above') && stale.includes(`v1 = ${PAPER_V1}`), stale);
+    assert.equal(await page.locator('#section-step1 .law-verdict.good').count(), 0);
   }));
 
 test('a formula that does not parse is marked at its place, and the rest of the scenario stays', () =>

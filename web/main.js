@@ -141,6 +141,7 @@ const plots = new Plots(ui.plots, PLOTS, {
 });
 const walkthrough = new Walkthrough({
   container: $('walkthrough'),
+  form: ui.form,
   inspectBox: ui.inspect,
   knob: (/** @type {string} */ key) => settings.knob(key),
   onCompare: () => views.compare(),

@@ -1,6 +1,7 @@
 // Settings form generated from the core's field table (key, unit, range, meaning, value).
 // Text from the URL or the core only ever reaches the page through textContent and values.
 import { el } from '../ui/dom.js';
+import { verdictLine } from '../teaching/law-editor.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -115,7 +116,14 @@ function fill(form, details) {
   for (const f of fieldsOf(info, /** @type {string} */ (details.dataset.group))) {
     const control = fieldControl(f, 'field');
     control.hidden = !f.acts;
-    details.append(control);
+    // A step's own law: its verdict after a run, as in the walkthrough's step.
+    const step = f.formula;
+    if (step) {
+      const scope = el('div', { className: 'law-field' }, [control, verdictLine(step)]);
+      scope.dataset.lawScope = '';
+      scope.hidden = control.hidden;
+      details.append(scope);
+    } else details.append(control);
   }
 }
 

@@ -142,7 +142,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     const id = ++state.runId;
     state.ranScenario = state.info.encoded;
     state.ranLaws = state.info.fields.some(
-      (/** @type {{formula: boolean, value: string | null}} */ f) => f.formula && f.value,
+      (f) => !!f.formula && !!f.value,
     );
     markRun(state.info.encoded);
     fromRun = document.activeElement === ui.run; // started from Run: focus returns there

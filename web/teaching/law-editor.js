@@ -15,6 +15,7 @@ import { tex } from './tex.js';
 export function lawBlock(law) {
   const box = el('div', { className: 'law' });
   box.dataset.step = String(law.step);
+  box.dataset.lawScope = '';
   const knobs = el('div', { className: 'knobs' });
   knobs.dataset.keys = `law.v${law.step}`;
   box.append(
@@ -22,11 +23,7 @@ export function lawBlock(law) {
     el('p', { textContent: law.intro }),
     knobs,
     el('div', { className: 'law-preview', id: `law-preview-${law.step}` }),
-    el('p', {
-      className: 'law-verdict',
-      role: 'status',
-      textContent: `No law of your own yet: this step runs the paper’s ${law.output}.`,
-    }),
+    verdictLine(law.step),
     el('details', { className: 'law-names' }, [el('summary', { textContent: 'The names and functions you can use' })]),
   );
   return box;
@@ -70,18 +67,57 @@ export function showPreview(box, preview, text) {
 }
 
 /**
- * Shows each step's verdict (the core's, for the run shown), or that the step is the paper's.
- * @param {HTMLElement} container
+ * The line that shows step `step`'s verdict. It belongs to the nearest element marked
+ * `data-law-scope` around it, which holds the step's formula input.
+ * @param {number} step
+ */
+export function verdictLine(step) {
+  const line = el('p', {
+    className: 'law-verdict',
+    role: 'status',
+    textContent: `No law of your own yet: this step runs the paper’s v${step}.`,
+  });
+  line.dataset.lawStep = String(step);
+  return line;
+}
+
+/**
+ * Shows in every verdict line under `root` its step's verdict (the core's, for the run shown), or
+ * that the step is the paper's. A verdict on a law other than the one now typed beside it (edited
+ * since, or not parsed) is shown as the last run's, with the law it is about, and neither good nor
+ * bad: it does not describe what is typed.
+ * @param {ParentNode} root
  * @param {Jobs['law-verdicts']['result']} verdicts
  */
-export function showVerdicts(container, verdicts) {
-  for (const box of /** @type {NodeListOf<HTMLElement>} */ (container.querySelectorAll('.law'))) {
-    const step = Number(box.dataset.step);
+export function showVerdicts(root, verdicts) {
+  for (const line of /** @type {NodeListOf<HTMLElement>} */ (root.querySelectorAll('.law-verdict'))) {
+    const step = Number(line.dataset.lawStep);
     const verdict = verdicts.find((v) => v.step === step);
-    const line = /** @type {Element} */ (box.querySelector('.law-verdict'));
-    line.textContent = verdict?.text ?? `No law of your own yet: this step runs the paper’s v${step}.`;
-    line.classList.toggle('good', verdict?.designed === true);
-    line.classList.toggle('bad', verdict?.designed === false);
+    const typed = line.closest('[data-law-scope]')?.querySelector('input.formula');
+    const stale = !!verdict && typed instanceof HTMLInputElement && typed.value.trim() !== verdict.law.trim();
+    line.textContent = !verdict
+      ? `No law of your own yet: this step runs the paper’s v${step}.`
+      : stale
+        ? `Not the law typed above: the run shown, and this verdict and the residual plot, are of v${step} = ${verdict.law}. ${verdict.text}`
+        : verdict.text;
+    line.classList.toggle('stale', stale);
+    line.classList.toggle('good', !stale && verdict?.designed === true);
+    line.classList.toggle('bad', !stale && verdict?.designed === false);
+  }
+}
+
+/**
+ * Says in each verdict line under `root` whose step has a law typed: `text`.
+ * @param {ParentNode} root
+ * @param {string} text
+ */
+export function sayOfTypedLaws(root, text) {
+  for (const line of /** @type {NodeListOf<HTMLElement>} */ (root.querySelectorAll('.law-verdict'))) {
+    const typed = line.closest('[data-law-scope]')?.querySelector('input.formula');
+    if (typed instanceof HTMLInputElement && typed.value.trim()) {
+      line.textContent = text;
+      line.classList.remove('good', 'bad', 'stale');
+    }
   }
 }
 

@@ -40,7 +40,7 @@ export const SECTIONS = [
       t`\dot x_4 = -a_8x_4 - a_9x_1x_5 + a_{10}x_2,\quad \dot x_5 = -a_8x_5 + a_9x_1x_4 + a_{10}x_3`,
       t`\sigma = L_s - \tfrac{M^2}{L_r},\ \alpha = \tfrac{R_r}{L_r},\ \beta = \tfrac{M}{\sigma L_r},\ a_1 = \tfrac{3n_pM}{2JL_r},\ a_5 = \alpha\beta,\ a_6 = n_p\beta,\ a_7 = \tfrac{R_s}{\sigma} + \alpha\beta M,\ a_8 = \alpha,\ a_9 = n_p,\ a_{10} = \alpha M,\ b = \tfrac1\sigma`,
     ],
-    note: 'σ here is in henry: the paper’s σ = L_s − M²/L_r is the stator’s leakage inductance, where many texts write the dimensionless σ = 1 − M²/(L_sL_r).',
+    note: 'σ here is in henry: the paper’s σ = L_s − M²/L_r is the total leakage inductance seen from the stator (the transient inductance), not the stator’s own leakage L_s − M; many texts write the dimensionless σ = 1 − M²/(L_sL_r) instead.',
     lumped: true,
     plot: {
       title: 'Speed and flux',
@@ -68,7 +68,7 @@ export const SECTIONS = [
       t`K_k = P_{k|k-1}C^TS_k^{-1}\ (17),\qquad \hat x_{k|k} = \hat x_{k|k-1} + K_k\tilde y_k\ (18),\qquad L = K_k/T_s\ (20)`,
       t`P_{k|k} = (I - K_kC)P_{k|k-1}(I - K_kC)^T + K_kRK_k^T\quad\text{(Joseph form of (19))}`,
     ],
-    note: 'Printed (13) predicts with u_{k|k−1}; the voltage that acted over the last sample is u_{k−1}, which (10) uses and so does the filter here. The Joseph form writes the covariance update (19) as a sum of two symmetric terms, each positive semidefinite, so that rounding cannot make P lose either property.',
+    note: 'Printed (13) predicts with u_{k|k−1}; the voltage that acted over the last sample is u_{k−1}, which (10) uses and so does the filter here. The Joseph form writes the covariance update (19) as a sum of two symmetric terms, each positive semidefinite for any gain K: rounding is much less able to make P lose either property than in the short form (I − K_kC)P_{k|k−1}, though nothing guarantees it.',
     plot: {
       title: 'Innovation ỹ_a with its ±2σ band from S_k',
       unit: 'A',
@@ -132,7 +132,7 @@ export const SECTIONS = [
     title: '3. From the observer to the controller: (4) and (5)',
     prose: [
       'The controller never sees the motor’s state, only the observer’s estimate x̂ and the measured currents x2, x3. Write the estimation error x̃ = x − x̂. Two of its components are measured: the current residuals x̃2 = x2 − x̂2 and x̃3 = x3 − x̂3. Three are not: the speed error x̃1 and the flux errors x̃4, x̃5.',
-      'The paper designs the controller against an observer of the general form (4): the model (2) copied with the estimates, plus an injection si_i = l_i1·x̃2 + l_i2·x̃3 (5), a correction that pulls each estimate by the measured residuals. Read as a forward-Euler step, the EKF’s update has this form with L = K_k/Ts and the prior residual y_k − Cx̂_{k|k−1} (15). The controller here uses the posterior residual y_k − Cx̂_{k|k} = (I − CK_k)(y_k − Cx̂_{k|k−1}), which fits x̃ = x − x̂ for the posterior x̂_{k|k} it uses; the two agree only while CK_k is small.',
+      'The paper designs the controller against an observer of the general form (4): the model (2) copied with the estimates, plus an injection si_i = l_i1·x̃2 + l_i2·x̃3 (5), a correction that pulls each estimate by the measured residuals. Read as a forward-Euler step, the EKF’s update has this form with L = K_k/Ts and the prior residual y_k − Cx̂_{k|k−1} (15), in rows 2 to 5. Row 1 only nearly: the EKF’s torque term reads the estimated currents x̂2, x̂3 where (4) reads the measured x2, x3. The controller here uses the posterior residual y_k − Cx̂_{k|k} = (I − CK_k)(y_k − Cx̂_{k|k−1}), which fits x̃ = x − x̂ for the posterior x̂_{k|k} it uses; the two agree only while CK_k is small.',
       'Subtracting (4) from (2) gives the error dynamics below. The controller differentiates the measured residuals (they are in v1 and in ψ3), and their derivatives hold the unmeasured x̃1, x̃4, x̃5. Each such derivative is split in two: the nominal residual dynamics, what ẋ̃2 and ẋ̃3 would be with x̃1 = x̃4 = x̃5 = 0, which the controller computes, and the rest, which it cannot. The design also takes L as constant: L̇ is neglected everywhere below.',
       'That is the integrated design the paper is named for: the observer’s error dynamics are inside the controller’s design, and the unknown terms appear only where a measured current or a residual is differentiated, in step 2 (ż2 holds ẋ2, ẋ3 and v̇1) and in step 4 (ż4 holds the rates of the injections si4, si5). Steps 1 and 3 have none. There they are collected as d̃2 and d̃4 and treated as bounded disturbances.',
     ],
@@ -241,11 +241,11 @@ export const SECTIONS = [
       step: 2,
       output: 'v2',
       intro:
-        'Derive v2 yourself and write it below as a formula of this section’s names (v1 and z2 (from step 1), x2 and x3, x4h and x5h, si4 and si5, dxt2 and dxt3, l11 and l12, ddwd, a1 to a10, k1, k1s1, k2s1; the full list is below), with + − * / ^, parentheses and functions. It runs at 20 kHz in place of the paper’s (34) as soon as you press Enter or pause; an empty field gives the paper’s law back. After the run, the verdict checks your law against the designed dynamics ż2 = −k2·z2 − z1 at drawn states and parameter values, and the plot below shows its residual over the run: zero for a law that gives them.',
+        'Derive v2 yourself and write it below as a formula of this section’s names (v1 and z2 (from step 1), x2 and x3, x4h and x5h, si4 and si5, dxt2 and dxt3, l11 and l12, ddwd, a1 to a10, k1, k1s1, k2s1; the full list is below), with + − * / ^, parentheses and functions. It runs at 20 kHz in place of the paper’s (34) as soon as you press Enter or pause; an empty field gives the paper’s law back. With your own v1 under step 1, your v2 is judged on it: it must differentiate your v1, with the ż1 your v1 gives. After the run, the verdict checks your law against the designed dynamics ż2 = −k2·z2 − z1 at drawn states and parameter values, and the plot below shows its residual over the run: zero for a law that gives them.',
       plot: {
-        title: 'Step 2: your law’s residual, ż2 against the designed ż2 = −k2·z2 − z1 (your v2 less the paper’s)',
+        title: 'Step 2: your law’s residual, ż2 against the designed ż2 = −k2·z2 − z1 (your v2 less the v2 that gives it: the paper’s, or after your own v1 the one that differentiates yours)',
         unit: 'rad/s³',
-        series: [['law_r2', 'your v2 − the paper’s v2']],
+        series: [['law_r2', 'your v2 − the v2 that gives ż2']],
       },
     },
     knobs: ['k2', 'robust', 'eps2', 'h2'],
@@ -335,11 +335,11 @@ export const SECTIONS = [
       step: 4,
       output: 'v4',
       intro:
-        'Derive v4 yourself and write it below as a formula of this section’s names (v3 and z4 (from step 3), dx4h and dx5h, dxt2 and dxt3, si2 to si5, l41 to l52, a5, a7, a8, a10, k3, k4, z3; the full list is below), with + − * / ^, parentheses and functions. It runs at 20 kHz in place of the paper’s (49) as soon as you press Enter or pause; an empty field gives the paper’s law back. After the run, the verdict checks your law against the designed dynamics ż4 = −k4·z4 − z3 at drawn states and parameter values, and the plot below shows its residual over the run: zero for a law that gives them.',
+        'Derive v4 yourself and write it below as a formula of this section’s names (v3 and z4 (from step 3), dx4h and dx5h, dxt2 and dxt3, si2 to si5, l41 to l52, a5, a7, a8, a10, k3, k4, z3; the full list is below), with + − * / ^, parentheses and functions. It runs at 20 kHz in place of the paper’s (49) as soon as you press Enter or pause; an empty field gives the paper’s law back. With your own v3 under step 3, your v4 is judged on it: it must differentiate your v3, with the ż3 your v3 gives. After the run, the verdict checks your law against the designed dynamics ż4 = −k4·z4 − z3 at drawn states and parameter values, and the plot below shows its residual over the run: zero for a law that gives them.',
       plot: {
-        title: 'Step 4: your law’s residual, ż4 against the designed ż4 = −k4·z4 − z3 (your v4 less the paper’s)',
+        title: 'Step 4: your law’s residual, ż4 against the designed ż4 = −k4·z4 − z3 (your v4 less the v4 that gives it: the paper’s, or after your own v3 the one that differentiates yours)',
         unit: 'Wb²/s²',
-        series: [['law_r4', 'your v4 − the paper’s v4']],
+        series: [['law_r4', 'your v4 − the v4 that gives ż4']],
       },
     },
     knobs: ['k4', 'robust', 'eps4', 'h4', 'vmax'],
@@ -349,8 +349,8 @@ export const SECTIONS = [
     title: '8. Stability: Theorem 4.6',
     prose: [
       'With V = ½(z1² + z2² + z3² + z4²) (58), the four designed error dynamics give V̇ = −k1z1² − k2z2² − k3z3² − k4z4² + z2(v2s2 + d̃2) + z4(v4s2 + d̃4) (60). The cross terms ±z1z2 and ±z3z4 cancel: that is what the −z1 in v2a and the −z3 in v4a are for.',
-      'Three lines finish the proof. First, if |d̃2| ≤ h2 (h2 = δ_d2 of (38), the bound the paper derives for d̃2 from Assumption 4.2’s bounds on x̃), Young’s inequality bounds the robust pair: z2(v2s2 + d̃2) ≤ h2|z2| − h2²z2²/(4ε2) ≤ ε2, since the difference is a perfect square. The same holds for z4 with h4 and ε4. Second, Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V = λV. So V̇ ≤ −λV + ε with ε = ε2 + ε4. Third, the comparison step: e^(λt)·V has the rate e^(λt)·(V̇ + λV) ≤ ε·e^(λt); integrating from 0 to t gives (59).',
-      'V adds squares of different units (z1 in rad/s, z2 in rad/s², z3 in Wb², z4 in Wb²/s), and ε2 (rad²/s⁵) and ε4 (Wb⁴/s³) differ too: (59) holds for the SI numbers, as it would for any positive weighting of the z_i² with ε rescaled, but how tight it is depends on that choice. It bounds the sum, and each ½z_i² only through the sum. The plot compares the recorded V with that bound for this run.',
+      'Three lines finish the proof. First, if |d̃2| ≤ h2 (h2 = δ_d2 of (38), a bound on d̃2 that the paper asserts exists given Assumption 4.2’s bounds on x̃ (22), and does not derive: d̃2 is linear in x̃1, x̃4, x̃5 with coefficients that hold the states and the observer gain, so bounds on x̃ bound it only while those stay bounded), Young’s inequality bounds the robust pair: z2(v2s2 + d̃2) ≤ h2|z2| − h2²z2²/(4ε2) ≤ ε2, since the difference is a perfect square. The same holds for z4 with h4 and ε4. Second, Σk_i·z_i² ≥ min(k_i)·Σz_i² = 2·min(k_i)·V = λV. So V̇ ≤ −λV + ε with ε = ε2 + ε4. Third, the comparison step: e^(λt)·V has the rate e^(λt)·(V̇ + λV) ≤ ε·e^(λt); integrating from 0 to t gives (59).',
+      'V adds squares of different units (z1 in rad/s, z2 in rad/s², z3 in Wb², z4 in Wb²/s), and ε2 (rad²/s⁵) and ε4 (Wb⁴/s³) differ too: (59) holds for the SI numbers. It does not carry over to any weighting: with V = ½Σw_i·z_i² the cross terms of V̇ become (w1 − w2)·z1z2 and (w3 − w4)·z3z4, which cancel only for w1 = w2 and w3 = w4, unless the couplings −z1 of (35) and −z3 of (50) are rescaled to −(w1/w2)·z1 and −(w3/w4)·z3. Those couplings carry a unit (1/s² in SI) that the plain sum hides. It bounds the sum, and each ½z_i² only through the sum. The plot compares the recorded V with that bound for this run.',
       'The theorem bounds the errors z_i of the estimates, not the motor: the true speed error is |x1 − ω_d| ≤ |z1| + |x̃1|. It assumes |d̃2| ≤ h2 and |d̃4| ≤ h4 along the whole run; those bounds themselves presume x, x̂ and L bounded, which is what the theorem concludes, and the neglected L̇ terms are in neither ψ nor d̃. It says nothing about the true motor when the assumption fails.',
     ],
     shows: [
@@ -383,7 +383,7 @@ export const STABILITY_CAUSES = {
   sampling:
     'With the perfect observer and an exact model d̃2 = d̃4 = 0, and in continuous time V would stay under the bound (on it, with equal gains). The sampled loop leaves an error of its own, of the order of Ts in the z_i: on decay V stops at a floor while the bound falls on, so that V ends far above it, and halving Ts scales the floor by {wt.decay.halfts}. A rotor-resistance error adds a disturbance of its own, far above that floor: with the motor’s R_r 10 % above and below the model’s, V ends decay at {wt.decay.rrhigh} and {wt.decay.rrlow} times it. An inertia error does not on decay: with the model’s inertia 20 % above and below the motor’s (model.j = 0.024 and model.j = 0.016), V ends at {wt.decay.jhigh} and {wt.decay.jlow} times the floor.',
   estimation_errors:
-    'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) cannot hold.',
+    'The estimation errors enter as d̃2 and d̃4; with the robust terms off nothing bounds z2·d̃2 + z4·d̃4, so the bound (which then assumes d̃ = 0) need not hold.',
   eps_or_sampling:
     'ε is too small for the actual d̃2, d̃4, or the 20 kHz sampling adds an error the continuous-time proof does not have.',
 };

@@ -8,7 +8,7 @@ import { keepAboveSheet, markScrollable, rendered } from './layout.js';
 import { fillInspect } from './inspect-panel.js';
 import { ifocNote, lumpedTable, plotDefs, sectionElement, syncKnobs } from './walkthrough-sections.js';
 import { comparison, stabilityText } from './walkthrough-reports.js';
-import { fillNames, showPreview, showVerdicts } from './law-editor.js';
+import { fillNames, sayOfTypedLaws, showPreview, showVerdicts } from './law-editor.js';
 import { el } from '../ui/dom.js';
 import { say } from '../ui/page.js';
 
@@ -25,14 +25,24 @@ export class Walkthrough {
    * `container` receives the sections, `inspectBox` the inspect panel.
    * `knob(key)` returns the settings control for a field;
    * `onCompare()` asks for the Euler/RK4 comparison.
-   * @param {{container: HTMLElement, inspectBox: HTMLElement, knob: (key: string) => HTMLElement | null,
+   * @param {{container: HTMLElement, form: HTMLFormElement, inspectBox: HTMLElement, knob: (key: string) => HTMLElement | null,
    *   onCompare: () => void, onWindow: (t0: number, t1: number) => void, onFull: () => void,
    *   onPick: (t: number) => void, framing: () => {fit: boolean, from: number},
    *   preview: (step: number, text: string) => Promise<Jobs['law-preview']['result']>,
    *   language: () => Promise<Jobs['law-language']['result']>}} parts
    */
-  constructor({ container, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview, language }) {
+  constructor({ container, form, inspectBox, knob, onCompare, onWindow, onFull, onPick, framing, preview, language }) {
     this.container = container;
+    /** the settings form, whose own-law fields show the verdicts too */
+    this.form = form;
+    // A verdict says whether it is about the law typed beside it, as it is edited, and the
+    // settings' own-law fields show it once their group is built.
+    for (const root of [container, form])
+      root.addEventListener('input', (e) => {
+        if (e.target instanceof HTMLInputElement && e.target.classList.contains('formula'))
+          showVerdicts(root, this.verdicts);
+      });
+    form.addEventListener('fieldsbuilt', () => showVerdicts(form, this.verdicts));
     this.inspectBox = inspectBox;
     this.knob = knob;
     /** @type {((t: number | null) => void) | null} told of each inspected time (null: the panel closed) */
@@ -143,7 +153,7 @@ export class Walkthrough {
    */
   showVerdicts(verdicts) {
     this.verdicts = verdicts;
-    showVerdicts(this.container, verdicts);
+    for (const root of this.lawRoots()) showVerdicts(root, verdicts);
   }
 
   /**
@@ -151,11 +161,12 @@ export class Walkthrough {
    * @param {string} reason
    */
   verdictsFailed(reason) {
-    for (const box of this.container.querySelectorAll('.law')) {
-      if (!(/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())) continue;
-      /** @type {Element} */ (box.querySelector('.law-verdict')).textContent =
-        `The verdict on your law could not be computed: ${reason}`;
-    }
+    for (const root of this.lawRoots()) sayOfTypedLaws(root, `The verdict on your law could not be computed: ${reason}`);
+  }
+
+  /** Where verdicts are shown: the steps here, and the settings form's own-law fields. */
+  lawRoots() {
+    return [this.container, this.form];
   }
 
   /**
@@ -214,11 +225,7 @@ export class Walkthrough {
   checkingLaws(checking) {
     this.showVerdicts([]);
     if (!checking) return;
-    for (const box of this.container.querySelectorAll('.law')) {
-      if (/** @type {HTMLInputElement | null} */ (box.querySelector('.formula'))?.value.trim())
-        /** @type {Element} */ (box.querySelector('.law-verdict')).textContent =
-          'Checking your law against the designed dynamics…';
-    }
+    for (const root of this.lawRoots()) sayOfTypedLaws(root, 'Checking your law against the designed dynamics…');
   }
 
   /** Whether the walkthrough is on screen. */

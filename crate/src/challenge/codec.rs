@@ -348,7 +348,7 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
             excerpt(field)
         ))
     })?;
-    let allowed = if info.formula {
+    let allowed = if info.formula.is_some() {
         if value != "formula" {
             return Err(ChallengeError::malformed(format!(
                 "field '{key}' = '{}': a step's law is allowed as allow.{field}=formula",

@@ -106,9 +106,9 @@ pub struct FieldInfo {
     pub integer: bool,
     /// Allowed names for choice fields; empty for numbers.
     pub options: &'static [&'static str],
-    /// Whether the field holds a formula (a step's own law); its value is then the formula's
-    /// text, not its codec text.
-    pub formula: bool,
+    /// For a field that holds a formula, a step's own law: the step (1–4); its value is then the
+    /// formula's text, not its codec text.
+    pub formula: Option<u8>,
     /// Meaning.
     pub doc: &'static str,
     /// Current value as written in the codec, or None when it does not apply.
@@ -567,7 +567,10 @@ impl Field {
                 Access::Choice { options, .. } => options,
                 Access::Number { .. } | Access::Formula { .. } => &[],
             },
-            formula: matches!(self.access, Access::Formula { .. }),
+            formula: match self.access {
+                Access::Formula { step } => Some(step),
+                _ => None,
+            },
             doc: self.doc,
             value: match self.access {
                 Access::Formula { step } => {

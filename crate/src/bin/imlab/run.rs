@@ -24,7 +24,7 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;
     for f in s.describe() {
         let value = match f.value {
-            Some(v) if f.formula && v.is_empty() => "paper's".to_string(),
+            Some(v) if f.formula.is_some() && v.is_empty() => "paper's".to_string(),
             Some(v) => v,
             None => "-".to_string(),
         };
