@@ -216,6 +216,19 @@ impl Simulation {
         )
     }
 
+    /// Each step's error dynamics as the run made them against the designed ones, over the rows
+    /// with t in [t0, t1] (s), as one M4 envelope in `buckets` buckets: `Float64Array`s
+    /// [t, ż1, d1, ż2, d2, ż3, d3, ż4, d4] (see [`crate::sim::Simulation::designed_dynamics`]);
+    /// throws for the IFOC baseline.
+    #[wasm_bindgen(unchecked_return_type = "Float64Array[]")]
+    pub fn designed_dynamics(&self, t0: f64, t1: f64, buckets: u32) -> Result<Array, JsValue> {
+        float_arrays(
+            self.inner
+                .designed_dynamics(t0, t1, buckets as usize)
+                .map_err(js_error)?,
+        )
+    }
+
     /// Every recorded value and the Kalman gain at the recorded sample nearest to `t` (s),
     /// replayed from the checkpoint before it.
     pub fn inspect(&self, t: f64) -> Result<Ts<crate::sim::Snapshot>, JsValue> {

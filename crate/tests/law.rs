@@ -355,3 +355,35 @@ fn a_run_judges_step_2_on_the_students_own_v1_as_the_verdict_does() {
     let paper = largest_r2(PAPER[1]);
     assert!(own <= 1e-6 * paper, "{own} against {paper}");
 }
+
+#[test]
+fn each_steps_error_dynamics_follows_its_design_to_the_sampling_error() {
+    // With the perfect observer, no noise and an exact model, ż_i = −k_i·z_i + coupling holds in
+    // continuous time; the sampled loop misses it by about k_i·Ts of its size (a forward
+    // difference of e^(−kt) is off by k·Ts/2), so twice that bounds it. A wrong coupling or gain
+    // in the designed rate would miss by its own size.
+    let text = "v=1&preset=step&duration=0.05&perfect=1&noise=0";
+    let s = Scenario::parse(text).unwrap();
+    let mut sim = Simulation::traced(&s).unwrap();
+    sim.run().unwrap();
+    let c = sim.designed_dynamics(0.0, 0.05, 100_000).unwrap();
+    assert_eq!(c[0].len(), sim.len() - 1, "every sample but the last");
+    let g = s.gains;
+    for (i, k) in [g.k1, g.k2, g.k3, g.k4].into_iter().enumerate() {
+        let (rate, designed) = (&c[1 + 2 * i], &c[2 + 2 * i]);
+        let size = designed.iter().fold(0.0f64, |m, d| m.max(d.abs()));
+        let miss = rate
+            .iter()
+            .zip(designed)
+            .fold(0.0f64, |m, (r, d)| m.max((r - d).abs()));
+        assert!(
+            size > 0.0 && miss <= 2.0 * k * s.ts * size,
+            "step {}: misses by {miss} of {size}",
+            i + 1
+        );
+    }
+    // The IFOC baseline's errors are not designed to a rate.
+    let ifoc = Simulation::traced(&Scenario::parse("v=1&preset=step&controller=ifoc&duration=0.01").unwrap())
+        .unwrap();
+    assert!(ifoc.designed_dynamics(0.0, 0.01, 10).is_err());
+}

@@ -183,6 +183,14 @@ export const SECTIONS = [
         ['z1', 'z1 (rad/s, right)', 'y2'],
       ],
     },
+    plot3: {
+      title: 'Step 1: ż1 as the run made it (its change over each sample, over Ts) against the designed −k1·z1 + z2',
+      unit: 'rad/s²',
+      series: [
+        ['zdot1', 'ż1, the run’s'],
+        ['zdes1', '−k1·z1 + z2, designed'],
+      ],
+    },
     law: {
       step: 1,
       output: 'v1',
@@ -237,6 +245,14 @@ export const SECTIONS = [
       series: [['d2_tilde', 'd̃2']],
       bound: 'h2',
     },
+    plot3: {
+      title: 'Step 2: ż2 as the run made it (its change over each sample, over Ts) against the designed −k2·z2 − z1 (with its robust term when robust=1)',
+      unit: 'rad/s³',
+      series: [
+        ['zdot2', 'ż2, the run’s'],
+        ['zdes2', '−k2·z2 − z1, designed'],
+      ],
+    },
     law: {
       step: 2,
       output: 'v2',
@@ -278,6 +294,14 @@ export const SECTIONS = [
         ['v3a', 'v3a feedforward'],
         ['v3s', 'v3s feedback'],
         ['z3', 'z3 (Wb², right)', 'y2'],
+      ],
+    },
+    plot3: {
+      title: 'Step 3: ż3 as the run made it (its change over each sample, over Ts) against the designed −k3·z3 + z4',
+      unit: 'Wb²/s',
+      series: [
+        ['zdot3', 'ż3, the run’s'],
+        ['zdes3', '−k3·z3 + z4, designed'],
       ],
     },
     law: {
@@ -330,6 +354,14 @@ export const SECTIONS = [
       unit: 'Wb²/s²',
       series: [['d4_tilde', 'd̃4']],
       bound: 'h4',
+    },
+    plot3: {
+      title: 'Step 4: ż4 as the run made it (its change over each sample, over Ts) against the designed −k4·z4 − z3 (with its robust term when robust=1)',
+      unit: 'Wb²/s²',
+      series: [
+        ['zdot4', 'ż4, the run’s'],
+        ['zdes4', '−k4·z4 − z3, designed'],
+      ],
     },
     law: {
       step: 4,

@@ -13,10 +13,12 @@ const CSV_ROWS = 20_000;
 
 // Series that are not recorded columns: the bound (59), evaluated at the plot's times; the
 // unknown terms d̃2, d̃4 of steps 2 and 4, evaluated from the simulated truth by a replay; and the
-// residuals of the steps' designed dynamics under a scenario's own laws, by a replay too.
+// residuals of the steps' designed dynamics under a scenario's own laws, and each step's error
+// dynamics against its designed ones, by a replay too.
 const BOUND = 'lyapunov_bound';
 const DISTURBANCES = ['d2_tilde', 'd4_tilde'];
 const RESIDUALS = ['law_r1', 'law_r2', 'law_r3', 'law_r4'];
+const DESIGNED = ['zdot1', 'zdes1', 'zdot2', 'zdes2', 'zdot3', 'zdes3', 'zdot4', 'zdes4'];
 /**
  * A set of replayed series: their names, and the core's method that gives them over [t0, t1] in
  * `buckets` buckets (an envelope [t, ...]).
@@ -26,6 +28,7 @@ const RESIDUALS = ['law_r1', 'law_r2', 'law_r3', 'law_r4'];
 const REPLAYED = [
   { names: DISTURBANCES, of: (sim, t0, t1, b) => sim.disturbances(t0, t1, b) },
   { names: RESIDUALS, of: (sim, t0, t1, b) => sim.law_residuals(t0, t1, b) },
+  { names: DESIGNED, of: (sim, t0, t1, b) => sim.designed_dynamics(t0, t1, b) },
 ];
 const replayed = (/** @type {string[]} */ names) => REPLAYED.find((r) => names.some((c) => r.names.includes(c)));
 const derived = (/** @type {string} */ c) => c === BOUND || REPLAYED.some((r) => r.names.includes(c));

@@ -4,6 +4,7 @@
 
 use super::closed_loop::{Loop, LoopState};
 use super::{Recording, Simulation};
+use crate::scenario::ControllerKind;
 use crate::record::{
     first_not, Column, Overview, Row, Samples, Sink, Trace, TransientTally, WindowTally,
     CHECKPOINT_EVERY, M4,
@@ -166,6 +167,50 @@ impl Simulation {
                 envelope.push(i, &[row.t, r1, r2, r3, r4]);
             }
         }
+        Ok(envelope.finish().pop().expect("one group"))
+    }
+
+    /// Each step's error dynamics as the run made them, against those it is designed to give, over
+    /// the rows with t in [t0, t1], as one M4 envelope [t, ż1, d1, ż2, d2, ż3, d3, ż4, d4] in
+    /// `buckets` buckets: ż_i is z_i's change over the sample after t_k divided by Ts, and d_i the
+    /// designed rate at t_k, −k1·z1 + z2, −k2·z2 − z1, −k3·z3 + z4 and −k4·z4 − z3 (each with its
+    /// robust term when the robust terms are on). The last recorded sample has no ż_i and is left
+    /// out. Errs for the IFOC baseline, whose errors are not designed to any rate.
+    pub fn designed_dynamics(&self, t0: f64, t1: f64, buckets: usize) -> Result<Vec<Vec<f64>>, String> {
+        let s = self.scenario();
+        if s.controller != ControllerKind::Backstepping {
+            return Err("the designed error dynamics are the backstepping's: not for the IFOC baseline".to_string());
+        }
+        let g = &s.gains;
+        let robust = |h: f64, eps: f64| if g.robust { h * h / (4.0 * eps) } else { 0.0 };
+        let (k2, k4) = (g.k2 + robust(g.h2, g.eps2), g.k4 + robust(g.h4, g.eps4));
+        let (start, end) = self.window(t0, t1);
+        let end = end.min(self.len().saturating_sub(1));
+        let mut envelope = M4::new(vec![(0..8).collect()], 8, start, end.saturating_sub(start), buckets);
+        let mut last: Option<(usize, Row)> = None;
+        // Each row with the next one, which its rate needs.
+        self.visit(start, end + 1, &mut |i, row| {
+            if let Some((k, r)) = last {
+                let dt = row.t - r.t;
+                let rate = |a: f64, b: f64| (b - a) / dt;
+                envelope.push(
+                    k,
+                    &[
+                        r.t,
+                        rate(r.z1, row.z1),
+                        -g.k1 * r.z1 + r.z2,
+                        rate(r.z2, row.z2),
+                        -k2 * r.z2 - r.z1,
+                        rate(r.z3, row.z3),
+                        -g.k3 * r.z3 + r.z4,
+                        rate(r.z4, row.z4),
+                        -k4 * r.z4 - r.z3,
+                    ],
+                );
+            }
+            last = Some((i, *row));
+            true
+        });
         Ok(envelope.finish().pop().expect("one group"))
     }
 
