@@ -66,8 +66,12 @@ test('a law of step 1 is typeset as it is typed, run at 20 kHz, judged, and its 
     await field(page).fill('-si1 + dwd + foo*wd');
     await page.waitForSelector('#section-step1 .law-verdict.stale');
     const stale = await page.textContent('#section-step1 .law-verdict');
-    assert.ok(stale.startsWith('Not the law typed above') && stale.includes(`v1 = ${PAPER_V1}`), stale);
+    assert.ok(stale.startsWith('Not the law typed:') && stale.includes(`v1 = ${PAPER_V1}`), stale);
     assert.equal(await page.locator('#section-step1 .law-verdict.good').count(), 0);
+    // The law that ran, typed back: the verdict is of it again.
+    await field(page).fill(PAPER_V1);
+    await page.waitForSelector('#section-step1 .law-verdict.good');
+    assert.equal(await page.locator('#section-step1 .law-verdict.stale').count(), 0);
   }));
 
 test('a formula that does not parse is marked at its place, and the rest of the scenario stays', () =>

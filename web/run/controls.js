@@ -1,7 +1,7 @@
 // Settings form generated from the core's field table (key, unit, range, meaning, value).
 // Text from the URL or the core only ever reaches the page through textContent and values.
 import { el } from '../ui/dom.js';
-import { verdictLine } from '../teaching/law-editor.js';
+import { verdictLine } from '../ui/verdict-line.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -119,7 +119,9 @@ function fill(form, details) {
     // A step's own law: its verdict after a run, as in the walkthrough's step.
     const step = f.formula;
     if (step) {
-      const scope = el('div', { className: 'law-field' }, [control, verdictLine(step)]);
+      // The walkthrough's step announces the same verdict: this copy is not announced.
+      const line = verdictLine(step, true);
+      const scope = el('div', { className: 'law-field' }, [control, line]);
       scope.dataset.lawScope = '';
       scope.hidden = control.hidden;
       details.append(scope);

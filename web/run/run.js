@@ -141,9 +141,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     }
     const id = ++state.runId;
     state.ranScenario = state.info.encoded;
-    state.ranLaws = state.info.fields.some(
-      (f) => !!f.formula && !!f.value,
-    );
+    state.ranLaws = state.info.fields.some((f) => !!f.formula && !!f.value);
     markRun(state.info.encoded);
     fromRun = document.activeElement === ui.run; // started from Run: focus returns there
     document.body.dataset.scenario = state.info.encoded;

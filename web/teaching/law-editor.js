@@ -3,6 +3,7 @@
 // marked at its place, and after a run the core's verdict says whether the law gives the step's
 // designed dynamics. The names the law may use come from the core too.
 import { el } from '../ui/dom.js';
+import { paperLaw, verdictLine } from '../ui/verdict-line.js';
 import { tex } from './tex.js';
 
 /** @typedef {import('../worker/protocol.js').Jobs} Jobs */
@@ -67,25 +68,23 @@ export function showPreview(box, preview, text) {
 }
 
 /**
- * The line that shows step `step`'s verdict. It belongs to the nearest element marked
- * `data-law-scope` around it, which holds the step's formula input.
+ * The formula typed for step `step` under `root`: the input beside its verdict line.
+ * @param {ParentNode} root
  * @param {number} step
  */
-export function verdictLine(step) {
-  const line = el('p', {
-    className: 'law-verdict',
-    role: 'status',
-    textContent: `No law of your own yet: this step runs the paper’s v${step}.`,
-  });
-  line.dataset.lawStep = String(step);
-  return line;
+function typedLaw(root, step) {
+  const line = root.querySelector(`.law-verdict[data-law-step="${step}"]`);
+  const input = line?.closest('[data-law-scope]')?.querySelector('input.formula');
+  return input instanceof HTMLInputElement ? input.value.trim() : null;
 }
 
 /**
  * Shows in every verdict line under `root` its step's verdict (the core's, for the run shown), or
  * that the step is the paper's. A verdict on a law other than the one now typed beside it (edited
- * since, or not parsed) is shown as the last run's, with the law it is about, and neither good nor
- * bad: it does not describe what is typed.
+ * since, or not parsed), or judged on an earlier step's own law that has been edited since, is
+ * shown as the last run's, with the law it is about, and neither good nor bad: it does not
+ * describe what is typed. A line is written only when it changes, so that a screen reader
+ * announces a change and not each key typed.
  * @param {ParentNode} root
  * @param {Jobs['law-verdicts']['result']} verdicts
  */
@@ -93,13 +92,17 @@ export function showVerdicts(root, verdicts) {
   for (const line of /** @type {NodeListOf<HTMLElement>} */ (root.querySelectorAll('.law-verdict'))) {
     const step = Number(line.dataset.lawStep);
     const verdict = verdicts.find((v) => v.step === step);
-    const typed = line.closest('[data-law-scope]')?.querySelector('input.formula');
-    const stale = !!verdict && typed instanceof HTMLInputElement && typed.value.trim() !== verdict.law.trim();
-    line.textContent = !verdict
-      ? `No law of your own yet: this step runs the paper’s v${step}.`
+    const edited = (/** @type {number} */ s, /** @type {string} */ law) => {
+      const typed = typedLaw(root, s);
+      return typed !== null && typed !== law.trim();
+    };
+    const stale = !!verdict && (edited(step, verdict.law) || (verdict.on !== null && edited(step - 1, verdict.on)));
+    const text = !verdict
+      ? paperLaw(step)
       : stale
-        ? `Not the law typed above: the run shown, and this verdict and the residual plot, are of v${step} = ${verdict.law}. ${verdict.text}`
+        ? `Not the law typed: the run shown, and this verdict and the residual plot, are of v${step} = ${verdict.law}${verdict.on !== null ? ` after v${step - 1} = ${verdict.on}` : ''}. ${verdict.text}`
         : verdict.text;
+    if (line.textContent !== text) line.textContent = text;
     line.classList.toggle('stale', stale);
     line.classList.toggle('good', !stale && verdict?.designed === true);
     line.classList.toggle('bad', !stale && verdict?.designed === false);

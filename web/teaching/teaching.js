@@ -19,6 +19,7 @@ import highGain from './lesson-text/high-gain.js';
 import lowSpeed from './lesson-text/low-speed.js';
 import modelExactness from './lesson-text/model-exactness.js';
 import deriveSteps from './lesson-text/derive-steps.js';
+import robustTerms from './lesson-text/robust-terms.js';
 
 /**
  * A lesson: its link's name, its run, the texts a student reads, the conclusions its words state
@@ -43,4 +44,5 @@ export const LESSONS = [
   lowSpeed,
   modelExactness,
   deriveSteps,
+  robustTerms,
 ];

@@ -26,7 +26,8 @@ export {};
  * 'd4_tilde', the unknown terms of steps 2 and 4 evaluated from the simulated truth, come alone
  * in their plot, on the times of their own envelope (none where the core does not evaluate them);
  * so do 'law_r1'..'law_r4', the residuals of the steps' designed dynamics under a scenario's own
- * laws (v_i less the paper's v_i; none without own laws); and so do 'zdot1'..'zdot4' and
+ * laws (v_i less the paper's, or less the one that gives the designed dynamics after the
+ * student's own earlier step; none without own laws); and so do 'zdot1'..'zdot4' and
  * 'zdes1'..'zdes4', each step's ż_i as the run made it and the designed rate (none for IFOC).
  * @typedef {{t: Float64Array, columns: Record<string, Float64Array>}} PlotView
  */

@@ -87,8 +87,8 @@ function view(run, groups, t0, t1, buckets) {
         } catch (e) {
           if (trapped(e)) throw e;
           // Not evaluated for this scenario (d̃ with an observer with extra states or the delay
-          // compensation, residuals without own laws; the walkthrough says so): no sample at the
-          // window's times.
+          // compensation, residuals without own laws, the designed dynamics for IFOC; the
+          // walkthrough says so): no sample at the window's times.
           const t = all[g][0];
           replays.set(replay, [t, ...replay.names.map(() => new Float64Array(t.length).fill(NaN))]);
         }

@@ -41,6 +41,27 @@ pub struct Gains {
     pub h4: f64,
 }
 
+impl Gains {
+    /// The rate step `step` (1–4) is designed to make its error decay at: k_i, plus the robust
+    /// term's h²/(4ε) in steps 2 and 4 when the robust terms are on.
+    pub fn designed_rate(&self, step: u8) -> f64 {
+        let robust = |h: f64, eps: f64| {
+            if self.robust {
+                h * h / (4.0 * eps)
+            } else {
+                0.0
+            }
+        };
+        match step {
+            1 => self.k1,
+            2 => self.k2 + robust(self.h2, self.eps2),
+            3 => self.k3,
+            4 => self.k4 + robust(self.h4, self.eps4),
+            _ => unreachable!("four steps"),
+        }
+    }
+}
+
 /// What the controller sees at one sample: only signals a real drive has.
 #[derive(Clone, Copy, Debug)]
 pub struct ControlInput {

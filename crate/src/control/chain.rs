@@ -10,16 +10,18 @@
 //!
 //! and likewise step 4's v4 is the paper's plus Δ̇3 − k3·Δ3 (ż3 = −k3·z3 + z4 + Δ3). Δ̇ is
 //! evaluated by forward mode ([`Program::eval_rate`]) over the signals' nominal rates
-//! ([`rates`]): the observer (4) with the residuals' nominal dynamics (x̃1 = x̃4 = x̃5 = 0),
-//! the lumped parameters, gains, observer gains and flux target held constant, as the paper's own
-//! derivatives hold them.
+//! ([`rates`]): the observer (4) with the residuals' nominal dynamics (x̃1 = x̃4 = x̃5 = 0), and
+//! the lumped parameters, gains and observer gains held constant, as the paper's derivatives hold
+//! L. The flux target is held constant too: the paper keeps ψ̇_d and ψ̈_d, which are zero here.
 
 use super::formula::{Program, NAMES, SIGNALS};
 
 /// The nominal rate of each signal a step-1 or step-3 law may read, from the signals `s` of that
 /// step; NaN where the rate is not known: the currents and the estimated currents (and so
-/// x̂̇4, x̂̇5), whose rates hold the voltage the later steps choose, and ω̈_d and dâ2/dt, whose
-/// own rates the controller does not have.
+/// x̂̇4, x̂̇5), and z2, whose rates hold the voltage the later steps choose; ω̈_d, whose rate is the
+/// reference's third derivative, which the loop does not have; dâ2/dt, whose rate needs the
+/// load row of L, which is not a signal; and v1, v3, z4, which a step-1 or step-3 law cannot read
+/// or whose rate holds the voltage too.
 pub fn rates(s: &[f64; SIGNALS]) -> [f64; SIGNALS] {
     let mut r = [0.0; SIGNALS];
     for i in [
@@ -53,13 +55,22 @@ pub fn rates(s: &[f64; SIGNALS]) -> [f64; SIGNALS] {
         (sig!("x5h"), dx5h),
         (sig!("xt2"), dxt2),
         (sig!("xt3"), dxt3),
-        (sig!("dxt2"), -(a7 + v(sig!("l21"))) * dxt2 - v(sig!("l22")) * dxt3),
-        (sig!("dxt3"), -v(sig!("l31")) * dxt2 - (a7 + v(sig!("l32"))) * dxt3),
+        (
+            sig!("dxt2"),
+            -(a7 + v(sig!("l21"))) * dxt2 - v(sig!("l22")) * dxt3,
+        ),
+        (
+            sig!("dxt3"),
+            -v(sig!("l31")) * dxt2 - (a7 + v(sig!("l32"))) * dxt3,
+        ),
         (sig!("wd"), v(sig!("dwd"))),
         (sig!("dwd"), v(sig!("ddwd"))),
         (sig!("a2"), v(sig!("da2"))),
         (sig!("z1"), dx1h - v(sig!("dwd"))),
-        (sig!("z3"), 2.0 * (v(sig!("x4h")) * dx4h + v(sig!("x5h")) * dx5h)),
+        (
+            sig!("z3"),
+            2.0 * (v(sig!("x4h")) * dx4h + v(sig!("x5h")) * dx5h),
+        ),
     ];
     for (i, rate) in known {
         r[i] = rate;
@@ -73,11 +84,11 @@ pub fn rates(s: &[f64; SIGNALS]) -> [f64; SIGNALS] {
 }
 
 /// What step `step` (2 or 4) adds to the paper's law when the step before it runs `own` in place
-/// of `paper` (the paper's law of that step): Δ̇ − k·Δ, from the earlier step's signals `s`; NaN
-/// when `own` reads a signal whose rate is not known.
-pub fn correction(step: u8, own: &Program, paper: &Program, s: &[f64; SIGNALS]) -> f64 {
+/// of `paper` (the paper's law of that step): Δ̇ − k·Δ, from the earlier step's signals `s` and
+/// `delta` = Δ, its own value less the paper's there; NaN when `own` reads a signal whose rate is
+/// not known.
+pub fn correction(step: u8, own: &Program, paper: &Program, s: &[f64; SIGNALS], delta: f64) -> f64 {
     let r = rates(s);
-    let delta = own.eval(s) - paper.eval(s);
     let rate = own.eval_rate(s, &r) - paper.eval_rate(s, &r);
     let k = match step {
         2 => s[sig!("k1s1")],

@@ -15,7 +15,7 @@ use crate::params::Lumped;
 use crate::record::{Row, Sink};
 use crate::rng::Rng;
 use crate::scenario::{ControllerKind, Scenario, ScenarioError};
-use std::cell::Cell;
+use std::cell::{Cell, OnceCell};
 use std::fmt;
 
 /// Bounds past which the plant or the estimate is declared diverged.
@@ -151,17 +151,18 @@ pub(super) struct Loop {
     controller: Backstepping,
     /// The steps' own laws, when the scenario has any.
     laws: Option<Laws>,
-    /// With them, each step's v_i − v_i,paper at the last sample run: the residual of its
-    /// designed dynamics (the walkthrough plots it through a replay).
+    /// With them, each step's v_i − v_i,ref at the last sample run (v_i,ref: the paper's v_i, or
+    /// the one that gives the designed dynamics after the student's own earlier step): the
+    /// residual of its designed dynamics (the walkthrough plots it through a replay).
     law_residuals: Cell<[f64; 4]>,
-    /// With them, each step's largest |v_i − v_i,paper| and largest |v_i,paper| over the samples
+    /// With them, each step's largest |v_i − v_i,ref| and largest |v_i,paper| over the samples
     /// run (a replay runs the same samples again, which leaves the largest values as they are).
     law_peaks: Cell<[[f64; 2]; 4]>,
     /// With them, the largest difference of a law from the one that gives its step's designed
     /// dynamics at the verdict's drawn states and parameter values (see
     /// [`crate::control::law::check`]): what the run's own samples cannot tell, as a parameter
     /// written as its number.
-    law_drawn: Option<f64>,
+    law_drawn: OnceCell<Option<f64>>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -313,9 +314,7 @@ impl Loop {
             },
             law_residuals: Cell::new([0.0; 4]),
             law_peaks: Cell::new([[0.0; 2]; 4]),
-            law_drawn: law::verdicts(&scenario.law, &model, &scenario.gains)
-                .ok()
-                .and_then(|v| v.iter().map(|v| v.worst).reduce(f64::max)),
+            law_drawn: OnceCell::new(),
             model,
             limit: scenario.limit(),
             steps: scenario.steps(),
@@ -333,7 +332,7 @@ impl Loop {
         Ok((lp, state))
     }
 
-    /// Each step's v_i − v_i,paper at the sample run last (zeros without own laws).
+    /// Each step's v_i − v_i,ref at the sample run last (zeros without own laws).
     pub(super) fn law_residuals(&self) -> [f64; 4] {
         self.law_residuals.get()
     }
@@ -353,7 +352,13 @@ impl Loop {
             })
             .reduce(f64::max)
             .filter(|v| !v.is_nan())?;
-        Some(self.law_drawn.map_or(run, |drawn| run.max(drawn)))
+        // Checked once, when first asked for: most runs never report it.
+        let drawn = *self.law_drawn.get_or_init(|| {
+            law::verdicts(&self.scenario.law, &self.model, &self.scenario.gains)
+                .ok()
+                .and_then(|v| v.iter().map(|v| v.worst).reduce(f64::max))
+        });
+        Some(drawn.map_or(run, |drawn| run.max(drawn)))
     }
 
     /// Whether the scenario has its own laws (that drive the motor).

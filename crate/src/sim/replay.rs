@@ -4,11 +4,11 @@
 
 use super::closed_loop::{Loop, LoopState};
 use super::{Recording, Simulation};
-use crate::scenario::ControllerKind;
 use crate::record::{
     first_not, Column, Overview, Row, Samples, Sink, Trace, TransientTally, WindowTally,
     CHECKPOINT_EVERY, M4,
 };
+use crate::scenario::ControllerKind;
 
 impl Simulation {
     /// Calls `f(i, row)` for the recorded rows `start..end` (clamped to those recorded) in order,
@@ -144,7 +144,7 @@ impl Simulation {
         Ok(envelope.finish().pop().expect("one group"))
     }
 
-    /// The residual of each step's designed dynamics, v_i − v_i,paper at the same signals (see
+    /// The residual of each step's designed dynamics, v_i − v_i,ref at the same signals (see
     /// [`crate::control::law`]), over the rows with t in [t0, t1], as one M4 envelope
     /// [t, r1, r2, r3, r4] in `buckets` buckets: a replay of the window. Errs for a run without
     /// own laws or one that keeps its rows (no replay).
@@ -175,18 +175,37 @@ impl Simulation {
     /// `buckets` buckets: ż_i is z_i's change over the sample after t_k divided by Ts, and d_i the
     /// designed rate at t_k, −k1·z1 + z2, −k2·z2 − z1, −k3·z3 + z4 and −k4·z4 − z3 (each with its
     /// robust term when the robust terms are on). The last recorded sample has no ż_i and is left
-    /// out. Errs for the IFOC baseline, whose errors are not designed to any rate.
-    pub fn designed_dynamics(&self, t0: f64, t1: f64, buckets: usize) -> Result<Vec<Vec<f64>>, String> {
+    /// out. Errs for the IFOC baseline, whose errors are not designed to any rate, and for a run that
+    /// keeps its rows (no replay; its rows may be more than Ts apart).
+    pub fn designed_dynamics(
+        &self,
+        t0: f64,
+        t1: f64,
+        buckets: usize,
+    ) -> Result<Vec<Vec<f64>>, String> {
         let s = self.scenario();
         if s.controller != ControllerKind::Backstepping {
-            return Err("the designed error dynamics are the backstepping's: not for the IFOC baseline".to_string());
+            return Err(
+                "the designed error dynamics are the backstepping's: not for the IFOC baseline"
+                    .to_string(),
+            );
         }
+        let Recording::Trace(_) = &self.recording else {
+            return Err(
+                "the designed error dynamics are evaluated by a replay of a traced run".to_string(),
+            );
+        };
         let g = &s.gains;
-        let robust = |h: f64, eps: f64| if g.robust { h * h / (4.0 * eps) } else { 0.0 };
-        let (k2, k4) = (g.k2 + robust(g.h2, g.eps2), g.k4 + robust(g.h4, g.eps4));
+        let (k2, k4) = (g.designed_rate(2), g.designed_rate(4));
         let (start, end) = self.window(t0, t1);
         let end = end.min(self.len().saturating_sub(1));
-        let mut envelope = M4::new(vec![(0..8).collect()], 8, start, end.saturating_sub(start), buckets);
+        let mut envelope = M4::new(
+            vec![(0..8).collect()],
+            8,
+            start,
+            end.saturating_sub(start),
+            buckets,
+        );
         let mut last: Option<(usize, Row)> = None;
         // Each row with the next one, which its rate needs.
         self.visit(start, end + 1, &mut |i, row| {

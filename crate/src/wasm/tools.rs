@@ -283,7 +283,7 @@ pub fn law_preview(step: u8, text: &str) -> Result<Ts<crate::control::law::Previ
 }
 
 /// The verdict of each step with its own law in `scenario`, against its designed dynamics:
-/// `[{step, designed, worst, finding, text}]`.
+/// `[{step, law, on, designed, worst, finding, text}]`.
 #[wasm_bindgen]
 pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdict>>, JsValue> {
     let s = Scenario::parse(scenario).map_err(js_error)?;

@@ -7,8 +7,12 @@
 use super::program::{Op, Program};
 use super::{Function, MAX_DEPTH, SIGNALS};
 
-/// The rate of f(x) for the function `f` of one argument, at x with rate dx.
+/// The rate of f(x) for the function `f` of one argument, at x with rate dx: 0 when x does not
+/// move (also where f has no finite slope, as √x and ln x at 0).
 fn rate1(f: Function, x: f64, dx: f64) -> f64 {
+    if dx == 0.0 {
+        return 0.0;
+    }
     match f {
         Function::Sqrt => dx / (2.0 * x.sqrt()),
         Function::Exp => libm::exp(x) * dx,
@@ -28,7 +32,9 @@ fn rate1(f: Function, x: f64, dx: f64) -> f64 {
         }
         // Piecewise constant: its rate is zero wherever it is defined.
         Function::Sign => 0.0,
-        _ => unreachable!("two arguments"),
+        Function::Atan2 | Function::Min | Function::Max | Function::Sat => {
+            unreachable!("two arguments")
+        }
     }
 }
 
@@ -60,7 +66,14 @@ fn rate2(f: Function, (a, da): (f64, f64), (b, db): (f64, f64)) -> f64 {
                 da
             }
         }
-        _ => unreachable!("one argument"),
+        Function::Sqrt
+        | Function::Exp
+        | Function::Ln
+        | Function::Sin
+        | Function::Cos
+        | Function::Tanh
+        | Function::Abs
+        | Function::Sign => unreachable!("one argument"),
     }
 }
 

@@ -127,7 +127,10 @@ mod tests {
     #[test]
     fn monomials_multiply_sums_out() {
         let node = parse("-2*(x4h*si4 - x5h*si5)*dx4h + k3*(-k3*z3 + z4)/b", 4).unwrap();
-        let m: Vec<(f64, String)> = monomials(&node).iter().map(|(s, n)| (*s, text(n))).collect();
+        let m: Vec<(f64, String)> = monomials(&node)
+            .iter()
+            .map(|(s, n)| (*s, text(n)))
+            .collect();
         assert_eq!(
             m,
             [

@@ -3,7 +3,7 @@
 
 use super::mistakes::mistakes;
 use super::{step_values, Laws, DESIGNED, OUTPUTS, PAPER};
-use crate::control::backstepping::{Adapted, Backstepping, ControlInput, Gains};
+use crate::control::backstepping::{Adapted, Backstepping, ControlError, ControlInput, Gains};
 use crate::control::chain;
 use crate::control::formula::{self, FormulaError, Node, Program, SIGNALS};
 use crate::control::RefSample;
@@ -22,9 +22,11 @@ pub struct Verdict {
     pub step: u8,
     /// The law checked, as written.
     pub law: String,
+    /// The student's own earlier law (v1 for step 2, v3 for step 4) it was judged on, as written.
+    pub on: Option<String>,
     /// Whether it gives the designed dynamics (to rounding) at every drawn state.
     pub designed: bool,
-    /// The largest |v_i − v_i,paper| over the drawn states, relative to the size of the paper's
+    /// The largest |v_i − v_i,ref| over the drawn states, relative to the size of the paper's
     /// terms there.
     pub worst: f64,
     /// What it gets wrong, when it can be named.
@@ -117,7 +119,8 @@ struct Drawn {
 }
 
 /// Step `step` of `laws` at one state drawn around `model` and `gains` (with `vary`, every
-/// parameter and gain drawn too, and dâ2/dt).
+/// parameter and gain drawn too, and dâ2/dt); None where the student's own earlier step gave no
+/// finite value, so that this step did not run.
 fn sample(
     step: u8,
     laws: &Laws,
@@ -125,38 +128,35 @@ fn sample(
     model: &Lumped,
     gains: &Gains,
     vary: bool,
-) -> Drawn {
+) -> Option<Drawn> {
     let (controller, input) = draw(rng, model, gains, vary);
     // dâ2/dt drawn too: the law must hold with the EKF's load state as without it.
     let adapted = vary.then(|| Adapted {
         model: *controller.model(),
         d_a2: 1e3 * (2.0 * rng.uniform() - 1.0),
     });
-    let (seen, _) = step_values(&controller, &input, adapted.as_ref(), laws);
+    let (seen, result) = step_values(&controller, &input, adapted.as_ref(), laws);
+    if matches!(result, Err(ControlError::Law { step: failed, .. }) if failed < step) {
+        return None;
+    }
     let i = step as usize - 1;
     let law = laws.step(step).expect("the step has its own law");
     let s = seen.signals[i];
     let before = if i > 0 { seen.signals[i - 1] } else { s };
     let paper = seen.paper[i];
-    let (reference, unchained) = match laws.chained(step) {
-        Some(_) => {
-            let c = laws.correction(step, &before);
-            if c.is_finite() {
-                (paper + c, false)
-            } else {
-                (paper, true)
-            }
-        }
-        None => (paper, false),
+    let c = if i > 0 {
+        laws.correction(step, &before, seen.used[i - 1], seen.paper[i - 1])
+    } else {
+        0.0
     };
-    Drawn {
+    Some(Drawn {
         mine: law.program.eval(&s),
         s,
         before,
-        reference,
+        reference: if c.is_finite() { paper + c } else { paper },
         paper,
-        unchained,
-    }
+        unchained: !c.is_finite(),
+    })
 }
 
 /// Checks the law of step `step` in `texts` (one per step; None: the paper's) against its
@@ -197,8 +197,12 @@ pub fn check(
     let mut rows = Vec::with_capacity(DRAWS);
     let mut mistake_match = vec![true; mistakes.len()];
     let mut unchained = None;
+    let mut failed = 0;
     for _ in 0..DRAWS {
-        let d = sample(step, &laws, &mut rng, model, gains, true);
+        let Some(d) = sample(step, &laws, &mut rng, model, gains, true) else {
+            failed += 1;
+            continue;
+        };
         let s = &d.s;
         if d.unchained && unchained.is_none() {
             let (before, _) = laws.chained(step).expect("chained");
@@ -227,22 +231,50 @@ pub fn check(
         );
     }
     let (symbol, unit) = OUTPUTS[i];
-    let designed = worst <= TOLERANCE;
     let before = if i > 0 { OUTPUTS[i - 1].0 } else { "" };
+    if failed == DRAWS {
+        return Ok(Verdict {
+            step,
+            law: texts[i].clone().unwrap_or_default(),
+            on: None,
+            designed: false,
+            worst: f64::INFINITY,
+            finding: None,
+            text: format!(
+                "Your step {step} cannot be judged: your {before} gives no finite value at any of the {DRAWS} drawn states, so this step never runs."
+            ),
+        });
+    }
+    let designed = worst <= TOLERANCE;
     // Whose earlier step the step is judged on.
+    let on_text = laws
+        .chained(step)
+        .and_then(|_| laws.step(step - 1))
+        .map(|l| l.text.clone());
     let (on, theirs) = match (laws.chained(step), &unchained) {
-        (Some(_), None) => (format!(" with your own {before}"), "the one that gives them"),
+        (Some(_), None) => (
+            format!(" with your own {before}"),
+            "the one that gives them",
+        ),
         _ => (String::new(), "the paper's"),
     };
-    let caveat = unchained.map_or_else(String::new, |names| {
-        format!(
-            " Your {before} reads {names}, whose rate the loop does not have before this step chooses the voltage, so this step is judged on the paper's {before}."
-        )
-    });
+    let mut caveat = unchained
+        .filter(|names| !names.is_empty())
+        .map_or_else(String::new, |names| {
+            format!(
+                " Your {before} reads {names}, whose rate the loop does not have (it holds the voltage a later step chooses, or a derivative the loop lacks), so this step is judged on the paper's {before}."
+            )
+        });
+    if failed > 0 {
+        caveat += &format!(
+            " Your {before} gives no finite value at {failed} of the {DRAWS} drawn states, which this step is not judged at."
+        );
+    }
     if designed {
         return Ok(Verdict {
             step,
             law: texts[i].clone().unwrap_or_default(),
+            on: on_text.clone(),
             designed,
             worst,
             finding: None,
@@ -272,6 +304,7 @@ pub fn check(
     Ok(Verdict {
         step,
         law: texts[i].clone().unwrap_or_default(),
+        on: on_text,
         designed,
         worst,
         finding,
@@ -394,7 +427,9 @@ fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<Str
     let mut rng = Rng::new(SEED);
     let (mut dot, mut norm, mut points) = (0.0, 0.0, Vec::with_capacity(DRAWS));
     for _ in 0..DRAWS {
-        let d = sample(step, laws, &mut rng, model, gains, false);
+        let Some(d) = sample(step, laws, &mut rng, model, gains, false) else {
+            continue;
+        };
         let (zi, diff) = (d.s[z], d.mine - d.reference);
         dot += zi * diff;
         norm += zi * zi;
@@ -419,25 +454,30 @@ fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<Str
                 .to_string(),
         );
     }
-    let robust = |h: f64, eps: f64| {
-        if gains.robust {
-            h * h / (4.0 * eps)
-        } else {
-            0.0
-        }
-    };
-    let designed = [
-        gains.k1,
-        gains.k2 + robust(gains.h2, gains.eps2),
-        gains.k3,
-        gains.k4 + robust(gains.h4, gains.eps4),
-    ][i];
+    let designed = gains.designed_rate(step);
+    let (now, meant) = distinct(designed - c, designed);
     Some(format!(
-        "it is the paper's law plus {}·z{step}: with this scenario's parameters your z{step} decays at {} /s, not {} /s; check the gain and the sign of your z{step} terms",
-        three(c),
-        three(designed - c),
-        three(designed)
+        "it is the paper's law {} {}·z{step}: with this scenario's parameters your z{step} decays at {now} /s, not {meant} /s; check the gain and the sign of your z{step} terms",
+        if c < 0.0 { "minus" } else { "plus" },
+        three(c.abs()),
     ))
+}
+
+/// `a` and `b` to three significant digits, or to as many more as tell them apart.
+fn distinct(a: f64, b: f64) -> (String, String) {
+    let (x, y) = (three(a), three(b));
+    if x != y || a == b {
+        return (x, y);
+    }
+    (4..=15)
+        .map(|digits| {
+            (
+                crate::text::significant(a, digits),
+                crate::text::significant(b, digits),
+            )
+        })
+        .find(|(x, y)| x != y)
+        .unwrap_or((x, y))
 }
 
 /// `v` to three significant digits, as plain decimals where they are short (400, 0.833, 1.2e-5).
@@ -452,4 +492,3 @@ fn three(v: f64) -> String {
     let factor = 10f64.powi(2 - e);
     format!("{}", (v * factor).round() / factor)
 }
-

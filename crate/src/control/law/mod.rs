@@ -12,7 +12,6 @@
 //! So the residual ż_i + k_i·z_i − (coupling) of a law is its v_i less the paper's v_i at the same
 //! signals: [`check`] evaluates both at drawn states and parameter values, and names the term of the
 //! paper's law that a wrong law misses.
-
 //!
 //! Steps 2 and 4 are judged on the student's own earlier step when there is one (see
 //! [`chain`](super::chain)). One job per file: this one runs the laws; `check` gives a step's
@@ -115,24 +114,13 @@ impl Laws {
         Some((own, paper))
     }
 
-    /// The reference of step `step` at one sample: the paper's v_i (`paper`), corrected for the
-    /// student's own earlier step read at its signals `before` (see [`chain`]); the paper's
-    /// when the earlier step is the paper's or its own law's rate is not known.
-    pub fn reference(&self, step: u8, before: &[f64; SIGNALS], paper: f64) -> f64 {
-        let c = self.correction(step, before);
-        if c.is_finite() {
-            paper + c
-        } else {
-            paper
-        }
-    }
-
-    /// What step `step`'s reference adds to the paper's v_i for the student's own earlier step
-    /// read at `before` (see [`chain::correction`]): 0 when the earlier step is the paper's, NaN
-    /// when its own law's rate is not known.
-    pub fn correction(&self, step: u8, before: &[f64; SIGNALS]) -> f64 {
+    /// What the reference of step `step` (2 or 4) adds to the paper's v_i for the student's own
+    /// earlier step, read at its signals `before` where it gave `used` and the paper's law `paper`
+    /// (see [`chain::correction`]): 0 when the earlier step is the paper's, NaN when its own law's
+    /// rate is not known there.
+    pub fn correction(&self, step: u8, before: &[f64; SIGNALS], used: f64, paper: f64) -> f64 {
         match self.chained(step) {
-            Some((own, paper)) => chain::correction(step, own, paper, before),
+            Some((own, theirs)) => chain::correction(step, own, theirs, before, used - paper),
             None => 0.0,
         }
     }
@@ -204,15 +192,16 @@ impl<C: Custom> Custom for Watched<'_, C> {
 pub struct Residuals<'a> {
     /// The laws.
     pub laws: &'a Laws,
-    /// v_i − v_i,reference of the last sample, step by step.
+    /// v_i − v_i,ref of the last sample, step by step.
     pub last: Cell<[f64; 4]>,
     /// v_i,paper of the last sample, step by step.
     pub paper: Cell<[f64; 4]>,
     /// The signals of a step whose own law gave a value that is not a finite number (the run
     /// stops there and names them).
     pub failed: Cell<Option<[f64; SIGNALS]>>,
-    /// The signals step 1 or 3 read last, when step 2 or 4 is judged on them.
-    pub before: Cell<[f64; SIGNALS]>,
+    /// What step 2's and step 4's references add for the student's own v1, v3 at this sample
+    /// (see [`Laws::correction`]), found when step 1 and step 3 ran.
+    corrections: Cell<[f64; 4]>,
 }
 
 impl<'a> Residuals<'a> {
@@ -223,7 +212,7 @@ impl<'a> Residuals<'a> {
             last: Cell::new([0.0; 4]),
             paper: Cell::new([0.0; 4]),
             failed: Cell::new(None),
-            before: Cell::new([0.0; SIGNALS]),
+            corrections: Cell::new([0.0; 4]),
         }
     }
 }
@@ -238,11 +227,14 @@ impl Custom for Residuals<'_> {
             self.failed.set(Some(*signals));
         }
         let i = step as usize - 1;
+        let mut c = self.corrections.get();
         if step % 2 == 1 && self.laws.chained(step + 1).is_some() {
-            self.before.set(*signals);
+            c[i + 1] = self.laws.correction(step + 1, signals, used, paper);
+            self.corrections.set(c);
         }
-        let reference = if self.laws.chained(step).is_some() {
-            self.laws.reference(step, &self.before.get(), paper)
+        // The paper's reference where the earlier step's own law has no known rate.
+        let reference = if c[i].is_finite() {
+            paper + c[i]
         } else {
             paper
         };
@@ -322,4 +314,3 @@ pub fn preview(step: u8, text: &str) -> Preview {
         },
     }
 }
-
