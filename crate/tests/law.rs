@@ -431,3 +431,32 @@ fn each_steps_error_dynamics_follows_its_design_to_the_sampling_error() {
     .unwrap();
     assert!(ifoc.designed_dynamics(0.0, 0.01, 10).is_err());
 }
+
+#[test]
+fn the_run_figure_takes_the_verdicts_worst_difference() {
+    let s = Scenario::parse("step").unwrap();
+    let model = s.model.lumped().unwrap();
+    let v2 = PAPER[1].replace("-k1s1*(-k1*z1 + z2)", "-k1*(-(k1 + a3)*z1 + z2)");
+    for laws in [
+        [
+            Some("-si1 + dwd + a3*wd + a2 - k1*z1".to_string()),
+            Some(v2),
+            None,
+            None,
+        ],
+        [
+            None,
+            None,
+            Some(PAPER[2].replace("-2*a8", "-a9*a8")),
+            Some(PAPER[3].to_string()),
+        ],
+    ] {
+        let verdicts = imlab::control::law::verdicts(&laws, &model, &s.gains).unwrap();
+        let largest = verdicts.iter().map(|v| v.worst).fold(0.0, f64::max);
+        assert_eq!(
+            imlab::control::law::worst(&laws, &model, &s.gains),
+            Some(largest)
+        );
+        assert!(largest > 1e-9);
+    }
+}

@@ -353,11 +353,9 @@ impl Loop {
             .reduce(f64::max)
             .filter(|v| !v.is_nan())?;
         // Checked once, when first asked for: most runs never report it.
-        let drawn = *self.law_drawn.get_or_init(|| {
-            law::verdicts(&self.scenario.law, &self.model, &self.scenario.gains)
-                .ok()
-                .and_then(|v| v.iter().map(|v| v.worst).reduce(f64::max))
-        });
+        let drawn = *self
+            .law_drawn
+            .get_or_init(|| law::worst(&self.scenario.law, &self.model, &self.scenario.gains));
         Some(drawn.map_or(run, |drawn| run.max(drawn)))
     }
 

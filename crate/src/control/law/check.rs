@@ -159,16 +159,15 @@ fn sample(
     })
 }
 
-/// Checks the law of step `step` in `texts` (one per step; None: the paper's) against its
-/// designed dynamics at [`DRAWS`] states drawn around the scenario's `model` and `gains`. Step 2
-/// (4) is judged on the student's own v1 (v3) when `texts` has one; the other steps are the
-/// paper's.
-pub fn check(
+/// The laws step `step` is judged with (its own in `texts`, and the student's own earlier step
+/// for step 2 or 4), the paper's law of the step, and the [`DRAWS`] drawn states it ran at, each
+/// with the size of the paper's law there (its largest term).
+fn drawing(
     step: u8,
     texts: &[Option<String>; 4],
     model: &Lumped,
     gains: &Gains,
-) -> Result<Verdict, FormulaError> {
+) -> Result<(Laws, Node, Vec<(Drawn, f64)>), FormulaError> {
     let i = step as usize - 1;
     let mut own: [Option<String>; 4] = Default::default();
     own[i] = texts[i].clone();
@@ -184,41 +183,88 @@ pub fn check(
         ));
     }
     let paper = formula::parse(PAPER[i], step).expect("the paper's law parses");
+    let terms: Vec<Program> = formula::terms(&paper)
+        .iter()
+        .map(|(_, node)| Program::new(node).expect("a term compiles"))
+        .collect();
+    let mut rng = Rng::new(SEED);
+    let draws = (0..DRAWS)
+        .filter_map(|_| sample(step, &laws, &mut rng, model, gains, true))
+        .map(|d| {
+            let scale = terms
+                .iter()
+                .map(|t| t.eval(&d.s).abs())
+                .fold(f64::MIN_POSITIVE, f64::max);
+            (d, scale)
+        })
+        .collect();
+    Ok((laws, paper, draws))
+}
+
+/// The largest difference of a law from its reference over `draws`, relative to the paper's
+/// law's size at each (infinite for a value that is not a number, or without a draw).
+fn worst_of(draws: &[(Drawn, f64)]) -> f64 {
+    if draws.is_empty() {
+        return f64::INFINITY;
+    }
+    draws.iter().fold(0.0f64, |worst, (d, scale)| {
+        let diff = d.mine - d.reference;
+        worst.max(if diff.is_nan() {
+            f64::INFINITY
+        } else {
+            diff.abs() / scale
+        })
+    })
+}
+
+/// The largest [`Verdict::worst`] over the steps with an own law in `texts`, found as [`check`]
+/// finds it but without naming what a law gets wrong (None without own laws, or with one that
+/// does not parse).
+pub fn worst(texts: &[Option<String>; 4], model: &Lumped, gains: &Gains) -> Option<f64> {
+    (1..=4u8)
+        .filter(|&step| {
+            texts[step as usize - 1]
+                .as_ref()
+                .is_some_and(|t| !t.trim().is_empty())
+        })
+        .map(|step| {
+            drawing(step, texts, model, gains)
+                .ok()
+                .map(|(_, _, draws)| worst_of(&draws))
+        })
+        .collect::<Option<Vec<f64>>>()?
+        .into_iter()
+        .reduce(f64::max)
+}
+
+/// Checks the law of step `step` in `texts` (one per step; None: the paper's) against its
+/// designed dynamics at [`DRAWS`] states drawn around the scenario's `model` and `gains`. Step 2
+/// (4) is judged on the student's own v1 (v3) when `texts` has one; the other steps are the
+/// paper's.
+pub fn check(
+    step: u8,
+    texts: &[Option<String>; 4],
+    model: &Lumped,
+    gains: &Gains,
+) -> Result<Verdict, FormulaError> {
+    let i = step as usize - 1;
+    let (laws, paper, draws) = drawing(step, texts, model, gains)?;
+    let failed = DRAWS - draws.len();
+    let worst = worst_of(&draws);
     let mistakes = mistakes(step);
     let terms = formula::terms(&paper);
-    let term_programs: Vec<(f64, Program)> = terms
-        .iter()
-        .map(|(sign, node)| (*sign, Program::new(node).expect("a term compiles")))
-        .collect();
     let parts = parts(&terms);
-    let mut rng = Rng::new(SEED);
-    let mut worst = 0.0f64;
     let mut diffs = Vec::with_capacity(DRAWS);
     let mut rows = Vec::with_capacity(DRAWS);
     let mut mistake_match = vec![true; mistakes.len()];
     let mut unchained = None;
-    let mut failed = 0;
-    for _ in 0..DRAWS {
-        let Some(d) = sample(step, &laws, &mut rng, model, gains, true) else {
-            failed += 1;
-            continue;
-        };
-        let s = &d.s;
+    for (d, scale) in &draws {
+        let (s, scale) = (&d.s, *scale);
         if d.unchained && unchained.is_none() {
             let (before, _) = laws.chained(step).expect("chained");
             unchained = Some(chain::without_rate(before, &d.before));
         }
-        // The size of the paper's law here: the largest of its terms.
-        let scale = term_programs
-            .iter()
-            .map(|(_, t)| t.eval(s).abs())
-            .fold(f64::MIN_POSITIVE, f64::max);
         let diff = d.mine - d.reference;
-        worst = worst.max(if diff.is_nan() {
-            f64::INFINITY
-        } else {
-            diff.abs() / scale
-        });
         for (m, (p, _)) in mistake_match.iter_mut().zip(&mistakes) {
             *m &= (p.eval(s) - d.paper - diff).abs() <= TOLERANCE * scale;
         }

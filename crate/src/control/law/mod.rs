@@ -20,7 +20,7 @@
 mod check;
 mod mistakes;
 
-pub use check::{check, verdicts, Verdict, DRAWS, TOLERANCE};
+pub use check::{check, verdicts, worst, Verdict, DRAWS, TOLERANCE};
 
 use super::backstepping::{Adapted, Backstepping, ControlError, ControlInput, Custom, Gathered};
 use super::chain;
