@@ -95,12 +95,15 @@ impl Laws {
                 });
             }
         }
+        // An earlier step written as the paper's law, operation for operation, gives its bits:
+        // there is nothing to correct for.
         for step in [2u8, 4] {
-            if laws.step(step).is_some() && laws.step(step - 1).is_some() {
-                laws.before[step as usize - 1] = Some(
-                    Program::parse(PAPER[step as usize - 2], step - 1)
-                        .expect("the paper's law parses"),
-                );
+            if let (Some(_), Some(earlier)) = (laws.step(step), laws.step(step - 1)) {
+                let paper = Program::parse(PAPER[step as usize - 2], step - 1)
+                    .expect("the paper's law parses");
+                if paper != earlier.program {
+                    laws.before[step as usize - 1] = Some(paper);
+                }
             }
         }
         Ok(laws)
