@@ -161,7 +161,8 @@ export class Walkthrough {
    * @param {string} reason
    */
   verdictsFailed(reason) {
-    for (const root of this.lawRoots()) sayOfTypedLaws(root, `The verdict on your law could not be computed: ${reason}`);
+    for (const root of this.lawRoots())
+      sayOfTypedLaws(root, `The verdict on your law could not be computed: ${reason}`);
   }
 
   /** Where verdicts are shown: the steps here, and the settings form's own-law fields. */
