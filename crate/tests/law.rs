@@ -217,6 +217,25 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
     assert!(verdict(2, &v2.replace("a3*dwd", "a3*wd"))
         .text
         .contains("printed in (31)"));
+    // Step 4: a missing −z3 and the forgotten k3·(−k3·z3 + z4).
+    let v4 = PAPER[3];
+    assert!(verdict(4, &v4.replace(") - z3 +", ") +"))
+        .text
+        .contains("−z3 of the paper's law is missing"));
+    let no_k3 = v4.replace("+ k3*(-k3*z3 + z4))", ")");
+    assert_ne!(no_k3, v4);
+    let v = verdict(4, &no_k3);
+    assert!(
+        v.text
+            .contains("the term −k3·(−k3·z3 + z4) of the paper's law is missing"),
+        "{}",
+        v.text
+    );
+}
+
+#[test]
+fn slips_inside_a_term_and_across_a_step_are_named() {
+    let v2 = PAPER[1];
     // The printed (31) copied whole, both typos at once.
     assert!(verdict(2, &v2.replace("a3*dwd + da2", "a3*wd + a2"))
         .text
@@ -262,20 +281,6 @@ fn the_papers_law_gets_the_designed_dynamics_and_each_common_mistake_is_named() 
         verdict(4, &PAPER[3].replace("2*(si4 + a10*x2h", "2*(a10*x2h"))
             .text
             .contains("the factor of x̂̇4 leaves out si4")
-    );
-    // Step 4: a missing −z3 and the forgotten k3·(−k3·z3 + z4).
-    let v4 = PAPER[3];
-    assert!(verdict(4, &v4.replace(") - z3 +", ") +"))
-        .text
-        .contains("−z3 of the paper's law is missing"));
-    let no_k3 = v4.replace("+ k3*(-k3*z3 + z4))", ")");
-    assert_ne!(no_k3, v4);
-    let v = verdict(4, &no_k3);
-    assert!(
-        v.text
-            .contains("the term −k3·(−k3·z3 + z4) of the paper's law is missing"),
-        "{}",
-        v.text
     );
 }
 

@@ -159,15 +159,22 @@ fn sample(
     })
 }
 
-/// The laws step `step` is judged with (its own in `texts`, and the student's own earlier step
-/// for step 2 or 4), the paper's law of the step, and the [`DRAWS`] drawn states it ran at, each
-/// with the size of the paper's law there (its largest term).
+/// What a step's law is judged on: the laws it runs with, the paper's law of the step, and the
+/// drawn states it ran at, each with the size of the paper's law there (its largest term).
+struct Drawing {
+    laws: Laws,
+    paper: Node,
+    draws: Vec<(Drawn, f64)>,
+}
+
+/// The [`Drawing`] of step `step`: its own law in `texts`, with the student's own earlier step
+/// for step 2 or 4, at the [`DRAWS`] drawn states.
 fn drawing(
     step: u8,
     texts: &[Option<String>; 4],
     model: &Lumped,
     gains: &Gains,
-) -> Result<(Laws, Node, Vec<(Drawn, f64)>), FormulaError> {
+) -> Result<Drawing, FormulaError> {
     let i = step as usize - 1;
     let mut own: [Option<String>; 4] = Default::default();
     own[i] = texts[i].clone();
@@ -198,7 +205,7 @@ fn drawing(
             (d, scale)
         })
         .collect();
-    Ok((laws, paper, draws))
+    Ok(Drawing { laws, paper, draws })
 }
 
 /// The largest difference of a law from its reference over `draws`, relative to the paper's
@@ -230,7 +237,7 @@ pub fn worst(texts: &[Option<String>; 4], model: &Lumped, gains: &Gains) -> Opti
         .map(|step| {
             drawing(step, texts, model, gains)
                 .ok()
-                .map(|(_, _, draws)| worst_of(&draws))
+                .map(|d| worst_of(&d.draws))
         })
         .collect::<Option<Vec<f64>>>()?
         .into_iter()
@@ -248,7 +255,7 @@ pub fn check(
     gains: &Gains,
 ) -> Result<Verdict, FormulaError> {
     let i = step as usize - 1;
-    let (laws, paper, draws) = drawing(step, texts, model, gains)?;
+    let Drawing { laws, paper, draws } = drawing(step, texts, model, gains)?;
     let failed = DRAWS - draws.len();
     let worst = worst_of(&draws);
     let mistakes = mistakes(step);
