@@ -414,7 +414,11 @@ fn each_steps_error_dynamics_follows_its_design_to_the_sampling_error() {
         let mut sim = Simulation::traced(&s).unwrap();
         sim.run().unwrap();
         let c = sim.designed_dynamics(0.0, 0.05, 100_000).unwrap();
-        assert_eq!(c[0].len(), sim.len() - 1, "every sample but the last");
+        assert_eq!(c[0].len(), sim.len(), "every sample");
+        // A window ends where the plots' windows end: its last sample is there.
+        let w = sim.designed_dynamics(0.01, 0.02, 100_000).unwrap();
+        let main = sim.view(&[vec!["t".to_string()]], 0.01, 0.02, 100_000).unwrap();
+        assert_eq!((w[0][0], w[0].last()), (main[0][0][0], main[0][0].last()));
         for step in 1..=4u8 {
             let i = step as usize - 1;
             let k = s.gains.designed_rate(step);

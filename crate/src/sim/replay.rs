@@ -172,10 +172,10 @@ impl Simulation {
 
     /// Each step's error dynamics as the run made them, against those it is designed to give, over
     /// the rows with t in [t0, t1], as one M4 envelope [t, ż1, d1, ż2, d2, ż3, d3, ż4, d4] in
-    /// `buckets` buckets: ż_i is z_i's change over the sample after t_k divided by Ts, and d_i the
+    /// `buckets` buckets: ż_i is z_i's change over the sample after t_k divided by Ts (at the run's
+    /// last sample, over the sample before it), and d_i the
     /// designed rate at t_k, −k1·z1 + z2, −k2·z2 − z1, −k3·z3 + z4 and −k4·z4 − z3 (each with its
-    /// robust term when the robust terms are on). The last recorded sample has no ż_i and is left
-    /// out. Errs for the IFOC baseline, whose errors are not designed to any rate, and for a run that
+    /// robust term when the robust terms are on). Errs for the IFOC baseline, whose errors are not designed to any rate, and for a run that
     /// keeps its rows (no replay; its rows may be more than Ts apart).
     pub fn designed_dynamics(
         &self,
@@ -198,38 +198,40 @@ impl Simulation {
         let g = &s.gains;
         let (k2, k4) = (g.designed_rate(2), g.designed_rate(4));
         let (start, end) = self.window(t0, t1);
-        let end = end.min(self.len().saturating_sub(1));
-        let mut envelope = M4::new(
-            vec![(0..8).collect()],
-            8,
-            start,
-            end.saturating_sub(start),
-            buckets,
-        );
-        let mut last: Option<(usize, Row)> = None;
-        // Each row with the next one, which its rate needs.
-        self.visit(start, end + 1, &mut |i, row| {
-            if let Some((k, r)) = last {
-                let dt = row.t - r.t;
-                let rate = |a: f64, b: f64| (b - a) / dt;
-                envelope.push(
-                    k,
-                    &[
-                        r.t,
-                        rate(r.z1, row.z1),
-                        -g.k1 * r.z1 + r.z2,
-                        rate(r.z2, row.z2),
-                        -k2 * r.z2 - r.z1,
-                        rate(r.z3, row.z3),
-                        -g.k3 * r.z3 + r.z4,
-                        rate(r.z4, row.z4),
-                        -k4 * r.z4 - r.z3,
-                    ],
-                );
+        let mut envelope = M4::new(vec![(0..8).collect()], 8, start, end - start, buckets);
+        // Row `k` (`r`) with its rate from `from` to `to`, `dt` apart.
+        let mut push = |k: usize, r: &Row, from: &Row, to: &Row| {
+            let rate = |a: f64, b: f64| (b - a) / (to.t - from.t);
+            envelope.push(
+                k,
+                &[
+                    r.t,
+                    rate(from.z1, to.z1),
+                    -g.k1 * r.z1 + r.z2,
+                    rate(from.z2, to.z2),
+                    -k2 * r.z2 - r.z1,
+                    rate(from.z3, to.z3),
+                    -g.k3 * r.z3 + r.z4,
+                    rate(from.z4, to.z4),
+                    -k4 * r.z4 - r.z3,
+                ],
+            );
+        };
+        // Each row with the next one, which its rate needs; the run's last row, which has none,
+        // with the one before it.
+        let mut seen: [Option<(usize, Row)>; 2] = [None, None];
+        self.visit(start.saturating_sub(1), end + 1, &mut |i, row| {
+            if let Some((k, r)) = seen[1].filter(|(k, _)| *k >= start) {
+                push(k, &r, &r, row);
             }
-            last = Some((i, *row));
+            seen = [seen[1], Some((i, *row))];
             true
         });
+        if let [Some((_, before)), Some((k, last))] = seen {
+            if k + 1 == self.len() && (start..end).contains(&k) {
+                push(k, &last, &before, &last);
+            }
+        }
         Ok(envelope.finish().pop().expect("one group"))
     }
 
