@@ -29,8 +29,9 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
     }
     assert.equal(await page.locator('.katex-error').count(), 0);
     // Each section shows live signals from the run and its design knobs; each backstepping step
-    // also the residual of a law of one's own (empty without one).
-    assert.equal(await page.locator('#walkthrough .plot canvas').count(), 18);
+    // also its error's rate against the designed one, and the residual of a law of one's own
+    // (empty without one).
+    assert.equal(await page.locator('#walkthrough .plot canvas').count(), 22);
     for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std'])
       assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
     assert.match(await page.textContent('#section-stability .stability-report'), /of 2000 samples|all 2000 samples/);
