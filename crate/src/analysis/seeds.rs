@@ -2,7 +2,7 @@
 //! error traces over the seeds.
 
 use crate::scenario::{Scenario, ScenarioError, MAX_SEED};
-use crate::sim::Simulation;
+use crate::sim::{trace_bytes, Simulation, MAX_TRACE_BYTES};
 use crate::text::csv;
 use serde::{Deserialize, Serialize};
 
@@ -69,36 +69,47 @@ pub fn seed_range(first: u64, count: u64) -> Result<std::ops::RangeInclusive<u64
 }
 
 /// Runs `base` with noise seed `seed`; the figures use every sample, the traces keep every
-/// `every`-th one.
+/// `every`-th one. A run whose rows do not fit in memory keeps checkpoints instead and computes
+/// its rows again for the figures and traces: the same values, bit for bit.
 pub fn seed_run(base: &Scenario, seed: u64, every: usize) -> Result<SeedRun, ScenarioError> {
     let mut s = base.clone();
     s.seed = seed;
     s.validate()?;
-    let mut sim = Simulation::new(&s, 1)?;
+    run_seed(&s, every, trace_bytes(&s, 1) > MAX_TRACE_BYTES)
+}
+
+/// [`seed_run`] of `s`, from checkpoints when `traced`.
+fn run_seed(s: &Scenario, every: usize, traced: bool) -> Result<SeedRun, ScenarioError> {
+    let mut sim = if traced {
+        Simulation::traced(s)?
+    } else {
+        Simulation::new(s, 1)?
+    };
     let failure = sim.run().err().map(|e| e.to_string());
     // The figures are the run's own metrics; a run that recorded nothing has none.
     let m = sim.metrics();
     let figure = |f: fn(&crate::record::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
-    let rows = sim.recorder().rows();
+    let (mut t, mut error, mut estimate) = (Vec::new(), Vec::new(), Vec::new());
+    let every = every.max(1);
+    sim.visit(0, sim.len(), &mut |i, r| {
+        if i % every == 0 {
+            t.push(r.t);
+            error.push(r.omega_err);
+            estimate.push(r.omega_est_err);
+        }
+        true
+    });
     Ok(SeedRun {
         result: SeedResult {
-            seed,
+            seed: s.seed,
             tracking_rms: figure(|m| m.tracking_rms),
             speed_estimate_error_rms: figure(|m| m.speed_estimate_error_rms),
             tracking_peak: figure(|m| m.tracking_peak),
             failure,
         },
-        t: rows.iter().step_by(every.max(1)).map(|r| r.t).collect(),
-        error: rows
-            .iter()
-            .step_by(every.max(1))
-            .map(|r| r.omega_err)
-            .collect(),
-        estimate: rows
-            .iter()
-            .step_by(every.max(1))
-            .map(|r| r.omega_est_err)
-            .collect(),
+        t,
+        error,
+        estimate,
     })
 }
 
@@ -204,6 +215,20 @@ pub fn seeds_csv(results: &[SeedResult]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn a_run_too_long_to_keep_its_rows_runs_from_checkpoints_with_the_same_values() {
+        let short = Scenario::parse("v=1&preset=step&seed=4").unwrap();
+        let rows = run_seed(&short, 7, false).unwrap();
+        let traced = run_seed(&short, 7, true).unwrap();
+        assert_eq!(format!("{rows:?}"), format!("{traced:?}"));
+        // About 1.1 million samples: their rows pass the memory bound, and the run is not refused.
+        let long = Scenario::parse("v=1&preset=step&duration=20&ts=0.0000187").unwrap();
+        assert!(trace_bytes(&long, 1) > MAX_TRACE_BYTES);
+        let run = seed_run(&long, 3, 100_000).unwrap();
+        assert!(run.result.failure.is_none() && run.result.tracking_rms.is_finite());
+        assert_eq!(run.t.len(), long.steps().div_ceil(100_000));
+    }
 
     #[test]
     fn band_statistics_do_not_depend_on_how_runs_are_produced() {

@@ -4,7 +4,7 @@
 use crate::control::Reference;
 use crate::record::Row;
 use crate::scenario::{Scenario, ScenarioError};
-use crate::sim::Simulation;
+use crate::sim::{mib, trace_bytes, Simulation, MAX_TRACE_BYTES};
 use crate::text::{csv, short};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -183,6 +183,19 @@ pub fn sweep_point(
 ) -> Result<SweepPoint, ScenarioError> {
     let run = SineRun::new(base, freq, settings)?;
     run.check_reference(settings)?;
+    // The fit reads every row of the run: they must fit in memory.
+    let bytes = trace_bytes(&run.s, 1);
+    if bytes > MAX_TRACE_BYTES {
+        return Err(ScenarioError::TooLarge {
+            what: format!(
+                "each sweep run keeps its {} samples, {} MiB, more than the {} MiB allowed; \
+                 shorten the sweep's run length or raise 'ts'",
+                run.s.steps(),
+                mib(bytes),
+                MAX_TRACE_BYTES >> 20
+            ),
+        });
+    }
     let mut sim = Simulation::new(&run.s, 1)?;
     let failure = sim.run().err().map(|e| e.to_string());
     let rows = sim.recorder().rows();
@@ -601,6 +614,22 @@ mod tests {
         assert!(low.below_grid && low.bandwidth.is_none());
         assert!(
             sweep_csv(&[point(10.0, 0.5, -60.0)]).contains("bandwidth_hz=below_lowest_frequency")
+        );
+    }
+
+    #[test]
+    fn a_run_too_long_to_keep_its_rows_is_refused_naming_the_sweeps_own_settings() {
+        let s = Scenario::parse("v=1&preset=step&ts=0.00001").unwrap();
+        let settings = SweepSettings {
+            duration: 20.0,
+            ..SweepSettings::default()
+        };
+        let e = sweep_point(&s, 100.0, &settings).unwrap_err().to_string();
+        assert!(
+            e.contains("each sweep run keeps its 2000000 samples")
+                && e.ends_with("shorten the sweep's run length or raise 'ts'")
+                && !e.contains("every"),
+            "{e}"
         );
     }
 

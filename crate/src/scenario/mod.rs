@@ -15,7 +15,7 @@ pub use error::ScenarioError;
 pub(crate) use fields::parse_number;
 pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
 pub use presets::{preset, Preset, PRESETS};
-pub use validate::{MAX_STEPS, MAX_WORK};
+pub use validate::{MAX_LAW_WORK, MAX_STEPS, MAX_WORK};
 
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::{Limit, Shape};

@@ -3,8 +3,21 @@
 
 use super::fields::{fields, Access};
 use super::{preset, ControllerKind, Scenario, ScenarioError};
+use crate::control::law::Laws;
 use crate::inverter::Shape;
 use crate::text::short;
+
+/// `v` rounded down to three significant digits.
+fn down3(v: f64) -> f64 {
+    let scale = 10f64.powi(2 - v.log10().floor() as i32);
+    (v * scale).floor() / scale
+}
+
+/// `v` rounded up to three significant digits.
+fn up3(v: f64) -> f64 {
+    let scale = 10f64.powi(2 - v.log10().floor() as i32);
+    (v * scale).ceil() / scale
+}
 
 /// Most samples one run may take.
 pub const MAX_STEPS: usize = 2_000_000;
@@ -17,7 +30,22 @@ pub const MAX_STEPS: usize = 2_000_000;
 /// `docs/figures.md` (the work bound).
 pub const MAX_WORK: u64 = 10_000_000;
 
+/// Most simple operations (see [`Program::work`](crate::control::formula::Program::work)) a run's own laws may take, over all its
+/// samples. The paper's four laws take about 230 a sample, so they fit at the most samples a run
+/// may take, [`MAX_STEPS`], twice over; a law of sines of huge arguments fits at fewer. Chosen so
+/// that the laws add a few seconds at most to any run; the measurement is in `docs/figures.md`
+/// (the work bound).
+pub const MAX_LAW_WORK: u64 = 1_000_000_000;
+
 impl Scenario {
+    /// The steps' own laws, parsed; the first bad one refused with its field.
+    pub fn laws(&self) -> Result<Laws, ScenarioError> {
+        Laws::parse(&self.law).map_err(|(step, error)| ScenarioError::BadFormula {
+            key: ["law.v1", "law.v2", "law.v3", "law.v4"][step as usize - 1],
+            error,
+        })
+    }
+
     /// Checks every field's range and the physics of both parameter sets.
     pub fn validate(&self) -> Result<(), ScenarioError> {
         if preset(&self.preset).is_none() {
@@ -93,7 +121,53 @@ impl Scenario {
                 ),
             });
         }
-        Ok(())
+        self.check_law_work(samples)
+    }
+
+    /// Operations the own laws take over the whole run (see [`Laws::work`]): 0 without them,
+    /// or when the controller is not the backstepping they replace steps of.
+    pub fn law_work(&self) -> Result<u64, ScenarioError> {
+        let laws = self.laws()?;
+        Ok(if self.controller == ControllerKind::Backstepping {
+            (self.steps() as u64).saturating_mul(laws.work())
+        } else {
+            0
+        })
+    }
+
+    /// Refuses own laws whose work over the run's `samples` passes [`MAX_LAW_WORK`], naming
+    /// the work and the run that would fit.
+    fn check_law_work(&self, samples: f64) -> Result<(), ScenarioError> {
+        let work = self.law_work()?;
+        if work <= MAX_LAW_WORK {
+            return Ok(());
+        }
+        let laws = self.laws()?;
+        let per_sample = laws.work();
+        let works = laws.works();
+        let mut parts: Vec<String> = (0..4)
+            .filter(|&i| works[i] > 0)
+            .map(|i| format!("law.v{} {}", i + 1, works[i]))
+            .collect();
+        let chains = per_sample - works.iter().sum::<u64>();
+        if chains > 0 {
+            parts.push(format!("the rates of the own v1 and v3 {chains}"));
+        }
+        let fits = (MAX_LAW_WORK / per_sample) as f64;
+        let (duration, ts) = (short(self.duration), short(self.ts));
+        Err(ScenarioError::TooLarge {
+            what: format!(
+                "the laws' work, {samples} samples ('duration'/'ts' = {duration} s / {ts} s) × \
+                 {per_sample} operations a sample ({}) = {work}, is more than the {MAX_LAW_WORK} \
+                 allowed (a sine or cosine counts 64 operations, a power 32, exp, ln, tanh and \
+                 atan2 12 each); shorten 'duration' to {} s or raise 'ts' to {} s, or write \
+                 laws that take at most {} operations a sample",
+                parts.join(", "),
+                short(down3(fits * self.ts)),
+                short(up3(self.duration / fits)),
+                MAX_LAW_WORK / samples as u64,
+            ),
+        })
     }
 
     /// RK4 steps of the plant per sample: `substeps` on each of the up to seven intervals of
@@ -212,5 +286,55 @@ mod tests {
             errors[0].to_string().contains("14000000 steps"),
             "{errors:?}"
         );
+    }
+
+    /// The `step` preset with `fields` and `laws` as steps 1–4's own laws.
+    fn with_laws(fields: &[(&str, String)], laws: [&str; 4]) -> Result<Scenario, ScenarioError> {
+        let mut all: Vec<(String, String)> = fields
+            .iter()
+            .map(|(k, v)| (k.to_string(), v.clone()))
+            .collect();
+        all.extend((0..4).map(|i| (format!("law.v{}", i + 1), laws[i].to_string())));
+        Scenario::parse(&super::super::compose("step", &all))
+    }
+
+    #[test]
+    fn the_law_work_limit_prices_functions_and_keeps_the_papers_laws() {
+        use crate::control::law::PAPER;
+        // The paper's four laws at the most samples a run may take, twice over.
+        let at = |d: f64| [("duration", d.to_string()), ("ts", "0.00001".to_string())];
+        let longest = at(20.0);
+        let s = with_laws(&longest, PAPER).unwrap();
+        assert!(
+            2 * s.law_work().unwrap() <= MAX_LAW_WORK,
+            "{}",
+            s.law_work().unwrap()
+        );
+        // The same with 100 sines of a huge argument added to each: its sines are priced as
+        // such, not as one operation each.
+        let sines = ["sin(1e300*x1h)"; 100].join(" + ");
+        let costly = PAPER.map(|law| format!("{law} + 0*({sines})"));
+        let costly = [0, 1, 2, 3].map(|i| costly[i].as_str());
+        let err = with_laws(&longest, costly).unwrap_err().to_string();
+        assert!(
+            err.starts_with("the laws' work, 2000000 samples")
+                && err.contains("is more than the 1000000000 allowed"),
+            "{err}"
+        );
+        // What the refusal says fits, fits, and a little more does not.
+        let fits = err.split("shorten 'duration' to ").nth(1).unwrap();
+        let fits: f64 = fits.split(' ').next().unwrap().parse().unwrap();
+        let s = with_laws(&at(fits), costly).unwrap();
+        assert!(s.law_work().unwrap() <= MAX_LAW_WORK);
+        assert!(with_laws(&at(fits * 1.01), costly).is_err());
+        // Each of the 100 sines counts 64 operations.
+        let ops = [0u8, 1, 2, 3]
+            .map(|i| crate::control::formula::Program::parse(costly[i as usize], i + 1).unwrap());
+        assert!(ops.iter().all(|p| p.work() > 6400));
+        // The baseline runs no law: its work is not counted.
+        let mut ifoc = longest.to_vec();
+        ifoc.push(("controller", "ifoc".to_string()));
+        let ifoc = with_laws(&ifoc, costly).unwrap();
+        assert_eq!(ifoc.law_work().unwrap(), 0);
     }
 }

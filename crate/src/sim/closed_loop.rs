@@ -304,12 +304,7 @@ impl Loop {
             plant,
             controller: Backstepping::new(model, scenario.gains),
             laws: {
-                let laws = Laws::parse(&scenario.law).map_err(|(step, error)| {
-                    ScenarioError::BadFormula {
-                        key: ["law.v1", "law.v2", "law.v3", "law.v4"][step as usize - 1],
-                        error,
-                    }
-                })?;
+                let laws = scenario.laws()?;
                 (!laws.is_empty()).then_some(laws)
             },
             law_residuals: Cell::new([0.0; 4]),

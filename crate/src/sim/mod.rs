@@ -86,10 +86,16 @@ impl Simulation {
         // rows is bounded by their memory.
         let bytes = trace_bytes(scenario, every);
         if !traced && bytes > MAX_TRACE_BYTES {
+            // Only a caller that keeps every n-th sample can keep fewer.
+            let fewer = if every > 1 {
+                ", or keep fewer samples (a larger 'every')"
+            } else {
+                ""
+            };
             return Err(ScenarioError::TooLarge {
                 what: format!(
                     "recording {rows} samples × {NUM_COLUMNS} columns needs {} MiB, more than the {} MiB allowed; \
-                     shorten 'duration' or keep fewer samples (--every)",
+                     shorten 'duration' or raise 'ts'{fewer}",
                     mib(bytes),
                     MAX_TRACE_BYTES >> 20
                 ),

@@ -5,7 +5,7 @@
 //! one cell, [`summarise`] turns a cell's runs into its row and [`map_csv`] writes the rows.
 
 use crate::record::WarningKind;
-use crate::scenario::{Scenario, MAX_SEED};
+use crate::scenario::{Scenario, MAX_LAW_WORK, MAX_SEED};
 use crate::sim::Simulation;
 use crate::text::{excerpt, short};
 use serde::{Deserialize, Serialize};
@@ -38,6 +38,10 @@ pub const MAX_MAP_RUNS: usize = 100_000;
 /// Most plant steps (samples × RK4 substeps) a whole map may take: 40 of the longest single runs
 /// the codec accepts, a few minutes on each of two cores.
 pub const MAX_MAP_WORK: u64 = 400_000_000;
+
+/// Most operations of own laws (see [`Laws::work`](crate::control::law::Laws::work)) a whole map
+/// may take: 40 of the costliest laws a single run accepts ([`MAX_LAW_WORK`]), as for the plant.
+pub const MAX_MAP_LAW_WORK: u64 = 40 * MAX_LAW_WORK;
 
 /// One axis of a map: a motor (`plant.*`) or model (`model.*`) parameter and its values.
 #[cfg_attr(
@@ -97,6 +101,8 @@ pub struct Map {
     pub seeds: Vec<u64>,
     /// Plant steps the whole map takes.
     pub work: u64,
+    /// Operations of own laws the whole map takes (0 without them).
+    pub law_work: u64,
     /// The map as [`Map::parse`] reads it: `AXIS[;AXIS];seeds=A..B`.
     pub text: String,
 }
@@ -422,6 +428,19 @@ impl Map {
                 seeds.len()
             ));
         }
+        // The axes vary motor and model parameters only: every run's laws take the same work.
+        let per_run = base.law_work().map_err(|e| e.to_string())?;
+        let runs = (count * seeds.len()) as u64;
+        let law_work = per_run.saturating_mul(runs);
+        if law_work > MAX_MAP_LAW_WORK {
+            return Err(format!(
+                "the map's own laws take {law_work} operations ({count} cells × {} seeds × \
+                 {per_run} a run), more than the {MAX_MAP_LAW_WORK} allowed; use at most {} \
+                 runs (cells × seeds), a shorter 'duration', or cheaper laws",
+                seeds.len(),
+                MAX_MAP_LAW_WORK / per_run
+            ));
+        }
         let mut parts: Vec<String> = axes.iter().map(|a| a.text.clone()).collect();
         parts.push(format!("seeds={}..{}", seeds[0], seeds[seeds.len() - 1]));
         Ok(Map {
@@ -431,6 +450,7 @@ impl Map {
             cells,
             seeds,
             work,
+            law_work,
         })
     }
 
@@ -682,6 +702,41 @@ mod tests {
         let long = Scenario::parse("v=1&preset=rr-mismatch&duration=20").unwrap();
         let e = Map::parse(&long, "plant.rr=-10%..10%:101;seeds=1..100").unwrap_err();
         assert!(e.contains("plant steps") && e.contains("400000000"), "{e}");
+    }
+
+    #[test]
+    fn a_map_counts_the_work_of_its_laws() {
+        // Each step's law the paper's plus 100 sines of a huge argument: at 0.94 s, each run takes
+        // more than 99 % of the laws' work a single run may take; 40 such runs fit, not 41.
+        let sines = ["sin(1e300*x1h)"; 100].join(" + ");
+        let laws: Vec<(String, String)> = (0..4)
+            .map(|i| {
+                let law = crate::control::law::PAPER[i];
+                (format!("law.v{}", i + 1), format!("{law} + 0*({sines})"))
+            })
+            .collect();
+        let mut fields = vec![("duration".to_string(), "0.94".to_string())];
+        fields.extend(laws);
+        let base = Scenario::parse(&crate::scenario::compose("step", &fields)).unwrap();
+        let per_run = base.law_work().unwrap();
+        assert!(
+            per_run > MAX_LAW_WORK * 99 / 100 && per_run <= MAX_LAW_WORK,
+            "{per_run}"
+        );
+        let m = Map::parse(&base, "plant.rr=-10%..10%:20;seeds=1..2").unwrap();
+        assert_eq!(m.law_work, 40 * per_run);
+        let e = Map::parse(&base, "plant.rr=-10%..10%:41;seeds=1").unwrap_err();
+        assert!(
+            e.starts_with("the map's own laws take") && e.contains("use at most 40 runs"),
+            "{e}"
+        );
+        // Without laws, the same map counts none.
+        assert_eq!(
+            Map::parse(&step(), "plant.rr=-10%..10%:41;seeds=1")
+                .unwrap()
+                .law_work,
+            0
+        );
     }
 
     #[test]

@@ -45,6 +45,22 @@ impl Op {
         )
     }
 
+    /// What the operation costs, evaluated and with its rate (forward mode), in simple
+    /// operations (one dispatch and one addition): each function at its costliest argument, as
+    /// measured (`docs/figures.md`, the work bound). A sine or cosine of a huge argument reduces
+    /// it by hundreds of bits of π; a power computes a logarithm and an exponential.
+    fn work(self) -> (u64, u64) {
+        match self {
+            Op::Call1(Function::Sin | Function::Cos) => (64, 128),
+            Op::Pow => (32, 64),
+            Op::Call1(Function::Exp | Function::Ln | Function::Tanh)
+            | Op::Call2(Function::Atan2) => (12, 16),
+            Op::Call1(_) | Op::Call2(_) => (3, 4),
+            Op::Div | Op::DivSig(_) | Op::DivNum(_) => (2, 4),
+            _ => (1, 2),
+        }
+    }
+
     /// How the operation changes the stack's depth.
     fn depth_change(self) -> isize {
         match self {
@@ -161,9 +177,15 @@ impl Program {
         Program::new(&parse(text, step)?)
     }
 
-    /// The operations it takes (its cost per sample).
-    pub fn cost(&self) -> usize {
-        self.ops.len()
+    /// What one evaluation costs, in simple operations (see [`Op::work`]): the bound on a run's
+    /// work counts it once a sample.
+    pub fn work(&self) -> u64 {
+        self.ops.iter().map(|op| op.work().0).sum()
+    }
+
+    /// What one evaluation of its rate ([`Program::eval_rate`]) costs, in simple operations.
+    pub fn rate_work(&self) -> u64 {
+        self.ops.iter().map(|op| op.work().1).sum()
     }
 
     /// The names it reads, each once, in the order of [`NAMES`](super::NAMES).

@@ -128,6 +128,26 @@ impl Laws {
         }
     }
 
+    /// What the laws cost each sample, in simple operations (see [`Program::work`]): every own
+    /// law evaluated once, and for step 2 (4) judged on an own earlier step, the rates of that
+    /// step's law and of the paper's.
+    pub fn work(&self) -> u64 {
+        let own: u64 = self.steps.iter().flatten().map(|l| l.program.work()).sum();
+        let chains: u64 = [2u8, 4]
+            .into_iter()
+            .filter_map(|step| self.chained(step))
+            .map(|(own, paper)| own.rate_work() + paper.rate_work())
+            .sum();
+        own + chains
+    }
+
+    /// Each own law's [`Program::work`], step by step (0 for the paper's).
+    pub fn works(&self) -> [u64; 4] {
+        self.steps
+            .each_ref()
+            .map(|l| l.as_ref().map_or(0, |l| l.program.work()))
+    }
+
     /// Whether every step is the paper's.
     pub fn is_empty(&self) -> bool {
         self.steps.iter().all(Option::is_none)
