@@ -305,7 +305,7 @@ test("a model-error map link replays the map, its CSV is imlab robust's byte for
   });
 });
 
-test('a map past the work bound is refused before any run, naming what it needs; a cancelled map keeps its finished cells', async () => {
+test('a map past the work bound is refused before any run, naming what it needs; a cancelled map keeps its finished cells at once', async () => {
   await withPage('?v=1&preset=rr-mismatch&duration=20', async (page) => {
     await page.click('#tab-analysis');
     await page.fill('[name=axis1]', 'plant.rr=-10%..+10%:101');
@@ -318,8 +318,20 @@ test('a map past the work bound is refused before any run, naming what it needs;
     await page.click('#map-run');
     // Cancel once a cell (both its seeds) is in.
     await page.waitForFunction(() => Number(document.body.dataset.mapCells) >= 1, null, { timeout: 120_000 });
+    // Cancel ends the workers that run the cells; the summary of the finished ones must not wait
+    // for fresh workers to load the core.
+    await page.evaluate(() => {
+      window.workersMade = 0;
+      window.Worker = class extends Worker {
+        constructor(/** @type {any[]} */ ...args) {
+          super(...args);
+          window.workersMade++;
+        }
+      };
+    });
     await page.click('#map-cancel');
     assert.equal(await mapDone(page), 'cancelled', await page.textContent('#map-status'));
+    assert.equal(await page.evaluate(() => window.workersMade), 0, 'workers started after Cancel');
     const shown = await page.$$eval('.map-table .map-cell', (bs) => bs.length);
     const missing = await page.$$eval('.map-table .map-missing', (ts) => ts.length);
     assert.ok(shown >= 1 && shown + missing === 21, `${shown} shown, ${missing} not run`);

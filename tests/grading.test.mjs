@@ -111,6 +111,22 @@ test('a cancelled grading is kept: after a reload, Grade goes on where it stoppe
     assert.equal(await downloaded(page), cliGrade(path));
   }));
 
+test('Cancel while the class file is read ends the grading there: nothing is graded', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    await openGrading(page, file('read.txt', `${classLinks(7).join('\n')}\n`));
+    // Both clicks in one task: the reading has begun and cannot have ended.
+    await page.evaluate(() => {
+      document.getElementById('grade-run').click();
+      document.getElementById('grade-cancel').click();
+    });
+    assert.equal(await page.evaluate(() => document.body.dataset.grading), 'cancelled');
+    assert.equal(await page.textContent('#grade-status'), 'Cancelled before any submission was graded.');
+    // The reading's end starts no grading, and Grade grades the whole class.
+    await page.click('#grade-run');
+    await page.waitForFunction(() => document.body.dataset.grading === 'done', null, { timeout: 120_000 });
+    assert.match(await page.textContent('#grade-status'), /^Graded 7 of 7/);
+  }));
+
 test('a class file the core refuses whole is said, and nothing is graded', () =>
   suite.withPage('?v=1&preset=step', async (page) => {
     // UTF-16 without a byte-order mark.

@@ -84,8 +84,10 @@ async function runCells(pool, map, status, progress) {
 export function createRobust({ state, analysis, open, showTab }) {
   /** @type {Drawn | null} */
   let last = null; // the map drawn
-  // The map's own workers: a sweep or a seed run on the Analysis tab's other pool neither waits
-  // for it nor cancels it.
+  // The map's own workers for its runs: a sweep or a seed run on the Analysis tab's other pool
+  // neither waits for it nor cancels it. The plan, the summary and the CSV are quick jobs of the
+  // run worker, which outlives a Cancel (it terminates the pool's workers): a cancelled map's
+  // summary does not wait for fresh workers to load the core.
   const pool = new Pool(analysis.pool.size);
   const form = $('map-form', HTMLFormElement);
   const status = $('map-status');
@@ -105,8 +107,7 @@ export function createRobust({ state, analysis, open, showTab }) {
   async function plan() {
     try {
       const info = /** @type {Info} */ (state.info);
-      const [planned] = await pool.run([{ kind: 'map-plan', scenario: info.encoded, ...mapFormParts(form) }]);
-      return planned;
+      return await analysis.client.job('map-plan', { scenario: info.encoded, ...mapFormParts(form) });
     } catch (e) {
       status.textContent = `The map was not run: ${/** @type {Error} */ (e).message}.`;
       document.body.dataset.map = 'refused';
@@ -141,10 +142,10 @@ export function createRobust({ state, analysis, open, showTab }) {
     $('map-cancel', HTMLButtonElement).disabled = true;
     const kept = { ...map, cells: map.cells.filter((_, i) => whole[i]) };
     try {
-      /** @type {MapCell[][]} */
-      const [cells] = await pool.run([
-        { kind: 'map-cells', map: kept, runs: runs.filter((_, i) => whole[Math.floor(i / per)]) },
-      ]);
+      const cells = await analysis.client.job('map-cells', {
+        map: kept,
+        runs: runs.filter((_, i) => whole[Math.floor(i / per)]),
+      });
       last = { map: kept, full: map, cells, figures, whole };
       draw();
       const ms = performance.now() - started;
@@ -183,7 +184,7 @@ export function createRobust({ state, analysis, open, showTab }) {
   $('map-csv', HTMLButtonElement).addEventListener('click', async () => {
     // CSV is enabled only once a map is drawn.
     const drawn = /** @type {Drawn} */ (last);
-    const [csv] = await pool.run([{ kind: 'map-csv', map: drawn.full, cells: drawn.cells }]);
+    const csv = await analysis.client.job('map-csv', { map: drawn.full, cells: drawn.cells });
     download(new Blob([csv], { type: 'text/csv' }), 'imlab-robust.csv');
   });
 

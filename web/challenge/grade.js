@@ -138,6 +138,8 @@ export function createGrading({ client }) {
   const pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
   /** @type {Grading | null} the grading shown */
   let job = null;
+  // Counts the readings of class files: Cancel while one is read, or another Grade, makes it stale.
+  let readings = 0;
 
   /**
    * Reads the class file against the challenge; returns the grading, or throws why not.
@@ -172,9 +174,14 @@ export function createGrading({ client }) {
     $('grade-cancel', HTMLButtonElement).focus();
     body.grading = 'reading';
     status.textContent = 'Reading the class file…';
+    const reading = ++readings;
     try {
-      job = await read();
+      const grading = await read();
+      // Cancelled (or started again) while reading: the click said so.
+      if (reading !== readings) return;
+      job = grading;
     } catch (e) {
+      if (reading !== readings) return;
       body.grading = 'refused';
       status.textContent = `Not graded: ${/** @type {Error} */ (e).message}.`;
       return done();
@@ -185,16 +192,7 @@ export function createGrading({ client }) {
     done();
   }
 
-  /** Ends a grading's controls: Grade again, no Cancel, Download when a row is graded. */
-  function done() {
-    progress.hidden = true;
-    count.textContent = '';
-    $('grade-cancel', HTMLButtonElement).disabled = true;
-    $('grade-run', HTMLButtonElement).disabled = false;
-    if (document.activeElement === document.body || document.activeElement === $('grade-cancel', HTMLButtonElement))
-      $('grade-run', HTMLButtonElement).focus();
-    $('grade-csv', HTMLButtonElement).disabled = !job || csvOf(job).rows === 0;
-  }
+  const done = () => endControls(job);
 
   /**
    * Grades what `mine` lacks, keeping each result as it comes.
@@ -248,7 +246,13 @@ export function createGrading({ client }) {
 
   $('grade-challenge', HTMLInputElement).addEventListener('focus', () => offerBuiltins(client), { once: true });
   $('grade-run', HTMLButtonElement).addEventListener('click', grade);
-  $('grade-cancel', HTMLButtonElement).addEventListener('click', () => pool.cancel());
+  $('grade-cancel', HTMLButtonElement).addEventListener('click', () => {
+    if (body.grading !== 'reading') return pool.cancel();
+    readings++;
+    body.grading = 'cancelled';
+    status.textContent = 'Cancelled before any submission was graded.';
+    done();
+  });
   $('grade-csv', HTMLButtonElement).addEventListener('click', () => {
     // Download is enabled once a grading is shown.
     const shown = /** @type {Grading} */ (job);
@@ -257,7 +261,25 @@ export function createGrading({ client }) {
     if (!whole)
       status.textContent = `Downloaded the first ${rows} of ${shown.rows.length} rows, in order: Grade goes on from where it stopped, and imlab grade --resume can finish the file.`;
   });
-  // A class file dropped anywhere on the section is the one graded.
+  acceptDrops();
+}
+
+/**
+ * Ends a grading's controls: Grade again, no Cancel, Download when a row of `job` is graded.
+ * @param {Grading | null} job
+ */
+function endControls(job) {
+  $('grade-progress').hidden = true;
+  $('grade-count').textContent = '';
+  $('grade-cancel', HTMLButtonElement).disabled = true;
+  $('grade-run', HTMLButtonElement).disabled = false;
+  if (document.activeElement === document.body || document.activeElement === $('grade-cancel', HTMLButtonElement))
+    $('grade-run', HTMLButtonElement).focus();
+  $('grade-csv', HTMLButtonElement).disabled = !job || csvOf(job).rows === 0;
+}
+
+/** A class file dropped anywhere on the Grade section is the one graded. */
+function acceptDrops() {
   const zone = $('grade-section');
   zone.addEventListener('dragover', (e) => e.preventDefault());
   zone.addEventListener('drop', (e) => {
