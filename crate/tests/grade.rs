@@ -93,7 +93,8 @@ fn utf16_without_a_byte_order_mark_and_binary_files_are_refused_saying_what_they
 
 #[test]
 fn an_invalid_utf8_byte_spoils_only_its_own_line() {
-    let class = read_class(b"c=1&a\nc=1&\xff&b\nc=1&c\n").unwrap();
+    // The byte-order mark says UTF-8: without it, the file would be read as Windows-1252.
+    let class = read_class(b"\xef\xbb\xbfc=1&a\nc=1&\xff&b\nc=1&c\n").unwrap();
     assert_eq!(
         rows(&class),
         [
@@ -117,7 +118,7 @@ fn an_invalid_utf8_byte_spoils_only_its_own_line() {
     assert_eq!(class.rows[1].status, None);
     // The row is graded with its status, without a run.
     let c = Challenge::parse(QUICK).unwrap();
-    let graded = grade_row(&c, &read_class(b"\xfe").unwrap().rows[0]);
+    let graded = grade_row(&c, &read_class(b"\xef\xbb\xbf\xfe").unwrap().rows[0]);
     assert_eq!(graded.status, "malformed: line 1 is not valid UTF-8");
     assert_eq!(graded.verdict, None);
 }
@@ -573,4 +574,149 @@ fn rows_are_written_as_they_are_graded_and_a_killed_grading_keeps_them() {
         "1,c=1&garbage,malformed: 'garbage' is not of the form key=value,,0,0\n"
     );
     assert!(running, "the first row came only at the end");
+}
+
+/// `text` in Windows-1252, as a spreadsheet on Windows saves CSV.
+fn windows_1252(text: &str) -> Vec<u8> {
+    let (bytes, _, unmappable) = encoding_rs::WINDOWS_1252.encode(text);
+    assert!(!unmappable, "{text}");
+    bytes.into_owned()
+}
+
+/// A CSV export whose names are accented and whose links are valid.
+fn accented_export() -> String {
+    format!(
+        "Name,Link\r\n\"Müller, José\",{}\r\nFrançoise Œuvre – “Zoë”,{}\r\nÅsa Ørsted,c=1&x\r\n",
+        quick_link(1200),
+        quick_link(2000)
+    )
+}
+
+#[test]
+fn a_windows_1252_export_is_read_in_its_encoding_and_graded_like_its_utf8_twin() {
+    let text = accented_export();
+    let utf8 = read_class(text.as_bytes()).unwrap();
+    let legacy = read_class(&windows_1252(&text)).unwrap();
+    assert_eq!(utf8.encoding, None);
+    assert_eq!(legacy.encoding, Some("windows-1252"));
+    assert_eq!(legacy.rows, utf8.rows);
+    assert_eq!(legacy.rows[0].carried, ["Müller, José"]);
+    assert_eq!(legacy.rows[1].carried, ["Françoise Œuvre – “Zoë”"]);
+    // The command grades both to the same bytes, and says which encoding it read.
+    let path = temp("accented.csv");
+    let mut outputs = Vec::new();
+    for bytes in [text.into_bytes(), windows_1252(&accented_export())] {
+        std::fs::write(&path, &bytes).unwrap();
+        let out = imlab(&["grade", QUICK, path.to_str().unwrap()]);
+        assert!(out.status.success());
+        outputs.push(out);
+    }
+    std::fs::remove_file(&path).unwrap();
+    assert!(outputs[0].stdout == outputs[1].stdout);
+    let csv = String::from_utf8(outputs[1].stdout.clone()).unwrap();
+    assert!(
+        csv.lines()
+            .nth(1)
+            .unwrap()
+            .starts_with(&format!("\"Müller, José\",2,{},ok,", quick_link(1200))),
+        "{csv}"
+    );
+    assert!(outputs[0].stderr.is_empty());
+    assert_eq!(
+        String::from_utf8_lossy(&outputs[1].stderr),
+        format!(
+            "imlab grade: read '{}' as windows-1252 (it is not UTF-8)\n",
+            path.display()
+        )
+    );
+}
+
+#[test]
+fn a_second_grader_of_the_same_output_is_refused_and_leaves_it_as_it_is() {
+    use fs4::FileExt;
+    let class = temp("locked-class.csv");
+    std::fs::write(&class, class_file()).unwrap();
+    let out = temp("locked.csv");
+    let whole = imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout;
+    let cut = whole[..whole.len() / 2].to_vec();
+    std::fs::write(&out, &cut).unwrap();
+    let args = [
+        "grade",
+        QUICK,
+        class.to_str().unwrap(),
+        "--resume",
+        out.to_str().unwrap(),
+    ];
+    // This process stands for a grader still running on OUT.
+    let held = std::fs::File::open(&out).unwrap();
+    FileExt::lock(&held).unwrap();
+    let refused = imlab(&args);
+    assert_eq!(refused.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&refused.stderr),
+        format!(
+            "imlab: --resume '{}': another grading holds this file (it is locked by a running \
+             `imlab grade --resume`); it is left as it is\n",
+            out.display()
+        )
+    );
+    assert!(std::fs::read(&out).unwrap() == cut);
+    // Once the first grader ends, the file is free.
+    drop(held);
+    assert!(imlab(&args).status.success());
+    assert!(std::fs::read(&out).unwrap() == whole);
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
+}
+
+#[test]
+fn a_kept_row_edited_after_its_grading_is_caught_when_it_is_the_last() {
+    let class = temp("edited-class.csv");
+    std::fs::write(&class, class_file()).unwrap();
+    let whole = imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout;
+    let text = String::from_utf8(whole).unwrap();
+    let lines: Vec<&str> = text.split_inclusive('\n').collect();
+    // Row 5 of the grades (line 6 of the class) is `ok`, with values and pass flags.
+    let row = lines[5];
+    assert!(row.starts_with("Student 4,6,"), "{row}");
+    let out = temp("edited.csv");
+    for (edit, edited) in [
+        ("status", row.replacen(",ok,", ",run failed: x,", 1)),
+        ("value", {
+            let cells: Vec<&str> = row.trim_end().split(',').collect();
+            let mut cells: Vec<String> = cells.iter().map(|c| c.to_string()).collect();
+            let n = cells.len();
+            cells[n - 3] = "0.001".to_string();
+            format!("{}\n", cells.join(","))
+        }),
+        ("pass", {
+            let flipped = if row.ends_with(",0\n") { "1" } else { "0" };
+            format!("{}{flipped}\n", &row[..row.len() - 2])
+        }),
+        ("text after", format!("{},looks fine\n", row.trim_end())),
+    ] {
+        let previous = [lines[..5].concat(), edited].concat();
+        std::fs::write(&out, &previous).unwrap();
+        let refused = imlab(&[
+            "grade",
+            QUICK,
+            class.to_str().unwrap(),
+            "--resume",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&refused.stderr);
+        assert_eq!(refused.status.code(), Some(2), "{edit}: {stderr}");
+        assert!(
+            stderr.contains(
+                "its row 5 (line 6 of the class file) is not what grading it again gives"
+            ),
+            "{edit}: {stderr}"
+        );
+        assert!(
+            std::fs::read(&out).unwrap() == previous.as_bytes(),
+            "{edit}"
+        );
+    }
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
 }
