@@ -6,7 +6,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::grade::{
-    csv_header, csv_row, grade_row, read_class, resume, text_cell, Class, ClassRow, Graded,
+    csv_header, csv_row, grade_row, read_class, resume, resume_sample, text_cell, Class, ClassRow,
+    Graded, RESUME_STRIDE,
 };
 use imlab::challenge::{builtin, Challenge, CriterionVerdict, Verdict, BUILTINS};
 use std::io::{BufRead, BufReader};
@@ -715,6 +716,125 @@ fn a_kept_row_edited_after_its_grading_is_caught_when_it_is_the_last() {
         assert!(
             std::fs::read(&out).unwrap() == previous.as_bytes(),
             "{edit}"
+        );
+    }
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
+}
+
+#[test]
+fn the_rows_graded_again_are_one_in_twenty_and_the_last_from_an_offset_the_bytes_choose() {
+    let mut offsets = std::collections::BTreeSet::new();
+    for n in [1, 2, 19, 20, 21, 40, 100, 101] {
+        for k in 0..200 {
+            let kept = format!("header\n{k}\n");
+            let sample = resume_sample(kept.as_bytes(), n);
+            assert_eq!(
+                sample,
+                resume_sample(kept.as_bytes(), n),
+                "the same bytes, the same rows"
+            );
+            assert_eq!(sample.last(), Some(&(n - 1)));
+            let (stride, last) = sample.split_at(sample.len() - 1);
+            let offset = stride.first().map_or(last[0], |&f| f);
+            assert!(offset < RESUME_STRIDE);
+            assert!(stride
+                .iter()
+                .enumerate()
+                .all(|(i, &r)| r == offset + RESUME_STRIDE * i));
+            assert!(last[0] < offset + RESUME_STRIDE * (stride.len() + 1));
+            if n >= RESUME_STRIDE {
+                offsets.insert(offset);
+            }
+        }
+    }
+    assert_eq!(
+        offsets.len(),
+        RESUME_STRIDE,
+        "every offset is chosen by some bytes"
+    );
+    assert!(resume_sample(b"header\n", 0).is_empty());
+}
+
+/// The cells of a CSV line written without quotes, with the `back`th from the end set to `cell`.
+fn with_cell(line: &str, back: usize, cell: &str) -> String {
+    let mut cells: Vec<&str> = line.trim_end().split(',').collect();
+    let n = cells.len();
+    cells[n - back] = cell;
+    format!("{}\n", cells.join(","))
+}
+
+/// An edit of a row of grades, the `v`th of its kind; None where it does not apply.
+type Edit = dyn Fn(&str, usize) -> Option<String>;
+
+#[test]
+fn each_edit_of_a_kept_row_graded_again_is_refused_naming_what_differs() {
+    // A hundred rows, one in ten `ok`, the others `malformed` with pass 0.
+    let mut file = "Name,Link\n".to_string();
+    for i in 0..100u32 {
+        let link = if i % 10 == 0 {
+            quick_link(600 + 20 * i)
+        } else {
+            format!("c=1&garbage{i}")
+        };
+        file.push_str(&format!("Student {i},{link}\n"));
+    }
+    let class = temp("sampled-class.csv");
+    std::fs::write(&class, &file).unwrap();
+    let whole =
+        String::from_utf8(imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout).unwrap();
+    let lines: Vec<&str> = whole.split_inclusive('\n').collect();
+    assert_eq!(lines.len(), 101);
+    // Cells from the end: 1 pass, 3 settling_time, 5 current_peak, 6 status.
+    let edits: [(&str, &Edit); 4] = [
+        ("its status is 'ok', not 'malformed: ", &|row, _| {
+            row.contains(",malformed: ")
+                .then(|| with_cell(row, 6, "ok"))
+        }),
+        ("its current_peak is '3.", &|row, v| {
+            row.contains(",ok,")
+                .then(|| with_cell(row, 5, &format!("3.{v}")))
+        }),
+        ("its pass is '1', not '0'", &|row, _| {
+            row.ends_with(",0\n").then(|| with_cell(row, 1, "1"))
+        }),
+        ("it has 'checked ", &|row, v| {
+            Some(format!("{},checked {v}\n", row.trim_end()))
+        }),
+    ];
+    let out = temp("sampled.csv");
+    for (what, edit) in edits {
+        // The first edit of a row but the last that lands in the rows graded again.
+        let (j, previous) = (1..99)
+            .flat_map(|j| (0..40).map(move |v| (j, v)))
+            .find_map(|(j, v)| {
+                let mut edited: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+                edited[j + 1] = edit(lines[j + 1], v)?;
+                let previous = edited.concat();
+                resume_sample(previous.as_bytes(), 100)
+                    .contains(&j)
+                    .then_some((j, previous))
+            })
+            .unwrap_or_else(|| panic!("no edit '{what}' lands in the rows graded again"));
+        std::fs::write(&out, &previous).unwrap();
+        let refused = imlab(&[
+            "grade",
+            QUICK,
+            class.to_str().unwrap(),
+            "--resume",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&refused.stderr);
+        assert_eq!(refused.status.code(), Some(2), "{what}: {stderr}");
+        let message = format!(
+            "its row {} (line {} of the class file) is not what grading it again gives: {what}",
+            j + 1,
+            j + 2
+        );
+        assert!(stderr.contains(&message), "{message}\n{stderr}");
+        assert!(
+            std::fs::read(&out).unwrap() == previous.as_bytes(),
+            "{what}"
         );
     }
     std::fs::remove_file(&out).unwrap();

@@ -21,6 +21,7 @@ mod class;
 pub use class::{read_class, Class, ClassRow};
 
 use super::{fnv1a, judge, measure, Challenge, Measures, Verdict};
+use crate::rng::Rng;
 use crate::sim::Simulation;
 use crate::text::{csv, escape_invisible, excerpt};
 use serde::Serialize;
@@ -192,14 +193,14 @@ pub const RESUME_STRIDE: usize = 20;
 
 /// The indices of the kept rows graded again when a grading resumes from `kept`, the complete
 /// lines of its output, which hold `done` rows: every [`RESUME_STRIDE`]th row from an offset
-/// that the bytes of `kept` choose (their FNV-1a hash), and the last. The choice is the same
-/// for the same bytes, and any edit of the file moves it, so that the editor of a row cannot
-/// tell from the file whether it will be graded again.
+/// drawn from the bytes of `kept` (their FNV-1a hash seeds the crate's generator), and the last.
+/// The choice is the same for the same bytes, and any edit of the file draws it afresh, so that
+/// the editor of a row cannot tell from the file whether it will be graded again.
 pub fn resume_sample(kept: &[u8], done: usize) -> Vec<usize> {
     if done == 0 {
         return Vec::new();
     }
-    let offset = (fnv1a(kept) >> 32) as usize % RESUME_STRIDE;
+    let offset = (Rng::new(fnv1a(kept)).next_u64() % RESUME_STRIDE as u64) as usize;
     let mut sample: Vec<usize> = (offset..done).step_by(RESUME_STRIDE).collect();
     if sample.last() != Some(&(done - 1)) {
         sample.push(done - 1);
