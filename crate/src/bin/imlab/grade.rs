@@ -73,9 +73,12 @@ fn resume_into(c: &Challenge, class: &Class, header: &str, path: &str) -> Result
     file.read_to_end(&mut previous).map_err(failed)?;
     let from = grade::resume(c, class, &previous).map_err(named)?;
     let sample: Vec<&ClassRow> = from.sample.iter().map(|k| &class.rows[k.index]).collect();
-    grade_each(c, &sample, ("graded again kept row", 0), |i, graded| {
-        grade::check_kept(c, class, &from.sample[i], &graded).map_err(named)
-    })?;
+    grade_each(
+        c,
+        &sample,
+        ("checking kept rows: graded", 0),
+        |i, graded| grade::check_kept(c, class, &from.sample[i], &graded).map_err(named),
+    )?;
     file.set_len(from.keep as u64)
         .and_then(|()| file.seek(SeekFrom::End(0)))
         .map_err(failed)?;
