@@ -127,6 +127,24 @@ test('Cancel while the class file is read ends the grading there: nothing is gra
     assert.match(await page.textContent('#grade-status'), /^Graded 7 of 7/);
   }));
 
+test('a class file saved in Windows-1252 is read as such, said so, and graded as imlab grade grades it', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    const names = ['Müller, José', 'Françoise Lévêque', 'Zoë Ørsted'];
+    const rows = classLinks(7).map((l, i) => `"${names[i % names.length]}","${l.replaceAll('"', '""')}"`);
+    // Every character of the names is in Latin-1, which Windows-1252 writes as the same bytes.
+    const path = file('legacy.csv', Buffer.from(`name,link\r\n${rows.join('\r\n')}\r\n`, 'latin1'));
+    await openGrading(page, path);
+    await page.click('#grade-run');
+    await page.waitForFunction(() => document.body.dataset.grading === 'done', null, { timeout: 120_000 });
+    const csv = await downloaded(page);
+    assert.equal(csv, cliGrade(path));
+    assert.ok(csv.includes('"Müller, José",2,'), csv);
+    assert.match(
+      await page.textContent('#grade-status'),
+      /^Graded 7 of 7: \d+ passed\. The class file was read as windows-1252 \(it is not UTF-8\)\./,
+    );
+  }));
+
 test('a class file the core refuses whole is said, and nothing is graded', () =>
   suite.withPage('?v=1&preset=step', async (page) => {
     // UTF-16 without a byte-order mark.

@@ -6,7 +6,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::grade::{
-    csv_header, csv_row, grade_row, read_class, resume, text_cell, Class, ClassRow, Graded,
+    csv_header, csv_row, grade_row, read_class, resume, resume_sample, text_cell, Class, ClassRow,
+    Graded, RESUME_STRIDE,
 };
 use imlab::challenge::{builtin, Challenge, CriterionVerdict, Verdict, BUILTINS};
 use std::io::{BufRead, BufReader};
@@ -93,7 +94,8 @@ fn utf16_without_a_byte_order_mark_and_binary_files_are_refused_saying_what_they
 
 #[test]
 fn an_invalid_utf8_byte_spoils_only_its_own_line() {
-    let class = read_class(b"c=1&a\nc=1&\xff&b\nc=1&c\n").unwrap();
+    // The byte-order mark says UTF-8: without it, the file would be read as Windows-1252.
+    let class = read_class(b"\xef\xbb\xbfc=1&a\nc=1&\xff&b\nc=1&c\n").unwrap();
     assert_eq!(
         rows(&class),
         [
@@ -117,7 +119,7 @@ fn an_invalid_utf8_byte_spoils_only_its_own_line() {
     assert_eq!(class.rows[1].status, None);
     // The row is graded with its status, without a run.
     let c = Challenge::parse(QUICK).unwrap();
-    let graded = grade_row(&c, &read_class(b"\xfe").unwrap().rows[0]);
+    let graded = grade_row(&c, &read_class(b"\xef\xbb\xbf\xfe").unwrap().rows[0]);
     assert_eq!(graded.status, "malformed: line 1 is not valid UTF-8");
     assert_eq!(graded.verdict, None);
 }
@@ -573,4 +575,268 @@ fn rows_are_written_as_they_are_graded_and_a_killed_grading_keeps_them() {
         "1,c=1&garbage,malformed: 'garbage' is not of the form key=value,,0,0\n"
     );
     assert!(running, "the first row came only at the end");
+}
+
+/// `text` in Windows-1252, as a spreadsheet on Windows saves CSV.
+fn windows_1252(text: &str) -> Vec<u8> {
+    let (bytes, _, unmappable) = encoding_rs::WINDOWS_1252.encode(text);
+    assert!(!unmappable, "{text}");
+    bytes.into_owned()
+}
+
+/// A CSV export whose names are accented and whose links are valid.
+fn accented_export() -> String {
+    format!(
+        "Name,Link\r\n\"Müller, José\",{}\r\nFrançoise Œuvre – “Zoë”,{}\r\nÅsa Ørsted,c=1&x\r\n",
+        quick_link(1200),
+        quick_link(2000)
+    )
+}
+
+#[test]
+fn a_windows_1252_export_is_read_in_its_encoding_and_graded_like_its_utf8_twin() {
+    let text = accented_export();
+    let utf8 = read_class(text.as_bytes()).unwrap();
+    let legacy = read_class(&windows_1252(&text)).unwrap();
+    assert_eq!(utf8.encoding, None);
+    assert_eq!(legacy.encoding, Some("windows-1252"));
+    assert_eq!(legacy.rows, utf8.rows);
+    assert_eq!(legacy.rows[0].carried, ["Müller, José"]);
+    assert_eq!(legacy.rows[1].carried, ["Françoise Œuvre – “Zoë”"]);
+    // The command grades both to the same bytes, and says which encoding it read.
+    let path = temp("accented.csv");
+    let mut outputs = Vec::new();
+    for bytes in [text.into_bytes(), windows_1252(&accented_export())] {
+        std::fs::write(&path, &bytes).unwrap();
+        let out = imlab(&["grade", QUICK, path.to_str().unwrap()]);
+        assert!(out.status.success());
+        outputs.push(out);
+    }
+    std::fs::remove_file(&path).unwrap();
+    assert!(outputs[0].stdout == outputs[1].stdout);
+    let csv = String::from_utf8(outputs[1].stdout.clone()).unwrap();
+    assert!(
+        csv.lines()
+            .nth(1)
+            .unwrap()
+            .starts_with(&format!("\"Müller, José\",2,{},ok,", quick_link(1200))),
+        "{csv}"
+    );
+    assert!(outputs[0].stderr.is_empty());
+    assert_eq!(
+        String::from_utf8_lossy(&outputs[1].stderr),
+        format!(
+            "imlab grade: read '{}' as windows-1252 (it is not UTF-8)\n",
+            path.display()
+        )
+    );
+}
+
+#[test]
+fn a_second_grader_of_the_same_output_is_refused_and_leaves_it_as_it_is() {
+    use fs4::FileExt;
+    let class = temp("locked-class.csv");
+    std::fs::write(&class, class_file()).unwrap();
+    let out = temp("locked.csv");
+    let whole = imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout;
+    let cut = whole[..whole.len() / 2].to_vec();
+    std::fs::write(&out, &cut).unwrap();
+    let args = [
+        "grade",
+        QUICK,
+        class.to_str().unwrap(),
+        "--resume",
+        out.to_str().unwrap(),
+    ];
+    // This process stands for a grader still running on OUT.
+    let held = std::fs::File::open(&out).unwrap();
+    FileExt::lock(&held).unwrap();
+    let refused = imlab(&args);
+    assert_eq!(refused.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&refused.stderr),
+        format!(
+            "imlab: --resume '{}': another grading holds this file (it is locked by a running \
+             `imlab grade --resume`); it is left as it is\n",
+            out.display()
+        )
+    );
+    assert!(std::fs::read(&out).unwrap() == cut);
+    // Once the first grader ends, the file is free.
+    drop(held);
+    assert!(imlab(&args).status.success());
+    assert!(std::fs::read(&out).unwrap() == whole);
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
+}
+
+#[test]
+fn a_kept_row_edited_after_its_grading_is_caught_when_it_is_the_last() {
+    let class = temp("edited-class.csv");
+    std::fs::write(&class, class_file()).unwrap();
+    let whole = imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout;
+    let text = String::from_utf8(whole).unwrap();
+    let lines: Vec<&str> = text.split_inclusive('\n').collect();
+    // Row 5 of the grades (line 6 of the class) is `ok`, with values and pass flags.
+    let row = lines[5];
+    assert!(row.starts_with("Student 4,6,"), "{row}");
+    let out = temp("edited.csv");
+    for (edit, edited) in [
+        ("status", row.replacen(",ok,", ",run failed: x,", 1)),
+        ("value", {
+            let cells: Vec<&str> = row.trim_end().split(',').collect();
+            let mut cells: Vec<String> = cells.iter().map(|c| c.to_string()).collect();
+            let n = cells.len();
+            cells[n - 3] = "0.001".to_string();
+            format!("{}\n", cells.join(","))
+        }),
+        ("pass", {
+            let flipped = if row.ends_with(",0\n") { "1" } else { "0" };
+            format!("{}{flipped}\n", &row[..row.len() - 2])
+        }),
+        ("text after", format!("{},looks fine\n", row.trim_end())),
+    ] {
+        let previous = [lines[..5].concat(), edited].concat();
+        std::fs::write(&out, &previous).unwrap();
+        let refused = imlab(&[
+            "grade",
+            QUICK,
+            class.to_str().unwrap(),
+            "--resume",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&refused.stderr);
+        assert_eq!(refused.status.code(), Some(2), "{edit}: {stderr}");
+        assert!(
+            stderr.contains(
+                "its row 5 (line 6 of the class file) is not what grading it again gives"
+            ),
+            "{edit}: {stderr}"
+        );
+        assert!(
+            std::fs::read(&out).unwrap() == previous.as_bytes(),
+            "{edit}"
+        );
+    }
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
+}
+
+#[test]
+fn the_rows_graded_again_are_one_in_twenty_and_the_last_from_an_offset_the_bytes_choose() {
+    let mut offsets = std::collections::BTreeSet::new();
+    for n in [1, 2, 19, 20, 21, 40, 100, 101] {
+        for k in 0..200 {
+            let kept = format!("header\n{k}\n");
+            let sample = resume_sample(kept.as_bytes(), n);
+            assert_eq!(
+                sample,
+                resume_sample(kept.as_bytes(), n),
+                "the same bytes, the same rows"
+            );
+            assert_eq!(sample.last(), Some(&(n - 1)));
+            let (stride, last) = sample.split_at(sample.len() - 1);
+            let offset = stride.first().map_or(last[0], |&f| f);
+            assert!(offset < RESUME_STRIDE);
+            assert!(stride
+                .iter()
+                .enumerate()
+                .all(|(i, &r)| r == offset + RESUME_STRIDE * i));
+            assert!(last[0] < offset + RESUME_STRIDE * (stride.len() + 1));
+            if n >= RESUME_STRIDE {
+                offsets.insert(offset);
+            }
+        }
+    }
+    assert_eq!(
+        offsets.len(),
+        RESUME_STRIDE,
+        "every offset is chosen by some bytes"
+    );
+    assert!(resume_sample(b"header\n", 0).is_empty());
+}
+
+/// The cells of a CSV line written without quotes, with the `back`th from the end set to `cell`.
+fn with_cell(line: &str, back: usize, cell: &str) -> String {
+    let mut cells: Vec<&str> = line.trim_end().split(',').collect();
+    let n = cells.len();
+    cells[n - back] = cell;
+    format!("{}\n", cells.join(","))
+}
+
+/// An edit of a row of grades, the `v`th of its kind; None where it does not apply.
+type Edit = dyn Fn(&str, usize) -> Option<String>;
+
+#[test]
+fn each_edit_of_a_kept_row_graded_again_is_refused_naming_what_differs() {
+    // A hundred rows, one in ten `ok`, the others `malformed` with pass 0.
+    let mut file = "Name,Link\n".to_string();
+    for i in 0..100u32 {
+        let link = if i % 10 == 0 {
+            quick_link(600 + 20 * i)
+        } else {
+            format!("c=1&garbage{i}")
+        };
+        file.push_str(&format!("Student {i},{link}\n"));
+    }
+    let class = temp("sampled-class.csv");
+    std::fs::write(&class, &file).unwrap();
+    let whole =
+        String::from_utf8(imlab(&["grade", QUICK, class.to_str().unwrap()]).stdout).unwrap();
+    let lines: Vec<&str> = whole.split_inclusive('\n').collect();
+    assert_eq!(lines.len(), 101);
+    // Cells from the end: 1 pass, 3 settling_time, 5 current_peak, 6 status.
+    let edits: [(&str, &Edit); 4] = [
+        ("its status is 'ok', not 'malformed: ", &|row, _| {
+            row.contains(",malformed: ")
+                .then(|| with_cell(row, 6, "ok"))
+        }),
+        ("its current_peak is '3.", &|row, v| {
+            row.contains(",ok,")
+                .then(|| with_cell(row, 5, &format!("3.{v}")))
+        }),
+        ("its pass is '1', not '0'", &|row, _| {
+            row.ends_with(",0\n").then(|| with_cell(row, 1, "1"))
+        }),
+        ("it has 'checked ", &|row, v| {
+            Some(format!("{},checked {v}\n", row.trim_end()))
+        }),
+    ];
+    let out = temp("sampled.csv");
+    for (what, edit) in edits {
+        // The first edit of a row but the last that lands in the rows graded again.
+        let (j, previous) = (1..99)
+            .flat_map(|j| (0..40).map(move |v| (j, v)))
+            .find_map(|(j, v)| {
+                let mut edited: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
+                edited[j + 1] = edit(lines[j + 1], v)?;
+                let previous = edited.concat();
+                resume_sample(previous.as_bytes(), 100)
+                    .contains(&j)
+                    .then_some((j, previous))
+            })
+            .unwrap_or_else(|| panic!("no edit '{what}' lands in the rows graded again"));
+        std::fs::write(&out, &previous).unwrap();
+        let refused = imlab(&[
+            "grade",
+            QUICK,
+            class.to_str().unwrap(),
+            "--resume",
+            out.to_str().unwrap(),
+        ]);
+        let stderr = String::from_utf8_lossy(&refused.stderr);
+        assert_eq!(refused.status.code(), Some(2), "{what}: {stderr}");
+        let message = format!(
+            "its row {} (line {} of the class file) is not what grading it again gives: {what}",
+            j + 1,
+            j + 2
+        );
+        assert!(stderr.contains(&message), "{message}\n{stderr}");
+        assert!(
+            std::fs::read(&out).unwrap() == previous.as_bytes(),
+            "{what}"
+        );
+    }
+    std::fs::remove_file(&out).unwrap();
+    std::fs::remove_file(&class).unwrap();
 }

@@ -19,10 +19,12 @@ const STORE = 'imlab-grading';
 const KEEP_EVERY_MS = 1000;
 
 /**
- * A grading: the challenge's canonical link, the class file's name, header and submissions, and
- * each submission's result by index (only what the table and the CSV need).
+ * A grading: the challenge's canonical link, the class file's name, header and submissions, each
+ * submission's result by index (only what the table and the CSV need), and what to say of the
+ * file's encoding when the core read it as another than UTF-8 ('' for UTF-8).
  * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
- *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
+ *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>,
+ *   readAs: string}} Grading
  */
 
 /**
@@ -165,6 +167,7 @@ export function createGrading({ client }) {
       columns: plan.columns,
       rows: plan.rows,
       results: kept(key),
+      readAs: plan.encoding ? ` The class file was read as ${plan.encoding} (it is not UTF-8).` : '',
     };
   }
 
@@ -204,7 +207,7 @@ export function createGrading({ client }) {
     const from = total - todo.length;
     progress.hidden = false;
     body.grading = 'running';
-    status.textContent = `Grading ${total} submissions${from ? `, ${from} kept from the last grading` : ''}…`;
+    status.textContent = `Grading ${total} submissions${from ? `, ${from} kept from the last grading` : ''}…${mine.readAs}`;
     let keptAt = 0;
     const tell = (/** @type {number} */ done) => {
       progress.value = (from + done) / total;
@@ -228,7 +231,7 @@ export function createGrading({ client }) {
       );
       const stored = keep(mine);
       const passed = Object.values(mine.results).filter((r) => r.pass).length;
-      status.textContent = `Graded ${total} of ${total}: ${passed} passed.${stored ? '' : ' The browser’s storage did not take this grading: download it now.'}`;
+      status.textContent = `Graded ${total} of ${total}: ${passed} passed.${mine.readAs}${stored ? '' : ' The browser’s storage did not take this grading: download it now.'}`;
       body.grading = 'done';
     } catch (e) {
       const stored = keep(mine);

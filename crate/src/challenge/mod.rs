@@ -274,12 +274,7 @@ impl Challenge {
     /// the same code are the same challenge but for a chance of about one in a million million.
     pub fn fingerprint(&self) -> String {
         const ALPHABET: &[u8; 32] = b"0123456789ABCDEFGHJKMNPQRSTVWXYZ";
-        let hash = self
-            .encode()
-            .bytes()
-            .fold(0xcbf2_9ce4_8422_2325_u64, |h, b| {
-                (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-            });
+        let hash = fnv1a(self.encode().as_bytes());
         let mut out = String::with_capacity(9);
         for i in 0..8 {
             if i == 4 {
@@ -314,4 +309,11 @@ impl Challenge {
         }
         out
     }
+}
+
+/// The 64-bit FNV-1a hash of `bytes`: stable across platforms and releases.
+pub(crate) fn fnv1a(bytes: &[u8]) -> u64 {
+    bytes.iter().fold(0xcbf2_9ce4_8422_2325_u64, |h, &b| {
+        (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+    })
 }

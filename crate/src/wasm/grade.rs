@@ -26,18 +26,23 @@ pub struct ClassView {
     link_column: Option<String>,
     /// The submissions, in file order.
     rows: Vec<ClassRow>,
+    /// The encoding the file was read in when it is not UTF-8 (guessed from its bytes:
+    /// "windows-1252", say), or null.
+    encoding: Option<String>,
     /// Why the challenge or the file is refused whole, or null.
     error: Option<String>,
 }
 
 /// Reads a class's file against a challenge: `challenge` is a challenge link or a built-in's
-/// name, `bytes` (a `Uint8Array`) the file as it is (UTF-8 or UTF-16, one link a line or a CSV
-/// export; see the core's `challenge::grade` documentation). Never throws; returns
+/// name, `bytes` (a `Uint8Array`) the file as it is (UTF-8, UTF-16 with a byte-order mark, or
+/// a legacy encoding such as Windows-1252, which the core tells from the bytes; one link a line
+/// or a CSV export; see the core's `challenge::grade` documentation). Never throws; returns
 ///
 /// ```text
 /// {header: string (the CSV header line, "\n" included; "" on error),
 ///  columns: [string] (the carried columns' headers), link_column: string | null,
 ///  rows: [{line: number, link: string, carried: [string], status: string | null}],
+///  encoding: string | null (the encoding read, when the file is not UTF-8),
 ///  error: string | null (why the challenge or the file is refused whole)}
 /// ```
 ///
@@ -54,6 +59,7 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsVal
             columns: class.columns,
             link_column: class.link_column,
             rows: class.rows,
+            encoding: class.encoding.map(str::to_string),
             error: None,
         },
         Err(e) => ClassView {
@@ -61,6 +67,7 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsVal
             columns: Vec::new(),
             link_column: None,
             rows: Vec::new(),
+            encoding: None,
             error: Some(e),
         },
     };

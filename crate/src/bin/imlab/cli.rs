@@ -211,12 +211,15 @@ pub(crate) enum Command {
     Grade {
         /// A built-in challenge's name or a challenge link
         challenge: String,
-        /// File of submission links (UTF-8, or UTF-16 with a byte-order mark): one a line (blank
-        /// lines and # comments skipped), or a CSV export with a header whose other columns are
-        /// carried to the grades first; - for stdin
+        /// File of submission links (UTF-8, UTF-16 with a byte-order mark, or a legacy encoding
+        /// such as Windows-1252, told from its bytes): one a line (blank lines and # comments
+        /// skipped), or a CSV export with a header whose other columns are carried to the grades
+        /// first; - for stdin
         file: String,
         /// Append the grades to OUT, an earlier output of this command cut off anywhere (or
-        /// missing), after the rows it holds, instead of writing them to stdout
+        /// missing), after the rows it holds, instead of writing them to stdout. OUT is locked
+        /// while it is graded, and one in twenty of its rows (and its last) is graded again
+        /// and must be unchanged
         #[arg(long, value_name = "OUT", allow_hyphen_values = true)]
         resume: Option<String>,
     },

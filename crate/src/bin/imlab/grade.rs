@@ -1,11 +1,12 @@
 //! The `grade` subcommand: a class's submission links graded on all cores, a CSV row each.
 
 use crate::output::{stdout_stop, to_stderr, Stop};
-use imlab::challenge::grade::{self, ClassRow, Graded};
+use fs4::{FileExt, TryLockError};
+use imlab::challenge::grade::{self, Class, ClassRow, Graded};
 use imlab::challenge::Challenge;
 use imlab::text::excerpt;
 use std::fs::OpenOptions;
-use std::io::{self, ErrorKind, Read, Seek, SeekFrom, Write};
+use std::io::{self, Read, Seek, SeekFrom, Write};
 
 /// Grades each submission of `file` against the challenge and writes the grades as CSV to
 /// `out`, or with `resume` appended to that file after the rows it already holds; progress on
@@ -26,33 +27,63 @@ pub(crate) fn grade(
     };
     let bytes = bytes.map_err(|e| format!("{name}: {e}"))?;
     let class = grade::read_class(&bytes).map_err(|e| format!("{name}: {e}"))?;
+    if let Some(encoding) = class.encoding {
+        to_stderr(format_args!(
+            "imlab grade: read {name} as {encoding} (it is not UTF-8)\n"
+        ));
+    }
     let header = grade::csv_header(&c, &class);
-    let Some(path) = resume else {
-        return grade_rows(&c, &class.rows, 0, &header, |text| {
+    match resume {
+        None => grade_rows(&c, &class.rows, 0, &header, |text| {
             out.write_all(text.as_bytes())
                 .and_then(|()| out.flush())
                 .map_err(stdout_stop)
-        });
-    };
-    let failed = |e: io::Error| Stop::Failed(format!("--resume '{}': {e}", excerpt(path)));
-    let previous = match std::fs::read(path) {
-        Ok(bytes) => bytes,
-        Err(e) if e.kind() == ErrorKind::NotFound => Vec::new(),
-        Err(e) => return Err(failed(e)),
-    };
-    let from = grade::resume(&c, &class, &previous)
-        .map_err(|e| format!("--resume '{}': {e}", excerpt(path)))?;
+        }),
+        Some(path) => resume_into(&c, &class, &header, path),
+    }
+}
+
+/// Appends the grades of `class` to the file `path` after the rows it already holds (see
+/// [`grade::resume`]), holding the file's lock from before it is read until the process ends,
+/// and after grading a sample of its rows again; a file another grading holds, or whose rows
+/// are not this grading's, is refused and left as it is.
+fn resume_into(c: &Challenge, class: &Class, header: &str, path: &str) -> Result<(), Stop> {
+    let named = |e: String| Stop::Failed(format!("--resume '{}': {e}", excerpt(path)));
+    let failed = |e: io::Error| named(e.to_string());
     let mut file = OpenOptions::new()
+        .read(true)
         .write(true)
         .create(true)
         .truncate(false)
         .open(path)
         .map_err(failed)?;
+    // The trait's, not the standard library's method of the same name (Rust 1.89 and later).
+    match FileExt::try_lock(&file) {
+        Ok(()) => {}
+        Err(TryLockError::WouldBlock) => {
+            return Err(named(
+                "another grading holds this file (it is locked by a running `imlab grade \
+                 --resume`); it is left as it is"
+                    .to_string(),
+            ))
+        }
+        Err(TryLockError::Error(e)) => return Err(failed(e)),
+    }
+    let mut previous = Vec::new();
+    file.read_to_end(&mut previous).map_err(failed)?;
+    let from = grade::resume(c, class, &previous).map_err(named)?;
+    let sample: Vec<&ClassRow> = from.sample.iter().map(|k| &class.rows[k.index]).collect();
+    grade_each(
+        c,
+        &sample,
+        ("checking kept rows: graded", 0),
+        |i, graded| grade::check_kept(c, class, &from.sample[i], &graded).map_err(named),
+    )?;
     file.set_len(from.keep as u64)
         .and_then(|()| file.seek(SeekFrom::End(0)))
         .map_err(failed)?;
-    let header = if from.keep == 0 { &header[..] } else { "" };
-    grade_rows(&c, &class.rows, from.done, header, |text| {
+    let header = if from.keep == 0 { header } else { "" };
+    grade_rows(c, &class.rows, from.done, header, |text| {
         file.write_all(text.as_bytes()).map_err(failed)
     })
 }
@@ -68,11 +99,27 @@ fn grade_rows(
     mut write: impl FnMut(&str) -> Result<(), Stop>,
 ) -> Result<(), Stop> {
     write(header)?;
-    let todo = &rows[done..];
-    let total = rows.len();
+    let todo: Vec<&ClassRow> = rows[done..].iter().collect();
+    grade_each(c, &todo, ("graded", done), |i, graded| {
+        write(&grade::csv_row(c, todo[i], &graded))
+    })
+}
+
+/// Grades `rows` on all cores and hands each one's grading, with its index, to `take` as soon as
+/// it and every row before it are graded; stops at the first error of `take`. More than four
+/// rows in all show progress on stderr, `imlab grade: <label> <n> of <total>`, where `progress`
+/// is the label and the rows counted before these.
+fn grade_each(
+    c: &Challenge,
+    rows: &[&ClassRow],
+    progress: (&str, usize),
+    mut take: impl FnMut(usize, Graded) -> Result<(), Stop>,
+) -> Result<(), Stop> {
+    let (label, before) = progress;
+    let total = before + rows.len();
     let threads = std::thread::available_parallelism()
         .map_or(1, |n| n.get())
-        .min(todo.len().max(1));
+        .min(rows.len().max(1));
     let next = std::sync::atomic::AtomicUsize::new(0);
     let stop = std::sync::atomic::AtomicBool::new(false);
     let (send, receive) = std::sync::mpsc::channel::<(usize, Graded)>();
@@ -82,7 +129,7 @@ fn grade_rows(
             let (next, stop) = (&next, &stop);
             scope.spawn(move || loop {
                 let i = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some(row) = todo.get(i) else {
+                let Some(row) = rows.get(i) else {
                     break;
                 };
                 if stop.load(std::sync::atomic::Ordering::Relaxed) {
@@ -99,24 +146,24 @@ fn grade_rows(
             });
         }
         drop(send);
-        let mut graded: Vec<Option<Graded>> = vec![None; todo.len()];
-        let (mut written, mut finished) = (0, done);
+        let mut graded: Vec<Option<Graded>> = vec![None; rows.len()];
+        let (mut taken, mut finished) = (0, before);
         let result = (|| {
             for (i, g) in receive.iter() {
                 graded[i] = Some(g);
                 finished += 1;
                 if total > 4 {
                     to_stderr(format_args!(
-                        "\rimlab grade: graded {finished} of {total}   "
+                        "\rimlab grade: {label} {finished} of {total}   "
                     ));
                 }
-                while let Some(g) = graded.get_mut(written).and_then(Option::take) {
+                while let Some(g) = graded.get_mut(taken).and_then(Option::take) {
                     if total > 4 {
                         // Clears the progress line, so that on a terminal the row starts a line.
                         to_stderr(format_args!("\r{:40}\r", ""));
                     }
-                    write(&grade::csv_row(c, &todo[written], &g))?;
-                    written += 1;
+                    take(taken, g)?;
+                    taken += 1;
                 }
             }
             Ok(())

@@ -4,9 +4,12 @@
 //!
 //! - **Encoding.** UTF-8, with or without a byte-order mark, or UTF-16 (little- or big-endian)
 //!   with one. A file with NUL bytes and no byte-order mark is refused whole: as UTF-16 without a
-//!   byte-order mark when its NULs fall on every other byte, else as not text. A line that does
-//!   not decode spoils only itself: its row is graded `malformed: line N is not valid UTF-8`
-//!   (or UTF-16), its text shown with `�` for the bytes at fault.
+//!   byte-order mark when its NULs fall on every other byte, else as not text. A file without a
+//!   byte-order mark that is not valid UTF-8 is read in the legacy encoding its bytes point to
+//!   (Windows-1252 for a spreadsheet's export in Western Europe; guessed by chardetng, decoded by
+//!   encoding_rs), and [`Class::encoding`] names it. A line that does not decode spoils only
+//!   itself: its row is graded `malformed: line N is not valid UTF-8` (or UTF-16, or the legacy
+//!   encoding's name), its text shown with `�` for the bytes at fault.
 //! - **Lines** end with LF, CRLF or a lone CR.
 //! - **Shape.** The first line that is neither blank nor a `#` comment decides. It is the header
 //!   of a CSV export when it has two or more fields (separated by commas, semicolons or tabs,
@@ -22,6 +25,8 @@
 //!   (`robust=a,b`); one with fewer fields, or without a link, is a row graded `malformed: …`.
 
 use crate::text::excerpt;
+use chardetng::{EncodingDetector, Iso2022JpDetection, Utf8Detection};
+use encoding_rs::Encoding;
 use serde::{Deserialize, Serialize};
 
 /// A class's file, read: the submissions to grade, in file order.
@@ -34,6 +39,10 @@ pub struct Class {
     pub link_column: Option<String>,
     /// The submissions, in file order.
     pub rows: Vec<ClassRow>,
+    /// The encoding the file was read in when it is not UTF-8 and has no byte-order mark,
+    /// guessed from its bytes (`windows-1252`, say); None for a file read as UTF-8, or as
+    /// UTF-16 by its byte-order mark.
+    pub encoding: Option<&'static str>,
 }
 
 /// One submission of a class's file.
@@ -67,21 +76,37 @@ struct Line {
     valid: bool,
 }
 
-/// The text, decoded, and the name of its encoding.
-type Decoded = (Vec<Line>, &'static str);
+/// The text, decoded.
+struct Decoded {
+    /// Its lines.
+    lines: Vec<Line>,
+    /// The name of its encoding.
+    encoding: &'static str,
+    /// Whether the encoding was guessed from the bytes, the file being neither UTF-8 nor
+    /// marked.
+    guessed: bool,
+}
 
 /// Reads a class's file (see the module's documentation for the shapes it takes); refuses a
 /// file that is not text, or whose CSV header names no single column of links, with a message
 /// saying why.
 pub fn read_class(bytes: &[u8]) -> Result<Class, String> {
-    let (lines, encoding) = decode(bytes)?;
-    let Some(first) = lines.iter().position(|l| !skipped(&l.text)) else {
-        return Ok(Class::default());
+    let Decoded {
+        lines,
+        encoding,
+        guessed,
+    } = decode(bytes)?;
+    let class = match lines.iter().position(|l| !skipped(&l.text)) {
+        None => Class::default(),
+        Some(first) => match header(&lines, first) {
+            Some((delimiter, record)) => csv_class(&lines, record, delimiter, encoding)?,
+            None => one_a_line(&lines, encoding),
+        },
     };
-    match header(&lines, first) {
-        Some((delimiter, record)) => csv_class(&lines, record, delimiter, encoding),
-        None => Ok(one_a_line(&lines, encoding)),
-    }
+    Ok(Class {
+        encoding: guessed.then_some(encoding),
+        ..class
+    })
 }
 
 /// Whether a line of a file of one link a line is skipped: blank, or a `#` comment.
@@ -95,10 +120,16 @@ fn undecoded(number: usize, encoding: &str) -> String {
     format!("malformed: line {number} is not valid {encoding}")
 }
 
-/// The lines of the file, by its byte-order mark or, without one, as UTF-8.
+/// The lines of the file, by its byte-order mark or, without one, as UTF-8 when it is, else in
+/// the encoding its bytes point to.
 fn decode(bytes: &[u8]) -> Result<Decoded, String> {
+    let decoded = |lines, encoding| Decoded {
+        lines,
+        encoding,
+        guessed: false,
+    };
     if let Some(rest) = bytes.strip_prefix(b"\xef\xbb\xbf") {
-        return Ok((utf8_lines(rest), "UTF-8"));
+        return Ok(decoded(utf8_lines(rest), "UTF-8"));
     }
     for (bom, from_bytes) in [
         (b"\xff\xfe", u16::from_le_bytes as fn([u8; 2]) -> u16),
@@ -109,7 +140,7 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
             if lines.iter().any(|l| l.text.contains('\0')) {
                 return Err(NOT_TEXT.to_string());
             }
-            return Ok((lines, "UTF-16"));
+            return Ok(decoded(lines, "UTF-16"));
         }
     }
     if bytes.contains(&0) {
@@ -119,7 +150,17 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
             NOT_TEXT.to_string()
         });
     }
-    Ok((utf8_lines(bytes), "UTF-8"))
+    if std::str::from_utf8(bytes).is_ok() {
+        return Ok(decoded(utf8_lines(bytes), "UTF-8"));
+    }
+    let mut detector = EncodingDetector::new(Iso2022JpDetection::Deny);
+    detector.feed(bytes, true);
+    let encoding = detector.guess(None, Utf8Detection::Deny);
+    Ok(Decoded {
+        lines: legacy_lines(bytes, encoding),
+        encoding: encoding.name(),
+        guessed: true,
+    })
 }
 
 /// Why a file with NUL bytes is refused.
@@ -159,6 +200,20 @@ fn utf16_lines(bytes: &[u8], from_bytes: fn([u8; 2]) -> u16) -> Vec<Line> {
     let odd = (!pairs.remainder().is_empty()).then_some(None);
     let units = pairs.map(|p| from_bytes([p[0], p[1]]));
     split_lines(char::decode_utf16(units).map(Result::ok).chain(odd))
+}
+
+/// The lines of text in `encoding`, one of the ASCII-compatible legacy encodings chardetng
+/// guesses (in none of them does a byte of CR or LF stand inside another character, so the bytes
+/// split at line ends first); a sequence without a character decodes to `�` and spoils its
+/// line.
+fn legacy_lines(bytes: &[u8], encoding: &'static Encoding) -> Vec<Line> {
+    let pieces = bytes.split_inclusive(|&b| b == b'\n' || b == b'\r');
+    split_lines(pieces.flat_map(|piece| {
+        let (text, bad) = encoding.decode_without_bom_handling(piece);
+        text.chars()
+            .map(|c| (!(bad && c == '\u{fffd}')).then_some(c))
+            .collect::<Vec<_>>()
+    }))
 }
 
 /// Splits decoded characters (None where the text did not decode) into lines at LF, CRLF and
@@ -211,6 +266,7 @@ fn one_a_line(lines: &[Line], encoding: &str) -> Class {
         columns: Vec::new(),
         link_column: None,
         rows,
+        encoding: None,
     }
 }
 
@@ -418,5 +474,6 @@ fn csv_class(
         columns,
         link_column: Some(header[column].clone()),
         rows,
+        encoding: None,
     })
 }

@@ -20,7 +20,8 @@ mod class;
 
 pub use class::{read_class, Class, ClassRow};
 
-use super::{judge, measure, Challenge, Measures, Verdict};
+use super::{fnv1a, judge, measure, Challenge, Measures, Verdict};
+use crate::rng::Rng;
 use crate::sim::Simulation;
 use crate::text::{csv, escape_invisible, excerpt};
 use serde::Serialize;
@@ -166,27 +167,64 @@ pub fn csv_row(c: &Challenge, row: &ClassRow, graded: &Graded) -> String {
     out
 }
 
-/// Where an interrupted grading picks up: what to keep of its output, and how many rows it holds.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// Where an interrupted grading picks up: what to keep of its output, how many rows it holds,
+/// and which of them to grade again before going on.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Resume {
     /// The bytes of the output to keep: its complete lines (a cut-off last line is dropped).
     pub keep: usize,
     /// The rows of the class it holds, graded: the grading goes on from the next.
     pub done: usize,
+    /// The kept rows to grade again, each to be the same bytes (see [`resume_sample`]).
+    pub sample: Vec<KeptRow>,
+}
+
+/// A kept row of an interrupted grading's output, to be graded again and compared.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct KeptRow {
+    /// Its index in the class's rows (and among the output's rows).
+    pub index: usize,
+    /// Its CSV line as the output holds it, line end included.
+    pub found: String,
+}
+
+/// One in this many kept rows is graded again when a grading resumes (and always the last).
+pub const RESUME_STRIDE: usize = 20;
+
+/// The indices of the kept rows graded again when a grading resumes from `kept`, the complete
+/// lines of its output, which hold `done` rows: every [`RESUME_STRIDE`]th row from an offset
+/// drawn from the bytes of `kept` (their FNV-1a hash seeds the crate's generator), and the last.
+/// The choice is the same for the same bytes, and any edit of the file draws it afresh, so that
+/// the editor of a row cannot tell from the file whether it will be graded again.
+pub fn resume_sample(kept: &[u8], done: usize) -> Vec<usize> {
+    if done == 0 {
+        return Vec::new();
+    }
+    let offset = (Rng::new(fnv1a(kept)).next_u64() % RESUME_STRIDE as u64) as usize;
+    let mut sample: Vec<usize> = (offset..done).step_by(RESUME_STRIDE).collect();
+    if sample.last() != Some(&(done - 1)) {
+        sample.push(done - 1);
+    }
+    sample
 }
 
 /// Where the grading of `class` against `c` resumes from `previous`, an earlier output of the
 /// same grading cut off anywhere (empty: from the start). Its complete lines must be the
 /// grades' header and then rows of the class's first submissions, in order (each row's carried
 /// cells, line and link as they would be written); anything else is refused with what differs,
-/// as the output of another grading.
+/// as the output of another grading. The rows of [`Resume::sample`] are then to be graded again
+/// and checked by [`check_kept`].
 pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, String> {
     let keep = previous
         .iter()
         .rposition(|&b| b == b'\n')
         .map_or(0, |i| i + 1);
     if keep == 0 {
-        return Ok(Resume { keep, done: 0 });
+        return Ok(Resume {
+            keep,
+            done: 0,
+            sample: Vec::new(),
+        });
     }
     let text = std::str::from_utf8(&previous[..keep])
         .map_err(|_| "it is not UTF-8 text, so not the grades of this class".to_string())?;
@@ -200,8 +238,8 @@ pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, S
             header.trim_end()
         ));
     }
-    let mut done = 0;
-    for found in lines {
+    let rows: Vec<&str> = lines.collect();
+    for (done, found) in rows.iter().enumerate() {
         let Some(row) = class.rows.get(done) else {
             return Err(format!(
                 "it holds more rows than the class file's {} submissions",
@@ -217,7 +255,79 @@ pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, S
                 excerpt(&row.link)
             ));
         }
-        done += 1;
     }
-    Ok(Resume { keep, done })
+    let sample = resume_sample(text.as_bytes(), rows.len())
+        .into_iter()
+        .map(|index| KeptRow {
+            index,
+            found: rows[index].to_string(),
+        })
+        .collect();
+    Ok(Resume {
+        keep,
+        done: rows.len(),
+        sample,
+    })
+}
+
+/// The cells of a CSV line (without its line end), as written: split at the commas outside
+/// quotes, quotes kept.
+fn cells(line: &str) -> Vec<&str> {
+    let (mut out, mut start, mut quoted) = (Vec::new(), 0, false);
+    for (i, b) in line.bytes().enumerate() {
+        match b {
+            b'"' => quoted = !quoted,
+            b',' if !quoted => {
+                out.push(&line[start..i]);
+                start = i + 1;
+            }
+            _ => {}
+        }
+    }
+    out.push(&line[start..]);
+    out
+}
+
+/// Checks a kept row against `graded`, its grading again: the row must be the bytes
+/// [`csv_row`] writes for it (its status, values, pass flags and nothing after them), or it is
+/// refused, naming the row, its line in the class file and the first cell that differs.
+pub fn check_kept(
+    c: &Challenge,
+    class: &Class,
+    kept: &KeptRow,
+    graded: &Graded,
+) -> Result<(), String> {
+    let row = &class.rows[kept.index];
+    let expected = csv_row(c, row, graded);
+    if kept.found == expected {
+        return Ok(());
+    }
+    // The cells after the link: the row's start was checked by `resume`.
+    let start = row_start(row).len();
+    let found = cells(kept.found[start..].trim_end_matches('\n'));
+    let expected = cells(expected[start..].trim_end_matches('\n'));
+    let mut names = vec!["status".to_string()];
+    for n in &c.need {
+        names.extend([n.figure.to_string(), format!("{}_pass", n.figure)]);
+    }
+    names.push("pass".to_string());
+    let what = match found.iter().zip(&expected).position(|(f, e)| f != e) {
+        Some(i) => format!(
+            "its {} is '{}', not '{}'",
+            names[i],
+            excerpt(found[i]),
+            excerpt(expected[i])
+        ),
+        None if found.len() > expected.len() => format!(
+            "it has '{}' after its last column",
+            excerpt(&found[expected.len()..].join(","))
+        ),
+        None => format!("it lacks its columns from {} on", names[found.len()]),
+    };
+    Err(format!(
+        "its row {} (line {} of the class file) is not what grading it again gives: {what}; it \
+         was edited after its grading, or graded by another version of imlab",
+        kept.index + 1,
+        row.line
+    ))
 }
