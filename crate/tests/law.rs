@@ -112,6 +112,12 @@ fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_s
         "{e}"
     );
     assert!(e.contains("z3 = "), "{e}");
+    // A law that reads no signal says so.
+    let s = Scenario::parse("v=1&preset=step&law.v1=ln(0%20-%201)").unwrap();
+    assert_eq!(
+        failure(&s),
+        "your law.v1 = ln(0 - 1) gave NaN at t = 0.00000 s, reading no signal"
+    );
 }
 
 #[test]

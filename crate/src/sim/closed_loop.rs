@@ -66,7 +66,7 @@ pub struct LawFailure {
     pub text: String,
     /// What it gave (±inf or NaN).
     pub value: f64,
-    /// The names it reads and their values there.
+    /// The names it reads and their values there (empty when it reads none).
     pub signals: String,
 }
 
@@ -88,12 +88,16 @@ impl fmt::Display for SimError {
             }
             SimError::Law(l) => write!(
                 f,
-                "your law.v{} = {} gave {} at t = {:.5} s, from {}",
+                "your law.v{} = {} gave {} at t = {:.5} s, {}",
                 l.step,
                 crate::text::excerpt(&l.text),
                 l.value,
                 l.t,
-                l.signals
+                if l.signals.is_empty() {
+                    "reading no signal".to_string()
+                } else {
+                    format!("from {}", l.signals)
+                }
             ),
         }
     }

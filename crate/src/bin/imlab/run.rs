@@ -5,7 +5,7 @@ use imlab::control::formula;
 use imlab::record::{Figure, Unreached, WarningKind};
 use imlab::scenario::{Scenario, PRESETS};
 use imlab::sim::Simulation;
-use imlab::text::excerpt;
+use imlab::text::{escape_invisible, excerpt};
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 
@@ -25,7 +25,8 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     for f in s.describe() {
         let value = match f.value {
             Some(v) if f.formula.is_some() && v.is_empty() => "paper's".to_string(),
-            Some(v) => v,
+            // A law's text shows its line breaks and controls as escapes, as a message quotes it.
+            Some(v) => escape_invisible(&v),
             None => "-".to_string(),
         };
         let unit = if f.unit.is_empty() {
