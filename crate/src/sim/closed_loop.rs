@@ -166,7 +166,7 @@ pub(super) struct Loop {
     /// dynamics at the verdict's drawn states and parameter values (see
     /// [`crate::control::law::check`]): what the run's own samples cannot tell, as a parameter
     /// written as its number.
-    law_drawn: OnceCell<Option<f64>>,
+    law_drawn: OnceCell<Option<Result<f64, String>>>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -343,9 +343,9 @@ impl Loop {
 
     /// The largest residual of the own laws' designed dynamics, relative to the paper's law: over
     /// the samples run, max over the steps with an own law of max|v_i − v_i,ref| / max|v_i,paper|,
-    /// and at the verdict's drawn states and parameter values, whichever is larger (None without
-    /// own laws, or before a sample).
-    pub(super) fn law_residual(&self) -> Option<f64> {
+    /// and at the verdict's drawn states and parameter values, whichever is larger; or why it is
+    /// not a number (None without own laws, or before a sample).
+    pub(super) fn law_residual(&self) -> Option<Result<f64, String>> {
         let laws = self.laws.as_ref().filter(|_| self.has_laws())?;
         let peaks = self.law_peaks.get();
         let run = (1..=4u8)
@@ -356,11 +356,20 @@ impl Loop {
             })
             .reduce(f64::max)
             .filter(|v| !v.is_nan())?;
+        if run.is_infinite() {
+            return Some(Err(
+                "the paper's law stayed at zero over the run while yours did not".to_string(),
+            ));
+        }
         // Checked once, when first asked for: most runs never report it.
-        let drawn = *self
+        let drawn = self
             .law_drawn
             .get_or_init(|| law::worst(&self.scenario.law, &self.model, &self.scenario.gains));
-        Some(drawn.map_or(run, |drawn| run.max(drawn)))
+        Some(match drawn {
+            Some(Ok(drawn)) => Ok(run.max(*drawn)),
+            Some(Err(cause)) => Err(cause.clone()),
+            None => Ok(run),
+        })
     }
 
     /// Whether the scenario has its own laws (that drive the motor).

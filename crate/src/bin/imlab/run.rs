@@ -110,9 +110,10 @@ pub(crate) fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
         "nothing recorded before the failure"
     };
     result.map_err(|e| format!("{e} ({printed})"))?;
-    // A run that ran away fails as a control run, although the simulation itself completed.
+    // A run that ran away fails as a control run, although the simulation itself completed; a
+    // figure that is not a number fails it with its cause.
     for w in &report.warnings {
-        if w.kind == WarningKind::Runaway {
+        if matches!(w.kind, WarningKind::Runaway | WarningKind::NotFinite) {
             return Err(format!("{} (figures printed)", w.text).into());
         }
         to_stderr(format_args!("imlab metrics: warning: {}\n", w.text));

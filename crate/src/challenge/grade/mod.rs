@@ -67,8 +67,8 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
                 measure(&sim)
             }
             Err(e) => Measures {
-                figures: Vec::new(),
                 failure: Some(e.to_string()),
+                ..Measures::default()
             },
         };
         if let Some(f) = &m.failure {
