@@ -22,7 +22,8 @@ const KEEP_EVERY_MS = 1000;
  * A grading: the challenge's canonical link, the class file's name, header and submissions, and
  * each submission's result by index (only what the table and the CSV need).
  * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
- *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
+ *   rows: P.ClassFileRow[], shown: P.Jobs['grade-class']['result']['shown'],
+ *   results: Record<number, {status: string, pass: boolean, csv: string}>}} Grading
  */
 
 /**
@@ -102,12 +103,12 @@ function drawTable(table, job) {
  */
 function rowOf(job, row, i) {
   const result = job.results[i];
-  // A row the core read carries its cells (none only in a row the page sends to the core).
-  const carried = /** @type {string[]} */ (row.carried);
+  // The row's text as the core shows it: invisible characters escaped.
+  const shown = job.shown[i];
   const tr = el('tr', {}, [
-    ...carried.map((cell) => el('td', { textContent: cell })),
+    ...shown.carried.map((cell) => el('td', { textContent: cell })),
     el('td', { textContent: String(row.line) }),
-    el('td', { className: 'link', textContent: row.link }),
+    el('td', { className: 'link', textContent: shown.link }),
     el('td', { textContent: result ? result.status : 'not graded yet' }),
     el('td', { textContent: result ? (result.pass ? '✓ pass' : '✗ fail') : '' }),
   ]);
@@ -162,6 +163,7 @@ export function createGrading({ client }) {
       header: plan.header,
       columns: plan.columns,
       rows: plan.rows,
+      shown: plan.shown,
       results: kept(key),
     };
   }
