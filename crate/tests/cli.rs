@@ -551,6 +551,14 @@ fn a_formula_with_an_invisible_character_is_quoted_as_escapes_everywhere() {
             let out = output(["describe", scenario.as_str()]);
             shows(&scenario, &String::from_utf8_lossy(&out.stderr));
             shows(&scenario, &String::from_utf8_lossy(&out.stdout));
+            // A challenge's brief names the law it starts from.
+            let challenge = format!(
+                "c=1&base={}&allow.law.v1=formula&need.law_residual=max:1",
+                imlab::text::percent::encode(&scenario, b"")
+            );
+            let out = output(["challenge", challenge.as_str()]);
+            shows(&challenge, &String::from_utf8_lossy(&out.stderr));
+            shows(&challenge, &String::from_utf8_lossy(&out.stdout));
         }
     }
 }
