@@ -227,9 +227,15 @@ fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, String> {
         .filter(|d| !(d.mine - d.reference).is_finite())
         .collect();
     let Some(first) = not_finite.first() else {
-        return Ok(draws.iter().fold(0.0f64, |worst, (d, scale)| {
+        let worst = draws.iter().fold(0.0f64, |worst, (d, scale)| {
             worst.max((d.mine - d.reference).abs() / scale)
-        }));
+        });
+        // A finite difference where the paper's law is all but zero has no finite share of it.
+        return if worst.is_finite() {
+            Ok(worst)
+        } else {
+            Err(format!("your {symbol} ({unit}) differs from the {symbol} that gives the designed dynamics where the paper's law is all but zero, by no finite share of its size"))
+        };
     };
     let law = drawing.laws.step(step).expect("the step has its own law");
     let names = super::named_values(law, &first.s);
