@@ -109,3 +109,20 @@ test('a law link opens with the law in its field, typeset, and the names it may 
     const step2 = await page.$$eval('#section-step2 .law-names td code', (cells) => cells.map((c) => c.textContent));
     assert.ok(step2.includes('v1') && step2.includes('z2'));
   }));
+
+test('a law not finite at some drawn states is judged so with its cause, and its residual is no figure', () =>
+  suite.withPage(BASE, async (page) => {
+    await openWalkthrough(page);
+    // The paper's v1 plus a term that overflows where z1 is large: fine on the run, not everywhere.
+    assert.equal(await runLaw(page, `${PAPER_V1} + exp(10*abs(z1)) - 1`), 'done');
+    await page.waitForFunction(() =>
+      /not a finite number/.test(document.querySelector('#section-step1 .law-verdict')?.textContent ?? ''),
+    );
+    const verdict = await page.textContent('#section-step1 .law-verdict');
+    assert.match(
+      verdict,
+      /your v1 \(rad\/s²\) is not a finite number at \d+ of the 200 drawn states: it gives inf at /,
+    );
+    assert.match(await page.textContent('#consistency'), /^law_residual is not a finite number: your v1/);
+    assert.doesNotMatch(await page.textContent('body'), /Infinity|up to inf/);
+  }));

@@ -613,8 +613,9 @@ impl Comparison {
 }
 
 /// The measures of a finished run for judging a challenge: `{figures: [{name, value, unit,
-/// settled}], failure}` (`value` may be Infinity: a load never recovered from; `failure` a
-/// message when the run failed or ran away, else null).
+/// settled}], not_finite: [{name, cause}], failure}` (`value` may be Infinity: a load never
+/// recovered from; `not_finite` the figures with no number, each with why; `failure` a message
+/// when the run failed or ran away, else null).
 #[wasm_bindgen]
 pub fn challenge_measure(sim: &Simulation) -> Result<Ts<crate::challenge::Measures>, JsValue> {
     to_js(&crate::challenge::measure(&sim.inner))

@@ -315,11 +315,11 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
             m("current_peak", 3.5, None),
             m(LOAD_RECOVERY, f64::INFINITY, None),
         ],
-        failure: None,
+        ..Measures::default()
     };
     let variant = Measures {
         figures: vec![m("current_peak", 4.5, None)],
-        failure: None,
+        ..Measures::default()
     };
     let v = judge(&c, &[nominal.clone(), variant.clone()]).unwrap();
     let rows: Vec<_> = v
@@ -378,8 +378,8 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
     assert_eq!(v.criteria[2].value, Some(3.9));
     // A failed run fails every criterion it enters; a missing figure is not a pass.
     let failed = Measures {
-        figures: vec![],
         failure: Some("diverged".into()),
+        ..Measures::default()
     };
     let v = judge(&c, &[good.clone(), failed]).unwrap();
     assert_eq!(v.criteria[2].reason, "run failed: diverged");

@@ -519,3 +519,46 @@ fn sweep_and_seeds_write_the_library_csv_byte_for_byte() {
     // Without --first the seeds start at the scenario's own.
     assert_eq!(printed(&["seeds", SHORT, "--n", "2"]), seeds(short.seed));
 }
+
+#[test]
+fn a_formula_with_an_invisible_character_is_quoted_as_escapes_everywhere() {
+    // Controls (ESC, CSI, BS, DEL, NUL), an override and line breaks, at every place of a law:
+    // a refusal quotes the one it stops at, a law that parses is shown with its breaks.
+    const INSERTED: [char; 9] = [
+        '\u{1b}', '\u{9b}', '\u{8}', '\u{7f}', '\0', '\u{202e}', '\r', '\n', '\u{2028}',
+    ];
+    let law = "-si1 + dwd + a3*wd + a2 - k1s1*z1";
+    let shows = |what: &str, text: &str| {
+        assert!(
+            !text
+                .chars()
+                .any(|c| c != '\n' && imlab::text::is_invisible(c)),
+            "{what}: {text:?}"
+        );
+    };
+    for c in INSERTED {
+        for at in (0..=law.len()).step_by(3) {
+            let text = format!("{}{c}{}", &law[..at], &law[at..]);
+            let encoded = imlab::text::percent::encode(&text, b"");
+            let scenario = format!("v=1&preset=step&law.v1={encoded}");
+            // What the bindings return: the codec's refusal and the law editor's preview.
+            if let Err(e) = Scenario::parse(&scenario) {
+                shows(&scenario, &e.to_string());
+            }
+            if let Some(e) = imlab::control::law::preview(1, &text).error {
+                shows(&scenario, &e.reason);
+            }
+            let out = output(["describe", scenario.as_str()]);
+            shows(&scenario, &String::from_utf8_lossy(&out.stderr));
+            shows(&scenario, &String::from_utf8_lossy(&out.stdout));
+            // A challenge's brief names the law it starts from.
+            let challenge = format!(
+                "c=1&base={}&allow.law.v1=formula&need.law_residual=max:1",
+                imlab::text::percent::encode(&scenario, b"")
+            );
+            let out = output(["challenge", challenge.as_str()]);
+            shows(&challenge, &String::from_utf8_lossy(&out.stderr));
+            shows(&challenge, &String::from_utf8_lossy(&out.stdout));
+        }
+    }
+}

@@ -6,10 +6,11 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::grade::{
-    csv_header, csv_row, grade_row, read_class, resume, resume_sample, text_cell, Class, ClassRow,
-    Graded, RESUME_STRIDE,
+    csv_header, csv_row, grade_row, read_class, resume, resume_sample, Class, ClassRow, Graded,
+    RESUME_STRIDE,
 };
 use imlab::challenge::{builtin, Challenge, CriterionVerdict, Verdict, BUILTINS};
+use imlab::text::csv::text_field;
 use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
 use std::process::{Command, Output, Stdio};
@@ -270,8 +271,19 @@ fn cells_from_students_cannot_run_formulas_or_carry_invisible_characters() {
         ),
         ("a\nb", "a\\nb"),
         ("a,b", "\"a,b\""),
+        // A spreadsheet may split on a semicolon or a tab too: such a cell is quoted, and a
+        // formula's start after any separator is written as text as well.
+        ("a;b", "\"a;b\""),
+        ("a\tb", "a\\tb"),
+        ("a\t=1", "a\\t'=1"),
+        ("c=1#;=cmd|' /C calc'!A0;", "\"c=1#;'=cmd|' /C calc'!A0;\""),
+        ("x,@SUM(A1)", "\"x,'@SUM(A1)\""),
+        ("x;+1;-1", "\"x;'+1;'-1\""),
+        ("x,\u{ff1d}1", "\"x,'\u{ff1d}1\""),
+        ("x;;=1", "\"x;;'=1\""),
+        ("a;b=1", "\"a;b=1\""),
     ] {
-        assert_eq!(text_cell(text), cell, "{text:?}");
+        assert_eq!(text_field(text), cell, "{text:?}");
     }
     // The numbers the grader computes are written as they are, a negative one too.
     let verdict = Verdict {

@@ -112,6 +112,12 @@ fn a_law_that_gives_a_non_finite_value_fails_the_run_with_its_formula_time_and_s
         "{e}"
     );
     assert!(e.contains("z3 = "), "{e}");
+    // A law that reads no signal says so.
+    let s = Scenario::parse("v=1&preset=step&law.v1=ln(0%20-%201)").unwrap();
+    assert_eq!(
+        failure(&s),
+        "your law.v1 = ln(0 - 1) gave NaN at t = 0.00000 s, reading no signal"
+    );
 }
 
 #[test]
@@ -462,11 +468,94 @@ fn the_run_figure_takes_the_verdicts_worst_difference() {
         ],
     ] {
         let verdicts = imlab::control::law::verdicts(&laws, &model, &s.gains).unwrap();
-        let largest = verdicts.iter().map(|v| v.worst).fold(0.0, f64::max);
+        let largest = verdicts
+            .iter()
+            .map(|v| v.worst.unwrap())
+            .fold(0.0, f64::max);
         assert_eq!(
             imlab::control::law::worst(&laws, &model, &s.gains),
-            Some(largest)
+            Some(Ok(largest))
         );
         assert!(largest > 1e-9);
     }
+}
+
+/// A v1 that is the paper's plus a term that overflows where z1 is large: finite on a run from
+/// rest, not at every drawn state.
+const OVERFLOWS: &str = "-si1 + dwd + a3*wd + a2 - k1s1*z1 + exp(10*abs(z1)) - 1";
+
+#[test]
+fn a_law_not_finite_at_a_drawn_state_fails_its_verdict_with_the_cause() {
+    let s = Scenario::parse("step").unwrap();
+    let model = s.model.lumped().unwrap();
+    let verdict = |law: &str| {
+        let laws = [Some(law.to_string()), None, None, None];
+        check(1, &laws, &model, &s.gains).unwrap()
+    };
+    let v = verdict(OVERFLOWS);
+    assert!(!v.designed && v.worst.is_none(), "{v:?}");
+    assert!(
+        v.text
+            .contains("your v1 (rad/s²) is not a finite number at ")
+            && v.text
+                .contains(" of the 200 drawn states: it gives inf at ")
+            && v.text.contains("z1 = "),
+        "{}",
+        v.text
+    );
+    // Nowhere a number: a law that reads no signal says so.
+    let v = verdict("exp(1000)");
+    assert!(
+        v.text
+            .contains("at 200 of the 200 drawn states: it gives inf, reading no signal"),
+        "{}",
+        v.text
+    );
+    assert!(!v.text.contains("up to inf"), "{}", v.text);
+}
+
+#[test]
+fn a_law_residual_that_is_not_finite_fails_the_metrics_and_a_criterion_with_its_cause() {
+    use imlab::challenge::grade::grade_one;
+    use imlab::challenge::Challenge;
+    let pct = |t: &str| t.bytes().map(|b| format!("%{b:02X}")).collect::<String>();
+    let scenario = format!("v=1&preset=step&duration=0.02&law.v1={}", pct(OVERFLOWS));
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_imlab"))
+        .args(["metrics", scenario.as_str()])
+        .output()
+        .unwrap();
+    let (stdout, stderr) = (
+        String::from_utf8_lossy(&out.stdout),
+        String::from_utf8_lossy(&out.stderr),
+    );
+    assert!(!out.status.success(), "{stdout}");
+    assert!(
+        !stdout.contains("inf") && !stdout.contains("law_residual"),
+        "{stdout}"
+    );
+    assert!(stdout.contains("tracking_rms,"), "{stdout}");
+    assert!(
+        stderr.contains(
+            "law_residual is not a finite number: your v1 (rad/s²) is not a finite number at "
+        ),
+        "{stderr}"
+    );
+    // Graded: the criterion on it fails with the cause; the others are judged as usual.
+    let text = "c=1&title=Derive&base=v%3D1%26preset%3Dstep%26duration%3D0.02\
+                &allow.law.v1=formula&need.law_residual=max:1e-9&need.current_peak=max:100";
+    let c = Challenge::parse(text).unwrap();
+    let graded = grade_one(&c, 1, &format!("{text}&try.law.v1={}", pct(OVERFLOWS)));
+    let verdict = graded.verdict.expect("judged");
+    let [residual, peak] = &verdict.criteria[..] else {
+        panic!("{verdict:?}")
+    };
+    assert!(!residual.pass && residual.value.is_none(), "{residual:?}");
+    assert!(
+        residual
+            .reason
+            .contains("your v1 (rad/s²) is not a finite number at "),
+        "{}",
+        residual.reason
+    );
+    assert!(peak.pass, "{peak:?}");
 }

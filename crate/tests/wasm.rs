@@ -178,6 +178,39 @@ fn figures_and_transient_are_the_core_values() {
 }
 
 #[wasm_bindgen_test]
+fn a_formula_refused_for_an_invisible_character_quotes_it_as_an_escape() {
+    #[derive(serde::Deserialize)]
+    struct Error {
+        reason: String,
+    }
+    #[derive(serde::Deserialize)]
+    struct Preview {
+        error: Option<Error>,
+    }
+    for c in ['\u{1b}', '\u{9b}', '\u{8}', '\u{7f}', '\0', '\u{202e}'] {
+        let law = format!("-si1 + {c}dwd");
+        let scenario = format!(
+            "v=1&preset=step&law.v1={}",
+            imlab::text::percent::encode(&law, b"")
+        );
+        let escaped = c.escape_default().to_string();
+        let e = error_text(Simulation::new(&scenario).err().unwrap());
+        assert!(
+            e.contains(&escaped) && !e.chars().any(imlab::text::is_invisible),
+            "{e:?}"
+        );
+        let preview: Preview =
+            serde_wasm_bindgen::from_value(imlab::wasm::law_preview(1, &law).unwrap().into())
+                .unwrap();
+        let reason = preview.error.unwrap().reason;
+        assert!(
+            reason.contains(&escaped) && !reason.chars().any(imlab::text::is_invisible),
+            "{reason:?}"
+        );
+    }
+}
+
+#[wasm_bindgen_test]
 fn quoting_seed_ranges_and_work_are_the_cores() {
     // The page quotes with the core's excerpt: the CLI's escapes and cut.
     for text in [

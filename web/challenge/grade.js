@@ -23,8 +23,8 @@ const KEEP_EVERY_MS = 1000;
  * submission's result by index (only what the table and the CSV need), and what to say of the
  * file's encoding when the core read it as another than UTF-8 ('' for UTF-8).
  * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
- *   rows: P.ClassFileRow[], results: Record<number, {status: string, pass: boolean, csv: string}>,
- *   readAs: string}} Grading
+ *   rows: P.ClassFileRow[], shown: P.Jobs['grade-class']['result']['shown'],
+ *   results: Record<number, {status: string, pass: boolean, csv: string}>, readAs: string}} Grading
  */
 
 /**
@@ -104,12 +104,12 @@ function drawTable(table, job) {
  */
 function rowOf(job, row, i) {
   const result = job.results[i];
-  // A row the core read carries its cells (none only in a row the page sends to the core).
-  const carried = /** @type {string[]} */ (row.carried);
+  // The row's text as the core shows it: invisible characters escaped.
+  const shown = job.shown[i];
   const tr = el('tr', {}, [
-    ...carried.map((cell) => el('td', { textContent: cell })),
+    ...shown.carried.map((cell) => el('td', { textContent: cell })),
     el('td', { textContent: String(row.line) }),
-    el('td', { className: 'link', textContent: row.link }),
+    el('td', { className: 'link', textContent: shown.link }),
     el('td', { textContent: result ? result.status : 'not graded yet' }),
     el('td', { textContent: result ? (result.pass ? '✓ pass' : '✗ fail') : '' }),
   ]);
@@ -166,6 +166,7 @@ export function createGrading({ client }) {
       header: plan.header,
       columns: plan.columns,
       rows: plan.rows,
+      shown: plan.shown,
       results: kept(key),
       readAs: plan.encoding ? ` The class file was read as ${plan.encoding} (it is not UTF-8).` : '',
     };

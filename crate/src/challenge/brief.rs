@@ -46,7 +46,10 @@ impl Challenge {
                 Allowed::Choice { options } => format!("one of {}", options.join(", ")),
                 Allowed::Formula => format!("a formula of your own, in{unit}"),
             };
-            let now = info.value.unwrap_or_else(|| "–".to_string());
+            // A law's text may hold line breaks: shown as escapes, as a message quotes it.
+            let now = info
+                .value
+                .map_or_else(|| "–".to_string(), |v| escape_invisible(&v));
             let _ = writeln!(out, "  {:<14} {range} (now {now}) — {}", a.field, info.doc);
         }
         let _ = writeln!(out, "\nYour design must meet:");

@@ -79,8 +79,25 @@ pub struct Measures {
     /// The figures (those the report could compute), then the load recovery time when the
     /// scenario has a load step.
     pub figures: Vec<Measure>,
+    /// The figures the run gives no number for, each with why.
+    #[serde(default)]
+    pub not_finite: Vec<NotFinite>,
     /// Why the run does not count, if it does not: the simulation failed, or it ran away.
     pub failure: Option<String>,
+}
+
+/// A figure a run gives no number for, because it is not finite, and why.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct NotFinite {
+    /// Figure name.
+    pub name: String,
+    /// Why it is not a number, in words.
+    pub cause: String,
 }
 
 impl Measures {
@@ -124,7 +141,21 @@ pub fn measure(sim: &Simulation) -> Measures {
             .find(|w| w.kind == WarningKind::Runaway)
             .map(|w| w.text.clone())
     };
-    Measures { figures, failure }
+    let not_finite = r
+        .warnings
+        .iter()
+        .filter_map(|w| {
+            w.figure.map(|name| NotFinite {
+                name: name.to_string(),
+                cause: w.text.clone(),
+            })
+        })
+        .collect();
+    Measures {
+        figures,
+        not_finite,
+        failure,
+    }
 }
 
 /// The verdict on one criterion.
@@ -186,6 +217,9 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
     };
     if let Some(f) = &m.failure {
         return fail(format!("run failed: {f}"));
+    }
+    if let Some(n) = m.not_finite.iter().find(|n| n.name == figure) {
+        return fail(n.cause.clone());
     }
     let Some(x) = m.get(figure) else {
         return fail(if figure == LOAD_RECOVERY {

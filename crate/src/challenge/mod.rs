@@ -41,7 +41,7 @@ pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber,
 pub use error::{ChallengeError, ErrorKind};
 pub use judge::{
     criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
-    Verdict,
+    NotFinite, Verdict,
 };
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;

@@ -8,7 +8,8 @@ use serde::Serialize;
 /// Standard-normal quantile of 97.5 %: the 95 % two-sided band.
 pub(super) const Z_975: f64 = 1.959963984540054;
 
-/// What a [`Warning`] is about; the page and the JSON see it as "runaway" or "inconsistent".
+/// What a [`Warning`] is about; the page and the JSON see it as "runaway", "inconsistent" or
+/// "not-finite".
 #[cfg_attr(
     target_arch = "wasm32",
     derive(tsify::Tsify),
@@ -23,6 +24,9 @@ pub enum WarningKind {
     /// The EKF's mean NIS is far outside the band of a filter whose model fits, so its estimates
     /// cannot be trusted.
     Inconsistent,
+    /// A figure is not a finite number, so the run gives none in its place: the text says why.
+    #[serde(rename = "not-finite")]
+    NotFinite,
 }
 
 /// A finding about the whole run that its figures alone would hide.
@@ -35,6 +39,8 @@ pub enum WarningKind {
 pub struct Warning {
     /// What it is about.
     pub kind: WarningKind,
+    /// The figure it stands in place of, for [`WarningKind::NotFinite`].
+    pub figure: Option<&'static str>,
     /// One or two sentences that name what happened, with the run's numbers.
     pub text: String,
 }
@@ -64,6 +70,7 @@ pub(super) fn warnings_of(
     {
         out.push(Warning {
             kind: WarningKind::Runaway,
+            figure: None,
             text: format!(
                 "The run ran away: at its end the true speed is {} rad/s from the reference, the speed estimate {} rad/s from the true speed, and the flux {} Wb against its target of {} Wb. The controller regulates the EKF's estimates; Theorem 4.6 bounds the closed loop only while the estimation errors stay bounded, and when they do not (a start-up error held only by the voltage limit, a wrong model at low speed) nothing bounds the motor.",
                 rounded(last.omega_err, 3),
@@ -77,6 +84,7 @@ pub(super) fn warnings_of(
     let describe = |side: &str, meaning: &str| {
         Warning {
         kind: WarningKind::Inconsistent,
+        figure: None,
         text: format!(
             "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
             rounded(nis, 4),

@@ -66,7 +66,7 @@ pub struct LawFailure {
     pub text: String,
     /// What it gave (±inf or NaN).
     pub value: f64,
-    /// The names it reads and their values there.
+    /// The names it reads and their values there (empty when it reads none).
     pub signals: String,
 }
 
@@ -88,12 +88,16 @@ impl fmt::Display for SimError {
             }
             SimError::Law(l) => write!(
                 f,
-                "your law.v{} = {} gave {} at t = {:.5} s, from {}",
+                "your law.v{} = {} gave {} at t = {:.5} s, {}",
                 l.step,
                 crate::text::excerpt(&l.text),
                 l.value,
                 l.t,
-                l.signals
+                if l.signals.is_empty() {
+                    "reading no signal".to_string()
+                } else {
+                    format!("from {}", l.signals)
+                }
             ),
         }
     }
@@ -162,7 +166,7 @@ pub(super) struct Loop {
     /// dynamics at the verdict's drawn states and parameter values (see
     /// [`crate::control::law::check`]): what the run's own samples cannot tell, as a parameter
     /// written as its number.
-    law_drawn: OnceCell<Option<f64>>,
+    law_drawn: OnceCell<Option<Result<f64, String>>>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -334,9 +338,9 @@ impl Loop {
 
     /// The largest residual of the own laws' designed dynamics, relative to the paper's law: over
     /// the samples run, max over the steps with an own law of max|v_i − v_i,ref| / max|v_i,paper|,
-    /// and at the verdict's drawn states and parameter values, whichever is larger (None without
-    /// own laws, or before a sample).
-    pub(super) fn law_residual(&self) -> Option<f64> {
+    /// and at the verdict's drawn states and parameter values, whichever is larger; or why it is
+    /// not a number (None without own laws, or before a sample).
+    pub(super) fn law_residual(&self) -> Option<Result<f64, String>> {
         let laws = self.laws.as_ref().filter(|_| self.has_laws())?;
         let peaks = self.law_peaks.get();
         let run = (1..=4u8)
@@ -347,11 +351,20 @@ impl Loop {
             })
             .reduce(f64::max)
             .filter(|v| !v.is_nan())?;
+        if run.is_infinite() {
+            return Some(Err(
+                "the paper's law stayed at zero over the run while yours did not".to_string(),
+            ));
+        }
         // Checked once, when first asked for: most runs never report it.
-        let drawn = *self
+        let drawn = self
             .law_drawn
             .get_or_init(|| law::worst(&self.scenario.law, &self.model, &self.scenario.gains));
-        Some(drawn.map_or(run, |drawn| run.max(drawn)))
+        Some(match drawn {
+            Some(Ok(drawn)) => Ok(run.max(*drawn)),
+            Some(Err(cause)) => Err(cause.clone()),
+            None => Ok(run),
+        })
     }
 
     /// Whether the scenario has its own laws (that drive the motor).

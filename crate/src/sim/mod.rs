@@ -277,17 +277,27 @@ impl Simulation {
     /// The transient, figures and warnings of the rows recorded so far (see [`record::report`]).
     pub fn report(&self) -> Report {
         let mut report = record::report(&self.lp.scenario, self);
-        // With own laws, how far they are from their steps' designed dynamics over the run.
-        if let (Some(figures), Some(value)) = (report.figures.as_mut(), self.lp.law_residual()) {
-            let info = record::figure_info("law_residual").expect("a figure of the table");
-            figures.push(record::Figure {
+        // With own laws, how far they are from their steps' designed dynamics over the run; a
+        // residual that is not a number is a warning with its cause, never a figure.
+        let Some(figures) = report.figures.as_mut() else {
+            return report;
+        };
+        let info = record::figure_info("law_residual").expect("a figure of the table");
+        match self.lp.law_residual() {
+            Some(Ok(value)) => figures.push(record::Figure {
                 name: info.name,
                 label: info.label,
                 value,
                 unit: info.unit,
                 window: "the whole run and the verdict's drawn states".to_string(),
                 trend: None,
-            });
+            }),
+            Some(Err(cause)) => report.warnings.push(record::Warning {
+                kind: record::WarningKind::NotFinite,
+                figure: Some(info.name),
+                text: format!("{} is not a finite number: {cause}.", info.name),
+            }),
+            None => {}
         }
         report
     }

@@ -96,6 +96,7 @@ pub struct NeedView {
 )]
 #[derive(Serialize)]
 pub struct ChallengeView {
+    /// The title as the page shows it: its invisible characters escaped, as in every message.
     title: String,
     base: String,
     encoded: String,
@@ -256,7 +257,7 @@ impl Challenge {
             })
             .collect();
         to_js(&ChallengeView {
-            title: c.title.clone(),
+            title: crate::text::escape_invisible(&c.title),
             base: c.base.clone(),
             encoded: c.encode(),
             allow,

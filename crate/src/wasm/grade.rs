@@ -6,6 +6,7 @@
 use super::{from_js, js_error, to_js};
 use crate::challenge::grade::{self, ClassRow};
 use crate::challenge::{Challenge, Verdict};
+use crate::text::escape_invisible;
 use serde::Serialize;
 use tsify::Ts;
 use wasm_bindgen::prelude::*;
@@ -20,7 +21,7 @@ use wasm_bindgen::prelude::*;
 pub struct ClassView {
     /// The CSV header line, with its line end ("" when the file is refused).
     header: String,
-    /// The headers of the carried columns.
+    /// The headers of the carried columns, as the page shows them (see [`ShownRow`]).
     columns: Vec<String>,
     /// The header of a CSV export's column of links, or null.
     link_column: Option<String>,
@@ -29,8 +30,25 @@ pub struct ClassView {
     /// The encoding the file was read in when it is not UTF-8 (guessed from its bytes:
     /// "windows-1252", say), or null.
     encoding: Option<String>,
+    /// Each submission as the page's table shows it, in the same order.
+    shown: Vec<ShownRow>,
     /// Why the challenge or the file is refused whole, or null.
     error: Option<String>,
+}
+
+/// A submission's text as the page's table shows it: its invisible characters escaped, as in
+/// every message, so that a name or a link cannot hide or reorder what it holds.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Serialize)]
+pub struct ShownRow {
+    /// The link.
+    link: String,
+    /// The cells of the carried columns.
+    carried: Vec<String>,
 }
 
 /// Reads a class's file against a challenge: `challenge` is a challenge link or a built-in's
@@ -40,9 +58,10 @@ pub struct ClassView {
 ///
 /// ```text
 /// {header: string (the CSV header line, "\n" included; "" on error),
-///  columns: [string] (the carried columns' headers), link_column: string | null,
+///  columns: [string] (the carried columns' headers, escaped), link_column: string | null,
 ///  rows: [{line: number, link: string, carried: [string], status: string | null}],
 ///  encoding: string | null (the encoding read, when the file is not UTF-8),
+///  shown: [{link: string, carried: [string]}] (each row as the table shows it, escaped),
 ///  error: string | null (why the challenge or the file is refused whole)}
 /// ```
 ///
@@ -56,8 +75,16 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsVal
     let view = match read {
         Ok((class, c)) => ClassView {
             header: grade::csv_header(&c, &class),
-            columns: class.columns,
+            columns: class.columns.iter().map(|c| escape_invisible(c)).collect(),
             link_column: class.link_column,
+            shown: class
+                .rows
+                .iter()
+                .map(|r| ShownRow {
+                    link: escape_invisible(&r.link),
+                    carried: r.carried.iter().map(|c| escape_invisible(c)).collect(),
+                })
+                .collect(),
             rows: class.rows,
             encoding: class.encoding.map(str::to_string),
             error: None,
@@ -68,6 +95,7 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsVal
             link_column: None,
             rows: Vec::new(),
             encoding: None,
+            shown: Vec::new(),
             error: Some(e),
         },
     };

@@ -5,7 +5,7 @@ use imlab::control::formula;
 use imlab::record::{Figure, Unreached, WarningKind};
 use imlab::scenario::{Scenario, PRESETS};
 use imlab::sim::Simulation;
-use imlab::text::excerpt;
+use imlab::text::{escape_invisible, excerpt};
 use std::fs::File;
 use std::io::{self, BufWriter, Write};
 
@@ -25,7 +25,8 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     for f in s.describe() {
         let value = match f.value {
             Some(v) if f.formula.is_some() && v.is_empty() => "paper's".to_string(),
-            Some(v) => v,
+            // A law's text shows its line breaks and controls as escapes, as a message quotes it.
+            Some(v) => escape_invisible(&v),
             None => "-".to_string(),
         };
         let unit = if f.unit.is_empty() {
@@ -109,9 +110,10 @@ pub(crate) fn metrics(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
         "nothing recorded before the failure"
     };
     result.map_err(|e| format!("{e} ({printed})"))?;
-    // A run that ran away fails as a control run, although the simulation itself completed.
+    // A run that ran away fails as a control run, although the simulation itself completed; a
+    // figure that is not a number fails it with its cause.
     for w in &report.warnings {
-        if w.kind == WarningKind::Runaway {
+        if matches!(w.kind, WarningKind::Runaway | WarningKind::NotFinite) {
             return Err(format!("{} (figures printed)", w.text).into());
         }
         to_stderr(format_args!("imlab metrics: warning: {}\n", w.text));

@@ -3,16 +3,8 @@
 //! and the page's bindings both grade through these, so their CSVs are the same bytes.
 //!
 //! Every cell of text that comes from the file or from a student (the link, the carried
-//! columns and their headers, the status that quotes a link) is written safe to open:
-//!
-//! - characters that do not show or that reorder the text around them (controls, bidi
-//!   embeddings, overrides and isolates, line separators) are escaped visibly by
-//!   [`escape_invisible`], as in every message, so neither a spreadsheet nor a terminal receives
-//!   them raw;
-//! - a cell starting with `=`, `+`, `-`, `@`, a tab or a carriage return (or the full-width
-//!   `＝`, `＋`, `－`, `＠`) gets a leading `'`, so that a spreadsheet shows it as text rather
-//!   than run it as a formula (OWASP's advice on CSV injection);
-//! - then the usual quoting: a cell holding a comma or a quote is quoted, inner quotes doubled.
+//! columns and their headers, the status that quotes a link) is written safe to open, by
+//! [`csv::text_field`].
 //!
 //! The numbers the grader computes (line numbers, values, pass flags) are written as they are.
 
@@ -23,7 +15,7 @@ pub use class::{read_class, Class, ClassRow};
 use super::{fnv1a, judge, measure, Challenge, Measures, Verdict};
 use crate::rng::Rng;
 use crate::sim::Simulation;
-use crate::text::{csv, escape_invisible, excerpt};
+use crate::text::{csv, excerpt};
 use serde::Serialize;
 
 /// One graded submission: its line, the link, and the status with the verdict (None unless the
@@ -76,8 +68,8 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
                 measure(&sim)
             }
             Err(e) => Measures {
-                figures: Vec::new(),
                 failure: Some(e.to_string()),
+                ..Measures::default()
             },
         };
         if let Some(f) = &m.failure {
@@ -102,28 +94,12 @@ pub fn grade_row(c: &Challenge, row: &ClassRow) -> Graded {
     }
 }
 
-/// The characters a spreadsheet may take as the start of a formula.
-const FORMULA_STARTS: [char; 10] = [
-    '=', '+', '-', '@', '\t', '\r', '\u{ff1d}', '\u{ff0b}', '\u{ff0d}', '\u{ff20}',
-];
-
-/// A cell of text from the class's file or a student, as the grades write it: invisible
-/// characters escaped, a `'` before a formula's start, then quoted as a CSV field.
-pub fn text_cell(text: &str) -> String {
-    let shown = escape_invisible(text);
-    if text.starts_with(FORMULA_STARTS) {
-        csv::field(&format!("'{shown}")).into_owned()
-    } else {
-        csv::field(&shown).into_owned()
-    }
-}
-
 /// The CSV header of the grades, with its line end: the carried columns of the class's file,
 /// then `line,link,status`, `<figure>,<figure>_pass` for each criterion, and `pass`.
 pub fn csv_header(c: &Challenge, class: &Class) -> String {
     let mut out = String::new();
     for name in &class.columns {
-        out.push_str(&text_cell(name));
+        out.push_str(&csv::text_field(name));
         out.push(',');
     }
     out.push_str("line,link,status");
@@ -138,10 +114,10 @@ pub fn csv_header(c: &Challenge, class: &Class) -> String {
 fn row_start(row: &ClassRow) -> String {
     let mut out = String::new();
     for cell in &row.carried {
-        out.push_str(&text_cell(cell));
+        out.push_str(&csv::text_field(cell));
         out.push(',');
     }
-    out.push_str(&format!("{},{},", row.line, text_cell(&row.link)));
+    out.push_str(&format!("{},{},", row.line, csv::text_field(&row.link)));
     out
 }
 
@@ -149,7 +125,7 @@ fn row_start(row: &ClassRow) -> String {
 /// status, each criterion's value (empty when not measured) and pass (1 or 0), and pass.
 pub fn csv_row(c: &Challenge, row: &ClassRow, graded: &Graded) -> String {
     let mut out = row_start(row);
-    out.push_str(&text_cell(&graded.status));
+    out.push_str(&csv::text_field(&graded.status));
     match &graded.verdict {
         Some(v) => {
             for cv in &v.criteria {

@@ -1,6 +1,7 @@
 //! The lexer: a formula's text cut into numbers, names and operators.
 
 use super::FormulaError;
+use crate::text::excerpt;
 
 #[derive(Clone, Debug, PartialEq)]
 pub(super) enum Token {
@@ -71,8 +72,9 @@ pub(super) fn tokens(text: &str) -> Result<Vec<(Token, usize, usize)>, FormulaEr
                     start + 1,
                     1,
                     format!(
-                    "'{c}' is not part of the language (+ − * / ^, parentheses, names, numbers)"
-                ),
+                        "'{}' is not part of the language (+ − * / ^, parentheses, names, numbers)",
+                        excerpt(&c.to_string())
+                    ),
                 ))
             }
         };

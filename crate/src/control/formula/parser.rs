@@ -1,7 +1,7 @@
 //! The parser: tokens to a tree, refusing what the language or the step does not allow.
 
 use super::lexer::{tokens, Token};
-use super::program::constant;
+use super::program::{constant, Program};
 use super::{index, BinOp, FormulaError, Node, FUNCTIONS, MAX_CHARS, MAX_NESTING, NAMES};
 
 /// The parser: precedence climbing over the tokens, refusing names the step may not use.
@@ -13,6 +13,8 @@ struct Parser<'a> {
     step: u8,
     /// How deep in parentheses, signs and powers the parser is.
     nesting: usize,
+    /// The first division by a constant zero, reported once the formula's size and depth pass.
+    zero_division: Option<FormulaError>,
 }
 
 impl Parser<'_> {
@@ -54,8 +56,8 @@ impl Parser<'_> {
             let (at, _) = self.here();
             self.pos += 1;
             let right = self.unary()?;
-            if op == BinOp::Div && constant(&right) == Some(0.0) {
-                return Err(FormulaError::new(at, 1, "division by zero"));
+            if op == BinOp::Div && constant(&right) == Some(0.0) && self.zero_division.is_none() {
+                self.zero_division = Some(FormulaError::new(at, 1, "division by zero"));
             }
             left = Node::Bin(op, Box::new(left), Box::new(right));
         }
@@ -237,6 +239,7 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
         end: length + 1,
         step,
         nesting: 0,
+        zero_division: None,
     };
     let node = parser.expr()?;
     if let Some((token, at, len)) = parser.peek() {
@@ -246,13 +249,16 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
         };
         return Err(FormulaError::new(*at, *len, what));
     }
-    Ok(node)
+    match parser.zero_division {
+        // A formula too long or too deep is refused for that first: it is what to change.
+        Some(e) => Err(Program::new(&node).err().unwrap_or(e)),
+        None => Ok(node),
+    }
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::control::formula::Program;
 
     #[test]
     fn bad_formulas_are_refused_at_their_place_with_the_reason() {
@@ -308,5 +314,21 @@ mod tests {
             e.reason.contains("nests deeper") && e.at == MAX_NESTING + 1,
             "{e}"
         );
+    }
+
+    #[test]
+    fn a_formula_too_deep_is_refused_for_its_depth_before_a_division_by_zero() {
+        // Too deep for the evaluator's stack, with a division by zero inside.
+        let deep = "2^".repeat(40) + "(x1h/0)";
+        let e = Program::parse(&deep, 1).unwrap_err();
+        assert!(e.reason.contains("values deep"), "{e}");
+        assert_eq!(parse(&deep, 1).unwrap_err(), e);
+        // Nested past what the parser follows, after a division by zero.
+        let nested = "1/0 + ".to_string() + &"-".repeat(900) + "1";
+        let e = parse(&nested, 1).unwrap_err();
+        assert!(e.reason.contains("nests deeper"), "{e}");
+        // Shallow, the division by zero is the reason, at its place.
+        let e = parse("x1h + 1/(2 - 2)", 1).unwrap_err();
+        assert_eq!((e.at, e.reason.as_str()), (8, "division by zero"));
     }
 }

@@ -27,8 +27,8 @@ pub struct Verdict {
     /// Whether it gives the designed dynamics (to rounding) at every drawn state.
     pub designed: bool,
     /// The largest |v_i − v_i,ref| over the drawn states, relative to the size of the paper's
-    /// terms there.
-    pub worst: f64,
+    /// terms there; None where it is not a number (the text says why).
+    pub worst: Option<f64>,
     /// What it gets wrong, when it can be named.
     pub finding: Option<String>,
     /// The verdict in words.
@@ -208,40 +208,75 @@ fn drawing(
     Ok(Drawing { laws, paper, draws })
 }
 
-/// The largest difference of a law from its reference over `draws`, relative to the paper's
-/// law's size at each (infinite for a value that is not a number, or without a draw).
-fn worst_of(draws: &[(Drawn, f64)]) -> f64 {
+/// The largest difference of step `step`'s law from its reference over the drawn states,
+/// relative to the paper's law's size at each; or why it is not a number: the step never ran,
+/// or the law is not finite at some of them.
+fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, String> {
+    let i = step as usize - 1;
+    let (symbol, unit) = OUTPUTS[i];
+    let draws = &drawing.draws;
     if draws.is_empty() {
-        return f64::INFINITY;
+        return Err(format!(
+            "your {} gives no finite value at any of the {DRAWS} drawn states, so step {step} never runs",
+            OUTPUTS[i - 1].0
+        ));
     }
-    draws.iter().fold(0.0f64, |worst, (d, scale)| {
-        let diff = d.mine - d.reference;
-        worst.max(if diff.is_nan() {
-            f64::INFINITY
+    let not_finite: Vec<&Drawn> = draws
+        .iter()
+        .map(|(d, _)| d)
+        .filter(|d| !(d.mine - d.reference).is_finite())
+        .collect();
+    let Some(first) = not_finite.first() else {
+        let worst = draws.iter().fold(0.0f64, |worst, (d, scale)| {
+            worst.max((d.mine - d.reference).abs() / scale)
+        });
+        // A finite difference where the paper's law is all but zero has no finite share of it.
+        return if worst.is_finite() {
+            Ok(worst)
         } else {
-            diff.abs() / scale
-        })
+            Err(format!("your {symbol} ({unit}) differs from the {symbol} that gives the designed dynamics where the paper's law is all but zero, by no finite share of its size"))
+        };
+    };
+    let law = drawing.laws.step(step).expect("the step has its own law");
+    let names = super::named_values(law, &first.s);
+    let at = if names.is_empty() {
+        ", reading no signal".to_string()
+    } else {
+        format!(" at {names}")
+    };
+    let n = not_finite.len();
+    Err(if first.mine.is_finite() {
+        format!("your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {n} of the {DRAWS} drawn states, e.g.{at}")
+    } else {
+        format!(
+            "your {symbol} ({unit}) is not a finite number at {n} of the {DRAWS} drawn states: it gives {}{at}",
+            first.mine
+        )
     })
 }
 
 /// The largest [`Verdict::worst`] over the steps with an own law in `texts`, found as [`check`]
-/// finds it but without naming what a law gets wrong (None without own laws, or with one that
-/// does not parse).
-pub fn worst(texts: &[Option<String>; 4], model: &Lumped, gains: &Gains) -> Option<f64> {
-    (1..=4u8)
-        .filter(|&step| {
-            texts[step as usize - 1]
-                .as_ref()
-                .is_some_and(|t| !t.trim().is_empty())
-        })
-        .map(|step| {
-            drawing(step, texts, model, gains)
-                .ok()
-                .map(|d| worst_of(&d.draws))
-        })
-        .collect::<Option<Vec<f64>>>()?
-        .into_iter()
-        .reduce(f64::max)
+/// finds it but without naming what a law gets wrong; or why one of them is not a number (None
+/// without own laws, or with one that does not parse).
+pub fn worst(
+    texts: &[Option<String>; 4],
+    model: &Lumped,
+    gains: &Gains,
+) -> Option<Result<f64, String>> {
+    let mut out: Option<Result<f64, String>> = None;
+    for step in (1..=4u8).filter(|&step| {
+        texts[step as usize - 1]
+            .as_ref()
+            .is_some_and(|t| !t.trim().is_empty())
+    }) {
+        let this = worst_of(step, &drawing(step, texts, model, gains).ok()?);
+        out = Some(match (out, this) {
+            (Some(Err(cause)), _) | (_, Err(cause)) => Err(cause),
+            (Some(Ok(a)), Ok(b)) => Ok(a.max(b)),
+            (None, Ok(b)) => Ok(b),
+        });
+    }
+    out
 }
 
 /// Checks the law of step `step` in `texts` (one per step; None: the paper's) against its
@@ -255,9 +290,32 @@ pub fn check(
     gains: &Gains,
 ) -> Result<Verdict, FormulaError> {
     let i = step as usize - 1;
-    let Drawing { laws, paper, draws } = drawing(step, texts, model, gains)?;
+    let drawn = drawing(step, texts, model, gains)?;
+    let law = texts[i].clone().unwrap_or_default();
+    let worst = match worst_of(step, &drawn) {
+        Ok(worst) => worst,
+        Err(cause) => {
+            let text = if drawn.draws.is_empty() {
+                format!("Your step {step} cannot be judged: {cause}.")
+            } else {
+                format!(
+                    "Your step {step} does not give the designed dynamics {}: {cause}.",
+                    DESIGNED[i]
+                )
+            };
+            return Ok(Verdict {
+                step,
+                law,
+                on: None,
+                designed: false,
+                worst: None,
+                finding: None,
+                text,
+            });
+        }
+    };
+    let Drawing { laws, paper, draws } = drawn;
     let failed = DRAWS - draws.len();
-    let worst = worst_of(&draws);
     let mistakes = mistakes(step);
     let terms = formula::terms(&paper);
     let parts = parts(&terms);
@@ -285,19 +343,6 @@ pub fn check(
     }
     let (symbol, unit) = OUTPUTS[i];
     let before = if i > 0 { OUTPUTS[i - 1].0 } else { "" };
-    if failed == DRAWS {
-        return Ok(Verdict {
-            step,
-            law: texts[i].clone().unwrap_or_default(),
-            on: None,
-            designed: false,
-            worst: f64::INFINITY,
-            finding: None,
-            text: format!(
-                "Your step {step} cannot be judged: your {before} gives no finite value at any of the {DRAWS} drawn states, so this step never runs."
-            ),
-        });
-    }
     let designed = worst <= TOLERANCE;
     // Whose earlier step the step is judged on.
     let on_text = laws
@@ -326,10 +371,10 @@ pub fn check(
     if designed {
         return Ok(Verdict {
             step,
-            law: texts[i].clone().unwrap_or_default(),
+            law,
             on: on_text.clone(),
             designed,
-            worst,
+            worst: Some(worst),
             finding: None,
             text: format!(
                 "Your step {step} gives the designed dynamics {}{on}: your {symbol} equals {theirs} to {:.0e} of its size at {DRAWS} drawn states and parameter values.{caveat}",
@@ -356,10 +401,10 @@ pub fn check(
     );
     Ok(Verdict {
         step,
-        law: texts[i].clone().unwrap_or_default(),
+        law,
         on: on_text,
         designed,
-        worst,
+        worst: Some(worst),
         finding,
         text,
     })
