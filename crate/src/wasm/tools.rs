@@ -256,10 +256,11 @@ pub struct LawFunction {
 pub struct Language {
     names: &'static [crate::control::formula::Name],
     functions: Vec<LawFunction>,
+    paper: [&'static str; 4],
 }
 
 /// The language of the steps' own laws: `{names: [{name, tex, unit, doc, from_step}],
-/// functions: [{name, doc}]}`.
+/// functions: [{name, doc}], paper: [string]}` (`paper`: each step's law of the paper in it).
 #[wasm_bindgen]
 pub fn law_language() -> Result<Ts<Language>, JsValue> {
     use crate::control::formula::{FUNCTIONS, NAMES};
@@ -269,6 +270,7 @@ pub fn law_language() -> Result<Ts<Language>, JsValue> {
             .iter()
             .map(|&(name, _, _, doc)| LawFunction { name, doc })
             .collect(),
+        paper: crate::control::law::PAPER,
     })
 }
 
