@@ -35,7 +35,7 @@ pub const MAX_WORK: u64 = 10_000_000;
 /// sample, and 295 when steps 2 and 4 are judged on a student's own v1 and v3 through their
 /// rates, so they fit at the most samples a run may take, [`MAX_STEPS`]; laws of sines of huge
 /// arguments fit at fewer. Chosen so that the laws add under three seconds to a run's computing,
-/// each time it is computed; the measurement is in `docs/figures.md` (the work bound).
+/// each time it is computed; the measurement is in `docs/figures.md` (the work of own laws).
 pub const MAX_LAW_WORK: u64 = 600_000_000;
 
 impl Scenario {

@@ -47,8 +47,8 @@ impl Op {
 
     /// What the operation costs, evaluated and with its rate (forward mode), in simple
     /// operations (one dispatch and one addition): each function at its costliest argument, as
-    /// measured (`docs/figures.md`, the work bound). A sine or cosine of a huge argument reduces
-    /// it by hundreds of bits of π; a power computes a logarithm and an exponential.
+    /// measured (`docs/figures.md`, the work of own laws). A sine or cosine of a huge argument
+    /// reduces it by hundreds of bits of π; a power computes a logarithm and an exponential.
     fn work(self) -> (u64, u64) {
         match self {
             Op::Call1(Function::Sin | Function::Cos) => (64, 128),
