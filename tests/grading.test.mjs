@@ -120,7 +120,10 @@ test('Cancel while the class file is read ends the grading there: nothing is gra
       document.getElementById('grade-cancel').click();
     });
     assert.equal(await page.evaluate(() => document.body.dataset.grading), 'cancelled');
-    assert.equal(await page.textContent('#grade-status'), 'Cancelled before any submission was graded.');
+    assert.equal(
+      await page.textContent('#grade-status'),
+      'Cancelled while the class file was read: nothing was graded.',
+    );
     // The reading's end starts no grading, and Grade grades the whole class.
     await page.click('#grade-run');
     await page.waitForFunction(() => document.body.dataset.grading === 'done', null, { timeout: 120_000 });

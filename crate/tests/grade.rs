@@ -85,8 +85,19 @@ fn utf16_without_a_byte_order_mark_and_binary_files_are_refused_saying_what_they
 
 #[test]
 fn an_invalid_utf8_byte_spoils_only_its_own_line() {
-    // The byte-order mark says UTF-8: without it, the file would be read as Windows-1252.
+    // The byte-order mark says UTF-8; without it, a line of UTF-8 beyond ASCII says so too (a
+    // file with no such line would be read in the legacy encoding its bytes point to).
     let class = read_class(b"\xef\xbb\xbfc=1&a\nc=1&\xff&b\nc=1&c\n").unwrap();
+    let unmarked = read_class("c=1&a\nc=1&\u{fc}&b\nc=1&c\n".as_bytes()).unwrap();
+    let mut bytes = b"c=1&a\nc=1&\xff&b\nc=1&c\n".to_vec();
+    bytes.splice(6..6, "# Jos\u{e9} M\u{fc}ller\n".bytes());
+    let spoilt = read_class(&bytes).unwrap();
+    assert_eq!(unmarked.encoding, None);
+    assert_eq!(spoilt.encoding, None);
+    assert_eq!(
+        spoilt.rows[1].status.as_deref(),
+        Some("malformed: line 3 is not valid UTF-8")
+    );
     assert_eq!(
         rows(&class),
         [

@@ -8,7 +8,9 @@
 mod common;
 
 use common::{imlab, quick_link, temp, QUICK};
-use imlab::challenge::grade::{read_class, resume, resume_sample, RESUME_STRIDE};
+use imlab::challenge::grade::{
+    check_kept, grade_row, read_class, resume, resume_sample, RESUME_STRIDE,
+};
 use imlab::challenge::Challenge;
 use std::io::{BufRead, BufReader};
 use std::process::{Command, Stdio};
@@ -104,7 +106,7 @@ fn a_cut_off_output_resumes_to_the_bytes_of_an_uninterrupted_run() {
     // The core's resume point of the whole output is its end.
     let c = Challenge::parse(QUICK).unwrap();
     let read = read_class(class_file().as_bytes()).unwrap();
-    let point = resume(&c, &read, &whole).unwrap();
+    let point = resume(&c, &read, &whole, 7).unwrap();
     assert_eq!((point.keep, point.done), (whole.len(), 12));
     std::fs::remove_file(&out).unwrap();
     std::fs::remove_file(&class).unwrap();
@@ -299,16 +301,15 @@ fn a_kept_row_edited_after_its_grading_is_caught_when_it_is_the_last() {
 }
 
 #[test]
-fn the_rows_graded_again_are_one_in_twenty_and_the_last_from_an_offset_the_bytes_choose() {
+fn the_rows_graded_again_are_one_in_twenty_and_the_last_from_an_offset_the_seed_draws() {
     let mut offsets = std::collections::BTreeSet::new();
     for n in [1, 2, 19, 20, 21, 40, 100, 101] {
-        for k in 0..200 {
-            let kept = format!("header\n{k}\n");
-            let sample = resume_sample(kept.as_bytes(), n);
+        for seed in 0..200 {
+            let sample = resume_sample(seed, n);
             assert_eq!(
                 sample,
-                resume_sample(kept.as_bytes(), n),
-                "the same bytes, the same rows"
+                resume_sample(seed, n),
+                "the same seed, the same rows"
             );
             assert_eq!(sample.last(), Some(&(n - 1)));
             let (stride, last) = sample.split_at(sample.len() - 1);
@@ -327,9 +328,9 @@ fn the_rows_graded_again_are_one_in_twenty_and_the_last_from_an_offset_the_bytes
     assert_eq!(
         offsets.len(),
         RESUME_STRIDE,
-        "every offset is chosen by some bytes"
+        "every offset is drawn by some seed"
     );
-    assert!(resume_sample(b"header\n", 0).is_empty());
+    assert!(resume_sample(1, 0).is_empty());
 }
 
 /// The cells of a CSV line written without quotes, with the `back`th from the end set to `cell`.
@@ -378,41 +379,30 @@ fn each_edit_of_a_kept_row_graded_again_is_refused_naming_what_differs() {
             Some(format!("{},checked {v}\n", row.trim_end()))
         }),
     ];
-    let out = temp("sampled.csv");
+    let c = Challenge::parse(QUICK).unwrap();
+    let read = read_class(file.as_bytes()).unwrap();
     for (what, edit) in edits {
-        // The first edit of a row but the last that lands in the rows graded again.
-        let (j, previous) = (1..99)
+        // The first edit of a row but the last, and a seed that draws it among the rows graded
+        // again.
+        let (j, previous, seed) = (1..99)
             .flat_map(|j| (0..40).map(move |v| (j, v)))
             .find_map(|(j, v)| {
                 let mut edited: Vec<String> = lines.iter().map(|l| l.to_string()).collect();
                 edited[j + 1] = edit(lines[j + 1], v)?;
-                let previous = edited.concat();
-                resume_sample(previous.as_bytes(), 100)
-                    .contains(&j)
-                    .then_some((j, previous))
+                let seed = (0..100).find(|&seed| resume_sample(seed, 100).contains(&j))?;
+                Some((j, edited.concat(), seed))
             })
-            .unwrap_or_else(|| panic!("no edit '{what}' lands in the rows graded again"));
-        std::fs::write(&out, &previous).unwrap();
-        let refused = imlab(&[
-            "grade",
-            QUICK,
-            class.to_str().unwrap(),
-            "--resume",
-            out.to_str().unwrap(),
-        ]);
-        let stderr = String::from_utf8_lossy(&refused.stderr);
-        assert_eq!(refused.status.code(), Some(2), "{what}: {stderr}");
+            .unwrap_or_else(|| panic!("no edit '{what}' applies"));
+        let point = resume(&c, &read, previous.as_bytes(), seed).unwrap();
+        let kept = point.sample.iter().find(|k| k.index == j).unwrap();
+        let graded = grade_row(&c, &read.rows[j]);
+        let refused = check_kept(&c, &read, kept, &graded).unwrap_err();
         let message = format!(
             "its row {} (line {} of the class file) is not what grading it again gives: {what}",
             j + 1,
             j + 2
         );
-        assert!(stderr.contains(&message), "{message}\n{stderr}");
-        assert!(
-            std::fs::read(&out).unwrap() == previous.as_bytes(),
-            "{what}"
-        );
+        assert!(refused.contains(&message), "{message}\n{refused}");
     }
-    std::fs::remove_file(&out).unwrap();
     std::fs::remove_file(&class).unwrap();
 }

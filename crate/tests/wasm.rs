@@ -423,7 +423,7 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
         serde_wasm_bindgen::from_value(grade_class(challenge, bytes).unwrap().into()).unwrap()
     };
     let mut bytes = format!(
-        "Name,Link\r\n\"Lovelace, Ada\",{QUICK}&try.k1=1200\r\n=cmd,=1+1?{QUICK}&try.k1=9000\r\n"
+        "Name,Link\r\n\"Lovelace, Adá\",{QUICK}&try.k1=1200\r\n=cmd,=1+1?{QUICK}&try.k1=9000\r\n"
     )
     .into_bytes();
     bytes.extend(b"Eve \xff,c=1&x\r\n");

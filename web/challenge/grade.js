@@ -254,7 +254,7 @@ export function createGrading({ client }) {
     if (body.grading !== 'reading') return pool.cancel();
     readings++;
     body.grading = 'cancelled';
-    status.textContent = 'Cancelled before any submission was graded.';
+    status.textContent = 'Cancelled while the class file was read: nothing was graded.';
     done();
   });
   $('grade-csv', HTMLButtonElement).addEventListener('click', () => {

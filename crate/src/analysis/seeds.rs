@@ -91,14 +91,28 @@ fn run_seed(s: &Scenario, every: usize, traced: bool) -> Result<SeedRun, Scenari
     let figure = |f: fn(&crate::record::Metrics) -> f64| m.as_ref().map_or(f64::NAN, f);
     let (mut t, mut error, mut estimate) = (Vec::new(), Vec::new(), Vec::new());
     let every = every.max(1);
-    sim.visit(0, sim.len(), &mut |i, r| {
-        if i % every == 0 {
-            t.push(r.t);
-            error.push(r.omega_err);
-            estimate.push(r.omega_est_err);
+    let mut keep = |r: &crate::record::Row| {
+        t.push(r.t);
+        error.push(r.omega_err);
+        estimate.push(r.omega_est_err);
+    };
+    if traced && every >= crate::record::CHECKPOINT_EVERY {
+        // Kept samples farther apart than the checkpoints: each computed from the one before it,
+        // not the whole run again.
+        for i in (0..sim.len()).step_by(every) {
+            sim.visit(i, i + 1, &mut |_, r| {
+                keep(r);
+                true
+            });
         }
-        true
-    });
+    } else {
+        sim.visit(0, sim.len(), &mut |i, r| {
+            if i % every == 0 {
+                keep(r);
+            }
+            true
+        });
+    }
     Ok(SeedRun {
         result: SeedResult {
             seed: s.seed,

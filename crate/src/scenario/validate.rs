@@ -125,15 +125,11 @@ impl Scenario {
         self.check_law_work(samples)
     }
 
-    /// Operations the own laws take over the whole run (see [`Laws::work`]): 0 without them,
-    /// or when the controller is not the backstepping they replace steps of.
+    /// Operations the own laws take over the whole run (see [`Laws::work`]): 0 without them.
+    /// The baseline evaluates them too, for the backstepping's columns it records beside its
+    /// own.
     pub fn law_work(&self) -> Result<u64, ScenarioError> {
-        let laws = self.laws()?;
-        Ok(if self.controller == ControllerKind::Backstepping {
-            (self.steps() as u64).saturating_mul(laws.work())
-        } else {
-            0
-        })
+        Ok((self.steps() as u64).saturating_mul(self.laws()?.work()))
     }
 
     /// Refuses own laws whose work over the run's `samples` passes [`MAX_LAW_WORK`], naming
@@ -161,12 +157,12 @@ impl Scenario {
                 "the laws' work, {samples} samples ('duration'/'ts' = {duration} s / {ts} s) × \
                  {per_sample} operations a sample ({}) = {work}, is more than the {MAX_LAW_WORK} \
                  allowed (a sine or cosine counts 64 operations, a power 32, exp, ln, tanh and \
-                 atan2 12 each); shorten 'duration' to {} s or raise 'ts' to {} s, or write \
-                 laws that take at most {} operations a sample",
+                 atan2 12 each); write laws that take at most {} operations a sample, or \
+                 shorten 'duration' to {} s or raise 'ts' to {} s",
                 parts.join(", "),
+                MAX_LAW_WORK / samples as u64,
                 short(down3(fits * self.ts)),
                 short(up3(self.duration / fits)),
-                MAX_LAW_WORK / samples as u64,
             ),
         })
     }
@@ -342,10 +338,11 @@ mod tests {
         let ops = [0u8, 1, 2, 3]
             .map(|i| crate::control::formula::Program::parse(costly[i as usize], i + 1).unwrap());
         assert!(ops.iter().all(|p| p.work() > 6400));
-        // The baseline runs no law: its work is not counted.
+        // The baseline evaluates the laws too (for the backstepping's columns): it is bounded
+        // alike.
         let mut ifoc = longest.to_vec();
         ifoc.push(("controller", "ifoc".to_string()));
-        let ifoc = with_laws(&ifoc, costly).unwrap();
-        assert_eq!(ifoc.law_work().unwrap(), 0);
+        let err = with_laws(&ifoc, costly).unwrap_err().to_string();
+        assert!(err.starts_with("the laws' work, 2000000 samples"), "{err}");
     }
 }

@@ -367,7 +367,8 @@ pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
 
 impl Map {
     /// Checks a map of `base` over `axes` (one or two, of different keys) and `seeds`: every
-    /// cell's scenario must be valid, and the whole map's work within [`MAX_MAP_WORK`]; refused
+    /// cell's scenario must be valid, and the whole map's work within [`MAX_MAP_WORK`] and
+    /// [`MAX_MAP_LAW_WORK`]; refused
     /// before any run, with the number it would need.
     pub fn plan(base: &Scenario, axes: Vec<Axis>, seeds: Vec<u64>) -> Result<Map, String> {
         if axes.is_empty() || axes.len() > 2 {

@@ -5,7 +5,9 @@ use fs4::{FileExt, TryLockError};
 use imlab::challenge::grade::{self, Class, ClassRow, Graded};
 use imlab::challenge::Challenge;
 use imlab::text::excerpt;
+use std::collections::hash_map::RandomState;
 use std::fs::OpenOptions;
+use std::hash::{BuildHasher, Hasher};
 use std::io::{self, Read, Seek, SeekFrom, Write};
 
 /// Grades each submission of `file` against the challenge and writes the grades as CSV to
@@ -71,7 +73,9 @@ fn resume_into(c: &Challenge, class: &Class, header: &str, path: &str) -> Result
     }
     let mut previous = Vec::new();
     file.read_to_end(&mut previous).map_err(failed)?;
-    let from = grade::resume(c, class, &previous).map_err(named)?;
+    // A seed of the system's randomness (std's hash keys), drawn afresh each time.
+    let seed = RandomState::new().build_hasher().finish();
+    let from = grade::resume(c, class, &previous, seed).map_err(named)?;
     let sample: Vec<&ClassRow> = from.sample.iter().map(|k| &class.rows[k.index]).collect();
     grade_each(
         c,

@@ -150,7 +150,14 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
             NOT_TEXT.to_string()
         });
     }
-    if std::str::from_utf8(bytes).is_ok() {
+    // A file with a line of UTF-8 beyond ASCII is UTF-8 with a few bad bytes (a pasted name, a
+    // cut-off copy): those spoil their own lines, and the others keep their names.
+    let utf8_beyond_ascii = || {
+        bytes
+            .split(|&b| b == b'\n')
+            .any(|line| !line.is_ascii() && std::str::from_utf8(line).is_ok())
+    };
+    if std::str::from_utf8(bytes).is_ok() || utf8_beyond_ascii() {
         return Ok(decoded(utf8_lines(bytes), "UTF-8"));
     }
     let mut detector = EncodingDetector::new(Iso2022JpDetection::Deny);

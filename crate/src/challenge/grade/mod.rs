@@ -12,7 +12,7 @@ mod class;
 
 pub use class::{read_class, Class, ClassRow};
 
-use super::{fnv1a, judge, measure, Challenge, Measures, Verdict};
+use super::{judge, measure, Challenge, Measures, Verdict};
 use crate::rng::Rng;
 use crate::sim::Simulation;
 use crate::text::{csv, excerpt};
@@ -167,16 +167,15 @@ pub struct KeptRow {
 /// One in this many kept rows is graded again when a grading resumes (and always the last).
 pub const RESUME_STRIDE: usize = 20;
 
-/// The indices of the kept rows graded again when a grading resumes from `kept`, the complete
-/// lines of its output, which hold `done` rows: every [`RESUME_STRIDE`]th row from an offset
-/// drawn from the bytes of `kept` (their FNV-1a hash seeds the crate's generator), and the last.
-/// The choice is the same for the same bytes, and any edit of the file draws it afresh, so that
-/// the editor of a row cannot tell from the file whether it will be graded again.
-pub fn resume_sample(kept: &[u8], done: usize) -> Vec<usize> {
+/// The indices of the kept rows graded again when a grading resumes with `done` rows kept: every
+/// [`RESUME_STRIDE`]th row from an offset drawn by `seed`, and the last. The caller draws the seed
+/// afresh each time (`imlab grade --resume` from the system's randomness), so that nothing in the
+/// file tells its editor which rows will be graded again.
+pub fn resume_sample(seed: u64, done: usize) -> Vec<usize> {
     if done == 0 {
         return Vec::new();
     }
-    let offset = (Rng::new(fnv1a(kept)).next_u64() % RESUME_STRIDE as u64) as usize;
+    let offset = (Rng::new(seed).next_u64() % RESUME_STRIDE as u64) as usize;
     let mut sample: Vec<usize> = (offset..done).step_by(RESUME_STRIDE).collect();
     if sample.last() != Some(&(done - 1)) {
         sample.push(done - 1);
@@ -188,9 +187,9 @@ pub fn resume_sample(kept: &[u8], done: usize) -> Vec<usize> {
 /// same grading cut off anywhere (empty: from the start). Its complete lines must be the
 /// grades' header and then rows of the class's first submissions, in order (each row's carried
 /// cells, line and link as they would be written); anything else is refused with what differs,
-/// as the output of another grading. The rows of [`Resume::sample`] are then to be graded again
-/// and checked by [`check_kept`].
-pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, String> {
+/// as the output of another grading. The rows of [`Resume::sample`] (drawn by `seed`, see
+/// [`resume_sample`]) are then to be graded again and checked by [`check_kept`].
+pub fn resume(c: &Challenge, class: &Class, previous: &[u8], seed: u64) -> Result<Resume, String> {
     let keep = previous
         .iter()
         .rposition(|&b| b == b'\n')
@@ -232,7 +231,7 @@ pub fn resume(c: &Challenge, class: &Class, previous: &[u8]) -> Result<Resume, S
             ));
         }
     }
-    let sample = resume_sample(text.as_bytes(), rows.len())
+    let sample = resume_sample(seed, rows.len())
         .into_iter()
         .map(|index| KeptRow {
             index,

@@ -246,7 +246,8 @@ fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, String> {
     };
     let n = not_finite.len();
     Err(if first.mine.is_finite() {
-        format!("your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {n} of the {DRAWS} drawn states, e.g.{at}")
+        let e_g = if names.is_empty() { "" } else { ", e.g." };
+        format!("your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {n} of the {DRAWS} drawn states{e_g}{at}")
     } else {
         format!(
             "your {symbol} ({unit}) is not a finite number at {n} of the {DRAWS} drawn states: it gives {}{at}",
