@@ -324,3 +324,15 @@ test('a published scenario link opens no challenge', () =>
     assert.equal(await page.evaluate(() => document.body.dataset.challenge), undefined);
     assert.match(page.url(), /\?v=1&preset=step$/);
   }));
+
+test('a built-in’s name with a try opens as that built-in’s submission, as imlab grade reads it', async () => {
+  const short = 'challenge=step-tune&try.k1=2000';
+  await withPage(`?${short}`, async (page) => {
+    assert.equal(await graded(page), 'fail');
+    assert.equal(await page.inputValue('#challenge-k1'), '2000');
+    assert.equal(await page.textContent('#challenge-panel h2'), 'Fast step within the rating');
+    assert.match(page.url(), /\?c=1&.*&try\.k1=2000$/);
+  });
+  const grades = execFileSync(cli, ['grade', 'step-tune', '-'], { input: `${short}\n` }).toString();
+  assert.match(grades.split('\n')[1], /^1,challenge=step-tune&try\.k1=2000,ok,.*,0$/);
+});

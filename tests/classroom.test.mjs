@@ -34,11 +34,42 @@ for (const present of [false, true]) {
       assert.equal(await page.textContent('#lesson-panel h2'), lesson.title);
       assert.equal(new URL(page.url()).search.slice(1), lesson.run);
       assert.equal(await page.evaluate(() => document.body.classList.contains('present')), present);
-      // The name is taken from the address once: the address then names the run on screen.
+      // The address names the lesson while it is open: a reload opens it again, with its run.
+      assert.match(new URL(page.url()).hash, new RegExp(`lesson=${lesson.id}`));
+      await page.reload();
+      await settled(page);
+      assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), lesson.run);
+      assert.equal(await page.isVisible('#lesson-panel .own-settings'), false);
+      assert.equal(await page.evaluate(() => document.body.classList.contains('present')), present);
+      // "Copy link to this lesson" keeps the mode the lesson is shown in.
+      await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
+      await page.click('#lesson-panel .copy-lesson');
+      await page.waitForFunction(() => /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent));
+      const copied = new URL(await page.evaluate(() => navigator.clipboard.readText()));
+      assert.equal(copied.hash, `#lesson=${lesson.id}${present ? '&present=1' : ''}`);
+      await page.click('#lesson-panel .close');
       assert.doesNotMatch(new URL(page.url()).hash, /lesson=/);
     });
   });
 }
+
+test('a lesson link with settings of its own shows them, says how they differ from the lesson’s run, and offers the run', () => {
+  const lesson = LESSONS.find((l) => l.id === 'rr-mismatch');
+  return suite.withPage(`?${lesson.run}&k1=600#lesson=${lesson.id}`, async (page) => {
+    await settled(page);
+    assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), lesson.run);
+    await page.waitForSelector('#lesson-panel .own-settings:not([hidden])');
+    assert.match(await page.textContent('#lesson-panel .own-settings'), /settings of its own.*k1: \d+ → 600/);
+    assert.match(await page.evaluate(() => document.body.dataset.scenario), /&k1=600(&|$)/);
+    assert.match(new URL(page.url()).search, /&k1=600(&|$)/);
+    const before = await page.evaluate(() => Number(document.body.dataset.started));
+    await page.click('#lesson-panel .own-settings button');
+    await page.waitForFunction((n) => Number(document.body.dataset.started) > n, before);
+    await settled(page);
+    assert.equal(new URL(page.url()).search.slice(1), lesson.run);
+    assert.equal(await page.isVisible('#lesson-panel .own-settings'), false);
+  });
+});
 
 test('"Copy link to this lesson" gives the link by name, and an unknown name is said with the names there are', () =>
   suite.withPage('#lesson=no-such-lesson', async (page) => {

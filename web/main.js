@@ -232,17 +232,35 @@ const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
   lessons: LESSONS.map((lesson) => renderLesson(lesson, TABLE)),
-  /** @param {{run: string, tab?: string, map?: string}} lesson a lesson of teaching.js, its texts rendered */
-  onOpen: async (lesson) => {
+  /**
+   * @param {{run: string, tab?: string, map?: string}} lesson a lesson of teaching.js, its texts rendered
+   * @param {string | null} link the address's scenario, when the address names the lesson
+   */
+  onOpen: async (lesson, link) => {
     // A lesson starts from its own state: no runs pinned in another lesson stay in its overlay.
     pins.clear();
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
     if (lesson.map) robust.fill(lesson.map).catch((e) => say(`The lesson's map was not read: ${e.message}.`));
     window.scrollTo(0, 0);
-    await settings.load(lesson.run);
+    const differences = link === null ? [] : await differencesFrom(lesson.run, link);
+    await settings.load(differences.length ? /** @type {string} */ (link) : lesson.run);
+    return differences;
   },
 });
+
+/**
+ * How scenario `text` differs from scenario `from`, a line a field as the core writes it; one line
+ * saying the core refused `text` when it does.
+ * @param {string} from
+ * @param {string} text
+ * @returns {Promise<string[]>}
+ */
+function differencesFrom(from, text) {
+  return client
+    .job('scenario-differences', { from, text })
+    .catch((/** @type {Error} */ e) => [`the core refused them (${e.message})`]);
+}
 wireShare({ state });
 
 /**
@@ -252,9 +270,8 @@ wireShare({ state });
 function lessonFromUrl() {
   const id = fragment('lesson');
   if (id === null || challengeFromUrl()) return false;
-  // The lesson's run then stands in the address alone: an edit of it is no longer the lesson.
+  if (lessons.openById(id, location.search.slice(1) || null)) return true;
   setFragment('lesson', null);
-  if (lessons.openById(id)) return true;
   state.notice = `No lesson named '${excerpt(id)}'. Lessons: ${LESSONS.map((l) => l.id).join(', ')}.`;
   say(state.notice, 'info');
   return false;

@@ -697,3 +697,42 @@ fn a_submission_written_from_values_is_the_canonical_link_and_reads_back() {
         assert_eq!(s.encode(), b.solved().encode(), "{}", b.name);
     }
 }
+
+#[test]
+fn a_built_ins_name_may_carry_a_try_and_stray_characters_are_named() {
+    let b = builtin("step-tune").unwrap();
+    let c = b.challenge();
+    let solved = b.solved().encode();
+    let tries = solved.strip_prefix(b.text).unwrap();
+    assert!(tries.starts_with("&try."), "{solved}");
+    let short = format!("challenge=step-tune{tries}");
+    assert_eq!(c.submission(&short).unwrap(), b.solved());
+    assert_eq!(
+        c.submission(&format!("https://lab.example/im/?{short}#x"))
+            .unwrap(),
+        b.solved()
+    );
+    assert_eq!(Challenge::from_link(&short).unwrap(), c);
+    let other = builtin("ifoc-load").unwrap().challenge();
+    assert_eq!(
+        other.submission(&short).unwrap_err().kind,
+        ErrorKind::Another
+    );
+    let refused = |link: &str| c.submission(link).unwrap_err().message;
+    assert_eq!(
+        refused("challenge=step-tune&title=Easy&try.k1=2000"),
+        "field 'title' cannot follow challenge=step-tune: a built-in challenge's link holds \
+         only challenge=NAME and the student's try.FIELD parts"
+    );
+    // A stray character before the link is named, not taken for a missing field.
+    assert_eq!(
+        refused(&format!("={solved}")),
+        "the link starts with the stray character '=' before its c=1: remove it"
+    );
+    assert_eq!(
+        refused(&format!("\"'{solved}")),
+        "the link starts with the stray characters '\"'' before its c=1: remove them"
+    );
+    assert!(refused("v=1&preset=step").contains("field 'c' is missing"));
+    assert!(refused("xc=1&title=a").contains("field 'c' is missing"));
+}

@@ -1,14 +1,17 @@
 // Guided lessons: a list in the Lessons tab, and a lesson panel beside the plots that keeps the
 // lesson's context (what to look for, the question, a hint, the answer) while its plots are shown.
 import { el } from '../ui/dom.js';
+import { fragment, setFragment } from '../ui/url.js';
 
 /** @typedef {import('./teaching.js').Lesson} Lesson */
 
 /**
- * The link to `lesson`: its run, and its name, which opens its panel.
+ * The link to `lesson`: its run, and its name, which opens its panel; in presentation mode, that
+ * mode too.
  * @param {Lesson} lesson
  */
-export const lessonLink = (lesson) => `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}`;
+export const lessonLink = (lesson) =>
+  `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}${fragment('present') === '1' ? '&present=1' : ''}`;
 
 /**
  * Copies the link to `lesson`, saying so in `said` (or showing the link where the clipboard is refused).
@@ -27,10 +30,12 @@ async function copyLink(lesson, said) {
 
 export class LessonPanel {
   /**
-   * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson)` loads and runs the
-   * lesson's run (a scenario string).
+   * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson, link)` loads and
+   * runs the lesson's run (a scenario string), or the scenario `link` of an address that names the
+   * lesson with settings of its own; it resolves with how that scenario differs from the lesson's
+   * run ("key: lesson's → link's"), empty when it does not.
    * @param {{panel: HTMLElement, list: HTMLElement, lessons: Lesson[],
-   *   onOpen: (lesson: Lesson) => Promise<void>}} parts
+   *   onOpen: (lesson: Lesson, link: string | null) => Promise<string[]>}} parts
    */
   constructor({ panel, list, lessons, onOpen }) {
     this.panel = panel;
@@ -54,10 +59,13 @@ export class LessonPanel {
   }
 
   /**
-   * Opens lesson `i`: shows its panel, scrolled to the top, with focus on its title, and runs it.
+   * Opens lesson `i`: shows its panel, scrolled to the top, with focus on its title, and runs it,
+   * or the scenario `link` when an address names the lesson with settings of its own. The address
+   * names the lesson while it is open, so that a reload opens it again.
    * @param {number} i
+   * @param {string | null} [link]
    */
-  async open(i) {
+  async open(i, link = null) {
     this.index = i;
     const lesson = this.lessons[i];
     const previous = el('button', { type: 'button', textContent: '← Previous', disabled: i === 0 });
@@ -65,6 +73,7 @@ export class LessonPanel {
     const close = el('button', { type: 'button', className: 'close', textContent: 'Close lesson' });
     const copy = el('button', { type: 'button', className: 'copy-lesson', textContent: 'Copy link to this lesson' });
     const copied = el('p', { className: 'hint', role: 'status' });
+    const own = el('div', { className: 'own-settings', hidden: true });
     copy.addEventListener('click', () => copyLink(lesson, copied));
     previous.addEventListener('click', () => this.open(i - 1));
     next.addEventListener('click', () => this.open(i + 1));
@@ -84,6 +93,7 @@ export class LessonPanel {
         textContent: `Lesson ${i + 1} of ${this.lessons.length} · run ${lesson.run}`,
       }),
       el('h2', { textContent: lesson.title, tabIndex: -1 }),
+      own,
       el('h3', { textContent: 'What to look for' }),
       el('p', { className: 'look', textContent: lesson.look }),
       el('h3', { className: 'question-head', textContent: 'Question' }),
@@ -97,21 +107,43 @@ export class LessonPanel {
     this.panel.hidden = false;
     this.panel.scrollTop = 0;
     document.body.classList.add('with-lesson');
+    setFragment('lesson', lesson.id);
     // Keyboard and screen-reader users continue where the content is, not at the page's top.
-    const started = this.onOpen(lesson);
+    const started = this.onOpen(lesson, link);
     /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
-    await started;
+    const differences = await started;
+    if (differences.length && this.index === i) this.showOwn(own, differences, i);
   }
 
   /**
-   * Opens the lesson named `id` (its link's name); returns false, opening nothing, when no lesson
-   * has that name.
-   * @param {string} id
+   * Says, in `own`, that the address's settings are shown in place of lesson `i`'s run, and how
+   * they differ from it (`differences`), with a button that loads the lesson's run.
+   * @param {HTMLElement} own
+   * @param {string[]} differences
+   * @param {number} i
    */
-  openById(id) {
+  showOwn(own, differences, i) {
+    const back = el('button', { type: 'button', textContent: 'Load the lesson’s run' });
+    back.addEventListener('click', () => this.open(i));
+    own.replaceChildren(
+      el('p', {
+        textContent: `This link holds settings of its own, and they are shown as it has them, not the lesson’s run: ${differences.join('; ')}. What the lesson says of its run need not hold for them.`,
+      }),
+      back,
+    );
+    own.hidden = false;
+  }
+
+  /**
+   * Opens the lesson named `id` (its link's name) with the address's scenario `link` (null when the
+   * address holds none); returns false, opening nothing, when no lesson has that name.
+   * @param {string} id
+   * @param {string | null} link
+   */
+  openById(id, link) {
     const i = this.lessons.findIndex((l) => l.id === id);
     if (i < 0) return false;
-    this.open(i);
+    this.open(i, link);
     return true;
   }
 
@@ -119,5 +151,6 @@ export class LessonPanel {
     this.index = null;
     this.panel.hidden = true;
     document.body.classList.remove('with-lesson');
+    setFragment('lesson', null);
   }
 }

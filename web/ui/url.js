@@ -13,14 +13,17 @@ export function scenarioFromUrl() {
 }
 
 /**
- * The challenge in the address bar, or null: `?c=1&…` is a challenge link (with `&try.FIELD=…`
- * a submission), `?challenge=NAME` a built-in. Returns {challenge, submission}: the link the core
- * opens the challenge from (it reads no `try.` part) and the whole submission text, if any.
+ * The challenge in the address bar, or null: `?c=1&…` is a challenge link and `?challenge=NAME` a
+ * built-in, each with `&try.FIELD=…` a submission. Returns {challenge, submission}: the link the
+ * core opens the challenge from (it reads no `try.` part) and the whole submission text, if any.
  */
 export function challengeFromUrl() {
   const text = location.search.slice(1);
   const keys = [...new URLSearchParams(text).keys()];
-  if (keys.length === 1 && keys[0] === 'challenge') return { challenge: text, submission: null };
+  if (keys[0] === 'challenge') {
+    const tries = keys.length > 1;
+    return { challenge: text, submission: tries ? text : null };
+  }
   if (!text.startsWith('c=')) return null;
   return { challenge: text, submission: text };
 }

@@ -12,6 +12,7 @@ import initTools, {
   robust_parts,
   robust_plan,
   robust_run,
+  scenario_differences,
   seed_bands,
   seed_range,
   seed_run,
@@ -47,5 +48,6 @@ export const JOBS = {
   'law-language': () => law_language(),
   'law-preview': (d) => law_preview(d.step, d.text),
   'law-verdicts': (d) => law_verdicts(d.scenario),
+  'scenario-differences': (d) => scenario_differences(d.from, d.text),
   ...CHALLENGE_JOBS,
 };

@@ -146,6 +146,8 @@ export {};
  * - 'law-language': the names and functions a step's own law may use; 'law-preview' the law
  *   `text` of `step` as typed (its TeX, or where and why it is refused); 'law-verdicts' the
  *   verdict on each own law of `scenario` against its step's designed dynamics.
+ * - 'scenario-differences': how scenario `text` differs from scenario `from`, a line a field
+ *   ("key: from's → text's unit").
  * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
  *   CSV's header and the submissions; 'grade-link' one submission graded, its runs run and its
  *   CSV row written. The CSV is the header and then each row's `csv`, in file order.
@@ -176,6 +178,7 @@ export {};
  *   'law-language': {req: {}, result: Language},
  *   'law-preview': {req: {step: number, text: string}, result: Preview},
  *   'law-verdicts': {req: {scenario: string}, result: LawVerdict[]},
+ *   'scenario-differences': {req: {from: string, text: string}, result: string[]},
  *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassView},
  *   'grade-link': {req: {text: string, row: ClassRow}, result: GradedView},
  * }} Jobs

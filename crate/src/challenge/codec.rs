@@ -142,11 +142,10 @@ pub(super) fn parse_parts(
     }
     let pairs = pieces(text)?;
     let get = |key: &str| pairs.iter().find(|(k, _)| *k == key).map(|(_, v)| *v);
-    let version = get("c").ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "field 'c' is missing (a challenge starts with c={CHALLENGE_VERSION})"
-        ))
-    })?;
+    if let Some(name) = get("challenge") {
+        return builtin_with_tries(name, &pairs);
+    }
+    let version = get("c").ok_or_else(|| missing_version(query_of(text)))?;
     if version != CHALLENGE_VERSION.to_string() {
         return Err(ChallengeError::malformed(format!(
             "field 'c' = '{}': unsupported challenge version, allowed: {CHALLENGE_VERSION}",
@@ -187,6 +186,50 @@ pub(super) fn parse_parts(
         .finish(get("vary"), get("robust"))
         .map_err(|(_, e)| e)?;
     Ok((challenge, tries))
+}
+
+/// A built-in challenge named by `challenge=NAME` with the student's `try.*` pairs; any other
+/// field is refused, since a built-in's text is fixed.
+fn builtin_with_tries(
+    name: &str,
+    pairs: &[(&str, &str)],
+) -> Result<(Challenge, Vec<(String, String)>), ChallengeError> {
+    let challenge = builtin_named(name)?;
+    let mut tries = Vec::new();
+    for (k, v) in pairs {
+        if let Some(field) = k.strip_prefix("try.").filter(|f| !f.is_empty()) {
+            tries.push((field.to_string(), pct_decode(k, v)?));
+        } else if *k != "challenge" {
+            return Err(ChallengeError::malformed(format!(
+                "field '{}' cannot follow challenge={}: a built-in challenge's link holds only \
+                 challenge=NAME and the student's try.FIELD parts",
+                excerpt(k),
+                excerpt(name)
+            )));
+        }
+    }
+    Ok((challenge, tries))
+}
+
+/// The error for a challenge text without its `c` field, naming any stray characters written
+/// before a `c=` that starts the text.
+fn missing_version(query: &str) -> ChallengeError {
+    let first = query.split('&').next().unwrap_or("");
+    let stray = first
+        .find("c=")
+        .filter(|&at| at > 0)
+        .map(|at| &first[..at])
+        .filter(|s| !s.chars().any(char::is_alphanumeric));
+    ChallengeError::malformed(match stray {
+        Some(stray) => format!(
+            "the link starts with the stray character{} '{}' before its c={CHALLENGE_VERSION}: \
+             remove {}",
+            if stray.chars().count() > 1 { "s" } else { "" },
+            excerpt(stray),
+            if stray.chars().count() > 1 { "them" } else { "it" },
+        ),
+        None => format!("field 'c' is missing (a challenge starts with c={CHALLENGE_VERSION})"),
+    })
 }
 
 /// Refuses a title longer than [`MAX_TITLE_CHARS`].

@@ -48,7 +48,7 @@ pub use submission::Submission;
 
 use crate::scenario::Scenario;
 use crate::text::excerpt;
-use codec::{builtin_named, check_length, parse_parts, pct_encode, query_of};
+use codec::{check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
 
 /// Version of the challenge codec.
@@ -206,11 +206,6 @@ impl Challenge {
             .split('&')
             .filter(|p| !p.is_empty() && !p.starts_with("try."))
             .collect();
-        if let [only] = kept[..] {
-            if let Some(name) = only.strip_prefix("challenge=") {
-                return builtin_named(name);
-            }
-        }
         Challenge::parse(&kept.join("&"))
     }
 

@@ -294,3 +294,11 @@ pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdic
         .map_err(|(step, e)| js_error(format!("law.v{step}: {e}")))?;
     to_js_list(&verdicts)
 }
+
+/// How scenario `text` differs from scenario `from`, field by field ("key: from's → text's unit").
+#[wasm_bindgen]
+pub fn scenario_differences(from: &str, text: &str) -> Result<Vec<String>, JsValue> {
+    let from = Scenario::parse(from).map_err(js_error)?;
+    let to = Scenario::parse(text).map_err(js_error)?;
+    Ok(to.differences(&from))
+}
