@@ -221,13 +221,18 @@ fn missing_version(query: &str) -> ChallengeError {
         .map(|at| &first[..at])
         .filter(|s| !s.chars().any(char::is_alphanumeric));
     ChallengeError::malformed(match stray {
-        Some(stray) => format!(
-            "the link starts with the stray character{} '{}' before its c={CHALLENGE_VERSION}: \
-             remove {}",
-            if stray.chars().count() > 1 { "s" } else { "" },
-            excerpt(stray),
-            if stray.chars().count() > 1 { "them" } else { "it" },
-        ),
+        Some(stray) => {
+            let (s, them) = if stray.chars().count() > 1 {
+                ("s", "them")
+            } else {
+                ("", "it")
+            };
+            format!(
+                "the link starts with the stray character{s} '{}' before its \
+                 c={CHALLENGE_VERSION}: remove {them}",
+                excerpt(stray)
+            )
+        }
         None => format!("field 'c' is missing (a challenge starts with c={CHALLENGE_VERSION})"),
     })
 }
