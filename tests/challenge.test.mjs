@@ -75,6 +75,13 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     assert.equal(await page.inputValue('#compose-allow-k1-lo'), '600');
     assert.equal(await page.inputValue('#compose-allow-k1-hi'), '2400');
     for (const k of ['k1', 'k2', 'k3', 'k4']) await page.fill(`#compose-allow-${k}-hi`, '5000');
+    // The mean NIS inside its band takes no bound: its field is empty, and gets its number back.
+    assert.equal(await page.inputValue('#compose-need-mean_nis-op'), 'band');
+    assert.equal(await page.isDisabled('#compose-need-mean_nis-bound'), true);
+    assert.equal(await page.inputValue('#compose-need-mean_nis-bound'), '');
+    await page.selectOption('#compose-need-mean_nis-op', 'max');
+    assert.match(await page.inputValue('#compose-need-mean_nis-bound'), /^\d+(\.\d+)?$/);
+    await page.selectOption('#compose-need-mean_nis-op', 'band');
     await page.fill('#compose-title', 'Fast step');
     for (const [figure, bound] of [
       ['settling_time', '0.004'],
@@ -265,12 +272,15 @@ test('a challenge knob of a field in a closed settings group reaches the run, an
 test('a value outside the allowed range is refused before it runs: the address keeps naming the run on screen', () =>
   withPage('?challenge=step-tune', async (page) => {
     await graded(page);
+    await page.click('#challenge-copy');
+    await page.waitForFunction(() => /copied/.test(document.querySelector('#challenge-copied').textContent));
     const before = await page.evaluate(() => ({ started: document.body.dataset.started, address: location.search }));
     await page.fill('#challenge-k1', '6000');
     await page.click('#challenge-run');
     await page.waitForFunction(() => document.body.dataset.challenge === 'refused');
     assert.match(await page.textContent('#challenge-error'), /k1=6000 is outside 300\.\.5000.*Not run/);
     assert.equal(await page.isDisabled('#challenge-copy'), true);
+    assert.equal(await page.textContent('#challenge-copied'), '', 'the earlier link’s "copied" stays');
     const after = await page.evaluate(() => ({ started: document.body.dataset.started, address: location.search }));
     assert.deepEqual(after, before, 'a run started, or the address moved');
     // Back in range, it runs and is graded again.

@@ -44,7 +44,9 @@ for (const present of [false, true]) {
       // "Copy link to this lesson" keeps the mode the lesson is shown in.
       await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
       await page.click('#lesson-panel .copy-lesson');
-      await page.waitForFunction(() => /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent));
+      await page.waitForFunction(() =>
+        /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent),
+      );
       const copied = new URL(await page.evaluate(() => navigator.clipboard.readText()));
       assert.equal(copied.hash, `#lesson=${lesson.id}${present ? '&present=1' : ''}`);
       await page.click('#lesson-panel .close');
@@ -149,3 +151,24 @@ for (const plots of ['speed', 'speed,speed-error', 'speed,speed-error,current'])
     }
   });
 }
+
+test('where the browser refuses the service worker, as in another site’s frame, the embed runs and logs no error', async () => {
+  const context = await suite.browser.newContext({ viewport: { width: 800, height: 600 } });
+  const errors = [];
+  try {
+    const page = await context.newPage();
+    page.on('console', (m) => m.type() === 'error' && errors.push(m.text()));
+    page.on('pageerror', (e) => errors.push(e.message));
+    // What Chromium answers a frame whose storage it blocks.
+    await page.addInitScript(() => {
+      navigator.serviceWorker.register = () =>
+        Promise.reject(new DOMException('The user denied permission to use Service Worker.', 'SecurityError'));
+    });
+    await page.goto(`${suite.server.url}?v=1&preset=step#embed=speed`);
+    await settled(page);
+    await page.waitForFunction(() => document.body.dataset.offline === 'refused');
+  } finally {
+    await context.close();
+  }
+  assert.deepEqual(errors, []);
+});

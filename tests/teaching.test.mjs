@@ -19,7 +19,7 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
       ss.map((s) => ({
         id: s.id,
         equations: s.querySelectorAll('.equation').length,
-        rendered: s.querySelectorAll('.equation > .katex-display').length,
+        rendered: s.querySelectorAll('.equation > .katex').length,
       })),
     );
     assert.equal(sections.length, 8);
@@ -35,6 +35,17 @@ test('every walkthrough section renders its equations with no KaTeX error', () =
     for (const key of ['k1', 'k2', 'k3', 'k4', 'ekf\\.q', 'ekf\\.r_std'])
       assert.equal(await page.locator(`#knob-${key}`).count(), 1, key);
     assert.match(await page.textContent('#section-stability .stability-report'), /of 2000 samples|all 2000 samples/);
+    // On a phone every equation wraps within the column: none is cut or scrolls sideways.
+    await page.setViewportSize({ width: 390, height: 844 });
+    const over = await page.$$eval('#walkthrough .equation', (list) =>
+      list
+        .filter((e) => e.scrollWidth > e.clientWidth + 1 || e.scrollHeight > e.clientHeight + 1)
+        .map(
+          (e) =>
+            `${e.textContent.slice(0, 40)}: ${e.scrollWidth}×${e.scrollHeight} in ${e.clientWidth}×${e.clientHeight}`,
+        ),
+    );
+    assert.deepEqual(over, []);
   }));
 
 test('a design knob edits the scenario like the settings form', () =>
@@ -76,6 +87,8 @@ test('the Euler/RK4 comparison shows the observer limiting the 200 Hz sine', () 
     const [euler, rk4] = rows.map((r) => ({ tracking: Number(r[1]), nis: Number(r[4]) }));
     assert.ok(rk4.tracking < euler.tracking / 2, `tracking RMS euler ${euler.tracking}, rk4 ${rk4.tracking}`);
     assert.ok(euler.nis > 10 && rk4.nis < 2.5, `mean NIS euler ${euler.nis}, rk4 ${rk4.nis}`);
+    // The share at the limit reads as the figures strip writes it, a percentage.
+    for (const r of rows) assert.match(r[5], /^\d+(\.\d+)? %$/);
   }));
 
 test('presentation mode enlarges text and plots', () =>

@@ -54,7 +54,13 @@ let swRegistered = false;
 function registerServiceWorker() {
   if (swRegistered) return;
   swRegistered = true;
-  navigator.serviceWorker?.register('sw.js');
+  // Where the browser allows no service worker (a page opened from a file, an embed in another
+  // site's page whose storage the browser partitions or blocks, some private windows), the page
+  // works while online only: that is said in the lecturer's guide, not logged as an error.
+  navigator.serviceWorker?.register('sw.js').then(
+    () => (document.body.dataset.offline = 'kept'),
+    () => (document.body.dataset.offline = 'refused'),
+  );
 }
 
 /**

@@ -4,7 +4,7 @@ import uPlot from '../../vendor/uPlot.esm.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { fittedRange } from '../plots/ranges.js';
-import { pageNumbers } from '../plots/numbers.js';
+import { pageNumbers, percent } from '../plots/numbers.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @typedef {P.Jobs['sweep-plan']['result']} PlanView */
@@ -263,7 +263,7 @@ export class Analysis {
           label,
           bandwidth,
           phase,
-          `${(summary.worst_saturation ?? 0).toPrecision(3)} of samples`,
+          percent(summary.worst_saturation ?? 0),
           String(summary.failed),
           unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0',
         ].map((c) => el('td', { textContent: c })),

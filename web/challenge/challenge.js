@@ -339,7 +339,7 @@ export class ChallengePanel {
         ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
       );
     holdAddress(sub.encoded);
-    parts.copy.disabled = false;
+    this.copyable(true);
     body().challenge = result.pass ? 'pass' : 'fail';
   }
 
@@ -381,8 +381,18 @@ export class ChallengePanel {
     this.fail(`${text} ${what}.`);
     this.parts.verdict.textContent = `✗ ${what}. ${text}`;
     this.parts.checklist.replaceChildren();
-    this.parts.copy.disabled = true;
+    this.copyable(false);
     body().challenge = 'refused';
+  }
+
+  /**
+   * Offers (or withholds) the submission link of the settings just checked; a word that an
+   * earlier link was copied is about that link, so it goes.
+   * @param {boolean} on
+   */
+  copyable(on) {
+    this.parts.copy.disabled = !on;
+    this.parts.copied.textContent = '';
   }
 
   async copySubmission() {

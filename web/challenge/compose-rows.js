@@ -171,8 +171,14 @@ function needRow(fig, m) {
     el('input', { id: `${id}-bound`, name: 'bound', size: 8, inputMode: 'decimal' })
   );
   if (m && Number.isFinite(m.value)) bound.value = String(round2((op.value === 'min' ? 1.2 : 0.8) * Math.abs(m.value)));
+  // 'band' takes no bound: its field is emptied while it is chosen, and gets its number back after.
+  let kept = bound.value;
   const syncBound = () => {
-    bound.disabled = op.value === 'band';
+    const band = op.value === 'band';
+    if (band && !bound.disabled) kept = bound.value;
+    bound.disabled = band;
+    bound.value = band ? '' : kept;
+    bound.placeholder = band ? 'none' : '';
   };
   op.addEventListener('change', syncBound);
   syncBound();

@@ -8,6 +8,13 @@
  */
 export const count = (n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ',');
 
+/**
+ * A share (0 to 1) as a percentage of three significant figures, as the figures strip writes the
+ * share of samples at the voltage limit: 0.0123 is "1.23 %", none is "0 %".
+ * @param {number} share
+ */
+export const percent = (share) => `${Number((share * 100).toPrecision(3))} %`;
+
 // Tick steps of 1, 2 and 5 times a power of ten: a step of 2.5 would cost every label one more digit.
 export const STEPS = Array.from({ length: 33 }, (_, i) => i - 16).flatMap((e) =>
   [1, 2, 5].map((m) => Number(`${m}e${e}`)),

@@ -2,6 +2,7 @@
 // trend, the compact row of key figures, and the warnings they must not be read without.
 import { ui } from '../ui/page.js';
 import { el } from '../ui/dom.js';
+import { percent } from '../plots/numbers.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { Plots } from '../plots/plots.js' */
@@ -109,7 +110,7 @@ export function createFiguresView({ plotSets }) {
   function show(figures, warnings = [], unreached = [], derived = NONE) {
     /** @param {P.RunFigure} f */
     const fmt = (f) => {
-      if (f.name === 'saturated_share') return `${Number((f.value * 100).toPrecision(3))} %`;
+      if (f.name === 'saturated_share') return percent(f.value);
       if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
       return `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`;
     };

@@ -58,14 +58,18 @@ export function tex(source, displayMode = true, label = null) {
 }
 
 /**
- * Typesets our TeX `source` into `span`, once KaTeX is in.
+ * Typesets our TeX `source` into `span`, once KaTeX is in. A display equation is set in display
+ * style but as KaTeX's inline math, which may break after a top-level relation, operator or wide
+ * space: a line too long for a phone wraps there, rather than scroll sideways or be cut.
  * @param {HTMLElement} span
  * @param {string} source
  * @param {boolean} displayMode
  */
 function typeset(span, source, displayMode) {
-  /** @type {NonNullable<typeof katex>} */ (katex).render(source, span, {
-    displayMode,
+  // A wide space parts two equations of a line, or an equation and its number: it may break too.
+  const text = displayMode ? `\\displaystyle ${source.replace(/\\q?quad\b/g, '$&\\allowbreak ')}` : source;
+  /** @type {NonNullable<typeof katex>} */ (katex).render(text, span, {
+    displayMode: false,
     throwOnError: false,
     strict: 'ignore',
   });

@@ -1,6 +1,7 @@
 // What a run's results say in the walkthrough: the stability report (V against its bound) and the
 // table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
 import { el } from '../ui/dom.js';
+import { percent } from '../plots/numbers.js';
 import { STABILITY_CAUSES } from './walkthrough-text.js';
 import { TABLE } from './table.js';
 import { render } from './measured.js';
@@ -37,7 +38,7 @@ export function comparison(results) {
       'speed-estimate RMS (rad/s)',
       'flux-estimate RMS (Wb)',
       'mean NIS',
-      'saturated',
+      'samples at the voltage limit',
     ],
   ];
   for (const r of results) {
@@ -50,7 +51,7 @@ export function comparison(results) {
       m.speed_estimate_error_rms.toPrecision(3),
       m.flux_estimate_error_rms.toPrecision(3),
       m.mean_nis.toPrecision(3),
-      `${m.saturated_share.toPrecision(3)} of samples`,
+      percent(m.saturated_share),
     ]);
   }
   // The first row names the columns, the first column the predictor.
