@@ -2,11 +2,13 @@
 // base), the fields a student may change with their ranges, criteria on the figures of the
 // current run with their bounds, and robustness variants. The core checks the link and writes
 // it and the task in words, both to copy; its message names the field at fault. Then the page
-// checks that a design within the allowed ranges passes (compose-check.js) and says so.
+// checks that a design within the allowed ranges passes (compose-check.js) and says so. This
+// browser records each challenge it makes (origin.js), so that its link opened here says so.
 import { $ } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
+import { remember } from './origin.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -21,11 +23,13 @@ import { createCheck } from './compose-check.js';
 
 /**
  * What "Make the challenge link" shows for the core's `desc` ({encoded, brief}): the link and the
- * task in words, each with its copy button, and `checkBox` (the check's) beside the link.
+ * task in words, each with its copy button, `checkBox` (the check's) beside the link, and whether
+ * this browser `kept` the record that it composed the challenge.
  * @param {Composed} desc
  * @param {HTMLElement} checkBox
+ * @param {boolean} kept
  */
-function made(desc, checkBox) {
+function made(desc, checkBox, kept) {
   const url = `${location.origin}${location.pathname}?${desc.encoded}`;
   const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
   const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
@@ -49,6 +53,13 @@ function made(desc, checkBox) {
   return [
     el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }),
     linkBox,
+    el('p', {
+      id: 'compose-kept',
+      className: 'hint',
+      textContent: kept
+        ? 'This browser keeps a record that it composed this challenge: the link, opened here, says “Set by you in this browser”; a copy with another bound or title does not.'
+        : 'This browser keeps no record of the challenges it composed (its storage or Web Crypto is unavailable here): the link, opened here, cannot say that you set it.',
+    }),
     el('div', { className: 'buttons' }, [
       copier('compose-copy-link', 'Copy challenge link', 'The challenge link', url),
       el('a', {
@@ -176,8 +187,9 @@ export function createCompose({ client, state }) {
     }
     // Without an error, the core gives the link and the task.
     const composed = /** @type {Composed} */ (desc);
+    const kept = await remember(composed.encoded);
     fail('');
-    output.replaceChildren(...made(composed, checker.box));
+    output.replaceChildren(...made(composed, checker.box, kept));
     output.hidden = false;
     document.body.dataset.compose = 'made';
     checker.check(composed.encoded);

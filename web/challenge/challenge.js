@@ -1,5 +1,5 @@
-// The challenge a link opens, for the student: the task, the knobs it allows (the other settings
-// locked), and the checklist of its criteria, judged by the core after every run on the nominal
+// The challenge a link opens, for the student: the task, where it comes from (origin.js), the knobs
+// it allows (the other settings locked), and the checklist of its criteria, judged by the core after every run on the nominal
 // run and on each robustness variant (run in a pool of workers, with progress and Cancel). The
 // address then holds the student's submission link. The built-in challenges are listed in the
 // Lessons tab.
@@ -10,11 +10,13 @@ import { challengeFromUrl, holdAddress, scenarioFromUrl } from '../ui/url.js';
 import { el } from '../ui/dom.js';
 import { plural, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
+import { header, originOf } from './origin.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { RunClient } from '../client/run-client.js' */
 /** @import { Control, Allowed } from './knobs.js' */
 /** @import { Submission } from './checklist.js' */
+/** @import { Origin } from './origin.js' */
 
 /**
  * The core's description of a challenge, one of its criteria, the challenge in the address, and
@@ -24,14 +26,6 @@ import { copyToForm, knob } from './knobs.js';
  * @typedef {NonNullable<ReturnType<typeof challengeFromUrl>>} Link
  * @typedef {{info: P.Info | null, runId: number, running: boolean, ranScenario: string | null}} PageState
  */
-
-/** Says that a link claims built-in challenge `name` with other terms. @param {string} name */
-const editedNote = (name) =>
-  el('p', {
-    id: 'challenge-edited',
-    className: 'warning',
-    textContent: `Edited: this link carries the built-in challenge ${name}’s title, but not its terms. It is graded as the challenge it is, not as ${name}.`,
-  });
 
 /** The page's state attributes, which the tests wait on. */
 const body = () => document.body.dataset;
@@ -73,6 +67,8 @@ export class ChallengePanel {
     this.link = challengeFromUrl();
     /** @type {Challenge | null} the core's description of the open challenge */
     this.desc = null;
+    /** @type {Origin} where the open challenge comes from, as its header says */
+    this.origin = 'unknown';
     /** @type {string | null} why the link's submission was refused, until the student runs their own */
     this.refused = null;
     this.grading = 0; // checks started: a newer one supersedes the one under way
@@ -130,6 +126,7 @@ export class ChallengePanel {
       return scenarioFromUrl();
     }
     const text = this.desc.encoded;
+    const origin = originOf(client, text);
     let sub = await client.job('challenge-submission', { text, submission: link.submission ?? text });
     if (sub.kind !== 'ok') {
       this.refused =
@@ -139,6 +136,7 @@ export class ChallengePanel {
       sub = await client.job('challenge-submission', { text, submission: text });
     }
     holdAddress(this.refused ? location.search.slice(1) : sub.encoded);
+    this.origin = await origin;
     this.render();
     if (this.refused) {
       this.fail(this.refused);
@@ -160,14 +158,7 @@ export class ChallengePanel {
     parts.copy.addEventListener('click', () => this.copySubmission());
     parts.cancel.addEventListener('click', () => this.pool?.cancel());
     this.panel.replaceChildren(
-      el('p', { className: 'lesson-count', textContent: 'Challenge' }),
-      el('h2', { textContent: desc.title, tabIndex: -1 }),
-      // What a lecturer compares at a glance with `imlab challenge`'s: the challenge's terms.
-      el('p', { className: 'fingerprint hint' }, [
-        'Fingerprint ',
-        el('code', { id: 'challenge-fingerprint', textContent: desc.fingerprint }),
-      ]),
-      ...(desc.edited_from ? [editedNote(desc.edited_from)] : []),
+      ...header(desc, this.origin),
       parts.alert,
       el('h3', { textContent: 'Your settings' }),
       el('p', {
