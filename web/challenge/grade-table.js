@@ -139,9 +139,6 @@ function columnsOf(shown) {
   ];
 }
 
-/** The place of a header's arrow, which shows the way its column sorts the rows. */
-const arrow = () => el('span', { className: 'arrow', ariaHidden: 'true' });
-
 /**
  * -1, 0 or 1 as `a` sorts before, with or after `b`; a missing key after any other.
  * @param {number | string | null} a
@@ -188,7 +185,7 @@ export class GradeTable {
     this.bounded = Object.values(shown.results).some((r) => r.verdict);
     if (!this.columns.some((c) => c.id === this.sort.id)) this.sort = { id: 'line', descending: false };
     const heads = this.columns.map((c) => {
-      const button = el('button', { type: 'button', className: 'sort' }, [...c.head, arrow()]);
+      const button = el('button', { type: 'button', className: 'sort' }, c.head);
       button.dataset.column = c.id;
       return el('th', { scope: 'col' }, [button]);
     });
@@ -207,7 +204,7 @@ export class GradeTable {
       // The first verdict gives the criteria's bounds to their headers (in place: one may have focus).
       this.columns = columnsOf(shown);
       for (const c of this.columns.filter((c) => c.id.startsWith('need:')))
-        this.table.querySelector(`th button[data-column="${CSS.escape(c.id)}"]`)?.replaceChildren(...c.head, arrow());
+        this.table.querySelector(`th button[data-column="${CSS.escape(c.id)}"]`)?.replaceChildren(...c.head);
       this.bounded = true;
     }
     const row = this.rowOf(i);
@@ -244,14 +241,11 @@ export class GradeTable {
     this.marks();
   }
 
-  /** Says the sort in the headers: `aria-sort` on its column's, an arrow in its button. */
+  /** Says the sort in its column's header, by `aria-sort` (which the style sheet shows as an arrow). */
   marks() {
     for (const th of this.table.tHead?.rows[0].cells ?? []) {
-      const button = /** @type {HTMLButtonElement} */ (th.firstChild);
-      const on = button.dataset.column === this.sort.id;
-      if (on) th.setAttribute('aria-sort', this.sort.descending ? 'descending' : 'ascending');
-      else th.removeAttribute('aria-sort');
-      /** @type {Element} */ (button.lastChild).textContent = on ? (this.sort.descending ? '▼' : '▲') : '';
+      if (/** @type {HTMLElement} */ (th.firstChild).dataset.column !== this.sort.id) th.removeAttribute('aria-sort');
+      else th.setAttribute('aria-sort', this.sort.descending ? 'descending' : 'ascending');
     }
   }
 }
