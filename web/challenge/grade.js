@@ -8,10 +8,12 @@ import { $ } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { download } from '../ui/dom.js';
+import { GradeTable } from './grade-table.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
  * @import { RunClient } from '../client/run-client.js'
+ * @import { Result } from './grade-table.js'
  */
 
 const STORE = 'imlab-grading';
@@ -19,23 +21,30 @@ const STORE = 'imlab-grading';
 const KEEP_EVERY_MS = 1000;
 
 /**
- * A grading: the challenge's canonical link, the class file's name, header and submissions, each
- * submission's result by index (only what the table and the CSV need), and what to say of the
- * file's encoding when the core read it as another than UTF-8 ('' for UTF-8).
- * @typedef {{key: string, challenge: string, name: string, header: string, columns: string[],
- *   rows: P.ClassFileRow[], shown: P.Jobs['grade-class']['result']['shown'],
- *   results: Record<number, {status: string, pass: boolean, csv: string}>, readAs: string}} Grading
+ * A grading: the challenge's canonical link and criteria, the class file's name, header and
+ * submissions, each submission's result by index (only what the table and the CSV need), and what
+ * to say of the file's encoding when the core read it as another than UTF-8 ('' for UTF-8).
+ * @typedef {{key: string, challenge: string, need: P.Jobs['challenge']['result']['need'], name: string,
+ *   header: string, columns: string[], rows: P.ClassFileRow[], shown: P.Jobs['grade-class']['result']['shown'],
+ *   results: Record<number, Result>, readAs: string}} Grading
  */
 
+// JSON has no infinite number (a settling time never reached is one): it is kept as this.
+const NOT_FINITE = 'not-finite';
+
 /**
- * The results kept from the last grading of `key` (none for another grading).
+ * The results kept from the last grading of `key` (none for another grading); a result kept
+ * without its verdict is graded again.
  * @param {string} key
  * @returns {Grading['results']}
  */
 function kept(key) {
   try {
-    const record = JSON.parse(localStorage.getItem(STORE) ?? 'null');
-    return record?.key === key ? record.results : {};
+    const record = JSON.parse(localStorage.getItem(STORE) ?? 'null', (_, v) =>
+      v?.[NOT_FINITE] === undefined ? v : Number(v[NOT_FINITE]),
+    );
+    if (record?.key !== key) return {};
+    return Object.fromEntries(Object.entries(record.results).filter(([, r]) => r.verdict !== undefined));
   } catch {
     return {};
   }
@@ -47,7 +56,10 @@ function kept(key) {
  */
 function keep(job) {
   try {
-    localStorage.setItem(STORE, JSON.stringify({ key: job.key, results: job.results }));
+    const record = JSON.stringify({ key: job.key, results: job.results }, (_, v) =>
+      typeof v === 'number' && !Number.isFinite(v) ? { [NOT_FINITE]: String(v) } : v,
+    );
+    localStorage.setItem(STORE, record);
     return true;
   } catch {
     return false;
@@ -75,50 +87,6 @@ function csvOf(job) {
 }
 
 /**
- * Draws `job` in `table`: a row for each submission, graded or not yet.
- * @param {HTMLTableElement} table
- * @param {Grading} job
- */
-function drawTable(table, job) {
-  const names = [...job.columns, 'line', 'link', 'status', 'pass'];
-  const head = el(
-    'tr',
-    {},
-    names.map((name) => el('th', { scope: 'col', textContent: name })),
-  );
-  table.replaceChildren(
-    el('thead', {}, [head]),
-    el(
-      'tbody',
-      {},
-      job.rows.map((r, i) => rowOf(job, r, i)),
-    ),
-  );
-}
-
-/**
- * The table's row of submission `i`.
- * @param {Grading} job
- * @param {P.ClassFileRow} row
- * @param {number} i
- */
-function rowOf(job, row, i) {
-  const result = job.results[i];
-  // The row's text as the core shows it: invisible characters escaped.
-  const shown = job.shown[i];
-  const tr = el('tr', {}, [
-    ...shown.carried.map((cell) => el('td', { textContent: cell })),
-    el('td', { textContent: String(row.line) }),
-    el('td', { className: 'link', textContent: shown.link }),
-    el('td', { textContent: result ? result.status : 'not graded yet' }),
-    el('td', { textContent: result ? (result.pass ? '✓ pass' : '✗ fail') : '' }),
-  ]);
-  tr.dataset.index = String(i);
-  if (result) tr.dataset.pass = result.pass ? '1' : '0';
-  return tr;
-}
-
-/**
  * Offers the built-in challenges' names in the challenge field; `client` is the page's worker.
  * @param {RunClient} client
  */
@@ -135,7 +103,7 @@ export function createGrading({ client }) {
   const status = $('grade-status');
   const count = $('grade-count');
   const progress = $('grade-progress', HTMLProgressElement);
-  const table = $('grade-table', HTMLTableElement);
+  const table = new GradeTable($('grade-table', HTMLTableElement));
   const body = document.body.dataset;
   const pool = new Pool(Math.max(1, Math.min(4, navigator.hardwareConcurrency || 2)));
   /** @type {Grading | null} the grading shown */
@@ -153,7 +121,7 @@ export function createGrading({ client }) {
     const { bytes, name } = await classBytes();
     if (bytes.length === 0) throw new Error('choose a class file, or paste the links, one a line');
     // The challenge by its canonical link, whichever way it was named.
-    const { encoded } = await client.job('challenge', { text });
+    const { encoded, need } = await client.job('challenge', { text });
     const plan = await client.job('grade-class', { text: encoded, bytes });
     if (plan.error) throw new Error(plan.error);
     if (plan.rows.length === 0) throw new Error('the file holds no submission');
@@ -162,6 +130,7 @@ export function createGrading({ client }) {
     return {
       key,
       challenge: encoded,
+      need,
       name,
       header: plan.header,
       columns: plan.columns,
@@ -190,7 +159,7 @@ export function createGrading({ client }) {
       status.textContent = `Not graded: ${/** @type {Error} */ (e).message}.`;
       return done();
     }
-    drawTable(table, job);
+    table.draw(job);
     await run(job);
     pool.close(); // the next grading starts its workers afresh
     done();
@@ -221,8 +190,8 @@ export function createGrading({ client }) {
         (done, index, result) => {
           if (job !== mine) return;
           const i = todo[index];
-          mine.results[i] = { status: result.status, pass: result.pass, csv: result.csv };
-          table.tBodies[0].rows[i].replaceWith(rowOf(mine, mine.rows[i], i));
+          mine.results[i] = { status: result.status, pass: result.pass, csv: result.csv, verdict: result.verdict };
+          table.update(i);
           if (performance.now() - keptAt > KEEP_EVERY_MS) {
             keep(mine);
             keptAt = performance.now();
