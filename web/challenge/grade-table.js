@@ -79,79 +79,18 @@ function criterionCell(result, k) {
 }
 
 /**
- * The header of criterion `k`: its label, and its bound in the core's words once a verdict gives
- * them (until then its unit).
+ * The header of criterion `k`: its label, and its bound in the core's words.
  * @param {Shown} shown
  * @param {number} k
  */
 function criterionHead(shown, k) {
   const need = shown.need[k];
-  const judged = Object.values(shown.results).find((r) => r.verdict)?.verdict?.criteria[k];
   return [
     el('span', { className: 'label', textContent: need.label }),
-    el('span', { className: 'bound', textContent: judged ? judged.bound : need.unit ? `(${need.unit})` : '' }),
+    el('span', { className: 'bound', textContent: need.bound_text }),
   ];
 }
 
-/**
- * The columns of `shown`.
- * @param {Shown} shown
- * @returns {Column[]}
- */
-function columnsOf(shown) {
-  const result = (/** @type {number} */ i) => shown.results[i];
-  /** @type {Column[]} */
-  const carried = shown.columns.map((name, j) => ({
-    id: `carried:${name}`,
-    head: [name],
-    cell: (i) => el('td', { className: 'carried', textContent: shown.shown[i].carried[j] }),
-    key: (i) => shown.shown[i].carried[j],
-  }));
-  /** @type {Column[]} */
-  const criteria = shown.need.map((n, k) => ({
-    id: `need:${n.figure}`,
-    head: criterionHead(shown, k),
-    cell: (i) => criterionCell(result(i), k),
-    key: (i) => result(i)?.verdict?.criteria[k]?.value ?? null,
-  }));
-  return [
-    ...carried,
-    {
-      id: 'line',
-      head: ['line'],
-      cell: (i) => el('td', { textContent: String(shown.rows[i].line) }),
-      key: (i) => shown.rows[i].line,
-    },
-    {
-      id: 'verdict',
-      head: ['verdict'],
-      cell: (i) => verdictCell(result(i)),
-      // Passed, failed, then not judged (refused, malformed…); not graded yet last.
-      key: (i) => (result(i) ? (result(i).verdict ? (result(i).pass ? 0 : 1) : 2) : null),
-    },
-    ...criteria,
-    {
-      id: 'link',
-      head: ['link'],
-      cell: (i) => el('td', { className: 'link', textContent: shown.shown[i].link, title: shown.shown[i].link }),
-      key: (i) => shown.shown[i].link,
-    },
-  ];
-}
-
-/**
- * -1, 0 or 1 as `a` sorts before, with or after `b`; a missing key after any other.
- * @param {number | string | null} a
- * @param {number | string | null} b
- * @param {number} dir 1 ascending, -1 descending
- */
-function compare(a, b, dir) {
-  if (a === null || b === null) return a === b ? 0 : a === null ? 1 : -1;
-  if (typeof a === 'string' && typeof b === 'string') return dir * collator.compare(a, b);
-  return dir * (a < b ? -1 : a > b ? 1 : 0);
-}
-
-/** The table of a grading, sortable by any column. */
 export class GradeTable {
   /** @param {HTMLTableElement} table */
   constructor(table) {
@@ -160,8 +99,6 @@ export class GradeTable {
     this.shown = null;
     /** @type {Column[]} */
     this.columns = [];
-    /** Whether the headers hold the criteria's bounds (a verdict gives them). */
-    this.bounded = false;
     /** @type {HTMLTableRowElement[]} each submission's row, by index */
     this.rows = [];
     /** The column the rows are sorted by, and which way: the class file's order to begin with. */
@@ -182,7 +119,6 @@ export class GradeTable {
   draw(shown) {
     this.shown = shown;
     this.columns = columnsOf(shown);
-    this.bounded = Object.values(shown.results).some((r) => r.verdict);
     if (!this.columns.some((c) => c.id === this.sort.id)) this.sort = { id: 'line', descending: false };
     const heads = this.columns.map((c) => {
       const button = el('button', { type: 'button', className: 'sort' }, c.head);
@@ -200,13 +136,6 @@ export class GradeTable {
    */
   update(i) {
     const shown = /** @type {Shown} */ (this.shown);
-    if (shown.results[i].verdict && !this.bounded) {
-      // The first verdict gives the criteria's bounds to their headers (in place: one may have focus).
-      this.columns = columnsOf(shown);
-      for (const c of this.columns.filter((c) => c.id.startsWith('need:')))
-        this.table.querySelector(`th button[data-column="${CSS.escape(c.id)}"]`)?.replaceChildren(...c.head);
-      this.bounded = true;
-    }
     const row = this.rowOf(i);
     this.rows[i].replaceWith(row);
     this.rows[i] = row;

@@ -269,7 +269,7 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
 }
 
 /// The bound of `op` in words, with `unit`.
-fn bound_text(op: &Op, unit: &str) -> String {
+pub(crate) fn bound_text(op: &Op, unit: &str) -> String {
     let u = if unit.is_empty() {
         String::new()
     } else {

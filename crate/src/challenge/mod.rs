@@ -43,6 +43,7 @@ pub use judge::{
     criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
     NotFinite, Verdict,
 };
+pub(crate) use judge::bound_text;
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
 

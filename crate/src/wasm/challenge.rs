@@ -85,6 +85,8 @@ pub struct NeedView {
     unit: &'static str,
     op: OpKind,
     bound: Option<f64>,
+    /// The bound in words, as a verdict gives it ("≤ 0.004 s").
+    bound_text: String,
     /// Whether it must hold on every variant too.
     robust: bool,
 }
@@ -252,6 +254,7 @@ impl Challenge {
                     unit: f.unit,
                     op,
                     bound,
+                    bound_text: crate::challenge::bound_text(&n.op, f.unit),
                     robust: c.is_robust(&n.figure),
                 }
             })
