@@ -30,6 +30,7 @@ import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createCompose } from './challenge/challenge-compose.js';
 import { createGrading } from './challenge/grade.js';
+import { createStale } from './ui/stale.js';
 
 /** @import * as P from './worker/protocol.js' */
 /** @import { Unreached } from './run/figures-view.js' */
@@ -183,11 +184,17 @@ const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthrough
 for (const event of ['pointerenter', 'focus'])
   $('tab-walkthrough', HTMLButtonElement).addEventListener(event, () => loadTex().catch(() => {}), { once: true });
 $('tab-lessons', HTMLButtonElement).addEventListener('click', listChallenges, { once: true });
-const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab });
+// The long results keep the scenario they were computed for and are marked while it is not the
+// settings'; an analysis first makes the settings the run on screen.
+const stale = createStale({ state, load: (/** @type {string} */ scenario) => settings.load(scenario) });
+const current = () => settings.runCurrent();
+const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab, current, stale });
 const robust = createRobust({
   state,
   analysis,
   showTab: tabs.showTab,
+  current,
+  stale,
   open: (/** @type {string} */ scenario) => {
     tabs.showTab('plots');
     settings.load(scenario);
@@ -197,6 +204,7 @@ const challenge = new ChallengePanel({
   client,
   state,
   relayout: () => plotSets.forEach((p) => p.resize()),
+  stale,
 });
 createCompose({ client, state });
 createGrading({ client });
@@ -231,7 +239,10 @@ const settings = createSettings({
   markUnrun: run.markUnrun,
   openSettings: presentation.openSettings,
   first: () => (lessonFromUrl() ? null : challenge.open()),
-  described: (info) => challenge.described(info),
+  described: (info) => {
+    challenge.described(info);
+    stale.follow();
+  },
   mayRun: (info) => challenge.mayRun(info),
 });
 const lessons = new LessonPanel({

@@ -121,14 +121,13 @@ export class Analysis {
   }
 
   /**
-   * Runs the sweep `view` plans of the current scenario; resolves with each variant's points and
-   * summary, by its name.
+   * Runs the sweep `view` plans of `scenario` (the current one unless given); resolves with each
+   * variant's points and summary, by its name.
    * @param {PlanView} view
-   * @param {{onProgress?: (share: number) => void, workers?: number}} [options]
+   * @param {{onProgress?: (share: number) => void, workers?: number, scenario?: string}} [options]
    */
-  async sweep({ plan, frequencies, labels }, { onProgress = () => {}, workers } = {}) {
+  async sweep({ plan, frequencies, labels }, { onProgress = () => {}, workers, scenario = this.scenario() } = {}) {
     if (workers) this.pool.size = workers;
-    const scenario = this.scenario();
     const jobs = plan.variants.flatMap((variant) =>
       frequencies.map((freq) => ({
         kind: /** @type {const} */ ('sweep'),
@@ -275,17 +274,18 @@ export class Analysis {
   }
 
   /**
-   * Runs `n` seeds from `first`; resolves with {results, bands}. The core gives the seeds, and
-   * refuses a range past the largest seed before any run.
+   * Runs `scenario` with `n` seeds from `first`; resolves with {results, bands}. The core gives the
+   * seeds, and refuses a range past the largest seed before any run.
+   * @param {string} scenario
    * @param {number} n
    * @param {number} first
    * @param {number} steps the scenario's steps, of which about 1000 are kept
    * @param {(share: number) => void} [onProgress]
    */
-  async seeds(n, first, steps, onProgress = () => {}) {
+  async seeds(scenario, n, first, steps, onProgress = () => {}) {
     const every = Math.max(1, Math.floor(steps / 1000));
     const [seeds] = await this.pool.run([{ kind: 'seed-range', first, n }]);
-    const jobs = seeds.map((seed) => ({ kind: /** @type {const} */ ('seed'), scenario: this.scenario(), seed, every }));
+    const jobs = seeds.map((seed) => ({ kind: /** @type {const} */ ('seed'), scenario, seed, every }));
     const runs = await this.pool.run(jobs, (done) => onProgress(done / n));
     const [bands] = await this.pool.run([{ kind: 'bands', runs }]);
     const [csv] = await this.pool.run([{ kind: 'seeds-csv', results: runs.map((r) => r.result) }]);

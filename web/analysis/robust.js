@@ -10,6 +10,7 @@ import { setFragment } from '../ui/url.js';
 import { fillMapForm, mapFormParts } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';
 import { runFromLink } from './from-link.js';
+import { NOT_RUN } from '../ui/stale.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
 
@@ -77,11 +78,14 @@ async function runCells(pool, map, status, progress) {
 
 /**
  * `analysis` holds the worker pool; `open(scenario)` runs a scenario on the Plots tab; `state.info`
- * is the core's description of the scenario in the form, which a map runs (null until the first).
+ * is the core's description of the scenario in the form, which a map runs (null until the first),
+ * once `current()` has made it the run on screen; `stale` marks the map while it is of an earlier
+ * scenario.
  * @param {{state: {info: Info | null}, analysis: import('./analysis.js').Analysis,
- *   open: (scenario: string) => void, showTab: (name: string) => void}} parts
+ *   open: (scenario: string) => void, showTab: (name: string) => void, current: () => Promise<boolean>,
+ *   stale: ReturnType<typeof import('../ui/stale.js').createStale>}} parts
  */
-export function createRobust({ state, analysis, open, showTab }) {
+export function createRobust({ state, analysis, open, showTab, current, stale }) {
   /** @type {Drawn | null} */
   let last = null; // the map drawn
   // The map's own workers for its runs: a sweep or a seed run on the Analysis tab's other pool
@@ -92,6 +96,16 @@ export function createRobust({ state, analysis, open, showTab }) {
   const form = $('map-form', HTMLFormElement);
   const status = $('map-status');
   const progress = $('map-progress', HTMLProgressElement);
+  // The map's CSV stays on while the map is of an earlier scenario: it names that scenario.
+  const shown = stale.add({
+    name: 'map',
+    what: 'This map is',
+    press: '“Run map”',
+    before: $('map-plot'),
+    shows: [$('map-plot')],
+    exportNote: 'Its CSV names the scenario it was run for.',
+    back: true,
+  });
 
   /**
    * Fills the form from a map's text, split by the core (in the run worker, so that a map under
@@ -101,13 +115,13 @@ export function createRobust({ state, analysis, open, showTab }) {
   const fill = async (text) => fillMapForm(form, await analysis.client.job('map-parts', { text }));
 
   /**
-   * The core's plan of the form's map, or null (said) if it refuses it.
+   * The core's plan of the form's map over `scenario`, or null (said) if it refuses it.
+   * @param {string} scenario
    * @returns {Promise<{map: RobustMap, figures: MapFigure[]} | null>}
    */
-  async function plan() {
+  async function plan(scenario) {
     try {
-      const info = /** @type {Info} */ (state.info);
-      return await analysis.client.job('map-plan', { scenario: info.encoded, ...mapFormParts(form) });
+      return await analysis.client.job('map-plan', { scenario, ...mapFormParts(form) });
     } catch (e) {
       status.textContent = `The map was not run: ${/** @type {Error} */ (e).message}.`;
       document.body.dataset.map = 'refused';
@@ -116,7 +130,13 @@ export function createRobust({ state, analysis, open, showTab }) {
   }
 
   async function runMap() {
-    const planned = await plan();
+    if (!(await current())) {
+      status.textContent = `The map was not run: ${NOT_RUN}`;
+      document.body.dataset.map = 'refused';
+      return;
+    }
+    const scenario = /** @type {Info} */ (state.info).encoded;
+    const planned = await plan(scenario);
     if (!planned) return;
     const { map, figures } = planned;
     setFragment('robust', encodeURIComponent(map.text));
@@ -148,6 +168,7 @@ export function createRobust({ state, analysis, open, showTab }) {
       });
       last = { map: kept, full: map, cells, figures, whole };
       draw();
+      shown.ran(scenario);
       const ms = performance.now() - started;
       status.textContent = cancelled
         ? `Map cancelled: ${cells.length} of ${map.cells.length} cells finished and are shown; the others were not run.`

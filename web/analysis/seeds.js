@@ -3,26 +3,45 @@
 import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 import { download } from '../ui/dom.js';
+import { NOT_RUN } from '../ui/stale.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
 
 /**
  * Wires the seeds form: `analysis` runs the seeds and draws their bands, `framing()` fits them;
- * the seeds run the scenario `state.info` describes (null until the core first describes one).
+ * the seeds run the scenario `state.info` describes (null until the core first describes one),
+ * once `current()` has made it the run on screen; `stale` marks the bands while they are of an
+ * earlier scenario.
  * @param {{state: {info: Info | null}, analysis: import('./analysis.js').Analysis,
- *   framing: () => {fit: boolean, from: number}}} parts
+ *   framing: () => {fit: boolean, from: number}, current: () => Promise<boolean>,
+ *   stale: ReturnType<typeof import('../ui/stale.js').createStale>}} parts
  */
-export function createSeeds({ state, analysis, framing }) {
+export function createSeeds({ state, analysis, framing, current, stale }) {
   /** @type {string | null} */
   let seedsCsv = null; // the last seed runs' CSV
   // The form's one field, the number of seeds.
   const seedCount = () => /** @type {HTMLInputElement} */ ($('seeds-form', HTMLFormElement).elements.namedItem('n'));
+  // The seeds' CSV does not name its scenario: it is off while the bands are of an earlier one.
+  const shown = stale.add({
+    name: 'seeds',
+    what: 'These seed bands are',
+    press: '“Run seeds”',
+    before: $('seeds-plots'),
+    shows: [$('seeds-plots')],
+    exports: [$('seeds-csv', HTMLButtonElement)],
+    exportNote: 'Their CSV, which does not name its scenario, is off until then.',
+    back: true,
+  });
 
   async function runSeeds() {
     const n = Number(seedCount().value);
     const status = $('seeds-status');
     if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
       status.textContent = `seeds = ${seedCount().value}: expected a whole number from 1 to 1000.`;
+      return;
+    }
+    if (!(await current())) {
+      status.textContent = `The seeds were not run: ${NOT_RUN}`;
       return;
     }
     status.textContent = 'Running seeds…';
@@ -33,13 +52,14 @@ export function createSeeds({ state, analysis, framing }) {
     try {
       const info = /** @type {Info} */ (state.info);
       const first = Number(fieldValue(info, 'seed'));
-      const out = await analysis.seeds(n, first, info.steps, (/** @type {number} */ p) => {
+      const out = await analysis.seeds(info.encoded, n, first, info.steps, (/** @type {number} */ p) => {
         progress.value = p;
         status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`;
       });
       analysis.showSeeds(out, $('seeds-plots'), framing);
       seedsCsv = out.csv;
       $('seeds-csv', HTMLButtonElement).disabled = false;
+      shown.ran(info.encoded);
       status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
       document.body.dataset.seeds = 'done';
     } catch (e) {

@@ -5,14 +5,17 @@ import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { runFromLink } from './from-link.js';
 import { createSeeds } from './seeds.js';
+import { NOT_RUN } from '../ui/stale.js';
 
 /**
  * The sweep form, its run and its link. `analysis` runs the jobs and draws their results;
- * `showTab(name)` opens a tab.
+ * `showTab(name)` opens a tab; `current()` makes the settings the run on screen before a sweep or
+ * the seeds run them; `stale` marks a result while it is of an earlier scenario.
  * @param {{state: import('../main.js').State, analysis: import('./analysis.js').Analysis,
- *   framing: () => {fit: boolean, from: number}, showTab: (name: string) => void}} parts
+ *   framing: () => {fit: boolean, from: number}, showTab: (name: string) => void,
+ *   current: () => Promise<boolean>, stale: ReturnType<typeof import('../ui/stale.js').createStale>}} parts
  */
-export function createSweeps({ state, analysis, framing, showTab }) {
+export function createSweeps({ state, analysis, framing, showTab, current, stale }) {
   const sweepForm = $('sweep-form', HTMLFormElement);
   const status = $('sweep-status');
   const runButton = $('sweep-run', HTMLButtonElement);
@@ -22,6 +25,17 @@ export function createSweeps({ state, analysis, framing, showTab }) {
   const input = (name) => /** @type {HTMLInputElement} */ (sweepForm.elements.namedItem(name));
   const variantBoxes = () => /** @type {HTMLInputElement[]} */ ([...sweepForm.querySelectorAll('[name=variant]')]);
   input('workers').value = String(analysis.pool.size);
+  // The sweep's CSV does not name its scenario: it is off while the sweep is of an earlier one.
+  const shown = stale.add({
+    name: 'sweep',
+    what: 'These Bode plots and this table are',
+    press: '“Run sweep”',
+    before: $('sweep-table'),
+    shows: [$('sweep-table'), $('bode')],
+    exports: [csvButton],
+    exportNote: 'Their CSV, which does not name its scenario, is off until then.',
+    back: true,
+  });
 
   /** The form's plan, checked by the core as a link's would be; rejects with its message. */
   function readSweepForm() {
@@ -55,12 +69,19 @@ export function createSweeps({ state, analysis, framing, showTab }) {
       runButton.disabled = false;
       return;
     }
+    if (!(await current())) {
+      status.textContent = `The sweep was not run: ${NOT_RUN}`;
+      runButton.disabled = false;
+      return;
+    }
+    const scenario = /** @type {import('../worker/protocol.js').Info} */ (state.info).encoded;
     setFragment('sweep', view.text);
     cancelButton.disabled = false;
     const started = performance.now();
     status.textContent = 'Sweeping…';
     try {
       const out = await analysis.sweep(view, {
+        scenario,
         workers,
         onProgress: (p) => {
           $('sweep-progress', HTMLProgressElement).value = p;
@@ -75,6 +96,7 @@ export function createSweeps({ state, analysis, framing, showTab }) {
       ].join(' ');
       Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
       csvButton.disabled = false;
+      shown.ran(scenario);
     } catch (e) {
       const { message } = /** @type {Error} */ (e);
       status.textContent = message === 'cancelled' ? 'Sweep cancelled.' : `Sweep failed: ${message}`;
@@ -100,7 +122,7 @@ export function createSweeps({ state, analysis, framing, showTab }) {
     const first = Object.keys(analysis.points)[0];
     download(new Blob([await analysis.sweepCsv(first)], { type: 'text/csv' }), `imlab-sweep-${first}.csv`);
   });
-  createSeeds({ state, analysis, framing });
+  createSeeds({ state, analysis, framing, current, stale });
 
   return { afterRun };
 }

@@ -8,7 +8,7 @@ import { fieldValue } from '../ui/scenario.js';
 import { Pool } from '../client/pool.js';
 import { challengeFromUrl, holdAddress, scenarioFromUrl } from '../ui/url.js';
 import { el } from '../ui/dom.js';
-import { plural, showVerdict } from './checklist.js';
+import { panelParts, plural, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 import { header, originOf } from './origin.js';
 
@@ -25,41 +25,20 @@ import { header, originOf } from './origin.js';
  * @typedef {Challenge['need'][number]} Need
  * @typedef {NonNullable<ReturnType<typeof challengeFromUrl>>} Link
  * @typedef {{info: P.Info | null, runId: number, running: boolean, ranScenario: string | null}} PageState
+ * @typedef {ReturnType<typeof import('../ui/stale.js').createStale>} Stale
  */
 
 /** The page's state attributes, which the tests wait on. */
 const body = () => document.body.dataset;
 
 /**
- * The panel's parts that outlive a render: the checklist, the check's progress and the copy.
- * @returns {{checklist: HTMLElement, verdict: HTMLElement, progress: HTMLProgressElement, cancel: HTMLButtonElement,
- *   copy: HTMLButtonElement, copied: HTMLElement, alert: HTMLElement}}
- */
-function panelParts() {
-  const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
-  const verdict = el('p', { id: 'challenge-verdict', className: 'verdict', role: 'status' });
-  const progress = el('progress', { id: 'challenge-progress', max: 1, value: 0, hidden: true });
-  progress.setAttribute('aria-label', 'Challenge runs done');
-  const cancel = el('button', { type: 'button', id: 'challenge-cancel', textContent: 'Cancel check', disabled: true });
-  const copy = el('button', {
-    type: 'button',
-    id: 'challenge-copy',
-    textContent: 'Copy submission link',
-    disabled: true,
-  });
-  const copied = el('p', { className: 'hint', id: 'challenge-copied', role: 'status' });
-  const alert = el('p', { id: 'challenge-error', className: 'challenge-error', role: 'alert' });
-
-  return { checklist, verdict, progress, cancel, copy, copied, alert };
-}
-
-/**
  * The student's side of a challenge; `client` is the page's worker, `relayout()` sizes the plots
- * to the room the panel leaves them.
+ * to the room the panel leaves them, `stale` marks a verdict while the settings are not the ones it
+ * checked.
  */
 export class ChallengePanel {
-  /** @param {{client: RunClient, state: PageState, relayout: () => void}} page */
-  constructor({ client, state, relayout }) {
+  /** @param {{client: RunClient, state: PageState, relayout: () => void, stale: Stale}} page */
+  constructor({ client, state, relayout, stale }) {
     this.client = client;
     this.state = state;
     this.relayout = relayout;
@@ -77,6 +56,15 @@ export class ChallengePanel {
     /** @type {Map<string, Control>} field → the panel's control */
     this.knobs = new Map();
     this.parts = panelParts();
+    // The submission link a stale verdict's panel copies is the checked one's, which it names.
+    this.shown = stale.add({
+      name: 'challenge',
+      what: 'This verdict is',
+      press: '“Run and check”',
+      before: this.parts.verdict,
+      shows: [this.parts.verdict, this.parts.checklist],
+      exportNote: '“Copy submission link” copies the link of the settings it checked.',
+    });
   }
 
   /** Whether a challenge is open. */
@@ -271,6 +259,7 @@ export class ChallengePanel {
     if (!this.desc) return;
     const me = ++this.grading;
     const runId = this.state.runId;
+    this.shown.forget();
     const { verdict, progress, cancel } = this.parts;
     if (this.refused && runId === 1) {
       verdict.textContent =
@@ -308,6 +297,7 @@ export class ChallengePanel {
   async grade(me, runId) {
     const { client, state, parts } = this;
     const desc = /** @type {Challenge} */ (this.desc);
+    const checked = /** @type {string} */ (state.ranScenario);
     const sub = await client.job('challenge-tries', { text: desc.encoded, tries: this.tries(await this.ranInfo()) });
     if (me !== this.grading) return;
     if (sub.kind !== 'ok') {
@@ -324,6 +314,7 @@ export class ChallengePanel {
     });
     if (me !== this.grading) return;
     showVerdict(parts, result, sub);
+    this.shown.ran(checked);
     if (desc.edited_from) parts.verdict.append(` This is not the built-in ${desc.edited_from}: its terms were edited.`);
     if (!held)
       parts.verdict.append(
@@ -372,6 +363,7 @@ export class ChallengePanel {
     this.fail(`${text} ${what}.`);
     this.parts.verdict.textContent = `✗ ${what}. ${text}`;
     this.parts.checklist.replaceChildren();
+    this.shown.forget();
     this.copyable(false);
     body().challenge = 'refused';
   }

@@ -1,5 +1,5 @@
 // The challenge's checklist: the core's verdict on a student's runs, written as a line and a list
-// of criteria, each with its value, its bound and its mark.
+// of criteria, each with its value, its bound and its mark; and the panel's parts that hold it.
 import { excerpt } from '../ui/quote.js';
 import { el } from '../ui/dom.js';
 
@@ -61,4 +61,27 @@ export function showVerdict({ verdict, checklist }, result, sub) {
       return li;
     }),
   );
+}
+
+/**
+ * The panel's parts that outlive a render: the checklist, the check's progress and the copy.
+ * @returns {{checklist: HTMLElement, verdict: HTMLElement, progress: HTMLProgressElement, cancel: HTMLButtonElement,
+ *   copy: HTMLButtonElement, copied: HTMLElement, alert: HTMLElement}}
+ */
+export function panelParts() {
+  const checklist = el('ul', { className: 'checklist', id: 'challenge-checklist' });
+  const verdict = el('p', { id: 'challenge-verdict', className: 'verdict', role: 'status' });
+  const progress = el('progress', { id: 'challenge-progress', max: 1, value: 0, hidden: true });
+  progress.setAttribute('aria-label', 'Challenge runs done');
+  const cancel = el('button', { type: 'button', id: 'challenge-cancel', textContent: 'Cancel check', disabled: true });
+  const copy = el('button', {
+    type: 'button',
+    id: 'challenge-copy',
+    textContent: 'Copy submission link',
+    disabled: true,
+  });
+  const copied = el('p', { className: 'hint', id: 'challenge-copied', role: 'status' });
+  const alert = el('p', { id: 'challenge-error', className: 'challenge-error', role: 'alert' });
+
+  return { checklist, verdict, progress, cancel, copy, copied, alert };
 }

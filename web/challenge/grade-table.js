@@ -91,6 +91,65 @@ function criterionHead(shown, k) {
   ];
 }
 
+/**
+ * The columns of `shown`.
+ * @param {Shown} shown
+ * @returns {Column[]}
+ */
+function columnsOf(shown) {
+  const result = (/** @type {number} */ i) => shown.results[i];
+  /** @type {Column[]} */
+  const carried = shown.columns.map((name, j) => ({
+    id: `carried:${name}`,
+    head: [name],
+    cell: (i) => el('td', { className: 'carried', textContent: shown.shown[i].carried[j] }),
+    key: (i) => shown.shown[i].carried[j],
+  }));
+  /** @type {Column[]} */
+  const criteria = shown.need.map((n, k) => ({
+    id: `need:${n.figure}`,
+    head: criterionHead(shown, k),
+    cell: (i) => criterionCell(result(i), k),
+    key: (i) => result(i)?.verdict?.criteria[k]?.value ?? null,
+  }));
+  return [
+    ...carried,
+    {
+      id: 'line',
+      head: ['line'],
+      cell: (i) => el('td', { textContent: String(shown.rows[i].line) }),
+      key: (i) => shown.rows[i].line,
+    },
+    {
+      id: 'verdict',
+      head: ['verdict'],
+      cell: (i) => verdictCell(result(i)),
+      // Passed, failed, then not judged (refused, malformed…); not graded yet last.
+      key: (i) => (result(i) ? (result(i).verdict ? (result(i).pass ? 0 : 1) : 2) : null),
+    },
+    ...criteria,
+    {
+      id: 'link',
+      head: ['link'],
+      cell: (i) => el('td', { className: 'link', textContent: shown.shown[i].link, title: shown.shown[i].link }),
+      key: (i) => shown.shown[i].link,
+    },
+  ];
+}
+
+/**
+ * -1, 0 or 1 as `a` sorts before, with or after `b`; a missing key after any other.
+ * @param {number | string | null} a
+ * @param {number | string | null} b
+ * @param {number} dir 1 ascending, -1 descending
+ */
+function compare(a, b, dir) {
+  if (a === null || b === null) return a === b ? 0 : a === null ? 1 : -1;
+  if (typeof a === 'string' && typeof b === 'string') return dir * collator.compare(a, b);
+  return dir * (a < b ? -1 : a > b ? 1 : 0);
+}
+
+/** The table of a grading, sortable by any column. */
 export class GradeTable {
   /** @param {HTMLTableElement} table */
   constructor(table) {
@@ -135,7 +194,6 @@ export class GradeTable {
    * @param {number} i
    */
   update(i) {
-    const shown = /** @type {Shown} */ (this.shown);
     const row = this.rowOf(i);
     this.rows[i].replaceWith(row);
     this.rows[i] = row;

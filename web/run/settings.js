@@ -85,6 +85,23 @@ function firstLoader(state, first, load) {
 }
 
 /**
+ * Has Enter in a settings field, and a submission of the form, call `runForm()` (a form of many
+ * fields and no submit button has no implicit submission, so Enter is taken here).
+ * @param {() => unknown} runForm
+ */
+function runOnSubmit(runForm) {
+  ui.form.addEventListener('keydown', (e) => {
+    if (e.key !== 'Enter' || !(e.target instanceof Element && e.target.matches('input, select'))) return;
+    e.preventDefault();
+    runForm();
+  });
+  ui.form.addEventListener('submit', (e) => {
+    e.preventDefault();
+    runForm();
+  });
+}
+
+/**
  * The settings; `startRun()` and `markUnrun(unrun)` are the run's, `openSettings(open)` opens the
  * settings drawer. The worker's `ready` message (`handlers`) lists the presets and loads the
  * scenario `first()` resolves with (the address's, unless a challenge gives it). `described(info)`
@@ -109,10 +126,13 @@ export function createSettings({
 }) {
   /** @type {P.Ready['presets']} */
   let presets = []; // the core's presets: {name, description}
-  // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why). It is asked
-  // only once the core has accepted the form's scenario, whose description the page then holds.
+  // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why); resolves with
+  // whether it started. It is asked only once the core has accepted the form's scenario, whose
+  // description the page then holds.
   const startChecked = async () => {
-    if (await mayRun(/** @type {P.Info} */ (state.info))) startRun();
+    const allowed = await mayRun(/** @type {P.Info} */ (state.info));
+    if (allowed) startRun();
+    return allowed;
   };
   /** @type {string | null} */
   let composed = null; // the scenario the form held when last checked
@@ -159,6 +179,7 @@ export function createSettings({
       throw e;
     }
     showScenario(info.encoded);
+    checking = Promise.resolve(true); // the form now holds this valid scenario
     const allowed = mayRun(info);
     if (allowed === true) {
       // Nothing to ask: the run starts first, and the form is built while the worker computes.
@@ -221,19 +242,20 @@ export function createSettings({
     if (!ui.run.disabled) await startChecked();
   }
 
+  /**
+   * Makes the form's scenario the run on screen before an analysis runs it, so that the plots, the
+   * address and the analysis are of one scenario: waits for the check of the form's last edit and
+   * starts its run unless it is the run on screen already. Resolves with whether the form's
+   * scenario is valid and may run (the message line says why not).
+   */
+  async function runCurrent() {
+    if (!(await checking) || state.info === null) return false;
+    return state.info.encoded === state.ranScenario || startChecked();
+  }
+
   pickPresets(ui.preset, (name) => load(`v=1&preset=${name}`));
   ui.form.addEventListener('change', formChanged);
-  // Enter in a settings field runs the scenario (a form of many fields and no submit button has no
-  // implicit submission, so Enter is taken here).
-  ui.form.addEventListener('keydown', (e) => {
-    if (e.key !== 'Enter' || !(e.target instanceof Element && e.target.matches('input, select'))) return;
-    e.preventDefault();
-    runForm();
-  });
-  ui.form.addEventListener('submit', (e) => {
-    e.preventDefault();
-    runForm();
-  });
+  runOnSubmit(runForm);
   // A walkthrough knob re-runs on change, on Enter, or after a pause in typing.
   followKnobs($('walkthrough'), knobChanged);
   ui.run.addEventListener('click', runForm);
@@ -255,5 +277,5 @@ export function createSettings({
     },
   };
 
-  return { load, loadFirst, knob: knobs.knob, handlers };
+  return { load, loadFirst, runCurrent, knob: knobs.knob, handlers };
 }
