@@ -21,7 +21,7 @@ import { formatValue } from './checklist.js';
  * What the table shows: the carried columns' headers, each submission's line and its text as
  * the core shows it, the challenge's criteria, and the results by submission.
  * @typedef {{columns: string[], rows: {line: number}[], shown: {carried: string[], link: string}[],
- *   need: {figure: string, label: string, unit: string}[], results: Record<number, Result>}} Shown
+ *   need: {figure: string, label: string, unit: string, bound_text: string}[], results: Record<number, Result>}} Shown
  */
 
 /**
