@@ -1,5 +1,5 @@
 // Browser tests of results kept from an earlier scenario: the model-error map, the sweep, the seed
-// bands and a challenge's verdict stay on screen when the settings change, marked as the earlier
+// bands, a challenge's verdict and the predictor comparison stay on screen when the settings change, marked as the earlier
 // scenario's (greyed, with what to press; an export that does not name its scenario off) until
 // they are run again for the settings or the settings return to their scenario. Lesson 12's map,
 // run as a student runs it, is marked once the scenario changes as the lesson says.
@@ -208,4 +208,19 @@ test('lesson 12: its map, run, then the scenario changed as the lesson says: the
     const { text, greyed } = await marking(page, 'map', ['#map-plot']);
     assert.match(text, /^This map is of an earlier scenario \(v=1&preset=step&duration=1\), not of the settings now\./);
     assert.deepEqual(greyed, [true]);
+  }));
+
+test('the predictor comparison is marked once the settings change, until they are put back', () =>
+  withPage('?v=1&preset=sine200', async (page) => {
+    await page.click('[data-tab=walkthrough]');
+    await page.click('#section-ekf button.compare');
+    await page.waitForSelector('#section-ekf .compare-result table');
+    assert.equal((await marking(page, 'compare', ['#section-ekf .compare-result'])).marked, false);
+    await setField(page, 'k1', '600');
+    await waitMarked(page, 'compare');
+    const marked = await marking(page, 'compare', ['#section-ekf .compare-result']);
+    assert.match(marked.text, /This comparison is of an earlier scenario \(v=1&preset=sine200\)/);
+    assert.deepEqual(marked.greyed, [true]);
+    await setField(page, 'k1', '1200');
+    await waitMarked(page, 'compare', false);
   }));

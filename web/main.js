@@ -172,8 +172,10 @@ ui.form.addEventListener('fieldsbuilt', () => challenge.lock());
 const plotSets = [plots, walkthrough.plots];
 // The analyses run the scenario the core last described.
 const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.info).encoded, client });
-
-const views = createViews({ client, state, plots, walkthrough });
+// The long results keep the scenario they were computed for and are marked while it is not the
+// settings'; an analysis first makes the settings the run on screen.
+const stale = createStale({ state, load: (/** @type {string} */ scenario) => settings.load(scenario) });
+const views = createViews({ client, state, plots, walkthrough, stale });
 const presentation = createPresentation({ state, plots, walkthrough });
 const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
@@ -184,9 +186,6 @@ const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthrough
 for (const event of ['pointerenter', 'focus'])
   $('tab-walkthrough', HTMLButtonElement).addEventListener(event, () => loadTex().catch(() => {}), { once: true });
 $('tab-lessons', HTMLButtonElement).addEventListener('click', listChallenges, { once: true });
-// The long results keep the scenario they were computed for and are marked while it is not the
-// settings'; an analysis first makes the settings the run on screen.
-const stale = createStale({ state, load: (/** @type {string} */ scenario) => settings.load(scenario) });
 const current = () => settings.runCurrent();
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab, current, stale });
 const robust = createRobust({

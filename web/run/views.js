@@ -10,10 +10,12 @@ import { fieldValue } from '../ui/scenario.js';
 /** @import { Walkthrough } from '../teaching/walkthrough.js' */
 
 /**
- * The plots' requests of the worker about the last run, and its replies (`handlers`).
- * @param {{client: RunClient, state: State, plots: Plots, walkthrough: Walkthrough}} parts
+ * The plots' requests of the worker about the last run, and its replies (`handlers`); the
+ * predictor comparison is marked by `stale` while it is of an earlier scenario.
+ * @param {{client: RunClient, state: State, plots: Plots, walkthrough: Walkthrough,
+ *   stale: ReturnType<typeof import('../ui/stale.js').createStale>}} parts
  */
-export function createViews({ client, state, plots, walkthrough }) {
+export function createViews({ client, state, plots, walkthrough, stale }) {
   const plotSets = [plots, walkthrough.plots];
   let walkthroughAsked = 0; // the run whose whole-run walkthrough view was asked for
 
@@ -77,10 +79,25 @@ export function createViews({ client, state, plots, walkthrough }) {
     if (!state.running && plots.full) client.post({ type: 'inspect', id: state.runId, t });
   }
 
+  /** @type {ReturnType<typeof stale.add> | null} the comparison's mark, once it has a box */
+  let compared = null;
+  /** The comparison's box (its section is built with it) and its mark. */
+  function comparison() {
+    const box = /** @type {HTMLElement} */ ($('walkthrough').querySelector('.compare-result'));
+    compared ??= stale.add({
+      name: 'compare',
+      what: 'This comparison is',
+      press: '“Run”, then the comparison’s button,',
+      before: box,
+      shows: [box],
+    });
+    return { box, mark: compared };
+  }
+
   function compare() {
-    // The comparison is asked from its section, built with the box of its result.
-    /** @type {HTMLElement} */ ($('walkthrough').querySelector('.compare-result')).textContent =
-      'Running both predictors…';
+    const { box, mark } = comparison();
+    box.textContent = 'Running both predictors…';
+    mark.forget();
     client.post({ type: 'compare', id: state.runId });
   }
 
@@ -99,7 +116,9 @@ export function createViews({ client, state, plots, walkthrough }) {
       if (id === state.runId) walkthrough.inspect(snapshot, t, Number(fieldValue(state.info, 'ts')));
     },
     compared({ id, results }) {
-      if (id === state.runId) walkthrough.showComparison(results);
+      if (id !== state.runId) return;
+      walkthrough.showComparison(results);
+      comparison().mark.ran(/** @type {string} */ (state.ranScenario));
     },
   };
 
