@@ -1,8 +1,9 @@
 // Browser tests of results kept from an earlier scenario: the model-error map, the sweep, the seed
-// bands, a challenge's verdict and the predictor comparison stay on screen when the settings change, marked as the earlier
-// scenario's (greyed, with what to press; an export that does not name its scenario off) until
-// they are run again for the settings or the settings return to their scenario. Lesson 12's map,
-// run as a student runs it, is marked once the scenario changes as the lesson says.
+// bands, a challenge's verdict and the predictor comparison stay on screen when the settings
+// change, marked as the earlier scenario's (greyed, with what to press; an export that does not
+// name its scenario off) until they are run again for the settings or the settings return to their
+// scenario. Lesson 12's map, run as a student runs it, is marked once the scenario changes as the
+// lesson says.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
