@@ -73,7 +73,7 @@ export class LessonPanel {
     const close = el('button', { type: 'button', className: 'close', textContent: 'Close lesson' });
     const copy = el('button', { type: 'button', className: 'copy-lesson', textContent: 'Copy link to this lesson' });
     const copied = el('p', { className: 'hint', role: 'status' });
-    const own = el('div', { className: 'own-settings', hidden: true });
+    const own = el('div', { className: 'own-settings warning', hidden: true });
     copy.addEventListener('click', () => copyLink(lesson, copied));
     previous.addEventListener('click', () => this.open(i - 1));
     next.addEventListener('click', () => this.open(i + 1));
