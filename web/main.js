@@ -167,7 +167,7 @@ const plotSets = [plots, walkthrough.plots];
 const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.info).encoded, client });
 
 const views = createViews({ client, state, plots, walkthrough });
-const presentation = createPresentation({ state, plots, walkthrough });
+const presentation = createPresentation({ state, plots, walkthrough, rescaled: () => robust.redraw() });
 const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
@@ -186,6 +186,9 @@ const robust = createRobust({
     tabs.showTab('plots');
     settings.load(scenario);
   },
+  scale: () => plots.scale,
+  // A lesson about the map shows it as it is drawn.
+  drawn: () => lessons.showPlot(),
 });
 const challenge = new ChallengePanel({
   client,
@@ -215,6 +218,7 @@ const run = createRun({
     sweeps.afterRun();
     robust.afterRun();
     challenge.check();
+    lessons.afterRun();
   },
 });
 const settings = createSettings({
@@ -242,6 +246,7 @@ const lessons = new LessonPanel({
     window.scrollTo(0, 0);
     await settings.load(lesson.run);
   },
+  draw: (plot) => plotSets.forEach((set) => set.draw(plot)),
 });
 wireShare({ state });
 
@@ -288,7 +293,7 @@ window.addEventListener('resize', () => {
 });
 
 // The page's plot sets, for the browser tests and the console.
-window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
+window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null, map: robust.chart };
 
 run.setBusy(false);
 client.start();
