@@ -123,9 +123,9 @@ export class LessonPanel {
 
   /**
    * Marks the plot the open lesson's question is about (`lesson-plot`: presentation mode puts it
-   * first among its tab's plots) and, once the lesson's run is drawn and while the lesson stands
-   * beside the results, brings it whole into view; the panel's `data-shown` then names the
-   * lesson. Called again when a plot is drawn anew (the lesson's map).
+   * first among the Trajectories plots) and, once the lesson's run is drawn, in presentation mode
+   * with the lesson beside the results, brings it whole into view; the panel's `data-shown` then
+   * names the lesson. Called again when a plot is drawn anew (the lesson's map).
    */
   showPlot() {
     const lesson = this.index === null ? null : this.lessons[this.index];
@@ -135,7 +135,9 @@ export class LessonPanel {
     plot.classList.add('lesson-plot');
     if (!this.ran) return;
     this.draw(plot);
-    if (getComputedStyle(this.panel).position === 'sticky') keepWhole(plot);
+    // Elsewhere a lesson opens at the page's top, where its panel is.
+    if (document.body.classList.contains('present') && getComputedStyle(this.panel).position === 'sticky')
+      keepWhole(plot);
     this.panel.dataset.shown = lesson.id;
   }
 
