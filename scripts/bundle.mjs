@@ -11,7 +11,7 @@
 //   (index.html)            the script that starts the worker early (web/boot.js), minified and
 //                           written into the page's head, with its hash in the page's
 //                           Content-Security-Policy: it starts the worker one round trip sooner
-//   style-HASH.css          uPlot's stylesheet and the page's, one file
+//   style-HASH.css          uPlot's stylesheet and the page's (style.css, present.css), one file
 //   index.html              static/index.html, pointing at the above
 //   sw.js                   static/sw.js, with the list of files it fetches when it installs
 //
@@ -151,7 +151,8 @@ const boot = (
 
 const style = await esbuild.build({
   stdin: {
-    contents: '@import "./node_modules/uplot/dist/uPlot.min.css";\n@import "./static/style.css";\n',
+    contents:
+      '@import "./node_modules/uplot/dist/uPlot.min.css";\n@import "./static/style.css";\n@import "./static/present.css";\n',
     loader: 'css',
     resolveDir: '.',
   },
@@ -188,7 +189,7 @@ html = once(
 );
 html = once(
   html,
-  '<link rel="stylesheet" href="vendor/uPlot.min.css">\n  <link rel="stylesheet" href="style.css">',
+  '<link rel="stylesheet" href="vendor/uPlot.min.css">\n  <link rel="stylesheet" href="style.css">\n  <link rel="stylesheet" href="present.css">',
   `<link rel="stylesheet" href="${styleName}">`,
 );
 html = once(

@@ -16,5 +16,7 @@ interface Window {
     plots: import('./plots/plots.js').Plots;
     walkthrough: import('./plots/plots.js').Plots;
     overlay: { column: string; data: Float64Array[] } | null;
+    /** The model-error map's plot, once a map over one axis is drawn. */
+    map: () => uPlot | null;
   };
 }

@@ -176,7 +176,7 @@ const analysis = new Analysis({ scenario: () => /** @type {P.Info} */ (state.inf
 // settings'; an analysis first makes the settings the run on screen.
 const stale = createStale({ state, load: (/** @type {string} */ scenario) => settings.load(scenario) });
 const views = createViews({ client, state, plots, walkthrough, stale });
-const presentation = createPresentation({ state, plots, walkthrough });
+const presentation = createPresentation({ state, plots, walkthrough, rescaled: () => robust.redraw() });
 const figuresView = createFiguresView({ plotSets });
 const exporter = createExport({ client, state, plots, walkthrough });
 const pins = createPins({ client, state, plots });
@@ -198,6 +198,9 @@ const robust = createRobust({
     tabs.showTab('plots');
     settings.load(scenario);
   },
+  scale: () => plots.scale,
+  // A lesson about the map shows it as it is drawn.
+  drawn: () => lessons.showPlot(),
 });
 const challenge = new ChallengePanel({
   client,
@@ -228,6 +231,7 @@ const run = createRun({
     sweeps.afterRun();
     robust.afterRun();
     challenge.check();
+    lessons.afterRun();
   },
 });
 const settings = createSettings({
@@ -263,6 +267,7 @@ const lessons = new LessonPanel({
     await settings.load(differences.length ? /** @type {string} */ (link) : lesson.run);
     return differences;
   },
+  draw: (plot) => plotSets.forEach((set) => set.draw(plot)),
 });
 
 /**
@@ -321,7 +326,7 @@ window.addEventListener('resize', () => {
 });
 
 // The page's plot sets, for the browser tests and the console.
-window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null };
+window.imlab = { plots, walkthrough: walkthrough.plots, overlay: null, map: robust.chart };
 
 run.setBusy(false);
 client.start();

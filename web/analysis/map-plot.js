@@ -4,15 +4,19 @@ import uPlot from '../../vendor/uPlot.esm.js';
 import { el } from '../ui/dom.js';
 import { fmt } from './map-colours.js';
 import { pageNumbers } from '../plots/numbers.js';
+import { axisFont } from '../plots/options.js';
 
 /** @typedef {import('./robust.js').MapCell} MapCell */
 
 /**
- * Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out.
+ * Appends the plot of `view` (see `mapView`) to `box`, and the cells it leaves out; its text and
+ * lines `scale` times their normal size, as the trajectory plots' (presentation mode). Returns its
+ * chart.
  * @param {HTMLElement} box
  * @param {import('./map-view.js').MapView} view
+ * @param {number} scale
  */
-export function bandPlot(box, view) {
+export function bandPlot(box, view, scale) {
   const { axes, axisValue, axisName, byIndex, k, figure } = view;
   /**
    * @param {MapCell | undefined} cell
@@ -36,16 +40,20 @@ export function bandPlot(box, view) {
     scales: { x: { time: false } },
     series: [
       { label: axisName(0) },
-      { label: 'min', stroke: '#6baed6', width: 1 },
-      { label: 'median', stroke: '#08519c', width: 2, points: { show: true } },
-      { label: 'max', stroke: '#6baed6', width: 1 },
+      { label: 'min', stroke: '#6baed6', width: scale },
+      { label: 'median', stroke: '#08519c', width: 2 * scale, points: { show: true } },
+      { label: 'max', stroke: '#6baed6', width: scale },
     ],
     bands: [{ series: /** @type {uPlot.Band.Bounds} */ ([3, 1]), fill: 'rgba(107,174,214,0.25)' }],
-    axes: [{ label: axisName(0) }, { label: figure.unit || figure.label, size: 70 }],
+    axes: [
+      { label: axisName(0), ...axisFont(scale), size: 50 * scale },
+      { label: figure.unit || figure.label, ...axisFont(scale), size: 80 * scale },
+    ],
   };
   const div = el('div', { className: 'plot' });
+  div.dataset.plot = 'map';
   box.append(div);
-  new uPlot(pageNumbers(opts), [x, series[0], series[1], series[2]], div);
+  const chart = new uPlot(pageNumbers(opts), [x, series[0], series[1], series[2]], div);
   const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
   if (gaps.length) {
     const percent = axes[0].relative ? ' %' : '';
@@ -60,4 +68,5 @@ export function bandPlot(box, view) {
       }),
     );
   }
+  return chart;
 }

@@ -46,17 +46,20 @@ function mapView({ full, cells, figures, whole }, k) {
 }
 
 /**
- * Draws the map `drawn` into `box` for figure `k`; `open(scenario)` runs a cell.
+ * Draws the map `drawn` into `box` for figure `k`, its plot's text `scale` times its normal size;
+ * `open(scenario)` runs a cell. Returns the map's plot (a map over one axis has one), or null.
  * @param {HTMLElement} box
  * @param {import('./robust.js').Drawn} drawn
  * @param {number} k
  * @param {(scenario: string) => void} open
+ * @param {number} scale
  */
-export function drawMap(box, drawn, k, open) {
+export function drawMap(box, drawn, k, open, scale) {
   const view = mapView(drawn, k);
   box.replaceChildren();
-  if (view.axes.length === 1) bandPlot(box, view);
+  const chart = view.axes.length === 1 ? bandPlot(box, view, scale) : null;
   box.append(mapTable(view, open));
+  return chart;
 }
 
 /**

@@ -80,14 +80,18 @@ async function runCells(pool, map, status, progress) {
  * `analysis` holds the worker pool; `open(scenario)` runs a scenario on the Plots tab; `state.info`
  * is the core's description of the scenario in the form, which a map runs (null until the first),
  * once `current()` has made it the run on screen; `stale` marks the map while it is of an earlier
- * scenario.
+ * scenario. `scale()` is the plots' text scale (larger in presentation mode); `drawn()` follows
+ * each drawing of the map.
  * @param {{state: {info: Info | null}, analysis: import('./analysis.js').Analysis,
  *   open: (scenario: string) => void, showTab: (name: string) => void, current: () => Promise<boolean>,
- *   stale: ReturnType<typeof import('../ui/stale.js').createStale>}} parts
+ *   stale: ReturnType<typeof import('../ui/stale.js').createStale>, scale: () => number,
+ *   drawn: () => void}} parts
  */
-export function createRobust({ state, analysis, open, showTab, current, stale }) {
+export function createRobust({ state, analysis, open, showTab, current, stale, scale, drawn }) {
   /** @type {Drawn | null} */
   let last = null; // the map drawn
+  /** @type {uPlot | null} */
+  let chart = null; // its plot
   // The map's own workers for its runs: a sweep or a seed run on the Analysis tab's other pool
   // neither waits for it nor cancels it. The plan, the summary and the CSV are quick jobs of the
   // run worker, which outlives a Cancel (it terminates the pool's workers): a cancelled map's
@@ -185,9 +189,10 @@ export function createRobust({ state, analysis, open, showTab, current, stale })
 
   /** Draws the last map, once there is one. */
   function draw() {
-    const drawn = /** @type {Drawn} */ (last);
+    const map = /** @type {Drawn} */ (last);
     $('map-figure-label').hidden = false;
-    drawMap($('map-plot'), drawn, chosenFigure($('map-figure', HTMLSelectElement), drawn.figures), open);
+    chart = drawMap($('map-plot'), map, chosenFigure($('map-figure', HTMLSelectElement), map.figures), open, scale());
+    drawn();
   }
 
   /** After a run: a shared link with a map in its fragment runs that map, once. */
@@ -209,5 +214,6 @@ export function createRobust({ state, analysis, open, showTab, current, stale })
     download(new Blob([csv], { type: 'text/csv' }), 'imlab-robust.csv');
   });
 
-  return { afterRun, fill };
+  // The map drawn again, at the plots' scale (after presentation mode is switched); its plot.
+  return { afterRun, fill, redraw: () => last && draw(), chart: () => chart };
 }

@@ -36,13 +36,24 @@ function seriesOf(plot, lineWidth) {
 }
 
 /**
+ * The text of a plot's axes, `k` times its normal size: its ticks' and its label's font and the
+ * label's room. Every plot of the page uses it, so that a room reads them all alike.
+ * @param {number} k
+ */
+export const axisFont = (k) => ({
+  font: `${14 * k}px system-ui`,
+  labelFont: `${14 * k}px system-ui`,
+  labelSize: 24 * k,
+});
+
+/**
  * The time axis, the left y-axis and, for a plot with `unit2`, the right one; `k` scales the text.
  * @param {PlotDef} plot
  * @param {number} k
  * @returns {uPlot.Axis[]}
  */
 function axesOf(plot, k) {
-  const font = { font: `${14 * k}px system-ui`, labelFont: `${14 * k}px system-ui`, labelSize: 24 * k };
+  const font = axisFont(k);
   /** @type {uPlot.Axis[]} */
   const axes = [
     { label: 't (s)', ...font, size: 50 * k, space: timeSpace(14 * k, 50 * k), incrs: STEPS, values: tickLabels },

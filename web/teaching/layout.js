@@ -1,5 +1,6 @@
 // Where the walkthrough's content sits on screen: whether an element is rendered, sideways scroll
-// boxes reachable from the keyboard, and an inspected plot kept in view above the inspect sheet.
+// boxes reachable from the keyboard, an inspected plot kept in view above the inspect sheet, and a
+// lesson's plot brought whole into view.
 
 /**
  * @param {Element} e
@@ -81,5 +82,20 @@ export function keepAboveSheet(box, plot) {
   const bottom = whole.height <= limit - gap ? whole.bottom : canvas.getBoundingClientRect().bottom;
   let dy = bottom > limit ? bottom - limit : 0;
   if (whole.top - dy < gap) dy = whole.top - gap;
+  if (Math.abs(dy) >= 1) window.scrollBy(0, dy);
+}
+
+// The room kept between a plot brought into view and the window's edges (px).
+const EDGE = 8;
+
+/**
+ * Scrolls the page as little as brings `element` whole into view; its top, where it is taller
+ * than the window.
+ * @param {HTMLElement} element
+ */
+export function keepWhole(element) {
+  const box = element.getBoundingClientRect();
+  let dy = box.bottom > innerHeight - EDGE ? box.bottom - (innerHeight - EDGE) : 0;
+  if (box.top - dy < EDGE) dy = box.top - EDGE;
   if (Math.abs(dy) >= 1) window.scrollBy(0, dy);
 }

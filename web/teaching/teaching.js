@@ -23,10 +23,12 @@ import robustTerms from './lesson-text/robust-terms.js';
 
 /**
  * A lesson: its link's name, its run, the texts a student reads, the conclusions its words state
- * and the settings they name, the tab it opens (the Trajectories tab otherwise) and the
- * model-error map it fills in.
+ * and the settings they name, the tab it opens (the Trajectories tab otherwise), the model-error
+ * map it fills in, and the plot its question is about: the `data-plot` id of a plot in that tab (a
+ * trajectory plot's id, a walkthrough plot's `SECTION-KEY`, or `map`), which presentation mode
+ * shows whole beside the question.
  * @typedef {{id: string, run: string, title: string, look: string, question: string, hint: string, answer: string,
- *   holds: string[], givens: string[], tab?: string, map?: string}} Lesson
+ *   holds: string[], givens: string[], tab?: string, map?: string, plot: string}} Lesson
  */
 
 /** @type {Lesson[]} */

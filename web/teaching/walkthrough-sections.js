@@ -29,8 +29,18 @@ export function plotDefs(sectionDivs) {
   /** @type {PlotDef[]} */
   const defs = [];
   for (const s of SECTIONS) {
-    const plots = [s.plot, s.plot4, s.plot2, s.plot3, s.plot5, s.plot6, s.law?.plot];
-    for (const plot of /** @type {import('./walkthrough-text.js').SectionPlot[]} */ (plots.filter(Boolean))) {
+    // Each plot's id is its section's and its key's (`ekf-plot4`, `step1-law`): a lesson names it.
+    const plots = /** @type {const} */ ([
+      ['plot', s.plot],
+      ['plot4', s.plot4],
+      ['plot2', s.plot2],
+      ['plot3', s.plot3],
+      ['plot5', s.plot5],
+      ['plot6', s.plot6],
+      ['law', s.law?.plot],
+    ]);
+    for (const [key, plot] of plots) {
+      if (!plot) continue;
       /** @type {PlotDef['constants']} */
       const constants = plot.nisBand
         ? [['2.5 % quantile'], ['97.5 % quantile']]
@@ -39,7 +49,7 @@ export function plotDefs(sectionDivs) {
           : [];
       defs.push({
         ...plot,
-        id: `${s.id}-${defs.length}`,
+        id: `${s.id}-${key}`,
         constants,
         // The section's box for its plots, once the sections are built.
         get container() {

@@ -17,14 +17,43 @@ const PRESENT_SCALE = 1.5;
 // screen holds, down to this least height (px), with this margin under the first plot.
 const PRESENT_MIN_HEIGHT = 260;
 const PRESENT_MARGIN = 8;
+// The widths a lesson's column may take beside the results in presentation mode (rem), narrowest
+// first, up to at most this share of the window, so that the plot keeps the rest; and the sizes
+// its question may be set in (rem), largest first, down to the 20 px floor.
+const QUESTION_WIDTHS = [15, 17, 19, 21, 23, 25, 27];
+const QUESTION_MAX_SHARE = 0.42;
+const QUESTION_SIZES = [1.25, 1.1, 1];
+
+/**
+ * In presentation mode, sets an open lesson's question in the largest of QUESTION_SIZES, and its
+ * column in the narrowest of QUESTION_WIDTHS, that hold its title, question and buttons without
+ * scrolling (what to look for, the hint and the answer scroll in their own boxes); its height is
+ * the window's below where the results begin.
+ */
+function fitQuestion() {
+  const results = /** @type {HTMLElement} */ (document.querySelector('.results'));
+  const panel = document.getElementById('lesson-panel');
+  if (!panel || panel.hidden) return;
+  results.style.setProperty('--lesson-top', `${Math.round(results.getBoundingClientRect().top + scrollY)}px`);
+  const rem = parseFloat(getComputedStyle(document.documentElement).fontSize);
+  const widths = QUESTION_WIDTHS.filter((w, i) => i === 0 || w * rem <= QUESTION_MAX_SHARE * innerWidth);
+  for (const size of QUESTION_SIZES) {
+    results.style.setProperty('--question-size', `${size}rem`);
+    for (const w of widths) {
+      results.style.setProperty('--lesson-width', `${w}rem`);
+      if (panel.scrollHeight <= panel.clientHeight) return;
+    }
+  }
+}
 
 /**
  * Sets up the layout the link asks for; `fitEmbed()` sizes an embed's plots to its frame.
- * `state.notice` is a notice about the link that stays until the user acts.
+ * `state.notice` is a notice about the link that stays until the user acts; `rescaled()` follows
+ * a change of the plots' scale (presentation mode switched).
  * @param {{state: {notice: string | null}, plots: import('../plots/plots.js').Plots,
- *   walkthrough: import('../teaching/walkthrough.js').Walkthrough}} parts
+ *   walkthrough: import('../teaching/walkthrough.js').Walkthrough, rescaled: () => void}} parts
  */
-export function createPresentation({ state, plots, walkthrough }) {
+export function createPresentation({ state, plots, walkthrough, rescaled }) {
   /** @type {(() => void) | null} sizes the embedded plots to the frame, in an embed */
   let fitEmbed = null;
 
@@ -40,33 +69,40 @@ export function createPresentation({ state, plots, walkthrough }) {
     const scale = on ? PRESENT_SCALE : 1;
     plots.rescale(scale, main);
     walkthrough.plots.rescale(scale, small);
+    rescaled();
     openSettings(false);
     fitPresent();
   }
 
   /**
-   * In presentation mode, sizes the main plots so that the first one, with its title, axes and
-   * legend, ends on the first screen: what stands above it (the run bar, the tabs, the key
-   * figures) is measured as laid out.
+   * In presentation mode, fits an open lesson's column (fitQuestion), then sizes the main plots
+   * so that the first one shown (a lesson's own plot, which the style puts first), with its title,
+   * axes and legend, ends on the first screen: what stands above it (the run bar, the tabs, the
+   * key figures) is measured as laid out.
    */
   function fitPresent() {
     const body = document.body.classList;
-    const first = ui.plots.querySelector('.plot');
-    if (!body.contains('present') || body.contains('embed') || !first || $('panel-plots', HTMLDivElement).hidden)
-      return;
+    if (!body.contains('present') || body.contains('embed')) return;
+    fitQuestion();
+    const first = ui.plots.querySelector('.plot.lesson-plot') ?? ui.plots.querySelector('.plot');
+    if (!first || $('panel-plots', HTMLDivElement).hidden) return;
     const box = first.getBoundingClientRect();
     const rest = box.height - plots.height; // the title and the legend
     const room = Math.floor(innerHeight - (box.top + scrollY) - rest - PRESENT_MARGIN);
     const height = Math.max(PRESENT_MIN_HEIGHT, Math.min(PLOT_HEIGHT.present[0], room));
-    if (height !== plots.height) plots.resize(height);
+    const chart = first.querySelector('canvas');
+    // A chart drawn before its column narrowed is sized to the new width too.
+    if (height !== plots.height || (chart && Math.abs(chart.clientWidth - plots.width()) > 1)) plots.resize(height);
   }
   // What stands above the plots changes height as a run ends (its key figures), a lesson opens
   // (the columns narrow) or the window changes: each time the plots are sized again.
   const above = new ResizeObserver(() => fitPresent());
   for (const e of document.querySelectorAll(
-    '.run-bar, .tab-row, .view-bar, .figures-bar, #message, #consistency, #panel-plots',
+    '.run-bar, .tab-row, .view-bar, .figures-bar, #message, #consistency, #panel-plots, #lesson-panel',
   ))
     above.observe(e);
+  // A lesson opened, or the next one, brings its own question: its column is fitted again.
+  new MutationObserver(() => fitPresent()).observe($('lesson-panel'), { childList: true });
   window.addEventListener('resize', fitPresent);
   ui.present.addEventListener('click', () => present(!document.body.classList.contains('present')));
 

@@ -6,6 +6,7 @@ export default {
   run: 'v=1&preset=step',
   title: 'Derive the four steps yourself',
   tab: 'walkthrough',
+  plot: 'step1-law', // the residual of the student’s v1
   look: 'In the design walkthrough, open “Write this step” under step 1 and write v1 in the names listed there; press Enter to run it. The verdict under your law says whether it gives the designed dynamics ż1 = −k1·z1 + z2, and the plot below it shows the residual, your v1 less the paper’s, over the run. Then write v2 under step 2, v3 under step 3 and v4 under step 4: with your own v1, step 2 is judged on it, and with your own v3, step 4.',
   question:
     'Which v1 makes ż1 = −k1·z1 + z2, when ż1 = a1·(x3·x̂4 − x2·x̂5) − a3·x̂1 − a2 + si1 − ω̇_d and z2 = a1·(x3·x̂4 − x2·x̂5) − v1? Which v2 then gives ż2 = −k2·z2 − z1? Which v3 makes ż3 = −k3·z3 + z4, when z3 = x̂4² + x̂5² − ψ_d and z4 = 2a10·(x2·x̂4 + x3·x̂5) − v3, and which v4 then gives ż4 = −k4·z4 − z3?',

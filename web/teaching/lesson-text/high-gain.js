@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=high-gain',
   title: 'Gains past what the observer supports',
   tab: 'walkthrough',
+  plot: 'step4-plot', // the voltage before and after the limit
   look: 'All four gains are 3000/s, 2.5× the paper’s. The voltage limit is hit almost all the time. The knobs k1–k4 in the Step sections and the EKF predictor and noise in the EKF section re-run the scenario when you change them; the figures strip follows, over the preset’s 0.1 s.',
   question:
     'What share of samples is at the voltage limit at 3000/s? Then try the RK4 predictor (EKF section) and, separately, noise 0 (settings, Noise and seed): which one removes the saturation, and what does that say limits the gains? Does that hold with the model off?',

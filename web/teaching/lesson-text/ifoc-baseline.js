@@ -3,6 +3,7 @@
 export default {
   id: 'ifoc-baseline',
   run: 'v=1&preset=ifoc-step&ref=ramp&ramp.level=40&ramp.slope=200&ramp.hold=5&ifoc.i_max=3.7&duration=1.5',
+  plot: 'speed', // the speed falling behind the ramp
   title: 'The classical baseline: field-oriented control on the same ramp',
   look: 'This run uses indirect field-oriented control (IFOC) with a Schauder MRAS speed estimate, tuned by textbook rules: current loops by internal-model control (Kp = α_c·σ, Ki = α_c·R′ with R′ = R_s + (M/L_r)²R_r, α_c = 2π·1 kHz), the MRAS with both poles at −2π·50 Hz and the speed loop at 10 Hz (Kp = α_ω·J/K_t, Ki = Kp·α_ω/4). To compare like with like, both designs get the same reference and the same noise: a ramp at 200 rad/s² to 40 rad/s. The IFOC’s q-current is limited to 3.7 A so that |i_s| stays within the 4 A rating; backstepping has no current limit, so read what it draws. Press “Pin this run”, set controller = backstepping in the settings and run: the overlay shows both.',
   question:

@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=load-step-est',
   title: 'The remedy: the load as an EKF state',
   tab: 'walkthrough',
+  plot: 'ekf-plot5', // the load estimate with its ±2σ band against the true load
   look: 'The same 2 N m step at 0.15 s, this time with a2 = T_L0/J as a sixth EKF state (a random walk) and the controller using â2 and its rate. In section 2 of the walkthrough, the load-torque plot shows the estimate with its ±2σ band against the true load; compare the speed with the lesson “An unknown load step”.',
   question:
     'How far does the speed dip after the step, and what does the load estimate settle to? Why must the load be a state of the observer rather than a constant the controller is told? Does the remedy hold when the model’s rotor resistance is off?',

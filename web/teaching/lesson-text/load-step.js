@@ -3,6 +3,7 @@
 export default {
   id: 'load-step',
   run: 'v=1&preset=load-step&duration=3',
+  plot: 'speed', // the true speed and its estimate after the load step
   title: 'An unknown load step',
   look: 'At 0.15 s a 2 N m load torque appears that neither the EKF nor the controller knows about. This run lasts 3 s (the preset stops at 0.3 s, in the middle of the fall). Watch the true speed and its estimate after 0.15 s, and read the final errors in the figures strip.',
   question:

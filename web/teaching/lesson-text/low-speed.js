@@ -3,6 +3,7 @@
 export default {
   id: 'low-speed',
   run: 'v=1&preset=rr-mismatch&ref.value=1&ekf=rk4&init_err=0&duration=3',
+  plot: 'speed', // where the speed estimate goes
   title: 'Where sensorless control cannot see: low speed',
   look: 'This run holds 1 rad/s for 3 s against the preset’s constant load, with the motor’s R_r 10 % above the model’s, the RK4 predictor and a correct initial estimate (ekf = rk4, init_err = 0). The paper’s own step and sine200 ask for at most 0.5 rad/s. Watch ω̂ on the speed plot and the voltage plot; the walkthrough’s EKF section plots the speed variance and the NIS.',
   question:

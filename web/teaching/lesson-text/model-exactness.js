@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=step&duration=1',
   map: 'plant.rr=-10%..+10%:11;seeds=1..10',
   tab: 'analysis',
+  plot: 'map', // the model-error map’s figure over R_r
   title: 'How exact must the model be?',
   look: 'The paper’s step (0 → 0.5 rad/s), run for 1 s, over the motor’s rotor resistance from 10 % below to 10 % above the model’s 4.95 Ω, each value with the noise seeds 1–10. The model-error map in the Analysis tab is filled in: press “Run map”. Then open the preset rr-mismatch, set plant.rr = 4.95 (the exact model) and duration = 3 in the settings, and run the same map: the same loop, holding 50 rad/s.',
   question:

@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=sine200',
   title: 'Observer bias: Euler against RK4',
   tab: 'walkthrough',
+  plot: 'ekf-plot4', // the NIS against its 95 % band
   look: 'The mean NIS in the figures strip is shown against its 95 % band: a consistent filter has a mean of 2. Then press “Compare Euler and RK4 predictors” in the EKF section (2.) of this walkthrough. The controller is the same in both runs, over the preset’s 0.25 s.',
   question:
     'Is the paper’s Euler EKF consistent on this run? What happens to the mean NIS and the tracking RMS with the RK4 predictor?',

@@ -3,6 +3,7 @@
 export default {
   id: 'real-drive',
   run: 'v=1&preset=sine200-drive&duration=1',
+  plot: 'speed-error', // ω − ω_d, whose RMS the question compares
   title: 'Does 200 Hz survive a real drive?',
   look: 'The paper’s sine200 as a DSP drive runs it: each voltage is applied one sample after it is computed (delay = 1); the inverter makes only the hexagon of a 540 V DC link (vlimit = hex: 540/√3 ≈ 311.8 V across its flats and 360 V at its corners, where the paper’s ±400 V box has 566 V corners); and it switches (pwm = 1: symmetric PWM at 20 kHz, the currents sampled at the carrier peak). This run lasts 1 s (the preset stops at 0.25 s); the figures strip gives the tracking RMS from the end of the start-up, and the current against the motor’s 4 A rating. Press “Pin this run”, then open the settings, group “Drive”, set delay.comp = 1 and run again: the pinned run is overlaid.',
   question:

@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=step&robust=1&eps2=5208&h2=5000&eps4=833&h4=2000',
   title: 'The robust terms and the bound (59)',
   tab: 'walkthrough',
+  plot: 'stability-plot', // V against the bound (59)
   look: 'The robust terms (38) and (53) are on (robust = 1), with h2 = 5000 rad/s³ and h4 = 2000 Wb²/s² taken as the bounds on |d̃2| and |d̃4|, and ε2 = 5208, ε4 = 833 chosen so that each term adds h²/(4ε) ≈ 1200/s, the paper’s k2 and k4, to the rate of z2 and z4. The stability section plots V against the bound (59), whose floor is now ε/λ = (ε2 + ε4)/(2·min k_i) ≈ 2.5 (in V’s mixed units).',
   question:
     'Does V stay under (59) here? If not, what does the run have that the theorem leaves out? Then set ε2 = ε4 = 1, the defaults: what happens to the voltage and the speed, and why?',

@@ -5,6 +5,7 @@ export default {
   run: 'v=1&preset=rr-mismatch-est&duration=4',
   title: 'The remedy: the rotor resistance as an EKF state, and when it can be seen',
   tab: 'walkthrough',
+  plot: 'ekf-plot6', // R̂_r with its ±2σ band against the motor’s
   look: 'The 10 % rotor-resistance mismatch again, over 4 s, this time with R_r as an EKF state (and the RK4 predictor with a small Q). Section 2 of the walkthrough plots R̂_r with its ±2σ band against the motor’s 5.445 Ω. Then set the loads to zero: plant.t0 = model.t0 = 0 and plant.cf = model.cf = 0 in the settings, and run again.',
   question:
     'With the load, where does R̂_r go and what is left of the speed error, against the mismatch lesson’s run over the same window? Without any load or friction, what happens to R̂_r and its band, and why?',

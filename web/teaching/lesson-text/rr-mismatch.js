@@ -3,6 +3,7 @@
 export default {
   id: 'rr-mismatch',
   run: 'v=1&preset=rr-mismatch&duration=6',
+  plot: 'speed', // the true speed creeping up to its reference
   title: 'Rotor-resistance mismatch: a slow transient, then a small bias',
   look: 'The motor’s rotor resistance is 10 % above what the EKF and controller assume. This run holds 50 rad/s for 6 s (the preset itself stops at 0.3 s). The speed estimate reaches the reference within milliseconds, while the true speed starts well below it and creeps up over seconds. The figures strip gives the final speed error and says whether it had settled by the end of the run.',
   question:

@@ -3,6 +3,7 @@
 export default {
   id: 'step-response',
   run: 'v=1&preset=step',
+  plot: 'speed', // the true speed’s settling after the step
   title: 'The paper’s step response',
   look: 'A 0.5 rad/s step, filtered by a critically damped 200 Hz filter, starts at 50 ms. Drag across 45–65 ms on the speed plot: the true speed follows the filtered reference. The ω − ω_d plot shows the error during the step; the figures strip gives the 2 % settling time and the peak error over the preset’s 0.1 s.',
   question:

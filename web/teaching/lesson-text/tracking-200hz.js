@@ -3,6 +3,7 @@
 export default {
   id: 'tracking-200hz',
   run: 'v=1&preset=sine200-1rad',
+  plot: 'voltage', // the voltages against the ±400 V limit
   title: 'Why 200 Hz tracking needs a small amplitude',
   look: 'Doubling the 200 Hz sine to 1 rad/s doubles the acceleration the motor must follow, and so raises the torque, the current and the voltage the drive needs: the voltage plot now reaches the ±400 V limit. Over the preset’s 0.25 s after the start-up transient, the figures strip gives the share of samples at the limit, the tracking error and the peak stator current against the motor’s 4 A rating.',
   question:
