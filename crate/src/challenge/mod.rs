@@ -39,11 +39,11 @@ pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use error::{ChallengeError, ErrorKind};
+pub(crate) use judge::bound_text;
 pub use judge::{
     criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
     NotFinite, Verdict,
 };
-pub(crate) use judge::bound_text;
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
 
