@@ -89,6 +89,34 @@ test('"Copy link to this lesson" gives the link by name, and an unknown name is 
     assert.equal(link.hash, `#lesson=${LESSONS[3].id}`);
   }));
 
+test('Back and Forward follow the lessons: each entry shows the lesson it was, or none', () =>
+  suite.withPage('?v=1&preset=step', async (page) => {
+    await settled(page);
+    const [a, b] = [LESSONS[3], LESSONS[4]];
+    await startLesson(page, a.run);
+    assert.equal(new URL(page.url()).hash, `#lesson=${a.id}`);
+    const before = await page.evaluate(() => Number(document.body.dataset.started));
+    await page.click('#lesson-panel .buttons button:has-text("Next")');
+    await page.waitForFunction((n) => Number(document.body.dataset.started) > n, before);
+    await settled(page);
+    await page.waitForFunction((id) => location.hash === `#lesson=${id}`, b.id);
+    const shows = () =>
+      page.evaluate(() => {
+        const panel = document.getElementById('lesson-panel');
+        return { open: panel.hidden ? null : panel.dataset.open, search: location.search.slice(1) };
+      });
+    await page.goBack();
+    await page.waitForFunction((run) => document.body.dataset.scenario === run, a.run);
+    assert.deepEqual(await shows(), { open: a.run, search: a.run });
+    assert.equal(await page.isVisible('#lesson-panel .own-settings'), false);
+    await page.goBack();
+    await page.waitForFunction(() => document.getElementById('lesson-panel').hidden);
+    assert.deepEqual(await shows(), { open: null, search: 'v=1&preset=step' });
+    await page.goForward();
+    await page.waitForFunction(() => !document.getElementById('lesson-panel').hidden);
+    assert.equal((await shows()).open, a.run);
+  }));
+
 test('a lesson starts from its own state: a run pinned in another lesson is not in its overlay', () =>
   suite.withPage('?v=1&preset=step', async (page) => {
     await settled(page);

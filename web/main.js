@@ -14,7 +14,7 @@ import { TABLE } from './teaching/table.js';
 import { renderLesson } from './teaching/measured.js';
 import { $, say, ui } from './ui/page.js';
 import { whenIdle } from './ui/dom.js';
-import { RunClient } from './client/run-client.js';
+import { RunClient, ScenarioRefused } from './client/run-client.js';
 import { createRun } from './run/run.js';
 import { createSettings } from './run/settings.js';
 import { createViews } from './run/views.js';
@@ -58,10 +58,13 @@ function registerServiceWorker() {
   // Where the browser allows no service worker (a page opened from a file, an embed in another
   // site's page whose storage the browser partitions or blocks, some private windows), the page
   // works while online only: that is said in the lecturer's guide, not logged as an error.
-  navigator.serviceWorker?.register('sw.js').then(
-    () => (document.body.dataset.offline = 'kept'),
-    () => (document.body.dataset.offline = 'refused'),
-  );
+  const refused = () => (document.body.dataset.offline = 'refused');
+  try {
+    // A sandboxed frame refuses even the look at navigator.serviceWorker.
+    navigator.serviceWorker?.register('sw.js').then(() => (document.body.dataset.offline = 'kept'), refused);
+  } catch {
+    refused();
+  }
 }
 
 /**
@@ -200,7 +203,7 @@ const robust = createRobust({
   },
   scale: () => plots.scale,
   // A lesson about the map shows it as it is drawn.
-  drawn: () => lessons.showPlot(),
+  drawn: () => lessons.mapDrawn(),
 });
 const challenge = new ChallengePanel({
   client,
@@ -256,31 +259,36 @@ const lessons = new LessonPanel({
    * @param {{run: string, tab?: string, map?: string}} lesson a lesson of teaching.js, its texts rendered
    * @param {string | null} link the address's scenario, when the address names the lesson
    */
-  onOpen: async (lesson, link) => {
+  onOpen: (lesson, link) => {
     // A lesson starts from its own state: no runs pinned in another lesson stay in its overlay.
     pins.clear();
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
     if (lesson.map) robust.fill(lesson.map).catch((e) => say(`The lesson's map was not read: ${e.message}.`));
     window.scrollTo(0, 0);
-    const differences = link === null ? [] : await differencesFrom(lesson.run, link);
-    await settings.load(differences.length ? /** @type {string} */ (link) : lesson.run);
-    return differences;
+    const own = link !== null && link !== lesson.run;
+    return {
+      loaded: settings.load(own ? link : lesson.run),
+      differences: own ? differencesFrom(lesson.run, link) : Promise.resolve([]),
+    };
   },
   draw: (plot) => plotSets.forEach((set) => set.draw(plot)),
 });
 
 /**
  * How scenario `text` differs from scenario `from`, a line a field as the core writes it; one line
- * saying the core refused `text` when it does.
+ * saying the core refused `text`, or that the two could not be compared, when so.
  * @param {string} from
  * @param {string} text
  * @returns {Promise<string[]>}
  */
-function differencesFrom(from, text) {
-  return client
-    .job('scenario-differences', { from, text })
-    .catch((/** @type {Error} */ e) => [`the core refused them (${e.message})`]);
+async function differencesFrom(from, text) {
+  try {
+    await client.describe(text);
+  } catch (e) {
+    return e instanceof ScenarioRefused ? [`the core refused some of them (${/** @type {Error} */ (e).message})`] : [];
+  }
+  return client.job('scenario-differences', { from, text }).catch(() => ['they could not be compared with it']);
 }
 wireShare({ state });
 
@@ -319,7 +327,12 @@ ui.cancel.addEventListener('click', () => {
   else client.post({ type: 'cancel', id: state.runId });
 });
 // An open challenge holds the address (url.js): its entries are not scenarios to go back to.
-window.addEventListener('popstate', () => challenge.active() || settings.load(scenarioFromUrl()));
+// Back and Forward show the lesson the entry names, if any, with the entry's scenario.
+window.addEventListener('popstate', () => {
+  if (challenge.active()) return;
+  lessons.follow(fragment('lesson'));
+  settings.load(scenarioFromUrl());
+});
 window.addEventListener('resize', () => {
   plots.resize();
   walkthrough.plots.resize();

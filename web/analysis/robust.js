@@ -191,6 +191,8 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
   function draw() {
     const map = /** @type {Drawn} */ (last);
     $('map-figure-label').hidden = false;
+    // The chart drawn before keeps listeners on the window until it is destroyed.
+    chart?.destroy();
     chart = drawMap($('map-plot'), map, chosenFigure($('map-figure', HTMLSelectElement), map.figures), open, scale());
     drawn();
   }

@@ -87,6 +87,7 @@ function criterionHead(shown, k) {
   const need = shown.need[k];
   return [
     el('span', { className: 'label', textContent: need.label }),
+    ' ',
     el('span', { className: 'bound', textContent: need.bound_text }),
   ];
 }

@@ -18,7 +18,7 @@ import { el } from '../ui/dom.js';
 /** The storage key of the digests, oldest first. */
 const STORE = 'imlab.composed-challenges';
 /** The most digests kept (64 characters each): the oldest are dropped beyond it. */
-export const KEEP = 2000;
+const KEEP = 2000;
 
 /** What the header says of each origin: text, so that it never rests on colour. */
 const SAY = {
@@ -55,10 +55,11 @@ async function digest(text) {
  * @param {string} text
  */
 export async function remember(text) {
-  const list = kept();
-  if (!list) return false;
+  if (!kept()) return false;
   try {
     const d = await digest(text);
+    // Read after the digest, so that another make meanwhile (another tab) is kept too.
+    const list = kept() ?? [];
     const rest = list.filter((x) => x !== d);
     localStorage.setItem(STORE, JSON.stringify([...rest.slice(-(KEEP - 1)), d]));
     return true;

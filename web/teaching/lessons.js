@@ -33,11 +33,11 @@ export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson, link)` loads and
    * runs the lesson's run (a scenario string), or the scenario `link` of an address that names the
-   * lesson with settings of its own; it resolves with how that scenario differs from the lesson's
-   * run ("key: lesson's → link's"), empty when it does not. `draw(plot)` draws a plot's chart that
-   * waits to come into view.
+   * lesson with settings of its own (`loaded`), and finds how that scenario differs from the
+   * lesson's run (`differences`, "key: lesson's → link's", empty when it does not). `draw(plot)`
+   * draws a plot's chart that waits to come into view.
    * @param {{panel: HTMLElement, list: HTMLElement, lessons: Lesson[],
-   *   onOpen: (lesson: Lesson, link: string | null) => Promise<string[]>,
+   *   onOpen: (lesson: Lesson, link: string | null) => {loaded: Promise<void>, differences: Promise<string[]>},
    *   draw: (plot: HTMLElement) => void}} parts
    */
   constructor({ panel, list, lessons, onOpen, draw }) {
@@ -48,6 +48,8 @@ export class LessonPanel {
     /** @type {number | null} the lesson open, by its place in `lessons` */
     this.index = null;
     this.ran = false; // whether the open lesson's run has been drawn
+    this.mapShown = false; // whether the open lesson's map has been drawn
+    this.opened = 0; // the lessons opened, and the address followed: a later one ends an earlier's
     lessons.forEach((lesson, i) => {
       const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
       start.dataset.lesson = lesson.run;
@@ -71,6 +73,27 @@ export class LessonPanel {
    * @param {string | null} [link]
    */
   async open(i, link = null) {
+    const me = ++this.opened;
+    this.show(i);
+    const lesson = this.lessons[i];
+    // Keyboard and screen-reader users continue where the content is, not at the page's top.
+    const { loaded, differences } = this.onOpen(lesson, link);
+    /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
+    this.showPlot();
+    await loaded;
+    if (me !== this.opened) return;
+    // Named once its run is the address's: an entry before it keeps what it was.
+    setFragment('lesson', lesson.id);
+    const found = await differences;
+    if (found.length && me === this.opened)
+      this.showOwn(/** @type {HTMLElement} */ (this.panel.querySelector('.own-settings')), found, i);
+  }
+
+  /**
+   * Shows lesson `i`'s panel, scrolled to the top, without running anything.
+   * @param {number} i
+   */
+  show(i) {
     this.index = i;
     const lesson = this.lessons[i];
     const previous = el('button', { type: 'button', textContent: '← Previous', disabled: i === 0 });
@@ -82,7 +105,6 @@ export class LessonPanel {
       el('span', { className: 'rest', textContent: ' to this lesson' }),
     ]);
     const copied = el('p', { className: 'hint', role: 'status' });
-    const own = el('div', { className: 'own-settings warning', hidden: true });
     copy.addEventListener('click', () => copyLink(lesson, copied));
     previous.addEventListener('click', () => this.open(i - 1));
     next.addEventListener('click', () => this.open(i + 1));
@@ -104,7 +126,7 @@ export class LessonPanel {
         el('span', { className: 'lesson-run', textContent: ` · run ${lesson.run}` }),
       ]),
       el('h2', { textContent: lesson.title, tabIndex: -1 }),
-      own,
+      el('div', { className: 'own-settings warning', hidden: true }),
       el('div', { className: 'lesson-look' }, [
         el('h3', { textContent: 'What to look for' }),
         el('p', { className: 'look', textContent: lesson.look }),
@@ -120,16 +142,23 @@ export class LessonPanel {
     this.panel.dataset.open = lesson.run;
     delete this.panel.dataset.shown;
     this.ran = false;
+    this.mapShown = false;
     this.panel.hidden = false;
     this.panel.scrollTop = 0;
     document.body.classList.add('with-lesson');
-    setFragment('lesson', lesson.id);
-    // Keyboard and screen-reader users continue where the content is, not at the page's top.
-    const started = this.onOpen(lesson, link);
-    /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
-    this.showPlot();
-    const differences = await started;
-    if (differences.length && this.index === i) this.showOwn(own, differences, i);
+  }
+
+  /**
+   * Follows the address after Back or Forward: shows the panel of the lesson it names (`id`), or
+   * none; the address's scenario is loaded by the caller.
+   * @param {string | null} id
+   */
+  follow(id) {
+    const i = id === null ? -1 : this.lessons.findIndex((l) => l.id === id);
+    this.opened++;
+    if (i < 0) {
+      if (this.index !== null) this.close(false);
+    } else if (i !== this.index) this.show(i);
   }
 
   /**
@@ -155,16 +184,24 @@ export class LessonPanel {
   afterRun() {
     if (this.index === null || this.ran) return;
     this.ran = true;
-    this.showPlot();
+    this.showPlot(true);
+  }
+
+  /** The map has been drawn: a lesson about it shows it, brought into view the first time. */
+  mapDrawn() {
+    if (this.index === null || this.lessons[this.index].plot !== 'map') return;
+    this.showPlot(!this.mapShown);
+    this.mapShown = true;
   }
 
   /**
    * Marks the plot the open lesson's question is about (`lesson-plot`: presentation mode puts it
    * first among the Trajectories plots) and, once the lesson's run is drawn, in presentation mode
    * with the lesson beside the results, brings it whole into view; the panel's `data-shown` then
-   * names the lesson. Called again when a plot is drawn anew (the lesson's map).
+   * names the lesson. Called again when a plot is drawn anew (the lesson's map); `scroll` brings
+   * it into view.
    */
-  showPlot() {
+  showPlot(scroll = false) {
     const lesson = this.index === null ? null : this.lessons[this.index];
     const plot = lesson && document.querySelector(`#panel-${lesson.tab ?? 'plots'} [data-plot="${lesson.plot}"]`);
     for (const old of document.querySelectorAll('.lesson-plot')) if (old !== plot) old.classList.remove('lesson-plot');
@@ -173,7 +210,7 @@ export class LessonPanel {
     if (!this.ran) return;
     this.draw(plot);
     // Elsewhere a lesson opens at the page's top, where its panel is.
-    if (document.body.classList.contains('present') && getComputedStyle(this.panel).position === 'sticky')
+    if (scroll && document.body.classList.contains('present') && getComputedStyle(this.panel).position === 'sticky')
       keepWhole(plot);
     this.panel.dataset.shown = lesson.id;
   }
@@ -191,12 +228,13 @@ export class LessonPanel {
     return true;
   }
 
-  close() {
+  /** Closes the lesson; with `address`, the address no longer names it. */
+  close(address = true) {
     this.index = null;
     this.showPlot();
     delete this.panel.dataset.shown;
     this.panel.hidden = true;
     document.body.classList.remove('with-lesson');
-    setFragment('lesson', null);
+    if (address) setFragment('lesson', null);
   }
 }

@@ -14,7 +14,7 @@ import { excerpt } from './quote.js';
  * A result the page marks while it is of an earlier scenario: its `name` (the body's
  * `data-NAME-stale` is set while it is marked, and its mark's id is `NAME-stale`), what it is
  * (`what`, the subject of the mark's sentence), the button that runs it again (`press`, as the page
- * labels it), the element the mark goes before, the elements that show it (greyed while marked),
+ * labels it), the element the mark goes before, the elements that show it (outlined while marked),
  * the buttons that export it without naming its scenario (off while marked) and what the mark says
  * of its export.
  * @typedef {{name: string, what: string, press: string, before: HTMLElement, shows: HTMLElement[],
@@ -53,12 +53,15 @@ export function createStale({ state, load }) {
       mark.append(' ', button);
     }
 
+    // In place from the start, so that a screen reader announces the text it is given.
+    before.before(mark);
+
     function update() {
       const stale = scenario !== null && state.info !== null && scenario !== state.info.encoded;
-      if (stale) {
-        text.textContent = `${what} of an earlier scenario (${excerpt(/** @type {string} */ (scenario), QUOTED)}), not of the settings now. Press ${press} to bring it up to date.${exportNote ? ` ${exportNote}` : ''}`;
-        if (!mark.isConnected) before.before(mark);
-      }
+      const said = stale
+        ? `${what} of an earlier scenario (${excerpt(/** @type {string} */ (scenario), QUOTED)}), not of the settings now. Press ${press} to bring it up to date.${exportNote ? ` ${exportNote}` : ''}`
+        : '';
+      if (text.textContent !== said) text.textContent = said;
       mark.hidden = !stale;
       for (const e of shows) e.classList.toggle('stale-result', stale);
       if (scenario !== null) for (const b of exports) b.disabled = stale;

@@ -39,6 +39,7 @@ pub use crate::record::LOAD_RECOVERY;
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use error::{ChallengeError, ErrorKind};
+#[cfg(all(target_arch = "wasm32", feature = "tools"))]
 pub(crate) use judge::bound_text;
 pub use judge::{
     criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
