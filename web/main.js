@@ -28,8 +28,6 @@ import { createSweeps } from './analysis/sweeps.js';
 import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
-import { createCompose } from './challenge/challenge-compose.js';
-import { createGrading } from './challenge/grade.js';
 import { createStale } from './ui/stale.js';
 
 /** @import * as P from './worker/protocol.js' */
@@ -211,8 +209,28 @@ const challenge = new ChallengePanel({
   relayout: () => plotSets.forEach((p) => p.resize()),
   stale,
 });
-createCompose({ client, state });
-createGrading({ client });
+/**
+ * The Challenge tab's composer and class grading, fetched when the tab is first pointed at or
+ * shown, or the page is idle after its first run: the first plot waits for neither. Their buttons
+ * are off until then. A failed fetch is said, and tried again on the next of those.
+ * @type {Promise<void> | null}
+ */
+let challengeTools = null;
+function loadChallengeTools() {
+  challengeTools ??= Promise.all([import('./challenge/challenge-compose.js'), import('./challenge/grade.js')]).then(
+    ([compose, grading]) => {
+      compose.createCompose({ client, state });
+      grading.createGrading({ client });
+    },
+    (e) => {
+      challengeTools = null;
+      say(`The Challenge tab’s composer and grading could not be loaded: ${e.message}. Open the tab again to retry.`);
+    },
+  );
+  return challengeTools;
+}
+for (const event of ['pointerenter', 'focus', 'click'])
+  $('tab-challenge', HTMLButtonElement).addEventListener(event, loadChallengeTools);
 const run = createRun({
   client,
   state,
@@ -225,6 +243,7 @@ const run = createRun({
   afterRun: () => {
     // What no one sees yet is built once the page is idle, unless it is shown first.
     whenIdle(() => {
+      loadChallengeTools();
       walkthrough.build();
       buildGroups(ui.form);
       listChallenges();

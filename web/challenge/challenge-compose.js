@@ -196,11 +196,16 @@ export function createCompose({ client, state }) {
   }
 
   let filled = false;
-  $('compose-fill', HTMLButtonElement).addEventListener('click', fill);
-  $('tab-challenge', HTMLButtonElement).addEventListener('click', () => {
+  const fillOnce = () => {
     if (!filled && state.info) {
       filled = true;
       fill();
     }
-  });
+  };
+  const fillButton = $('compose-fill', HTMLButtonElement);
+  fillButton.addEventListener('click', fill);
+  fillButton.disabled = false;
+  $('tab-challenge', HTMLButtonElement).addEventListener('click', fillOnce);
+  // Made when the tab is first shown, the form is filled at once.
+  if (!$('panel-challenge', HTMLDivElement).hidden) fillOnce();
 }

@@ -219,6 +219,7 @@ export function createGrading({ client }) {
 
   $('grade-challenge', HTMLInputElement).addEventListener('focus', () => offerBuiltins(client), { once: true });
   $('grade-run', HTMLButtonElement).addEventListener('click', grade);
+  $('grade-run', HTMLButtonElement).disabled = false;
   $('grade-cancel', HTMLButtonElement).addEventListener('click', () => {
     if (body.grading !== 'reading') return pool.cancel();
     readings++;

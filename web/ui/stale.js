@@ -53,10 +53,12 @@ export function createStale({ state, load }) {
       mark.append(' ', button);
     }
 
-    // In place from the start, so that a screen reader announces the text it is given.
+    // In place from the start where `before` is (else once it is), so that a screen reader
+    // announces the text the mark is given.
     before.before(mark);
 
     function update() {
+      if (!mark.isConnected) before.before(mark);
       const stale = scenario !== null && state.info !== null && scenario !== state.info.encoded;
       const said = stale
         ? `${what} of an earlier scenario (${excerpt(/** @type {string} */ (scenario), QUOTED)}), not of the settings now. Press ${press} to bring it up to date.${exportNote ? ` ${exportNote}` : ''}`
