@@ -294,6 +294,13 @@ test('a malformed challenge link says so and the page falls back to the default 
     await settled(page);
   }));
 
+test('a stray "=" pasted before a challenge link is named', () =>
+  withPage('?=c=1&title=x', async (page) => {
+    await page.waitForFunction(() => document.body.dataset.challenge === 'malformed');
+    assert.match(await page.textContent('#challenge-error'), /stray character '=' before its c=1: remove it/);
+    await settled(page);
+  }));
+
 test('the built-in challenges open from the Lessons tab', () =>
   withPage('', async (page) => {
     await settled(page);

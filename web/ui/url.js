@@ -24,7 +24,8 @@ export function challengeFromUrl() {
     const tries = keys.length > 1;
     return { challenge: text, submission: tries ? text : null };
   }
-  if (!text.startsWith('c=')) return null;
+  // A stray character pasted before `c=` is the core's to name.
+  if (!/^[^A-Za-z0-9&]*c=/.test(text)) return null;
   return { challenge: text, submission: text };
 }
 
