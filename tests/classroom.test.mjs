@@ -64,7 +64,17 @@ test('a lesson link with settings of its own shows them, says how they differ fr
     assert.match(await page.textContent('#lesson-panel .own-settings'), /settings of its own.*k1: \d+ → 600/);
     assert.match(await page.evaluate(() => document.body.dataset.scenario), /&k1=600(&|$)/);
     assert.match(new URL(page.url()).search, /&k1=600(&|$)/);
-    const before = await page.evaluate(() => Number(document.body.dataset.started));
+    // Back to it from the next lesson, the note is there again.
+    let before = await page.evaluate(() => Number(document.body.dataset.started));
+    await page.click('#lesson-panel .buttons button:has-text("Next")');
+    await page.waitForFunction((n) => Number(document.body.dataset.started) > n, before);
+    await settled(page);
+    assert.equal(await page.isVisible('#lesson-panel .own-settings'), false);
+    await page.goBack();
+    await page.waitForSelector('#lesson-panel .own-settings:not([hidden])');
+    assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), lesson.run);
+    await settled(page);
+    before = await page.evaluate(() => Number(document.body.dataset.started));
     await page.click('#lesson-panel .own-settings button');
     await page.waitForFunction((n) => Number(document.body.dataset.started) > n, before);
     await settled(page);

@@ -285,12 +285,9 @@ const lessons = new LessonPanel({
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
     if (lesson.map) robust.fill(lesson.map).catch((e) => say(`The lesson's map was not read: ${e.message}.`));
     window.scrollTo(0, 0);
-    const own = link !== null && link !== lesson.run;
-    return {
-      loaded: settings.load(own ? link : lesson.run),
-      differences: own ? differencesFrom(lesson.run, link) : Promise.resolve([]),
-    };
+    return settings.load(link ?? lesson.run);
   },
+  differences: (lesson, link) => differencesFrom(lesson.run, link),
   draw: (plot) => plotSets.forEach((set) => set.draw(plot)),
 });
 

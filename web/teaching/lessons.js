@@ -33,17 +33,19 @@ export class LessonPanel {
   /**
    * `panel` receives the open lesson, `list` the lesson cards. `onOpen(lesson, link)` loads and
    * runs the lesson's run (a scenario string), or the scenario `link` of an address that names the
-   * lesson with settings of its own (`loaded`), and finds how that scenario differs from the
-   * lesson's run (`differences`, "key: lesson's → link's", empty when it does not). `draw(plot)`
+   * lesson with settings of its own; `differences(lesson, link)` finds how such a scenario
+   * differs from the lesson's run ("key: lesson's → link's", empty when it does not). `draw(plot)`
    * draws a plot's chart that waits to come into view.
    * @param {{panel: HTMLElement, list: HTMLElement, lessons: Lesson[],
-   *   onOpen: (lesson: Lesson, link: string | null) => {loaded: Promise<void>, differences: Promise<string[]>},
+   *   onOpen: (lesson: Lesson, link: string | null) => Promise<void>,
+   *   differences: (lesson: Lesson, link: string) => Promise<string[]>,
    *   draw: (plot: HTMLElement) => void}} parts
    */
-  constructor({ panel, list, lessons, onOpen, draw }) {
+  constructor({ panel, list, lessons, onOpen, differences, draw }) {
     this.panel = panel;
     this.lessons = lessons;
     this.onOpen = onOpen;
+    this.differences = differences;
     this.draw = draw;
     /** @type {number | null} the lesson open, by its place in `lessons` */
     this.index = null;
@@ -77,16 +79,30 @@ export class LessonPanel {
     this.show(i);
     const lesson = this.lessons[i];
     // Keyboard and screen-reader users continue where the content is, not at the page's top.
-    const { loaded, differences } = this.onOpen(lesson, link);
+    const loaded = this.onOpen(lesson, link);
     /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
     this.showPlot();
     await loaded;
     if (me !== this.opened) return;
     // Named once its run is the address's: an entry before it keeps what it was.
     setFragment('lesson', lesson.id);
-    const found = await differences;
-    if (found.length && me === this.opened)
-      this.showOwn(/** @type {HTMLElement} */ (this.panel.querySelector('.own-settings')), found, i);
+    await this.compare(i, link, me);
+  }
+
+  /**
+   * Says, when scenario `link` is not lesson `i`'s run, how it differs from it (unless another
+   * lesson was opened, or the address followed, since opening `me`); else says nothing.
+   * @param {number} i
+   * @param {string | null} link
+   * @param {number} me
+   */
+  async compare(i, link, me) {
+    const own = /** @type {HTMLElement} */ (this.panel.querySelector('.own-settings'));
+    own.hidden = true;
+    const lesson = this.lessons[i];
+    if (link === null || link === lesson.run) return;
+    const found = await this.differences(lesson, link);
+    if (found.length && me === this.opened) this.showOwn(own, found, i);
   }
 
   /**
@@ -155,10 +171,13 @@ export class LessonPanel {
    */
   follow(id) {
     const i = id === null ? -1 : this.lessons.findIndex((l) => l.id === id);
-    this.opened++;
+    const me = ++this.opened;
     if (i < 0) {
       if (this.index !== null) this.close(false);
-    } else if (i !== this.index) this.show(i);
+      return;
+    }
+    if (i !== this.index) this.show(i);
+    this.compare(i, location.search.slice(1) || null, me);
   }
 
   /**
