@@ -262,7 +262,8 @@ export class Analysis {
           label,
           bandwidth,
           phase,
-          percent(summary.worst_saturation ?? 0),
+          // None when no point ran: nothing to say, not 0 %.
+          summary.worst_saturation === null ? '–' : percent(summary.worst_saturation),
           String(summary.failed),
           unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0',
         ].map((c) => el('td', { textContent: c })),
