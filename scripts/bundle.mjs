@@ -11,15 +11,18 @@
 //   (index.html)            the script that starts the worker early (web/boot.js), minified and
 //                           written into the page's head, with its hash in the page's
 //                           Content-Security-Policy: it starts the worker one round trip sooner
+//   locales/LANG/PART-HASH.ftl  each language's messages: the page's and the teaching texts'
+//                           (the English page messages are in web/main-HASH.js)
 //   style-HASH.css          uPlot's stylesheet and the page's (style.css, present.css), one file
 //   index.html              static/index.html, pointing at the above
 //   sw.js                   static/sw.js, with the list of files it fetches when it installs
 //
 //   node scripts/bundle.mjs DIST
 import { createHash } from 'node:crypto';
-import { cpSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join, relative } from 'node:path';
 import * as esbuild from 'esbuild';
+import { FluentBundle, FluentResource } from '@fluent/bundle';
 
 const dist = process.argv[2];
 if (!dist) {
@@ -133,6 +136,36 @@ const tables = readdirSync(TABLES_DIR)
     return rows.map((cells) => kept.map((i) => cells[i]).join(',')).join('\n');
   });
 
+// The page's messages (web/locales/LANG/*.ftl): of each language a page part (the labels, the
+// tools' words, the core's messages) and a teaching part (the lessons and the walkthrough), each one
+// file named by its hash in locales/LANG/. The English page part is carried in the page's bundle
+// (the page needs it before its first plot); every other file is fetched when its language is
+// shown, and the teaching part when a lesson or the walkthrough is first opened.
+const LOCALES = join('web', 'locales');
+const PARTS = { page: ['page.ftl', 'tools.ftl', 'core.ftl'], teaching: ['lessons.ftl', 'walkthrough.ftl'] };
+/** @type {Record<string, Record<string, string>>} */
+const localeFiles = {};
+let enPage = '';
+rmSync(join(dist, 'locales'), { recursive: true, force: true });
+for (const lang of readdirSync(LOCALES).sort()) {
+  localeFiles[lang] = {};
+  for (const [part, names] of Object.entries(PARTS)) {
+    const text = names
+      .filter((n) => existsSync(join(LOCALES, lang, n)))
+      .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
+      .join('\n');
+    if (text === '') continue;
+    if (lang === 'en' && part === 'page') {
+      enPage = text;
+      continue;
+    }
+    const name = `locales/${lang}/${part}-${hashOf(Buffer.from(text))}.ftl`;
+    mkdirSync(join(dist, 'locales', lang), { recursive: true });
+    writeFileSync(join(dist, name), text);
+    localeFiles[lang][part] = name;
+  }
+}
+
 const main = (
   await build({
     entryPoints: [join(src, 'main.js')],
@@ -141,6 +174,10 @@ const main = (
       replaced('/worker-url.js', `export const WORKER_URL = new URL('./${worker.name}', import.meta.url);`),
       replaced('/vendor/uPlot.esm.js', uplot),
       replaced('/teaching/measurements.js', `export const TABLES = ${JSON.stringify(tables)};`),
+      replaced(
+        '/l10n/catalog.js',
+        `export const EN_PAGE = ${JSON.stringify(enPage)};\nexport const FILES = ${JSON.stringify(localeFiles)};`,
+      ),
     ],
   })
 )['main.js'];
@@ -197,6 +234,33 @@ html = once(
   '<script type="module" src="web/main.js"></script>',
   `<script type="module" src="web/${main.name}"></script>${preloads}`,
 );
+// The page's own words are its English messages: each element of static/index.html with a
+// `data-l10n-id` (holding text only) gets the message's text and its attributes, escaped, as
+// @fluent/dom gives them in another language.
+const enBundle = new FluentBundle('en', { useIsolating: false });
+const enErrors = enBundle.addResource(new FluentResource(enPage));
+if (enErrors.length) throw new Error(`bundle: web/locales/en: ${enErrors.join('; ')}`);
+const escapeHtml = (/** @type {string} */ text) =>
+  text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c] ?? c);
+let filled = 0;
+html = html.replace(
+  /<([a-z0-9]+)([^>]*?) data-l10n-id="([a-z0-9-]+)"([^>]*)>([^<]*)<\/\1>/g,
+  (whole, tag, before, id, after, content) => {
+    const message = enBundle.getMessage(id);
+    if (!message) throw new Error(`bundle: index.html names ${id}, which web/locales/en has not`);
+    if (content.trim() !== '') throw new Error(`bundle: index.html writes text in ${id}: it is the message's`);
+    let attrs = `${before} data-l10n-id="${id}"${after}`;
+    for (const [name, pattern] of Object.entries(message.attributes)) {
+      if (new RegExp(` ${name}=`).test(attrs)) throw new Error(`bundle: index.html writes ${id}'s ${name}`);
+      attrs += ` ${name}="${escapeHtml(enBundle.formatPattern(pattern))}"`;
+    }
+    const text = message.value === null ? '' : escapeHtml(enBundle.formatPattern(message.value));
+    filled++;
+    return `<${tag}${attrs}>${text}</${tag}>`;
+  },
+);
+if (filled !== html.split(' data-l10n-id=').length - 1)
+  throw new Error('bundle: an element of index.html with a data-l10n-id holds other elements');
 writeFileSync(join(dist, 'index.html'), html);
 
 // The service worker, with the list of files it fetches when it installs: every hashed file of

@@ -7,7 +7,7 @@ import { readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node
 import { join } from 'node:path';
 import { brotliCompressSync, constants, gzipSync } from 'node:zlib';
 
-const COMPRESSIBLE = /\.(html|css|js|mjs|wasm|json|svg|md|txt)$/;
+const COMPRESSIBLE = /\.(html|css|js|mjs|wasm|json|svg|md|txt|ftl)$/;
 
 function* files(dir) {
   for (const entry of readdirSync(dir, { withFileTypes: true })) {

@@ -29,6 +29,8 @@ import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createStale } from './ui/stale.js';
+import { chooseLanguage, useLanguage } from './l10n/l10n.js';
+import { wireLanguageMenu } from './ui/language.js';
 
 /** @import * as P from './worker/protocol.js' */
 /** @import { Unreached } from './run/figures-view.js' */
@@ -125,6 +127,18 @@ function handlersOf(...parts) {
   }
   return /** @type {P.Handlers} */ (handlers);
 }
+
+// The page speaks the link's language (`#lang=`), else the first of the browser's it speaks. A
+// language whose messages cannot be fetched (offline, before they were kept) leaves it in English.
+const asked = chooseLanguage(fragment('lang'), navigator.languages);
+try {
+  await useLanguage(asked);
+} catch (e) {
+  await useLanguage('en');
+  state.notice = `The page could not load its ${asked} messages (${/** @type {Error} */ (e).message}): it is in English.`;
+  say(state.notice, 'info');
+}
+wireLanguageMenu();
 
 const client = new RunClient(
   /**

@@ -1,0 +1,152 @@
+// The page's words in the reader's language: Fluent messages (web/locales/LANG/*.ftl), the language
+// negotiated from the link's `lang=` and the browser's preferences, numbers formatted for the
+// language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
+import { FluentBundle, FluentNumber, FluentResource } from '@fluent/bundle';
+import { negotiateLanguages } from '@fluent/langneg';
+import { DOMLocalization } from '@fluent/dom';
+import { EN_PAGE, FILES } from './catalog.js';
+
+/** The languages the page speaks, each by its code and its own name. */
+export const LANGUAGES = /** @type {const} */ ([
+  ['en', 'English'],
+  ['de', 'Deutsch'],
+  ['es', 'Español'],
+  ['fr', 'Français'],
+  ['zh-CN', '简体中文'],
+  ['ja', '日本語'],
+]);
+const CODES = LANGUAGES.map(([code]) => code);
+
+/**
+ * The language a page opened with `fragmentLang` (the link's `lang=`, or null) speaks: the link's,
+ * when the page speaks it, else the first of the browser's preferred languages it speaks, else
+ * English.
+ * @param {string | null} fragmentLang
+ * @param {readonly string[]} preferred
+ */
+export function chooseLanguage(fragmentLang, preferred) {
+  const asked = fragmentLang === null ? [] : [fragmentLang];
+  return negotiateLanguages([...asked, ...preferred], CODES, { strategy: 'lookup', defaultLocale: 'en' })[0];
+}
+
+/** The language shown. */
+export let language = 'en';
+let bundle = new FluentBundle('en', { useIsolating: false });
+/** @type {Set<string>} the parts of the messages loaded */
+const loaded = new Set();
+/** @type {Map<string, Promise<void>>} */
+const loading = new Map();
+
+/**
+ * Adds an FTL text to the messages; a message file that does not parse is the page's mistake.
+ * @param {string} text
+ * @param {string} name
+ */
+function add(text, name) {
+  const errors = bundle.addResource(new FluentResource(text));
+  if (errors.length) throw new Error(`${name}: ${errors.map(String).join('; ')}`);
+}
+
+/**
+ * Speaks `lang` from now on: loads its page messages (carried in the bundle for English,
+ * fetched otherwise).
+ * @param {string} lang
+ */
+export async function useLanguage(lang) {
+  language = lang;
+  bundle = new FluentBundle(lang, { useIsolating: false });
+  loaded.clear();
+  loading.clear();
+  document.documentElement.lang = lang;
+  if (lang === 'en') add(EN_PAGE, 'en/page');
+  else await fetchPart('page');
+  loaded.add('page');
+  if (lang !== 'en') await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
+}
+
+/** @returns {Generator<FluentBundle>} */
+function* generateBundles() {
+  yield bundle;
+}
+
+/** @param {'page' | 'teaching'} part */
+async function fetchPart(part) {
+  const url = FILES[language]?.[part];
+  if (!url) throw new Error(`no ${part} messages for ${language}`);
+  const response = await fetch(new URL(url, document.baseURI));
+  if (!response.ok) throw new Error(`the ${language} ${part} messages could not be loaded (${response.status})`);
+  add(await response.text(), `${language}/${part}`);
+}
+
+/**
+ * Loads the teaching texts (lessons, walkthrough) of the language shown, once.
+ * @returns {Promise<void>}
+ */
+export function loadTeaching() {
+  let promise = loading.get('teaching');
+  if (!promise) {
+    promise = fetchPart('teaching').then(() => void loaded.add('teaching'));
+    loading.set('teaching', promise);
+  }
+  return promise;
+}
+
+/** Whether the teaching texts are loaded. */
+export const teachingLoaded = () => loaded.has('teaching');
+
+/**
+ * The message `id` (or its attribute, `id.attr`) with `args`, in the language shown. A message the
+ * language lacks is a mistake of the page: logged, and the id shown.
+ * @param {string} id
+ * @param {Record<string, string | number | FluentNumber>} [args]
+ */
+export function t(id, args) {
+  const [name, attr] = id.split('.');
+  const message = bundle.getMessage(name);
+  const pattern = attr ? message?.attributes[attr] : message?.value;
+  if (!pattern) {
+    console.error(`no message ${id} in ${language}`);
+    return id;
+  }
+  /** @type {Error[]} */
+  const errors = [];
+  const text = bundle.formatPattern(pattern, args, errors);
+  if (errors.length) console.error(`message ${id} in ${language}: ${errors.join('; ')}`);
+  return text;
+}
+
+/**
+ * A number shown in the language: its decimal separator and grouping (from five digits on), a
+ * minus sign for negatives. `fraction` fixes the digits after the separator.
+ */
+export class ShownNumber extends FluentNumber {
+  /**
+   * @param {number} value
+   * @param {number} [fraction]
+   */
+  constructor(value, fraction) {
+    super(value, {
+      useGrouping: 'min2',
+      ...(fraction === undefined ? {} : { minimumFractionDigits: fraction, maximumFractionDigits: fraction }),
+    });
+  }
+
+  /** @param {import('@fluent/bundle').Scope} scope */
+  toString(scope) {
+    return super.toString(scope).replace(/^-/, '−');
+  }
+}
+
+/**
+ * `value` shown in the language shown, as ShownNumber does.
+ * @param {number} value
+ * @param {number} [fraction]
+ */
+export function num(value, fraction) {
+  return new Intl.NumberFormat(language, {
+    useGrouping: 'min2',
+    ...(fraction === undefined ? {} : { minimumFractionDigits: fraction, maximumFractionDigits: fraction }),
+  })
+    .format(value)
+    .replace(/^-/, '−');
+}
