@@ -40,15 +40,16 @@ export function parseTables(texts) {
 const SCALES = { '': 1, ms: 1e3, '%': 1e2, m: 1e3 };
 
 /**
- * `value` with `digits` significant digits, written as the page's sentences write numbers
- * (a minus sign, thousands grouped by commas). `toward` rounds down (-1) or up (+1) instead of to
- * the nearest: a least value shown is never above it, and a largest never below it, so that "at
- * most 1.95" is not shown as "at most 1.9".
+ * `value` with `digits` significant digits, written as the page's sentences write numbers in
+ * `locale` (English by default: a minus sign, thousands grouped by commas from five digits on).
+ * `toward` rounds down (-1) or up (+1) instead of to the nearest: a least value shown is never
+ * above it, and a largest never below it, so that "at most 1.95" is not shown as "at most 1.9".
  * @param {number} value
  * @param {number} digits
  * @param {number} [toward]
+ * @param {string} [locale]
  */
-export function significant(value, digits, toward = 0) {
+export function significant(value, digits, toward = 0, locale = 'en') {
   let rounded = Number(value.toPrecision(digits));
   if (toward !== 0 && rounded !== value && value !== 0) {
     const step = 10 ** (Math.floor(Math.log10(Math.abs(value))) - digits + 1);
@@ -60,10 +61,13 @@ export function significant(value, digits, toward = 0) {
     rounded = Number((whole * step).toPrecision(digits + 1));
   }
   const magnitude = rounded === 0 ? 0 : Math.floor(Math.log10(Math.abs(rounded)));
-  const text = Math.abs(rounded).toFixed(Math.max(0, digits - 1 - magnitude));
-  const [whole, frac] = text.split('.');
-  const grouped = whole.length > 4 ? whole.replace(/\B(?=(\d{3})+(?!\d))/g, ',') : whole;
-  return `${rounded < 0 ? '−' : ''}${grouped}${frac ? `.${frac}` : ''}`;
+  const fraction = Math.max(0, digits - 1 - magnitude);
+  const text = new Intl.NumberFormat(locale, {
+    useGrouping: 'min2',
+    minimumFractionDigits: fraction,
+    maximumFractionDigits: fraction,
+  }).format(Math.abs(rounded));
+  return `${rounded < 0 ? '−' : ''}${text}`;
 }
 
 /**
@@ -72,8 +76,9 @@ export function significant(value, digits, toward = 0) {
  * its largest (`max`) rounded up, so that a range shown holds every draw.
  * @param {Measured} m
  * @param {string} id
+ * @param {string} [locale]
  */
-export function shown(m, id) {
+export function shown(m, id, locale = 'en') {
   if (!Number.isFinite(m.value)) throw new Error(`measurement ${id} is ${m.value}: a text cannot state it`);
   if (m.show === 'count') {
     if (!Number.isInteger(m.value)) throw new Error(`measurement ${id} shown as a count is ${m.value}`);
@@ -82,7 +87,7 @@ export function shown(m, id) {
   const [scale, digits] = m.show.split(':');
   if (!(scale in SCALES) || !/^[1-9]$/.test(digits)) throw new Error(`measurement ${id}: show '${m.show}'`);
   const toward = { min: -1, max: 1 }[m.statistic] ?? 0;
-  return significant(m.value * SCALES[scale], Number(digits), toward);
+  return significant(m.value * SCALES[scale], Number(digits), toward, locale);
 }
 
 // A placeholder: {id}, or {id#draws} for the number of noise draws its sample takes.
@@ -135,3 +140,38 @@ export const renderLesson = (lesson, table) => ({
   ...lesson,
   ...Object.fromEntries(LESSON_TEXTS.map((k) => [k, render(lesson[k], table)])),
 });
+
+/**
+ * The Fluent variable of measurement `id` in a message file: `step.settle.min` is
+ * `$step-settle-min`, and the number of its noise draws `$step-settle-min--draws` (ids hold no
+ * hyphen, so the spelling reads back).
+ * @param {string} id
+ * @param {boolean} [draws]
+ */
+export const variableOf = (id, draws = false) => `${id.replaceAll('.', '-')}${draws ? '--draws' : ''}`;
+
+/**
+ * A message's text with its variables written back as placeholders ({ $a-b--draws } as {a.b#draws}),
+ * so that a translated text is checked as the templates are.
+ * @param {string} text
+ */
+export const placeholdersOf = (text) =>
+  text.replace(/\{ ?\$([A-Za-z0-9_-]+) ?\}/g, (_, v) => `{${v.replace(/--draws$/, '#draws').replaceAll('-', '.')}}`);
+
+/**
+ * Every measurement of `table` that a text can state, as a message's variables, each shown in
+ * `locale` as render() shows it.
+ * @param {Table} table
+ * @param {string} locale
+ * @returns {Record<string, string | number>}
+ */
+export function measuredArgs(table, locale) {
+  /** @type {Record<string, string | number>} */
+  const args = {};
+  for (const [id, m] of table) {
+    if (Number.isFinite(m.value)) args[variableOf(id)] = shown(m, id, locale);
+    const range = m.seeds.match(/^(\d+)\.\.(\d+)$/);
+    if (range) args[variableOf(id, true)] = Number(range[2]) - Number(range[1]) + 1;
+  }
+  return args;
+}
