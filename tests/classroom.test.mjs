@@ -3,7 +3,9 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { browserSuite, settled } from './browser.mjs';
-import { LESSONS } from '../web/teaching/teaching.js';
+import { lessonsIn } from './texts.mjs';
+
+const LESSONS = lessonsIn('en');
 
 const suite = browserSuite();
 
@@ -41,14 +43,14 @@ for (const present of [false, true]) {
       assert.equal(await page.getAttribute('#lesson-panel', 'data-open'), lesson.run);
       assert.equal(await page.isVisible('#lesson-panel .own-settings'), false);
       assert.equal(await page.evaluate(() => document.body.classList.contains('present')), present);
-      // "Copy link to this lesson" keeps the mode the lesson is shown in.
+      // "Copy link to this lesson" keeps the mode the lesson is shown in, and names the language.
       await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
       await page.click('#lesson-panel .copy-lesson');
       await page.waitForFunction(() =>
         /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent),
       );
       const copied = new URL(await page.evaluate(() => navigator.clipboard.readText()));
-      assert.equal(copied.hash, `#lesson=${lesson.id}${present ? '&present=1' : ''}`);
+      assert.equal(copied.hash, `#lesson=${lesson.id}${present ? '&present=1' : ''}&lang=en`);
       await page.click('#lesson-panel .close');
       assert.doesNotMatch(new URL(page.url()).hash, /lesson=/);
     });
@@ -96,7 +98,7 @@ test('"Copy link to this lesson" gives the link by name, and an unknown name is 
     await page.waitForFunction(() => /copied/.test(document.querySelector('#lesson-panel [role=status]').textContent));
     const link = new URL(await page.evaluate(() => navigator.clipboard.readText()));
     assert.equal(link.search.slice(1), LESSONS[3].run);
-    assert.equal(link.hash, `#lesson=${LESSONS[3].id}`);
+    assert.equal(link.hash, `#lesson=${LESSONS[3].id}&lang=en`);
   }));
 
 test('Back and Forward follow the lessons: each entry shows the lesson it was, or none', () =>

@@ -7,6 +7,7 @@ import assert from 'node:assert/strict';
 import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { LESSONS } from '../web/teaching/teaching.js';
+import { lessonsIn } from './texts.mjs';
 import { LESSON_TEXTS, namedIn, parseTables, render, withoutPlaceholders } from '../web/teaching/measured.js';
 import { numbersIn } from './claims.mjs';
 import { SECTIONS, STABILITY_CAUSES, WALKTHROUGH_GIVENS, WALKTHROUGH_HOLDS } from '../web/teaching/walkthrough-text.js';
@@ -141,7 +142,7 @@ test('the check fails on a table whose value differs', () => {
  * words state and the settings it names. A lesson's table is `ID.csv`.
  */
 export const MEASURED = [
-  ...LESSONS.map((lesson) => ({
+  ...lessonsIn('en').map((lesson) => ({
     name: `lesson ${lesson.id}`,
     file: `${lesson.id}.csv`,
     texts: LESSON_TEXTS.map((k) => lesson[k]),

@@ -1,6 +1,8 @@
 // Browser tests of the teaching layer: equations, the inspect panel, lessons, comparison.
 import { test } from 'node:test';
-import { LESSONS } from '../web/teaching/teaching.js';
+import { lessonsIn } from './texts.mjs';
+
+const LESSONS = lessonsIn('en');
 import assert from 'node:assert/strict';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 

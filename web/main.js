@@ -10,8 +10,6 @@ import { Walkthrough } from './teaching/walkthrough.js';
 import { loadTex } from './teaching/tex.js';
 import { LessonPanel } from './teaching/lessons.js';
 import { LESSONS } from './teaching/teaching.js';
-import { TABLE } from './teaching/table.js';
-import { renderLesson } from './teaching/measured.js';
 import { $, say, ui } from './ui/page.js';
 import { whenIdle } from './ui/dom.js';
 import { RunClient, ScenarioRefused } from './client/run-client.js';
@@ -29,7 +27,7 @@ import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createStale } from './ui/stale.js';
-import { chooseLanguage, useLanguage } from './l10n/l10n.js';
+import { chooseLanguage, t, useLanguage } from './l10n/l10n.js';
 import { wireLanguageMenu } from './ui/language.js';
 
 /** @import * as P from './worker/protocol.js' */
@@ -201,6 +199,11 @@ const tabs = createTabs({ plots, walkthrough, walkthroughView: views.walkthrough
 for (const event of ['pointerenter', 'focus'])
   $('tab-walkthrough', HTMLButtonElement).addEventListener(event, () => loadTex().catch(() => {}), { once: true });
 $('tab-lessons', HTMLButtonElement).addEventListener('click', listChallenges, { once: true });
+/** Lists the lessons, with their texts fetched in the language shown; a failed fetch is said. */
+const listLessons = () =>
+  lessons.texts().catch((e) => say(t('lessons-not-loaded', { reason: /** @type {Error} */ (e).message })));
+for (const event of ['pointerenter', 'focus', 'click'])
+  $('tab-lessons', HTMLButtonElement).addEventListener(event, listLessons, { once: true });
 const current = () => settings.runCurrent();
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab, current, stale });
 const robust = createRobust({
@@ -261,6 +264,7 @@ const run = createRun({
       walkthrough.build();
       buildGroups(ui.form);
       listChallenges();
+      listLessons();
     });
     registerServiceWorker();
     pins.afterRun();
@@ -287,7 +291,7 @@ const settings = createSettings({
 const lessons = new LessonPanel({
   panel: $('lesson-panel'),
   list: $('lessons'),
-  lessons: LESSONS.map((lesson) => renderLesson(lesson, TABLE)),
+  lessons: LESSONS,
   /**
    * @param {{run: string, tab?: string, map?: string}} lesson a lesson of teaching.js, its texts rendered
    * @param {string | null} link the address's scenario, when the address names the lesson

@@ -3,16 +3,39 @@
 import { el } from '../ui/dom.js';
 import { keepWhole } from './layout.js';
 import { fragment, setFragment } from '../ui/url.js';
+import { withLanguage } from '../ui/language.js';
+import { language, loadTeaching, t } from '../l10n/l10n.js';
+import { LESSON_TEXTS, measuredArgs } from './measured.js';
+import { TABLE } from './table.js';
 
 /** @typedef {import('./teaching.js').Lesson} Lesson */
 
 /**
  * The link to `lesson`: its run, and its name, which opens its panel; in presentation mode, that
- * mode too.
+ * mode too; and the language shown.
  * @param {Lesson} lesson
  */
 export const lessonLink = (lesson) =>
-  `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}${fragment('present') === '1' ? '&present=1' : ''}`;
+  withLanguage(
+    `${location.origin}${location.pathname}?${lesson.run}#lesson=${lesson.id}${fragment('present') === '1' ? '&present=1' : ''}`,
+  );
+
+/** @type {Record<string, string | number> | null} the measurements, shown in the language shown */
+let measured = null;
+
+/**
+ * The texts of `lesson` a student reads, in the language shown, with their measured numbers.
+ * The teaching messages must be loaded.
+ * @param {Lesson} lesson
+ * @returns {Record<(typeof LESSON_TEXTS)[number], string>}
+ */
+export function lessonText(lesson) {
+  measured ??= measuredArgs(TABLE, language);
+  const args = measured;
+  return /** @type {Record<(typeof LESSON_TEXTS)[number], string>} */ (
+    Object.fromEntries(LESSON_TEXTS.map((k) => [k, t(`${lesson.id}-${k}`, args)]))
+  );
+}
 
 /**
  * Copies the link to `lesson`, saying so in `said` (or showing the link where the clipboard is refused).
@@ -23,9 +46,9 @@ async function copyLink(lesson, said) {
   const link = lessonLink(lesson);
   try {
     await navigator.clipboard.writeText(link);
-    said.textContent = 'Link copied: it opens this lesson and its run.';
+    said.textContent = t('lesson-link-copied');
   } catch {
-    said.textContent = `Copy this link: ${link}`;
+    said.textContent = t('lesson-copy-this-link', { link });
   }
 }
 
@@ -52,19 +75,36 @@ export class LessonPanel {
     this.ran = false; // whether the open lesson's run has been drawn
     this.mapShown = false; // whether the open lesson's map has been drawn
     this.opened = 0; // the lessons opened, and the address followed: a later one ends an earlier's
-    lessons.forEach((lesson, i) => {
-      const start = el('button', { type: 'button', textContent: `Start lesson ${i + 1}` });
-      start.dataset.lesson = lesson.run;
-      start.addEventListener('click', () => this.open(i));
-      list.append(
-        el('article', { className: 'lesson' }, [
-          el('h3', { textContent: `${i + 1}. ${lesson.title}` }),
-          el('p', { textContent: lesson.look }),
-          el('p', { className: 'question', textContent: `Question: ${lesson.question}` }),
-          start,
-        ]),
-      );
-    });
+    this.list = list;
+    /** @type {Promise<void> | null} the lessons' texts, loaded, and their list filled */
+    this.loaded = null;
+  }
+
+  /** Loads the lessons' texts (once) and lists the lessons; resolves when they are listed. */
+  texts() {
+    this.loaded ??= loadTeaching().then(
+      () => {
+        this.lessons.forEach((lesson, i) => {
+          const text = lessonText(lesson);
+          const start = el('button', { type: 'button', textContent: t('lesson-start', { number: i + 1 }) });
+          start.dataset.lesson = lesson.run;
+          start.addEventListener('click', () => this.open(i));
+          this.list.append(
+            el('article', { className: 'lesson' }, [
+              el('h3', { textContent: t('lesson-numbered-title', { number: i + 1, title: text.title }) }),
+              el('p', { textContent: text.look }),
+              el('p', { className: 'question', textContent: t('lesson-list-question', { question: text.question }) }),
+              start,
+            ]),
+          );
+        });
+      },
+      (e) => {
+        this.loaded = null;
+        throw e;
+      },
+    );
+    return this.loaded;
   }
 
   /**
@@ -76,10 +116,12 @@ export class LessonPanel {
    */
   async open(i, link = null) {
     const me = ++this.opened;
-    this.show(i);
     const lesson = this.lessons[i];
-    // Keyboard and screen-reader users continue where the content is, not at the page's top.
     const loaded = this.onOpen(lesson, link);
+    await this.texts();
+    if (me !== this.opened) return;
+    this.show(i);
+    // Keyboard and screen-reader users continue where the content is, not at the page's top.
     /** @type {HTMLHeadingElement} */ (this.panel.querySelector('h2')).focus({ preventScroll: true });
     this.showPlot();
     await loaded;
@@ -112,13 +154,18 @@ export class LessonPanel {
   show(i) {
     this.index = i;
     const lesson = this.lessons[i];
-    const previous = el('button', { type: 'button', textContent: '← Previous', disabled: i === 0 });
-    const next = el('button', { type: 'button', textContent: 'Next →', disabled: i === this.lessons.length - 1 });
-    const close = el('button', { type: 'button', className: 'close', textContent: 'Close lesson' });
+    const text = lessonText(lesson);
+    const previous = el('button', { type: 'button', textContent: t('lesson-previous'), disabled: i === 0 });
+    const next = el('button', {
+      type: 'button',
+      textContent: t('lesson-next'),
+      disabled: i === this.lessons.length - 1,
+    });
+    const close = el('button', { type: 'button', className: 'close', textContent: t('lesson-close') });
     // Presentation mode shows the label's first words only (style), and reads it whole.
     const copy = el('button', { type: 'button', className: 'copy-lesson' }, [
-      'Copy link',
-      el('span', { className: 'rest', textContent: ' to this lesson' }),
+      t('lesson-copy-link-short'),
+      el('span', { className: 'rest', textContent: t('lesson-copy-link-rest') }),
     ]);
     const copied = el('p', { className: 'hint', role: 'status' });
     copy.addEventListener('click', () => copyLink(lesson, copied));
@@ -126,30 +173,30 @@ export class LessonPanel {
     next.addEventListener('click', () => this.open(i + 1));
     close.addEventListener('click', () => this.close());
     const hint = el('details', { className: 'hint' }, [
-      el('summary', { textContent: 'Hint' }),
-      el('p', { textContent: lesson.hint }),
+      el('summary', { textContent: t('lesson-hint') }),
+      el('p', { textContent: text.hint }),
     ]);
     const answer = el('details', { className: 'answer' }, [
-      el('summary', { textContent: 'Show answer (for the lecturer)' }),
-      el('p', { textContent: lesson.answer }),
+      el('summary', { textContent: t('lesson-show-answer') }),
+      el('p', { textContent: text.answer }),
     ]);
     // The parts in reading order; presentation mode (style) puts the question under the title
     // and lets what to look for, the hint and the answer scroll in their own boxes below it.
     this.panel.replaceChildren(
       close,
       el('p', { className: 'lesson-count' }, [
-        `Lesson ${i + 1} of ${this.lessons.length}`,
-        el('span', { className: 'lesson-run', textContent: ` · run ${lesson.run}` }),
+        t('lesson-count', { number: i + 1, count: this.lessons.length }),
+        el('span', { className: 'lesson-run', textContent: t('lesson-run', { run: lesson.run }) }),
       ]),
-      el('h2', { textContent: lesson.title, tabIndex: -1 }),
+      el('h2', { textContent: text.title, tabIndex: -1 }),
       el('div', { className: 'own-settings warning', hidden: true }),
       el('div', { className: 'lesson-look' }, [
-        el('h3', { textContent: 'What to look for' }),
-        el('p', { className: 'look', textContent: lesson.look }),
+        el('h3', { textContent: t('lesson-look-head') }),
+        el('p', { className: 'look', textContent: text.look }),
       ]),
       el('div', { className: 'lesson-question' }, [
-        el('h3', { className: 'question-head', textContent: 'Question' }),
-        el('p', { className: 'question', textContent: lesson.question }),
+        el('h3', { className: 'question-head', textContent: t('lesson-question-head') }),
+        el('p', { className: 'question', textContent: text.question }),
       ]),
       el('div', { className: 'lesson-more' }, [hint, answer]),
       el('div', { className: 'buttons' }, [previous, next, copy]),
@@ -169,13 +216,15 @@ export class LessonPanel {
    * none; the address's scenario is loaded by the caller.
    * @param {string | null} id
    */
-  follow(id) {
+  async follow(id) {
     const i = id === null ? -1 : this.lessons.findIndex((l) => l.id === id);
     const me = ++this.opened;
     if (i < 0) {
       if (this.index !== null) this.close(false);
       return;
     }
+    await this.texts();
+    if (me !== this.opened) return;
     if (i !== this.index) this.show(i);
     this.compare(i, location.search.slice(1) || null, me);
   }
@@ -188,11 +237,11 @@ export class LessonPanel {
    * @param {number} i
    */
   showOwn(own, differences, i) {
-    const back = el('button', { type: 'button', textContent: 'Load the lesson’s run' });
+    const back = el('button', { type: 'button', textContent: t('lesson-load-run') });
     back.addEventListener('click', () => this.open(i));
     own.replaceChildren(
       el('p', {
-        textContent: `This link holds settings of its own, and they are shown as it has them, not the lesson’s run: ${differences.join('; ')}. What the lesson says of its run need not hold for them.`,
+        textContent: t('lesson-own-settings', { differences: differences.join('; ') }),
       }),
       back,
     );

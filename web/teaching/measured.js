@@ -130,18 +130,6 @@ export const withoutPlaceholders = (template) => template.replace(PLACEHOLDER, '
 export const LESSON_TEXTS = ['title', 'look', 'question', 'hint', 'answer'];
 
 /**
- * `lesson` with its texts rendered from `table`.
- * @template {Record<(typeof LESSON_TEXTS)[number], string>} L
- * @param {L} lesson
- * @param {Table} table
- * @returns {L}
- */
-export const renderLesson = (lesson, table) => ({
-  ...lesson,
-  ...Object.fromEntries(LESSON_TEXTS.map((k) => [k, render(lesson[k], table)])),
-});
-
-/**
  * The Fluent variable of measurement `id` in a message file: `step.settle.min` is
  * `$step-settle-min`, and the number of its noise draws `$step-settle-min--draws` (ids hold no
  * hyphen, so the spelling reads back).

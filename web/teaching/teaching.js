@@ -1,11 +1,12 @@
 // The guided lessons, in order: the run a lesson opens (a preset, with overrides where the lesson
-// needs a longer run or another setting), what to look for, a question that the page's figures
-// answer, a hint, and the answer for the lecturer. Each is a template whose numbers are named
-// measurements of the table in web/teaching/measurements/ (web/teaching/measured.js renders
-// them); its `holds` lists the conclusions its words state, each checked on the table by
-// tests/measurements.test.mjs, and its `givens` the settings its words name. A lesson's `id` is
-// its link's name (`#lesson=ID`), which never changes: a link to a lesson outlives lessons added
-// or reordered.
+// needs a longer run or another setting) and the plot its question is about. What a student reads
+// (the title, what to look for, a question that the page's figures answer, a hint, and the answer
+// for the lecturer) are the messages `ID-title`, `ID-look`, … of web/locales/LANG/lessons.ftl,
+// whose numbers are variables naming measurements of the table in web/teaching/measurements/
+// (web/teaching/measured.js). A lesson's `holds` lists the conclusions its words state, each
+// checked on the table by tests/measurements.test.mjs, and its `givens` the settings its English
+// words name. A lesson's `id` is its link's name (`#lesson=ID`), which never changes: a link to a
+// lesson outlives lessons added or reordered.
 import stepResponse from './lesson-text/step-response.js';
 import tracking200hz from './lesson-text/tracking-200hz.js';
 import observerBias from './lesson-text/observer-bias.js';
@@ -22,12 +23,12 @@ import deriveSteps from './lesson-text/derive-steps.js';
 import robustTerms from './lesson-text/robust-terms.js';
 
 /**
- * A lesson: its link's name, its run, the texts a student reads, the conclusions its words state
+ * A lesson: its link's name, its run, the conclusions its texts state
  * and the settings they name, the tab it opens (the Trajectories tab otherwise), the model-error
  * map it fills in, and the plot its question is about: the `data-plot` id of a plot in that tab (a
  * trajectory plot's id, a walkthrough plot's `SECTION-KEY`, or `map`), which presentation mode
  * shows whole beside the question.
- * @typedef {{id: string, run: string, title: string, look: string, question: string, hint: string, answer: string,
+ * @typedef {{id: string, run: string,
  *   holds: string[], givens: string[], tab?: string, map?: string, plot: string}} Lesson
  */
 

@@ -4,3 +4,8 @@
 ## The header
 
 language-menu = Language
+
+## Loading the lessons
+
+# $reason is the browser's reason, in its words.
+lessons-not-loaded = The lessons’ texts could not be loaded: { $reason }. Open the Lessons tab again to retry.
