@@ -5,16 +5,10 @@ import { FluentBundle, FluentNumber, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
 import { DOMLocalization } from '@fluent/dom';
 import { EN_PAGE, FILES } from './catalog.js';
+import { LANGUAGES } from './languages.js';
 
-/** The languages the page speaks, each by its code and its own name. */
-export const LANGUAGES = /** @type {const} */ ([
-  ['en', 'English'],
-  ['de', 'Deutsch'],
-  ['es', 'Español'],
-  ['fr', 'Français'],
-  ['zh-CN', '简体中文'],
-  ['ja', '日本語'],
-]);
+export { LANGUAGES };
+
 const CODES = LANGUAGES.map(([code]) => code);
 
 /**
