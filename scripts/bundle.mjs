@@ -142,7 +142,10 @@ const tables = readdirSync(TABLES_DIR)
 // (the page needs it before its first plot); every other file is fetched when its language is
 // shown, and the teaching part when a lesson or the walkthrough is first opened.
 const LOCALES = join('web', 'locales');
-const PARTS = { page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', 'core.ftl'], teaching: ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'] };
+const PARTS = {
+  page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', 'core.ftl'],
+  teaching: ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'],
+};
 /** @type {Record<string, Record<string, string>>} */
 const localeFiles = {};
 let enPage = '';

@@ -13,8 +13,9 @@
 // `imlab claims --write docs/measured/NAME.csv`); without `--write` it lists the numbers that
 // differ and exits with 1. tests/measurements.test.mjs checks the same, and that no other digit of
 // a guide's prose is a typed measurement.
-import { readFileSync, readdirSync, writeFileSync } from 'node:fs';
+import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { parseTables, render } from '../web/teaching/measured.js';
+import { LANGS } from './l10n-lint.mjs';
 
 const DOCS = new URL('../docs/', import.meta.url).pathname;
 export const TABLES = `${DOCS}measured/`;
@@ -24,14 +25,24 @@ export const MARKED = /([−-]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?)?<!--([A-Za-
 const DECLARATIONS = /<!--measured\n([\s\S]*?)-->/;
 
 /**
- * Every measured guide: its name, its Markdown's path, its table's path.
+ * Every measured guide, its translations (`docs/LANG/NAME.md`, read against the same table) after
+ * the English: its name (`NAME` or `LANG/NAME`), its Markdown's path, its table's path.
  * @returns {{ name: string, doc: string, table: string }[]}
  */
-export const measuredDocs = () =>
-  readdirSync(TABLES)
+export function measuredDocs() {
+  const english = readdirSync(TABLES)
     .filter((f) => f.endsWith('.csv'))
     .sort()
     .map((f) => ({ name: f.slice(0, -4), doc: `${DOCS}${f.slice(0, -4)}.md`, table: TABLES + f }));
+  const translated = readdirSync(DOCS, { withFileTypes: true })
+    .filter((d) => d.isDirectory() && LANGS.includes(d.name))
+    .flatMap((d) =>
+      english
+        .filter((g) => existsSync(`${DOCS}${d.name}/${g.name}.md`))
+        .map((g) => ({ ...g, name: `${d.name}/${g.name}`, doc: `${DOCS}${d.name}/${g.name}.md` })),
+    );
+  return [...english, ...translated];
+}
 
 /**
  * The conditions (`holds:`) and settings (`given:`) a guide declares.

@@ -9,6 +9,7 @@ WASM_PACK_VERSION=0.15.1
 need_apt=()
 command -v wasm-opt >/dev/null || need_apt+=(binaryen)
 [ -x /usr/bin/chromium ] || need_apt+=(chromium)
+fc-list :lang=ja | grep -q . || need_apt+=(fonts-noto-cjk) # renders Chinese and Japanese text
 if [ ${#need_apt[@]} -gt 0 ]; then
   echo "setup: apt-get install ${need_apt[*]}"
   apt-get update -qq

@@ -31,6 +31,14 @@ self.addEventListener('activate', (event) =>
   ),
 );
 
+// The page names the files of the language it shows (`{keep: [path, …]}`), once this worker is
+// active: they are kept for offline use, and no other language's are fetched.
+self.addEventListener('message', (event) => {
+  const keep = event.data?.keep;
+  if (!Array.isArray(keep) || !keep.every((path) => typeof path === 'string' && path.startsWith('locales/'))) return;
+  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(keep)));
+});
+
 self.addEventListener('fetch', (event) => {
   if (event.request.method !== 'GET' || !event.request.url.startsWith(self.location.origin)) return;
   event.respondWith(

@@ -188,7 +188,7 @@ for (const { name, doc, table } of DOCS) {
     const own = parseTables([readFileSync(table, 'utf8')]);
     const { holds: conditions, givens } = declarations(text);
     const named = new Set(markedIn(text));
-    for (const id of named) assert.ok(own.has(id), `${id}: not in docs/measured/${name}.csv`);
+    for (const id of named) assert.ok(own.has(id), `${id}: not in ${table}`);
     assert.ok(
       renderDoc(text, own) === text,
       `its numbers differ from the table: node scripts/measured-docs.mjs --write`,

@@ -27,7 +27,7 @@ import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createStale } from './ui/stale.js';
-import { chooseLanguage, t, useLanguage } from './l10n/l10n.js';
+import { chooseLanguage, languageFiles, t, useLanguage } from './l10n/l10n.js';
 import { wireLanguageMenu } from './ui/language.js';
 
 /** @import * as P from './worker/protocol.js' */
@@ -59,7 +59,11 @@ function registerServiceWorker() {
   const refused = () => (document.body.dataset.offline = 'refused');
   try {
     // A sandboxed frame refuses even the look at navigator.serviceWorker.
-    navigator.serviceWorker?.register('sw.js').then(() => (document.body.dataset.offline = 'kept'), refused);
+    navigator.serviceWorker?.register('sw.js').then(async () => {
+      // Kept offline: the language shown, not the others.
+      (await navigator.serviceWorker.ready).active?.postMessage({ keep: languageFiles() });
+      document.body.dataset.offline = 'kept';
+    }, refused);
   } catch {
     refused();
   }

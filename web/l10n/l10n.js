@@ -26,8 +26,6 @@ export function chooseLanguage(fragmentLang, preferred) {
 /** The language shown. */
 export let language = 'en';
 let bundle = new FluentBundle('en', { useIsolating: false });
-/** @type {Set<string>} the parts of the messages loaded */
-const loaded = new Set();
 /** @type {Map<string, Promise<void>>} */
 const loading = new Map();
 
@@ -49,12 +47,10 @@ function add(text, name) {
 export async function useLanguage(lang) {
   language = lang;
   bundle = new FluentBundle(lang, { useIsolating: false });
-  loaded.clear();
   loading.clear();
   document.documentElement.lang = lang;
   if (lang === 'en') add(EN_PAGE, 'en/page');
   else await fetchPart('page');
-  loaded.add('page');
   if (lang !== 'en') await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
 }
 
@@ -79,14 +75,14 @@ async function fetchPart(part) {
 export function loadTeaching() {
   let promise = loading.get('teaching');
   if (!promise) {
-    promise = fetchPart('teaching').then(() => void loaded.add('teaching'));
+    promise = fetchPart('teaching');
     loading.set('teaching', promise);
   }
   return promise;
 }
 
-/** Whether the teaching texts are loaded. */
-export const teachingLoaded = () => loaded.has('teaching');
+/** The message files of the language shown that the page fetches (the service worker keeps them). */
+export const languageFiles = () => Object.values(FILES[language] ?? {});
 
 /**
  * The message `id` (or its attribute, `id.attr`) with `args`, in the language shown. A message the

@@ -16,8 +16,14 @@ export function withLanguage(href) {
   return url.href;
 }
 
-/** Fills the menu; choosing a language reloads the page in it, with the address's run. */
+/**
+ * Fills the menu (choosing a language reloads the page in it, with the address's run) and points
+ * the student guide's links at its translation.
+ */
 export function wireLanguageMenu() {
+  if (language !== 'en')
+    for (const link of document.querySelectorAll('a[href="docs/student-guide.html"]'))
+      link.setAttribute('href', `docs/${language}/student-guide.html`);
   const menu = $('language', HTMLSelectElement);
   menu.replaceChildren(...LANGUAGES.map(([code, name]) => new Option(name, code, false, code === language)));
   menu.addEventListener('change', () => {
