@@ -110,10 +110,33 @@ export function problems(lang, file, given) {
   return out;
 }
 
+/**
+ * The labels of the page that `lang`'s lessons quote (web/locales/LANG/ui-terms.tsv: the English
+ * label, the words the lessons use) that the page's own message for that label does not say.
+ * @param {string} lang
+ */
+export function quotedLabels(lang) {
+  const path = `${ROOT}${lang}/ui-terms.tsv`;
+  if (!existsSync(path)) return [];
+  const files = readdirSync(`${ROOT}en`).filter((f) => f.endsWith('.ftl') && existsSync(`${ROOT}${lang}/${f}`));
+  const en = new Map(files.flatMap((f) => [...messages(readFileSync(`${ROOT}en/${f}`, 'utf8'))]));
+  const tr = new Map(files.flatMap((f) => [...messages(readFileSync(`${ROOT}${lang}/${f}`, 'utf8'))]));
+  const out = [];
+  for (const line of readFileSync(path, 'utf8').split('\n').slice(1)) {
+    const [label, words] = line.split('\t');
+    if (!label || !words) continue;
+    const ids = [...en].filter(([, text]) => text.trim() === label.trim()).map(([id]) => id);
+    for (const id of ids)
+      if (tr.has(id) && tr.get(id).trim() !== words.trim())
+        out.push(`${lang}: the lessons quote “${label}” as “${words}”, the page (${id}) says “${tr.get(id)}”`);
+  }
+  return out;
+}
+
 if (process.argv[1] === new URL(import.meta.url).pathname) {
   const langs = process.argv.length > 2 ? process.argv.slice(2) : LANGS;
   const files = readdirSync(`${ROOT}en`).filter((f) => f.endsWith('.ftl'));
-  const found = langs.flatMap((lang) => files.flatMap((f) => problems(lang, f)));
+  const found = langs.flatMap((lang) => [...files.flatMap((f) => problems(lang, f)), ...quotedLabels(lang)]);
   for (const p of found) console.log(p);
   console.log(`${found.length} problems`);
   process.exit(found.length ? 1 : 0);

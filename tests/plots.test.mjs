@@ -301,7 +301,7 @@ test('each lesson opens its panel with the question, a hint and an answer toggle
         assert.equal(await page.isVisible('#map-run'), true);
         assert.equal(await page.inputValue('[name=axis1]'), LESSONS[i].map.split(';')[0]);
       }
-      if (i < lessons.length - 1) await page.click('#lesson-panel >> text=Next →');
+      if (i < lessons.length - 1) await page.click('#lesson-panel .next');
     }
   }));
 

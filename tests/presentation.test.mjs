@@ -72,7 +72,7 @@ async function openLesson(page, i) {
   if (i === 0) {
     await page.click('#tab-lessons');
     await page.click('#lessons [data-lesson] >> nth=0');
-  } else await page.click('#lesson-panel >> text=Next →');
+  } else await page.click('#lesson-panel .next');
   await page.waitForFunction((n) => Number(document.body.dataset.started ?? 0) > n, before);
   // A lesson's run may run away (low speed): that is what it shows.
   assert.match(await settled(page), /^(done|failed)$/, lesson.id);
@@ -107,7 +107,7 @@ describe('presentation mode, every lesson', { concurrency: 2 }, () => {
           assert.equal(at.plot, lesson.plot, `${where}: the plot marked`);
           assert.equal(at.tab, `panel-${lesson.tab ?? 'plots'}`, `${where}: the plot's tab`);
           if (at.column[0] > at.column[1]) at.out.push(`its column scrolls: ${at.column[0]} > ${at.column[1]} px`);
-          if (at.size < 20) at.out.push(`its question is set at ${at.size} px`);
+          if (at.size < 24) at.out.push(`its question is set at ${at.size} px`);
           if (!at.beside) at.out.push('its question does not stand beside the plot');
           found.push(...at.out.map((o) => `${where}: ${o}`));
           if (lesson.map) {

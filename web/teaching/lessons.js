@@ -155,9 +155,15 @@ export class LessonPanel {
     this.index = i;
     const lesson = this.lessons[i];
     const text = lessonText(lesson);
-    const previous = el('button', { type: 'button', textContent: t('lesson-previous'), disabled: i === 0 });
+    const previous = el('button', {
+      type: 'button',
+      className: 'previous',
+      textContent: t('lesson-previous'),
+      disabled: i === 0,
+    });
     const next = el('button', {
       type: 'button',
+      className: 'next',
       textContent: t('lesson-next'),
       disabled: i === this.lessons.length - 1,
     });
