@@ -171,7 +171,7 @@ challenge-stale = This verdict is
     .export = “Copy submission link” copies the link of the settings it checked.
 # The panel's heading while the challenge loads.
 challenge-heading = Challenge
-# $reason: the core's message, in English for now (so in every challenge-… message with a $reason).
+# $reason, here and in the messages below: the core's message, in English for now.
 challenge-open-failed = The challenge could not be opened: { $reason }. The page shows the default scenario instead.
 challenge-link-rejected = This challenge link was rejected: { $reason }. The page shows the default scenario instead.
 challenge-submission-another = This submission link belongs to another challenge (its challenge part was edited): it was not graded.
@@ -185,7 +185,7 @@ challenge-checklist = Checklist
 challenge-task = The task in full
 challenge-verdict-pending = Not checked yet: the first run is being computed.
 # A criterion before the first check: $label is its figure's label, $figure the figure's name,
-# e.g. "2 % settling time of ω after the step (settling_time): not checked yet".
+# e.g. "peak stator current |i_s| (current_peak): not checked yet".
 challenge-need-pending = { $label } ({ $figure }): not checked yet
 challenge-verdict-link-refused = ✗ Not graded: the settings in the link were refused (see above). Change the allowed settings and run.
 challenge-verdict-cancelled = ✗ Check cancelled: not graded. Run again to check.
@@ -253,16 +253,17 @@ checklist-failed-variants =
 checklist-pass = ✓ pass
 checklist-fail = ✗ fail
 # A criterion judged: $label is its figure's label, $value the value measured (checklist-value-unit,
-# or checklist-not-measured), $bound the bound in the core's words, e.g. "≤ 0.02 s".
+# or checklist-not-measured), $bound the bound in the core's words, e.g. "≤ 0.004 s".
 checklist-criterion = { $label }: { $value }, needs { $bound }
 # As checklist-criterion, judged on a variant's run: $run is that run's settings, e.g. "seed=3".
 checklist-criterion-worst = { $label }: { $value }, needs { $bound } (worst run: { $run })
-# Why a criterion fails, after it: $reason is the core's, e.g. "ran away".
+# Why a criterion fails, after it: $reason is the core's, e.g. "above the bound".
 checklist-reason = — { $reason }
 
 ## Challenge panel: the knobs of the allowed settings (web/challenge/knobs.js)
 
-# A setting's description (the core's, in English for now) and its unit, e.g. "gain k1 (1/s)".
+# A setting's description (the core's, in English for now) and its unit, e.g.
+# "speed-error rate k1 (1/s)".
 challenge-knob-doc = { $doc } ({ $unit })
 # What a setting may be: $options are its choices, joined by commas, e.g. "euler, rk4".
 challenge-allowed-choice = allowed: one of { $options }
@@ -323,7 +324,7 @@ compose-brief-not-copied = Select the task above and copy it.
 compose-allow-legend = Fields the student may change
 compose-field = Field
 # An entry of the field menu: the field's name and the core's description of it, e.g.
-# "k1 — gain k1".
+# "k1 — speed-error rate k1".
 compose-field-option = { $field } — { $doc }
 compose-add = Add
 compose-remove = Remove
