@@ -5,6 +5,8 @@ import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { fittedRange } from '../plots/ranges.js';
 import { pageNumbers, percent } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
+import { integer, precise } from './digits.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @typedef {P.Jobs['sweep-plan']['result']} PlanView */
@@ -71,18 +73,22 @@ function bodePlot(title, unit, freqs, series, width, marker) {
  * @param {SweepSummary} summary
  */
 function peakCell({ peak_current: peak, rated_current: rated, over_rating: above }) {
-  if (peak === null || rated === null) return el('td', { textContent: 'none measured' });
-  const text = `${peak.toPrecision(3)} (rated ${rated.toPrecision(3)})`;
+  if (peak === null || rated === null) return el('td', { textContent: t('sweep-peak-none') });
+  const args = { peak: precise(peak, 3), rated: precise(rated, 3) };
   return above.length
     ? el('td', {
         className: 'over-rating',
-        textContent: `${text}; above the rating at ${above.length}: ${above.map(hz).join(', ')}`,
+        textContent: t('sweep-peak-over', {
+          ...args,
+          count: integer(above.length),
+          frequencies: above.map(hz).join(', '),
+        }),
       })
-    : el('td', { textContent: text });
+    : el('td', { textContent: t('sweep-peak', args) });
 }
 
 /** @param {number} f */
-const hz = (f) => `${f.toPrecision(4)} Hz`;
+const hz = (f) => t('sweep-hz', { value: precise(f, 4) });
 
 export class Analysis {
   /**
@@ -181,12 +187,20 @@ export class Analysis {
       bodeBox.append(
         el('details', { className: 'sweep-unsettled' }, [
           el('summary', {
-            textContent: `${flagged.length} point${flagged.length > 1 ? 's' : ''} had not settled (hollow markers): the bandwidth and the phase at 200 Hz are never read off them. Longer runs may settle them.`,
+            textContent: t('sweep-unsettled', { count: integer(flagged.length) }),
           }),
           el(
             'ul',
             {},
-            flagged.map(({ v, p }) => el('li', { textContent: `${out[v].label}, ${hz(p.freq)}: ${p.unsettled}` })),
+            flagged.map(({ v, p }) =>
+              el('li', {
+                textContent: t('sweep-unsettled-point', {
+                  variant: out[v].label,
+                  frequency: hz(p.freq),
+                  reason: String(p.unsettled),
+                }),
+              }),
+            ),
           ),
         ]),
       );
@@ -197,8 +211,8 @@ export class Analysis {
     const dash = { rk4: [6, 4], perfect: [2, 3], ifocpi: [6, 4] };
     /** @type {[string, string, 'gain_db' | 'phase', [string, number] | null][]} */
     const plots = [
-      ['Magnitude of ω/ω_d', 'dB', 'gain_db', ['−3 dB', -3]],
-      ['Phase of ω against ω_d', 'degrees', 'phase', null],
+      [t('sweep-plot-magnitude'), 'dB', 'gain_db', ['−3 dB', -3]],
+      [t('sweep-plot-phase'), t('sweep-axis-degrees'), 'phase', null],
     ];
     for (const [title, unit, key, marker] of plots) {
       const series = variants.flatMap((v) => [
@@ -206,7 +220,7 @@ export class Analysis {
         ...(out[v].summary.unsettled
           ? [
               /** @type {BodeSeries} */ ([
-                `${out[v].label}, not settled`,
+                t('sweep-series-unsettled', { variant: out[v].label }),
                 COLORS[v],
                 column(v, key, true),
                 undefined,
@@ -225,34 +239,34 @@ export class Analysis {
         'tr',
         {},
         [
-          'variant',
-          '−3 dB bandwidth',
-          'phase at 200 Hz',
-          'worst saturation',
-          'failed points',
-          'unsettled points',
-          'peak |i_s| (A)',
-        ].map((h) => el('th', { textContent: h })),
+          'sweep-head-variant',
+          'sweep-head-bandwidth',
+          'sweep-head-phase',
+          'sweep-head-saturation',
+          'sweep-head-failed',
+          'sweep-head-unsettled',
+          'sweep-head-peak',
+        ].map((h) => el('th', { textContent: t(h) })),
       ),
     );
     for (const v of variants) {
       const { points, summary, label } = out[v];
       /**
        * @param {number | null} x
-       * @param {string} unit
-       * @param {string} missing
+       * @param {string} id the message writing `x` with its unit
+       * @param {string} missing the message saying why there is no `x`
        */
-      const fmt = (x, unit, missing) => (x == null ? missing : `${x.toPrecision(4)} ${unit}`);
+      const fmt = (x, id, missing) => (x == null ? t(missing) : t(id, { value: precise(x, 4) }));
       const bandwidth = summary.bandwidth_unsettled
-        ? 'not given: it would rest on a point that had not settled'
+        ? t('sweep-bandwidth-unsettled')
         : summary.below_grid
-          ? 'below the lowest frequency'
-          : fmt(summary.bandwidth, 'Hz', 'not reached in the grid');
+          ? t('sweep-bandwidth-below')
+          : fmt(summary.bandwidth, 'sweep-hz', 'sweep-not-reached');
       // The phase is interpolated between settled points only.
       const phase = fmt(
         summary.phase_at_200,
-        '°',
-        summary.unsettled ? 'not reached by the settled points' : 'not reached in the grid',
+        'sweep-degrees',
+        summary.unsettled ? 'sweep-phase-not-reached-settled' : 'sweep-not-reached',
       );
       const unsettled = points.filter((p) => p.unsettled).map((p) => hz(p.freq));
       const row = el(
@@ -265,7 +279,9 @@ export class Analysis {
           // None when no point ran: nothing to say, not 0 %.
           summary.worst_saturation === null ? '–' : percent(summary.worst_saturation),
           String(summary.failed),
-          unsettled.length ? `${unsettled.length}: ${unsettled.join(', ')}` : '0',
+          unsettled.length
+            ? t('sweep-unsettled-cell', { count: integer(unsettled.length), frequencies: unsettled.join(', ') })
+            : '0',
         ].map((c) => el('td', { textContent: c })),
       );
       row.append(peakCell(summary));
@@ -308,8 +324,8 @@ export class Analysis {
     // The same colours as ω − ω_d and ω − ω̂ on the Trajectories tab.
     /** @type {[string, P.Jobs['bands']['result']['error'], string][]} */
     const plots = [
-      ['Speed error ω − ω_d over seeds (mean, min, max)', bands.error, '#d62728'],
-      ['Estimation error ω − ω̂ over seeds (mean, min, max)', bands.estimate, '#8c564b'],
+      [t('seeds-plot-error'), bands.error, '#d62728'],
+      [t('seeds-plot-estimate'), bands.estimate, '#8c564b'],
     ];
     for (const [title, b, color] of plots) {
       /** @type {uPlot.Options} */
@@ -320,9 +336,9 @@ export class Analysis {
         scales: { x: { time: false }, y: { range } },
         series: [
           { label: 't (s)' },
-          { label: 'mean', stroke: color, width: 2 },
-          { label: 'min', stroke: '#8a8a8a', dash: [3, 3] },
-          { label: 'max', stroke: '#8a8a8a', dash: [3, 3] },
+          { label: t('seeds-series-mean'), stroke: color, width: 2 },
+          { label: t('seeds-series-min'), stroke: '#8a8a8a', dash: [3, 3] },
+          { label: t('seeds-series-max'), stroke: '#8a8a8a', dash: [3, 3] },
         ],
         bands: [{ series: /** @type {uPlot.Band.Bounds} */ ([3, 2]), fill: 'rgba(31,119,180,0.15)' }],
         axes: [{ label: 't (s)' }, { label: 'rad/s', size: 70 }],

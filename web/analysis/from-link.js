@@ -3,16 +3,17 @@
 import { say } from '../ui/page.js';
 import { fragment } from '../ui/url.js';
 import { excerpt } from '../ui/quote.js';
+import { t } from '../l10n/l10n.js';
 
 /**
  * Reads the fragment `name` now and returns `afterRun()`: the first call fills the tool's form from
  * it (`fill(text)`, which rejects text it cannot take), opens the Analysis tab with
- * `showTab(name)` and starts `run()`; a refused text is said, naming the tool as `what`. Later
- * calls do nothing.
- * @param {{name: string, what: string, fill: (text: string) => unknown, run: () => unknown,
+ * `showTab(name)` and starts `run()`; a refused text is said by the message `refused` (of the
+ * fragment as `$link` and the reason as `$reason`). Later calls do nothing.
+ * @param {{name: string, refused: string, fill: (text: string) => unknown, run: () => unknown,
  *   showTab: (name: string) => void}} tool
  */
-export function runFromLink({ name, what, fill, run, showTab }) {
+export function runFromLink({ name, refused, fill, run, showTab }) {
   let shared = fragment(name); // from the link that opened the page
   return async function afterRun() {
     const text = shared;
@@ -23,7 +24,7 @@ export function runFromLink({ name, what, fill, run, showTab }) {
       showTab('analysis');
       run();
     } catch (e) {
-      say(`The ${what} in the address (#${name}=${excerpt(text)}) was not run: ${/** @type {Error} */ (e).message}.`);
+      say(t(refused, { link: `#${name}=${excerpt(text)}`, reason: /** @type {Error} */ (e).message }));
     }
   };
 }

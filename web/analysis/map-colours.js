@@ -1,10 +1,12 @@
 // The model-error map's colour scale, and the number format of its cells and axes.
+import { t } from '../l10n/l10n.js';
+import { sig } from './digits.js';
 
 /**
  * A number for a cell or an axis tick: four significant digits.
  * @param {number} v
  */
-export const fmt = (v) => (Number.isFinite(v) ? Number(v.toPrecision(4)).toString() : '—');
+export const fmt = (v) => (Number.isFinite(v) ? sig(v, 4) : '—');
 
 // Colours of the heat map: light to dark for values of one sign (readable in greyscale), and
 // blue through white to red for values of both signs, white at zero.
@@ -38,7 +40,7 @@ export function colourScale(values) {
   };
   if (min < 0 && max > 0) {
     const m = Math.max(-min, max);
-    return { of: (v) => pick(DIVERGING, 0.5 + v / (2 * m)), words: `blue −${fmt(m)} through white 0 to red ${fmt(m)}` };
+    return { of: (v) => pick(DIVERGING, 0.5 + v / (2 * m)), words: t('map-scale-diverging', { max: fmt(m) }) };
   }
   const log = min > 0 && max / min > 10;
   /** @type {(v: number) => number} */
@@ -46,6 +48,6 @@ export function colourScale(values) {
   const [lo, hi] = [f(min), f(max)];
   return {
     of: (v) => pick(SCALE, hi > lo ? (f(v) - lo) / (hi - lo) : 0.5),
-    words: `${log ? 'log' : 'linear'} scale from light ${fmt(min)} to dark ${fmt(max)}`,
+    words: t(log ? 'map-scale-log' : 'map-scale-linear', { min: fmt(min), max: fmt(max) }),
   };
 }

@@ -5,6 +5,8 @@ import { el } from '../ui/dom.js';
 import { fmt } from './map-colours.js';
 import { pageNumbers } from '../plots/numbers.js';
 import { axisFont } from '../plots/options.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from './digits.js';
 
 /** @typedef {import('./robust.js').MapCell} MapCell */
 
@@ -34,15 +36,15 @@ export function bandPlot(box, view, scale) {
   const width = Math.max(320, box.clientWidth - 10);
   /** @type {uPlot.Options} */
   const opts = {
-    title: `${figure.label} over the seeds: median, and min–max band`,
+    title: t('map-plot-title', { figure: figure.label }),
     width,
     height: 280,
     scales: { x: { time: false } },
     series: [
       { label: axisName(0) },
-      { label: 'min', stroke: '#6baed6', width: scale },
-      { label: 'median', stroke: '#08519c', width: 2 * scale, points: { show: true } },
-      { label: 'max', stroke: '#6baed6', width: scale },
+      { label: t('map-series-min'), stroke: '#6baed6', width: scale },
+      { label: t('map-series-median'), stroke: '#08519c', width: 2 * scale, points: { show: true } },
+      { label: t('map-series-max'), stroke: '#6baed6', width: scale },
     ],
     bands: [{ series: /** @type {uPlot.Band.Bounds} */ ([3, 1]), fill: 'rgba(107,174,214,0.25)' }],
     axes: [
@@ -56,17 +58,15 @@ export function bandPlot(box, view, scale) {
   const chart = new uPlot(pageNumbers(opts), [x, series[0], series[1], series[2]], div);
   const gaps = axes[0].values.map((_, i) => i).filter((i) => byIndex[i] && byIndex[i].ran_away > 0);
   if (gaps.length) {
-    const percent = axes[0].relative ? ' %' : '';
     const named = gaps.map((i) => {
       const cell = /** @type {MapCell} */ (byIndex[i]); // a gap is a cell that ran
-      return `${fmt(axisValue(0, i))}${percent} (${cell.ran_away} of ${cell.runs} seeds)`;
+      return t(axes[0].relative ? 'map-gap-percent' : 'map-gap', {
+        value: fmt(axisValue(0, i)),
+        ranAway: integer(cell.ran_away),
+        runs: integer(cell.runs),
+      });
     });
-    box.append(
-      el('p', {
-        className: 'map-gaps',
-        textContent: `Not drawn, because some seeds ran away there: ${named.join(', ')}.`,
-      }),
-    );
+    box.append(el('p', { className: 'map-gaps', textContent: t('map-gaps', { cells: named.join(', ') }) }));
   }
   return chart;
 }

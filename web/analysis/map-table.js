@@ -3,9 +3,19 @@
 // the seeds); two are a grid.
 import { el } from '../ui/dom.js';
 import { colourScale, fmt } from './map-colours.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from './digits.js';
 
 /** @typedef {import('./robust.js').MapCell} MapCell */
+/** @typedef {import('./robust.js').MapFigure} MapFigure */
 /** @typedef {import('./map-view.js').MapView} MapView */
+
+/**
+ * A figure's name as the map writes it: its label, and its unit if it has one.
+ * @param {MapFigure} figure
+ */
+export const figureName = (figure) =>
+  figure.unit ? t('map-figure-unit', { figure: figure.label, unit: figure.unit }) : figure.label;
 
 /**
  * The cell of one map cell: a button that opens its run, or 'not run'.
@@ -18,7 +28,7 @@ function cellOf(cell, view, scale, open) {
   const { k, figure, median } = view;
   const td = el('td');
   if (!cell) {
-    td.textContent = 'not run';
+    td.textContent = t('map-cell-not-run');
     td.className = 'map-missing';
     return td;
   }
@@ -29,7 +39,17 @@ function cellOf(cell, view, scale, open) {
   if (cell.over_rating > 0) lines.push(`I↑ ${cell.over_rating}/${held}`);
   if (cell.unsettled > 0) lines.push(`~ ${cell.unsettled}/${held}`);
   const button = el('button', { type: 'button', className: 'map-cell', textContent: lines.join(' ') });
-  button.title = `${cell.scenario}: ${cell.ran_away} of ${cell.runs} seeds ran away, ${cell.inconsistent} inconsistent, ${cell.over_rating} past the rated current, ${cell.unsettled} with the speed error not settled at the end; ${figure.label} ${fmt(cell.stats[k][0])} to ${fmt(cell.stats[k][2])}`;
+  button.title = t('map-cell-title', {
+    scenario: cell.scenario,
+    ranAway: integer(cell.ran_away),
+    runs: integer(cell.runs),
+    inconsistent: integer(cell.inconsistent),
+    overRating: integer(cell.over_rating),
+    unsettled: integer(cell.unsettled),
+    figure: figure.label,
+    min: fmt(cell.stats[k][0]),
+    max: fmt(cell.stats[k][2]),
+  });
   if (cell.over_rating > 0 || cell.unsettled > 0) button.classList.add('map-costly');
   if (cell.ran_away > 0) button.classList.add('map-ran-away');
   else if (Number.isFinite(median(cell))) {
@@ -50,7 +70,8 @@ function cellOf(cell, view, scale, open) {
 function gridRows(view, cell) {
   const { axes, axisValue, axisName, byIndex } = view;
   const [rows, cols] = [axes[0].values.length, axes[1].values.length];
-  const head = el('tr', {}, [el('th', { scope: 'col', textContent: `${axisName(0)} ↓ / ${axisName(1)} →` })]);
+  const corner = t('map-grid-corner', { rows: axisName(0), columns: axisName(1) });
+  const head = el('tr', {}, [el('th', { scope: 'col', textContent: corner })]);
   for (let j = 0; j < cols; j++) head.append(el('th', { scope: 'col', textContent: fmt(axisValue(1, j)) }));
   const trs = [head];
   for (let i = 0; i < rows; i++) {
@@ -71,13 +92,13 @@ function columnRows(view, cell) {
   const head = el(
     'tr',
     {},
-    [axisName(0), 'median', 'min – max'].map((h) => el('th', { scope: 'col', textContent: h })),
+    [axisName(0), t('map-head-median'), t('map-head-range')].map((h) => el('th', { scope: 'col', textContent: h })),
   );
   return [
     head,
     ...axes[0].values.map((_, i) => {
       const c = byIndex[i];
-      const range = c && c.ran_away === 0 ? `${fmt(c.stats[k][0])} – ${fmt(c.stats[k][2])}` : '';
+      const range = c && c.ran_away === 0 ? t('map-range', { min: fmt(c.stats[k][0]), max: fmt(c.stats[k][2]) }) : '';
       return el('tr', {}, [
         el('th', { scope: 'row', textContent: fmt(axisValue(0, i)) }),
         cell(c),
@@ -99,14 +120,19 @@ export function mapTable(view, open) {
   const scale = colourScale(values);
   /** @param {MapCell | undefined} c */
   const cell = (c) => cellOf(c, view, scale, open);
-  const t = el(
+  const table = el(
     'table',
     { className: 'map-table' },
     view.axes.length === 2 ? gridRows(view, cell) : columnRows(view, cell),
   );
   const key = el('p', {
     className: 'map-key',
-    textContent: `${figure.label}${figure.unit ? ` (${figure.unit})` : ''}, median over the seeds that did not run away (${seeds.length} seeds); colour: ${values.length ? scale.words : 'none'}. ✕ k/N: the run ran away on k of the N seeds (the run's own page says so, or it diverged), never coloured as a value; ⚠ the EKF was inconsistent; I↑ k/H: of the H seeds that held, k drew more than the motor's rated current after the start-up; ~ k/H: k ended with the speed error not settled (both outlined, and coloured by their median). Click a cell to run it (seed ${seeds[0]}).`,
+    textContent: t('map-key', {
+      figure: figureName(figure),
+      seeds: integer(seeds.length),
+      colours: values.length ? scale.words : t('map-scale-none'),
+      seed: String(seeds[0]),
+    }),
   });
-  return el('div', {}, [key, t]);
+  return el('div', {}, [key, table]);
 }

@@ -2,7 +2,7 @@
 // full grid, as a plot (one axis) and a table.
 import { el } from '../ui/dom.js';
 import { bandPlot } from './map-plot.js';
-import { mapTable } from './map-table.js';
+import { figureName, mapTable } from './map-table.js';
 
 /** @typedef {import('./robust.js').MapCell} MapCell */
 /** @typedef {import('./robust.js').MapFigure} MapFigure */
@@ -69,8 +69,7 @@ export function drawMap(box, drawn, k, open, scale) {
  */
 export function chosenFigure(select, figures) {
   if (!select.options.length) {
-    for (const f of figures)
-      select.append(el('option', { value: f.name, textContent: f.unit ? `${f.label} (${f.unit})` : f.label }));
+    for (const f of figures) select.append(el('option', { value: f.name, textContent: figureName(f) }));
   }
   return figures.findIndex((f) => f.name === select.value);
 }

@@ -10,7 +10,8 @@ import { setFragment } from '../ui/url.js';
 import { fillMapForm, mapFormParts } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';
 import { runFromLink } from './from-link.js';
-import { NOT_RUN } from '../ui/stale.js';
+import { num, t } from '../l10n/l10n.js';
+import { integer } from './digits.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
 
@@ -67,7 +68,7 @@ async function runCells(pool, map, status, progress) {
       runs[index] = result;
       if (++finished[Math.floor(index / per)] === per) document.body.dataset.mapCells = String(++cellsDone);
       progress.value = done / total;
-      status.textContent = `Running the map: ${done} of ${total} runs.`;
+      status.textContent = t('map-status-running', { done: integer(done), total: integer(total) });
     });
   } catch (e) {
     if (/** @type {Error} */ (e).message !== 'cancelled') throw e;
@@ -103,11 +104,11 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
   // The map's CSV stays on while the map is of an earlier scenario: it names that scenario.
   const shown = stale.add({
     name: 'map',
-    what: 'This map is',
-    press: '“Run map”',
+    what: t('map-stale'),
+    press: t('map-stale.press'),
     before: $('map-plot'),
     shows: [$('map-plot')],
-    exportNote: 'Its CSV names the scenario it was run for.',
+    exportNote: t('map-stale.export'),
     back: true,
   });
 
@@ -127,7 +128,7 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
     try {
       return await analysis.client.job('map-plan', { scenario, ...mapFormParts(form) });
     } catch (e) {
-      status.textContent = `The map was not run: ${/** @type {Error} */ (e).message}.`;
+      status.textContent = t('map-refused', { reason: /** @type {Error} */ (e).message });
       document.body.dataset.map = 'refused';
       return null;
     }
@@ -135,7 +136,7 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
 
   async function runMap() {
     if (!(await current())) {
-      status.textContent = `The map was not run: ${NOT_RUN}`;
+      status.textContent = t('map-not-run');
       document.body.dataset.map = 'refused';
       return;
     }
@@ -149,13 +150,13 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
     $('map-csv', HTMLButtonElement).disabled = true;
     progress.value = 0;
     Object.assign(document.body.dataset, { map: 'running', mapCells: '0' });
-    status.textContent = `Running ${map.cells.length} cells × ${per} seeds…`;
+    status.textContent = t('map-status-starting', { cells: integer(map.cells.length), seeds: integer(per) });
     const started = performance.now();
     let ran;
     try {
       ran = await runCells(pool, map, status, progress);
     } catch (e) {
-      status.textContent = `The map failed: ${/** @type {Error} */ (e).message}`;
+      status.textContent = t('map-failed', { reason: /** @type {Error} */ (e).message });
       document.body.dataset.map = 'failed';
       setRunning(false);
       return;
@@ -175,12 +176,18 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
       shown.ran(scenario);
       const ms = performance.now() - started;
       status.textContent = cancelled
-        ? `Map cancelled: ${cells.length} of ${map.cells.length} cells finished and are shown; the others were not run.`
-        : `${map.cells.length} cells × ${per} seeds (${map.seeds[0]}–${map.seeds.at(-1)}) in ${(ms / 1000).toFixed(1)} s.`;
+        ? t('map-status-cancelled', { finished: integer(cells.length), cells: integer(map.cells.length) })
+        : t('map-status-done', {
+            cells: integer(map.cells.length),
+            seeds: integer(per),
+            first: String(map.seeds[0]),
+            last: String(map.seeds.at(-1)),
+            seconds: num(ms / 1000, 1),
+          });
       document.body.dataset.map = cancelled ? 'cancelled' : 'done';
       $('map-csv', HTMLButtonElement).disabled = cells.length === 0;
     } catch (e) {
-      status.textContent = `The map failed: ${/** @type {Error} */ (e).message}`;
+      status.textContent = t('map-failed', { reason: /** @type {Error} */ (e).message });
       document.body.dataset.map = 'failed';
     } finally {
       setRunning(false);
@@ -200,7 +207,7 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
   /** After a run: a shared link with a map in its fragment runs that map, once. */
   const afterRun = runFromLink({
     name: 'robust',
-    what: 'map',
+    refused: 'map-link-refused',
     fill: (text) => fill(decodeURIComponent(text)),
     run: runMap,
     showTab,

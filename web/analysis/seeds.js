@@ -3,7 +3,8 @@
 import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 import { download } from '../ui/dom.js';
-import { NOT_RUN } from '../ui/stale.js';
+import { num, t } from '../l10n/l10n.js';
+import { integer } from './digits.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
 
@@ -24,12 +25,12 @@ export function createSeeds({ state, analysis, framing, current, stale }) {
   // The seeds' CSV does not name its scenario: it is off while the bands are of an earlier one.
   const shown = stale.add({
     name: 'seeds',
-    what: 'These seed bands are',
-    press: '“Run seeds”',
+    what: t('seeds-stale'),
+    press: t('seeds-stale.press'),
     before: $('seeds-plots'),
     shows: [$('seeds-plots')],
     exports: [$('seeds-csv', HTMLButtonElement)],
-    exportNote: 'Their CSV, which does not name its scenario, is off until then.',
+    exportNote: t('seeds-stale.export'),
     back: true,
   });
 
@@ -37,14 +38,14 @@ export function createSeeds({ state, analysis, framing, current, stale }) {
     const n = Number(seedCount().value);
     const status = $('seeds-status');
     if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
-      status.textContent = `seeds = ${seedCount().value}: expected a whole number from 1 to 1000.`;
+      status.textContent = t('seeds-count-invalid', { value: seedCount().value });
       return;
     }
     if (!(await current())) {
-      status.textContent = `The seeds were not run: ${NOT_RUN}`;
+      status.textContent = t('seeds-not-run');
       return;
     }
-    status.textContent = 'Running seeds…';
+    status.textContent = t('seeds-status-starting');
     const progress = $('seeds-progress', HTMLProgressElement);
     progress.value = 0;
     $('seeds-cancel', HTMLButtonElement).disabled = false;
@@ -54,18 +55,23 @@ export function createSeeds({ state, analysis, framing, current, stale }) {
       const first = Number(fieldValue(info, 'seed'));
       const out = await analysis.seeds(info.encoded, n, first, info.steps, (/** @type {number} */ p) => {
         progress.value = p;
-        status.textContent = `Running seeds: ${(p * 100).toFixed(0)} %`;
+        status.textContent = t('seeds-status-running', { percent: num(p * 100, 0) });
       });
       analysis.showSeeds(out, $('seeds-plots'), framing);
       seedsCsv = out.csv;
       $('seeds-csv', HTMLButtonElement).disabled = false;
       shown.ran(info.encoded);
-      status.textContent = `${out.bands.runs} of ${n} seeds (${first} to ${first + n - 1}) completed.`;
+      status.textContent = t('seeds-status-done', {
+        runs: integer(out.bands.runs),
+        seeds: integer(n),
+        first: String(first),
+        last: String(first + n - 1),
+      });
       document.body.dataset.seeds = 'done';
     } catch (e) {
       const { message } = /** @type {Error} */ (e);
       const cancelled = message === 'cancelled';
-      status.textContent = cancelled ? 'Seed runs cancelled.' : `Seed sweep failed: ${message}`;
+      status.textContent = cancelled ? t('seeds-status-cancelled') : t('seeds-status-failed', { reason: message });
       document.body.dataset.seeds = cancelled ? 'cancelled' : 'failed';
     } finally {
       $('seeds-cancel', HTMLButtonElement).disabled = true;

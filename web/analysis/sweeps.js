@@ -5,7 +5,8 @@ import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { runFromLink } from './from-link.js';
 import { createSeeds } from './seeds.js';
-import { NOT_RUN } from '../ui/stale.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from './digits.js';
 
 /**
  * The sweep form, its run and its link. `analysis` runs the jobs and draws their results;
@@ -28,12 +29,12 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
   // The sweep's CSV does not name its scenario: it is off while the sweep is of an earlier one.
   const shown = stale.add({
     name: 'sweep',
-    what: 'These Bode plots and this table are',
-    press: '“Run sweep”',
+    what: t('sweep-stale'),
+    press: t('sweep-stale.press'),
     before: $('sweep-table'),
     shows: [$('sweep-table'), $('bode')],
     exports: [csvButton],
-    exportNote: 'Their CSV, which does not name its scenario, is off until then.',
+    exportNote: t('sweep-stale.export'),
     back: true,
   });
 
@@ -56,21 +57,21 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
   async function runSweep() {
     const workers = Number(input('workers').value);
     if (!(Number.isInteger(workers) && workers >= 1 && workers <= 8)) {
-      status.textContent = `workers = ${input('workers').value}: expected a whole number from 1 to 8.`;
+      status.textContent = t('sweep-workers-invalid', { value: input('workers').value });
       return;
     }
     runButton.disabled = true;
-    status.textContent = 'Checking the sweep…';
+    status.textContent = t('sweep-status-checking');
     let view;
     try {
       view = await readSweepForm();
     } catch (e) {
-      status.textContent = `${/** @type {Error} */ (e).message}.`;
+      status.textContent = t('sweep-refused', { reason: /** @type {Error} */ (e).message });
       runButton.disabled = false;
       return;
     }
     if (!(await current())) {
-      status.textContent = `The sweep was not run: ${NOT_RUN}`;
+      status.textContent = t('sweep-not-run');
       runButton.disabled = false;
       return;
     }
@@ -78,7 +79,7 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
     setFragment('sweep', view.text);
     cancelButton.disabled = false;
     const started = performance.now();
-    status.textContent = 'Sweeping…';
+    status.textContent = t('sweep-status-running');
     try {
       const out = await analysis.sweep(view, {
         scenario,
@@ -89,17 +90,21 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
       });
       analysis.showSweep(out, $('bode'), $('sweep-table', HTMLTableElement));
       const ms = performance.now() - started;
-      const runs = `${view.plan.variants.length} × ${view.plan.n} runs`;
-      status.textContent = [
-        `${runs} in ${ms.toFixed(0)} ms on ${workers} worker${workers > 1 ? 's' : ''}.`,
-        ...view.caveats,
-      ].join(' ');
+      const done = t('sweep-status-done', {
+        variants: integer(view.plan.variants.length),
+        points: integer(view.plan.n),
+        ms: integer(ms),
+        workers: integer(workers),
+      });
+      // The core's caveats on the plan follow, each a sentence of its own.
+      status.textContent = [done, ...view.caveats].join(' ');
       Object.assign(document.body.dataset, { sweep: 'done', sweepMs: ms.toFixed(1) });
       csvButton.disabled = false;
       shown.ran(scenario);
     } catch (e) {
       const { message } = /** @type {Error} */ (e);
-      status.textContent = message === 'cancelled' ? 'Sweep cancelled.' : `Sweep failed: ${message}`;
+      status.textContent =
+        message === 'cancelled' ? t('sweep-status-cancelled') : t('sweep-status-failed', { reason: message });
       document.body.dataset.sweep = message === 'cancelled' ? 'cancelled' : 'failed';
     } finally {
       runButton.disabled = false;
@@ -110,7 +115,7 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
   /** After a run: a shared link with a sweep in its fragment runs that sweep, once. */
   const afterRun = runFromLink({
     name: 'sweep',
-    what: 'sweep',
+    refused: 'sweep-link-refused',
     fill: async (text) => fillSweepForm((await analysis.plan(text)).plan),
     run: runSweep,
     showTab,

@@ -1,5 +1,6 @@
 // The built-in challenges, listed in the Lessons tab: each a link that opens it.
 import { el } from '../ui/dom.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import { RunClient } from '../client/run-client.js' */
 
@@ -19,13 +20,13 @@ export async function listBuiltins(client, list) {
           el('p', { textContent: b.summary }),
           el('a', {
             href: `?challenge=${b.name}`,
-            textContent: `Open the ${b.name} challenge`,
+            textContent: t('builtins-open', { name: b.name }),
             className: 'button-link',
           }),
         ]),
       ),
     );
   } catch {
-    list.textContent = 'The built-in challenges could not be listed.';
+    list.textContent = t('builtins-failed');
   }
 }

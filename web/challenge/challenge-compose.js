@@ -9,6 +9,7 @@ import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
 import { remember } from './origin.js';
+import { t } from '../l10n/l10n.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -35,45 +36,53 @@ function made(desc, checkBox, kept) {
   const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
   const copied = el('p', { className: 'hint', role: 'status' });
   /**
-   * A button that copies `text2` (`what`, as the message names it).
+   * A button labelled `label` that copies `text2`, and says so by the message `said`, or that the
+   * browser refused by the message `refused`.
    * @param {string} id
    * @param {string} label
-   * @param {string} what
    * @param {string} text2
+   * @param {string} said
+   * @param {string} refused
    */
-  const copier = (id, label, what, text2) =>
+  const copier = (id, label, text2, said, refused) =>
     button(id, label, async () => {
       try {
         await navigator.clipboard.writeText(text2);
-        copied.textContent = `${what} copied.`;
+        copied.textContent = t(said);
       } catch {
-        copied.textContent = `Select the ${what.toLowerCase()} above and copy it.`;
+        copied.textContent = t(refused);
       }
     });
   return [
-    el('label', { htmlFor: 'compose-link', textContent: 'Challenge link' }),
+    el('label', { htmlFor: 'compose-link', textContent: t('compose-link') }),
     linkBox,
     el('p', {
       id: 'compose-kept',
       className: 'hint',
-      textContent: kept
-        ? 'This browser keeps a record that it composed this challenge: the link, opened here, says “Set by you in this browser”; a copy with another bound or title does not.'
-        : 'This browser keeps no record of the challenges it composed (its storage or Web Crypto is unavailable here): the link, opened here, cannot say that you set it.',
+      textContent: t(kept ? 'compose-kept' : 'compose-not-kept'),
     }),
     el('div', { className: 'buttons' }, [
-      copier('compose-copy-link', 'Copy challenge link', 'The challenge link', url),
+      copier('compose-copy-link', t('compose-copy-link'), url, 'compose-link-copied', 'compose-link-not-copied'),
       el('a', {
         href: `?${desc.encoded}`,
         id: 'compose-open',
-        textContent: 'Open as a student',
+        textContent: t('compose-open'),
         target: '_blank',
         rel: 'noopener',
       }),
     ]),
     checkBox,
-    el('label', { htmlFor: 'compose-brief', textContent: 'The task in words (for a slide or the course page)' }),
+    el('label', { htmlFor: 'compose-brief', textContent: t('compose-brief') }),
     briefBox,
-    el('div', { className: 'buttons' }, [copier('compose-copy-brief', 'Copy the task', 'The task', desc.brief)]),
+    el('div', { className: 'buttons' }, [
+      copier(
+        'compose-copy-brief',
+        t('compose-copy-brief'),
+        desc.brief,
+        'compose-brief-copied',
+        'compose-brief-not-copied',
+      ),
+    ]),
     copied,
   ];
 }
@@ -108,24 +117,26 @@ export function createCompose({ client, state }) {
     box.replaceChildren(
       el('p', {
         className: 'hint',
-        textContent:
-          'The challenge starts from the scenario in the settings (its base); the student may change only the fields listed here, within their ranges, and passes when every criterion holds. Set the scenario up and run it first: the criteria are prefilled from its figures, 20 % tighter than this run.',
+        textContent: t('compose-intro'),
       }),
-      el('p', { className: 'compose-base' }, ['Base: ', el('code', { textContent: info.encoded })]),
+      el('p', { className: 'compose-base' }, [t('compose-base'), ' ', el('code', { textContent: info.encoded })]),
       el('label', { className: 'compose-title' }, [
-        'Title ',
-        el('input', { id: 'compose-title', value: `Challenge: ${info.preset}`, maxLength: 120 }),
+        t('compose-title'),
+        ' ',
+        el('input', {
+          id: 'compose-title',
+          value: t('compose-title-default', { preset: info.preset }),
+          maxLength: 120,
+        }),
       ]),
       allowSet(info),
       needSet(figures, measures),
       varySet(info),
-      el('div', { className: 'buttons' }, [button('compose-make', 'Make the challenge link', make)]),
+      el('div', { className: 'buttons' }, [button('compose-make', t('compose-make'), make)]),
       error,
       output,
     );
-    status.textContent = measures
-      ? ''
-      : 'No finished run of this scenario to take the figures from: run it, then press “Fill from the current scenario” again.';
+    status.textContent = measures ? '' : t('compose-no-run');
     box.prepend(status);
     document.body.dataset.compose = 'filled';
   }
@@ -179,7 +190,7 @@ export function createCompose({ client, state }) {
   async function make() {
     const desc = await client.job('challenge-compose', { parts: parts() });
     if (desc.error) {
-      fail(`The challenge is not valid: ${desc.error.message}`, desc.error.key);
+      fail(t('compose-invalid', { reason: desc.error.message }), desc.error.key);
       output.hidden = true;
       checker.stop();
       document.body.dataset.compose = 'invalid';

@@ -8,9 +8,11 @@ import { fieldValue } from '../ui/scenario.js';
 import { Pool } from '../client/pool.js';
 import { challengeFromUrl, holdAddress, scenarioFromUrl } from '../ui/url.js';
 import { el } from '../ui/dom.js';
-import { panelParts, plural, showVerdict } from './checklist.js';
+import { panelParts, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 import { header, originOf } from './origin.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from '../analysis/digits.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { RunClient } from '../client/run-client.js' */
@@ -59,11 +61,11 @@ export class ChallengePanel {
     // The submission link a stale verdict's panel copies is the checked one's, which it names.
     this.shown = stale.add({
       name: 'challenge',
-      what: 'This verdict is',
-      press: '“Run and check”',
+      what: t('challenge-stale'),
+      press: t('challenge-stale.press'),
       before: this.parts.verdict,
       shows: [this.parts.verdict, this.parts.checklist],
-      exportNote: '“Copy submission link” copies the link of the settings it checked.',
+      exportNote: t('challenge-stale.export'),
     });
   }
 
@@ -88,9 +90,7 @@ export class ChallengePanel {
     try {
       return await this.openLink();
     } catch (e) {
-      this.fail(
-        `The challenge could not be opened: ${/** @type {Error} */ (e).message}. The page shows the default scenario instead.`,
-      );
+      this.fail(t('challenge-open-failed', { reason: /** @type {Error} */ (e).message }));
       body().challenge = 'failed';
       this.desc = null;
       return scenarioFromUrl();
@@ -103,13 +103,11 @@ export class ChallengePanel {
     document.body.classList.add('with-challenge');
     this.panel.hidden = false;
     body().challenge = 'loading';
-    this.panel.replaceChildren(el('h2', { textContent: 'Challenge' }), this.parts.alert);
+    this.panel.replaceChildren(el('h2', { textContent: t('challenge-heading') }), this.parts.alert);
     try {
       this.desc = await client.job('challenge', { text: link.challenge });
     } catch (e) {
-      this.fail(
-        `This challenge link was rejected: ${/** @type {Error} */ (e).message}. The page shows the default scenario instead.`,
-      );
+      this.fail(t('challenge-link-rejected', { reason: /** @type {Error} */ (e).message }));
       body().challenge = 'malformed';
       return scenarioFromUrl();
     }
@@ -119,8 +117,10 @@ export class ChallengePanel {
     if (sub.kind !== 'ok') {
       this.refused =
         sub.kind === 'another'
-          ? 'This submission link belongs to another challenge (its challenge part was edited): it was not graded.'
-          : `This submission link was ${sub.kind === 'refused' ? 'refused' : 'rejected'}: ${sub.message}. It was not graded; the task starts from its base settings.`;
+          ? t('challenge-submission-another')
+          : t(sub.kind === 'refused' ? 'challenge-submission-refused' : 'challenge-submission-rejected', {
+              reason: sub.message,
+            });
       sub = await client.job('challenge-submission', { text, submission: text });
     }
     holdAddress(this.refused ? location.search.slice(1) : sub.encoded);
@@ -136,7 +136,7 @@ export class ChallengePanel {
   render() {
     const { parts, knobs } = this;
     const desc = /** @type {Challenge} */ (this.desc);
-    const run = el('button', { type: 'button', id: 'challenge-run', textContent: 'Run and check' });
+    const run = el('button', { type: 'button', id: 'challenge-run', textContent: t('challenge-run') });
     run.addEventListener('click', () => {
       for (const [field, control] of knobs) copyToForm(field, control);
       ui.run.click();
@@ -148,29 +148,31 @@ export class ChallengePanel {
     this.panel.replaceChildren(
       ...header(desc, this.origin),
       parts.alert,
-      el('h3', { textContent: 'Your settings' }),
+      el('h3', { textContent: t('challenge-settings') }),
       el('p', {
         className: 'hint',
-        textContent: `Only ${desc.allow.map((/** @type {Allowed} */ a) => a.field).join(', ')} can be changed; the other settings are locked by the challenge.`,
+        textContent: t('challenge-settings-hint', {
+          fields: desc.allow.map((/** @type {Allowed} */ a) => a.field).join(', '),
+        }),
       }),
       knobBox,
       el('div', { className: 'buttons' }, [run, parts.cancel]),
       parts.progress,
-      el('h3', { textContent: 'Checklist' }),
+      el('h3', { textContent: t('challenge-checklist') }),
       parts.verdict,
       parts.checklist,
       el('div', { className: 'buttons' }, [parts.copy]),
       parts.copied,
       el('details', { className: 'brief', open: true }, [
-        el('summary', { textContent: 'The task in full' }),
+        el('summary', { textContent: t('challenge-task') }),
         el('div', { className: 'brief-text', textContent: desc.task }),
       ]),
     );
     this.relayout();
-    parts.verdict.textContent = 'Not checked yet: the first run is being computed.';
+    parts.verdict.textContent = t('challenge-verdict-pending');
     parts.checklist.replaceChildren(
       ...desc.need.map((/** @type {Need} */ n) =>
-        el('li', { textContent: `${n.label} (${n.figure}): not checked yet` }),
+        el('li', { textContent: t('challenge-need-pending', { label: n.label, figure: n.figure }) }),
       ),
     );
   }
@@ -238,7 +240,7 @@ export class ChallengePanel {
     this.pool?.cancel();
     this.parts.progress.hidden = true;
     this.parts.cancel.disabled = true;
-    this.showRefusal(sub, 'Not run');
+    this.showRefusal(sub, false);
     return false;
   }
 
@@ -262,8 +264,7 @@ export class ChallengePanel {
     this.shown.forget();
     const { verdict, progress, cancel } = this.parts;
     if (this.refused && runId === 1) {
-      verdict.textContent =
-        '✗ Not graded: the settings in the link were refused (see above). Change the allowed settings and run.';
+      verdict.textContent = t('challenge-verdict-link-refused');
       body().challengeChecked = String(runId);
       return;
     }
@@ -277,8 +278,8 @@ export class ChallengePanel {
       if (me !== this.grading) return;
       const cancelled = /** @type {Error} */ (e).message === 'cancelled';
       verdict.textContent = cancelled
-        ? '✗ Check cancelled: not graded. Run again to check.'
-        : `✗ The check failed: ${/** @type {Error} */ (e).message}. Not graded.`;
+        ? t('challenge-verdict-cancelled')
+        : t('challenge-verdict-failed', { reason: /** @type {Error} */ (e).message });
       body().challenge = cancelled ? 'cancelled' : 'failed';
     } finally {
       if (me === this.grading) {
@@ -301,7 +302,7 @@ export class ChallengePanel {
     const sub = await client.job('challenge-tries', { text: desc.encoded, tries: this.tries(await this.ranInfo()) });
     if (me !== this.grading) return;
     if (sub.kind !== 'ok') {
-      this.showRefusal(sub, 'Not graded');
+      this.showRefusal(sub, true);
       return;
     }
     const held = sub.scenarios[0] === state.ranScenario ? await client.measure(runId) : null;
@@ -315,11 +316,9 @@ export class ChallengePanel {
     if (me !== this.grading) return;
     showVerdict(parts, result, sub);
     this.shown.ran(checked);
-    if (desc.edited_from) parts.verdict.append(` This is not the built-in ${desc.edited_from}: its terms were edited.`);
-    if (!held)
-      parts.verdict.append(
-        ' The run on screen is not the graded one (a locked setting differs): the nominal run was run again with the challenge’s settings and your allowed ones.',
-      );
+    // Further sentences on what was graded follow the verdict's.
+    if (desc.edited_from) parts.verdict.append(` ${t('challenge-verdict-edited', { name: desc.edited_from })}`);
+    if (!held) parts.verdict.append(` ${t('challenge-verdict-rerun')}`);
     holdAddress(sub.encoded);
     this.copyable(true);
     body().challenge = result.pass ? 'pass' : 'fail';
@@ -344,7 +343,11 @@ export class ChallengePanel {
     const tell = (/** @type {number} */ done) => {
       if (me !== this.grading) return;
       progress.value = (done + (held ? 1 : 0)) / total;
-      verdict.textContent = `Checking: ${done + (held ? 1 : 0)} of ${plural(total, 'run')} done (the nominal run and ${plural(total - 1, 'variant')})…`;
+      verdict.textContent = t('challenge-checking', {
+        done: integer(done + (held ? 1 : 0)),
+        runs: integer(total),
+        variants: integer(total - 1),
+      });
     };
     tell(0);
     return this.pool.run(
@@ -354,14 +357,15 @@ export class ChallengePanel {
   }
 
   /**
-   * Says why the student's settings are no answer (`what`: not run, or not graded).
+   * Says why the student's settings are no answer, and that they were not run (`ran` false) or
+   * not graded.
    * @param {Submission} sub
-   * @param {string} what
+   * @param {boolean} ran
    */
-  showRefusal(sub, what) {
-    const text = `Your settings are not a valid answer: ${sub.message}.`;
-    this.fail(`${text} ${what}.`);
-    this.parts.verdict.textContent = `✗ ${what}. ${text}`;
+  showRefusal(sub, ran) {
+    const args = { reason: sub.message };
+    this.fail(t(ran ? 'challenge-refusal-not-graded' : 'challenge-refusal-not-run', args));
+    this.parts.verdict.textContent = t(ran ? 'challenge-verdict-not-graded' : 'challenge-verdict-not-run', args);
     this.parts.checklist.replaceChildren();
     this.shown.forget();
     this.copyable(false);
@@ -383,9 +387,9 @@ export class ChallengePanel {
     const { copied } = this.parts;
     try {
       await navigator.clipboard.writeText(url);
-      copied.textContent = 'Submission link copied: it replays these runs bit for bit.';
+      copied.textContent = t('challenge-copied');
     } catch {
-      copied.textContent = `Copy this submission link: ${url}`;
+      copied.textContent = t('challenge-copy-by-hand', { url });
     }
   }
 }

@@ -5,7 +5,9 @@
 // the closest came. A check takes at most RUN_BUDGET runs.
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
-import { formatValue, plural } from './checklist.js';
+import { formatValue } from './checklist.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from '../analysis/digits.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -31,7 +33,7 @@ export const RUN_BUDGET = 300;
  * @param {Design} tries
  */
 const designText = (tries) =>
-  tries.length ? tries.map(([field, value]) => `${field}=${value}`).join(', ') : 'the base, with no field changed';
+  tries.length ? tries.map(([field, value]) => `${field}=${value}`).join(', ') : t('compose-check-base-design');
 
 /**
  * The criteria a verdict fails, in words: `current_peak: 3.21 A vs ≤ 0.1 A`.
@@ -41,9 +43,11 @@ function failures(verdict) {
   return verdict.criteria
     .filter((/** @type {Criterion} */ c) => !c.pass)
     .map((/** @type {Criterion} */ c) => {
-      if (c.value === null) return `${c.figure}: ${c.reason}`;
-      const still = c.reason === 'still changing' ? ', still changing' : '';
-      return `${c.figure}: ${formatValue(c.value, c.unit)} vs ${c.bound}${still}`;
+      if (c.value === null) return t('compose-check-unmeasured', { figure: c.figure, reason: String(c.reason) });
+      // The core's reason for a value that had not settled by the end of the run.
+      const still = c.reason === 'still changing';
+      const args = { figure: c.figure, value: formatValue(c.value, c.unit), bound: c.bound };
+      return t(still ? 'compose-check-failure-changing' : 'compose-check-failure', args);
     })
     .join('; ');
 }
@@ -128,28 +132,38 @@ function closest(tried, desc, labels) {
  */
 function findings({ desc, labels, tried, runs }) {
   const m = tried.length;
-  const passing = tried.filter((t) => t.verdict.pass);
-  const base = tried.find((t) => t.tries.length === 0);
+  const passing = tried.filter((d) => d.verdict.pass);
+  const base = tried.find((d) => d.tries.length === 0);
   const baseLine = !base
-    ? ''
+    ? []
     : base.verdict.pass
-      ? 'The base passes as it is: a student who changes nothing passes. '
-      : `The base (no field changed) fails: ${failures(base.verdict)}. `;
-  const bound = `The check tried ${plural(m, 'design')} in ${plural(runs, 'run')} (at most ${RUN_BUDGET} runs): the base first, then those that change the fewest fields, from the ends of the ranges inward (every combination, when they fit).`;
+      ? [t('compose-check-base-passes')]
+      : [t('compose-check-base-fails', { failures: failures(base.verdict) })];
+  const bound = t('compose-check-tried', { designs: integer(m), runs: integer(runs), budget: integer(RUN_BUDGET) });
+  // The details are sentences, one after the other.
+  const details = [...baseLine, bound].join(' ');
   if (passing.length) {
-    const shown = passing.find((t) => t.tries.length) ?? passing[0];
+    const shown = passing.find((d) => d.tries.length) ?? passing[0];
     return {
       solvable: true,
-      line: `✓ A design within the allowed ranges passes: ${designText(shown.tries)} (${passing.length} of ${m} designs tried pass).`,
-      details: baseLine + bound,
+      line: t('compose-check-solvable', {
+        design: designText(shown.tries),
+        passing: integer(passing.length),
+        tried: integer(m),
+      }),
+      details,
     };
   }
   // A check tries the base at least, whose submission runs.
   const near = /** @type {Tried} */ (closest(tried, desc, labels));
   return {
     solvable: false,
-    line: `✗ No design of the ${m} tried passes: the bounds may be out of reach; the closest was ${designText(near.tries)} (${failures(near.verdict)}).`,
-    details: baseLine + bound,
+    line: t('compose-check-unsolved', {
+      tried: integer(m),
+      design: designText(near.tries),
+      failures: failures(near.verdict),
+    }),
+    details,
   };
 }
 
@@ -165,12 +179,12 @@ export function createCheck({ client }) {
   const progress = /** @type {HTMLProgressElement} */ (
     el('progress', { id: 'compose-check-progress', max: 1, value: 0, hidden: true })
   );
-  progress.setAttribute('aria-label', 'Challenge check: runs done');
+  progress.setAttribute('aria-label', t('compose-check-progress.aria-label'));
   const cancel = /** @type {HTMLButtonElement} */ (
     el('button', {
       type: 'button',
       id: 'compose-check-cancel',
-      textContent: 'Cancel check',
+      textContent: t('compose-check-cancel'),
       disabled: true,
     })
   );
@@ -225,7 +239,11 @@ export function createCheck({ client }) {
     const scenarios = subs.flatMap((s) => s.scenarios);
     const tell = (/** @type {number} */ done) => {
       progress.value = done / scenarios.length;
-      line.textContent = `Checking whether a design within the allowed ranges passes: ${done} of ${plural(scenarios.length, 'run')} (${plural(designs.length, 'design')})…`;
+      line.textContent = t('compose-check-running', {
+        done: integer(done),
+        runs: integer(scenarios.length),
+        designs: integer(designs.length),
+      });
     };
     tell(0);
     const measures = await inPool(
@@ -256,7 +274,7 @@ export function createCheck({ client }) {
     const me = { cancelled: false };
     current = me;
     state.composeCheck = 'running';
-    line.textContent = 'Checking whether a design within the allowed ranges passes…';
+    line.textContent = t('compose-check-starting');
     details.textContent = '';
     progress.hidden = false;
     progress.value = 0;
@@ -271,8 +289,8 @@ export function createCheck({ client }) {
       if (current !== me) return;
       const cancelled = /** @type {Error} */ (e).message === 'cancelled';
       line.textContent = cancelled
-        ? 'Check cancelled: whether a design within the allowed ranges passes is not known. Make the link again to check.'
-        : `The check failed: ${/** @type {Error} */ (e).message}.`;
+        ? t('compose-check-cancelled')
+        : t('compose-check-failed', { reason: /** @type {Error} */ (e).message });
       state.composeCheck = cancelled ? 'cancelled' : 'failed';
     } finally {
       if (current === me) {

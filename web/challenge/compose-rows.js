@@ -3,6 +3,8 @@
 // starting point for the lecturer; the core checks and writes the challenge they describe.
 import { fieldValue } from '../ui/scenario.js';
 import { el } from '../ui/dom.js';
+import { t } from '../l10n/l10n.js';
+import { sig } from '../analysis/digits.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -21,8 +23,8 @@ import { el } from '../ui/dom.js';
  */
 const round2 = (x) => Number(x.toPrecision(2));
 
-/** A criterion's bound in words, by its name in the codec. @type {Record<string, string>} */
-const OP_WORDS = { max: 'at most', min: 'at least', abs: '|value| at most', band: 'inside its 95 % band' };
+/** The message saying a criterion's bound in words, by its name in the codec. @type {Record<string, string>} */
+const OP_WORDS = { max: 'compose-op-max', min: 'compose-op-min', abs: 'compose-op-abs', band: 'compose-op-band' };
 
 /**
  * A range around the field's value: half to twice it, within the field's own range.
@@ -62,17 +64,23 @@ export function allowSet(info) {
     el(
       'select',
       { id: 'compose-field' },
-      fields.map((f) => el('option', { value: f.key, textContent: `${f.key} — ${f.doc}` })),
+      fields.map((f) =>
+        el('option', { value: f.key, textContent: t('compose-field-option', { field: f.key, doc: f.doc }) }),
+      ),
     )
   );
   const rows = el('div', { id: 'compose-allow' });
-  const add = button('compose-add', 'Add', () => {
+  const add = button('compose-add', t('compose-add'), () => {
     const f = fields.find((x) => x.key === picker.value);
     if (f && !rows.querySelector(`[data-key="allow.${CSS.escape(f.key)}"]`)) rows.append(allowRow(f));
   });
   return el('fieldset', { className: 'compose-set' }, [
-    el('legend', { textContent: 'Fields the student may change' }),
-    el('div', { className: 'buttons' }, [el('label', { htmlFor: 'compose-field', textContent: 'Field' }), picker, add]),
+    el('legend', { textContent: t('compose-allow-legend') }),
+    el('div', { className: 'buttons' }, [
+      el('label', { htmlFor: 'compose-field', textContent: t('compose-field') }),
+      picker,
+      add,
+    ]),
     rows,
   ]);
 }
@@ -86,30 +94,36 @@ function allowRow(f) {
   row.dataset.key = `allow.${f.key}`;
   row.dataset.field = f.key;
   const id = `compose-allow-${f.key}`;
-  const remove = button(`${id}-remove`, 'Remove', () => row.remove());
-  remove.setAttribute('aria-label', `Remove ${f.key}`);
-  const unit = f.unit ? ` ${f.unit}` : '';
+  const remove = button(`${id}-remove`, t('compose-remove'), () => row.remove());
+  remove.setAttribute('aria-label', t('compose-remove.aria-label', { field: f.key }));
   if (f.formula) {
     // A step's own law: the student writes any formula (the core allows it as `formula`).
     row.append(
       el('span', { className: 'key', textContent: f.key }),
       el('input', { type: 'hidden', name: 'options', value: 'formula' }),
-      el('span', { className: 'range', textContent: `a formula of the student’s own (${f.unit})` }),
+      el('span', { className: 'range', textContent: t('compose-allow-formula', { unit: f.unit }) }),
     );
   } else if (f.options.length) {
     row.append(
-      el('label', { htmlFor: id, textContent: `${f.key}: choices (a|b)` }),
+      el('label', { htmlFor: id, textContent: t('compose-allow-choices', { field: f.key }) }),
       el('input', { id, name: 'options', value: f.options.join('|') }),
     );
   } else {
     const [lo, hi] = rangeAround(f);
     row.append(
       el('span', { className: 'key', textContent: f.key }),
-      el('label', { htmlFor: `${id}-lo`, textContent: 'from' }),
+      el('label', { htmlFor: `${id}-lo`, textContent: t('compose-allow-from') }),
       el('input', { id: `${id}-lo`, name: 'lo', value: lo, size: 8, inputMode: 'decimal' }),
-      el('label', { htmlFor: `${id}-hi`, textContent: 'to' }),
+      el('label', { htmlFor: `${id}-hi`, textContent: t('compose-allow-to') }),
       el('input', { id: `${id}-hi`, name: 'hi', value: hi, size: 8, inputMode: 'decimal' }),
-      el('span', { className: 'range', textContent: `${unit.trim()} (now ${f.value})` }),
+      el('span', {
+        className: 'range',
+        // The field's value in the scenario, as the settings write it; without a unit the words
+        // keep their distance from the field before them.
+        textContent: f.unit
+          ? t('compose-allow-now-unit', { unit: f.unit, value: String(f.value) })
+          : ` ${t('compose-allow-now', { value: String(f.value) })}`,
+      }),
     );
   }
   row.append(remove);
@@ -132,11 +146,8 @@ export function needSet(figures, measures) {
     rows.append(needRow(fig, m));
   }
   return el('fieldset', { className: 'compose-set' }, [
-    el('legend', { textContent: 'Criteria: the figures of this run' }),
-    el('p', {
-      className: 'hint',
-      textContent: '“All runs” makes the criterion hold on every variant too (the worst run counts).',
-    }),
+    el('legend', { textContent: t('compose-need-legend') }),
+    el('p', { className: 'hint', textContent: t('compose-need-hint') }),
     rows,
   ]);
 }
@@ -151,8 +162,10 @@ function needRow(fig, m) {
   const row = el('div', { className: 'compose-row' });
   row.dataset.key = `need.${fig.name}`;
   row.dataset.figure = fig.name;
-  const unit = fig.unit ? ` ${fig.unit}` : '';
-  const now = m ? ` — now ${m.value === Infinity ? '∞' : Number(m.value.toPrecision(4))}${unit}` : '';
+  // The figure's value in this run, if measured.
+  const now = m ? (m.value === Infinity ? '∞' : sig(m.value, 4)) : null;
+  const args = { label: fig.label, figure: fig.name, value: now ?? '', unit: fig.unit };
+  const named = now === null ? 'compose-need' : fig.unit ? 'compose-need-now-unit' : 'compose-need-now';
   // The bounds the core lets this figure take, and the one it starts with.
   const op = /** @type {HTMLSelectElement} */ (
     el(
@@ -161,7 +174,7 @@ function needRow(fig, m) {
       fig.ops.map((o) =>
         el('option', {
           value: o,
-          textContent: OP_WORDS[o] ?? o,
+          textContent: Object.hasOwn(OP_WORDS, o) ? t(OP_WORDS[o]) : o,
         }),
       ),
     )
@@ -178,21 +191,28 @@ function needRow(fig, m) {
     if (band && !bound.disabled) kept = bound.value;
     bound.disabled = band;
     bound.value = band ? '' : kept;
-    bound.placeholder = band ? 'none' : '';
+    bound.placeholder = band ? t('compose-bound-none') : '';
   };
   op.addEventListener('change', syncBound);
   syncBound();
   row.append(
     el('label', { className: 'need-label' }, [
       el('input', { type: 'checkbox', id, name: 'use' }),
-      ` ${fig.label} (${fig.name})${now}`,
+      ` ${t(named, args)}`,
     ]),
-    el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: `${fig.name}: how it is bounded` }),
+    el('label', { htmlFor: `${id}-op`, className: 'sr-only', textContent: t('compose-need-op', args) }),
     op,
-    el('label', { htmlFor: `${id}-bound`, className: 'sr-only', textContent: `${fig.name}: bound${unit}` }),
+    el('label', {
+      htmlFor: `${id}-bound`,
+      className: 'sr-only',
+      textContent: t(fig.unit ? 'compose-need-bound-unit' : 'compose-need-bound', args),
+    }),
     bound,
-    el('span', { className: 'range', textContent: unit.trim() }),
-    el('label', {}, [el('input', { type: 'checkbox', id: `${id}-robust`, name: 'robust' }), ' all runs']),
+    el('span', { className: 'range', textContent: fig.unit.trim() }),
+    el('label', {}, [
+      el('input', { type: 'checkbox', id: `${id}-robust`, name: 'robust' }),
+      ` ${t('compose-need-all-runs')}`,
+    ]),
   );
   return row;
 }
@@ -206,11 +226,11 @@ export function varySet(info) {
     el('input', {
       id: 'compose-vary',
       size: 40,
-      placeholder: 'seeds:2..10  or  model.j=0.016|model.j=0.024',
+      placeholder: t('compose-vary.placeholder'),
     })
   );
   const j = Number(fieldValue(info, 'model.j'));
-  const seeds = button('compose-seeds', 'Seeds 2 to 10', () => {
+  const seeds = button('compose-seeds', t('compose-vary-seeds'), () => {
     vary.value = 'seeds:2..10';
   });
   const inertia = button('compose-inertia', 'model.j ±20 %', () => {
@@ -218,11 +238,8 @@ export function varySet(info) {
   });
   inertia.disabled = !(j > 0);
   return el('fieldset', { className: 'compose-set' }, [
-    el('legend', { textContent: 'Robustness variants (optional)' }),
-    el('label', {
-      htmlFor: 'compose-vary',
-      textContent: 'Variants: seeds:A..B, or settings applied on top of the student’s, separated by |',
-    }),
+    el('legend', { textContent: t('compose-vary-legend') }),
+    el('label', { htmlFor: 'compose-vary', textContent: t('compose-vary') }),
     vary,
     el('div', { className: 'buttons' }, [seeds, inertia]),
   ]);

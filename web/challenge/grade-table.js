@@ -5,7 +5,8 @@
 // text a click away and in the cell's text for a screen reader. Every header sorts the rows by
 // its column (again: the other way); the rows stay sorted as the results come in.
 import { el } from '../ui/dom.js';
-import { formatValue } from './checklist.js';
+import { formatValue, withUnit } from './checklist.js';
+import { t } from '../l10n/l10n.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -52,9 +53,12 @@ function cause(summary, text) {
  * @param {Result | undefined} result
  */
 function verdictCell(result) {
-  if (!result) return el('td', { className: 'pending', textContent: 'not graded yet' });
+  if (!result) return el('td', { className: 'pending', textContent: t('grade-pending') });
   if (result.verdict)
-    return el('td', { className: result.pass ? 'pass' : 'fail', textContent: result.pass ? '✓ pass' : '✗ fail' });
+    return el('td', {
+      className: result.pass ? 'pass' : 'fail',
+      textContent: t(result.pass ? 'grade-pass' : 'grade-fail'),
+    });
   return el('td', { className: 'fail' }, [cause(`✗ ${result.status}`, result.status)]);
 }
 
@@ -69,11 +73,10 @@ function criterionCell(result, k) {
   if (!c) return el('td', { className: 'value' });
   const shown = `${formatValue(c.value)} ${c.pass ? '✓' : '✗'}`;
   // The value in full (the CSV's digits, but for an exponent on the tiniest), or why there is none.
-  const exact = c.value === null ? c.reason : `${c.value}${c.unit ? ` ${c.unit}` : ''}`;
-  const run = c.run === 'nominal' ? '' : ` (worst run: ${c.run})`;
-  const td = c.pass
-    ? el('td', { textContent: shown, title: `${exact}${run}` })
-    : el('td', {}, [cause(shown, `${c.value === null ? exact : `${exact}: ${c.reason}`}${run}`)]);
+  const exact = c.value === null ? c.reason : withUnit(String(c.value), c.unit);
+  const said = c.pass || c.value === null ? exact : t('grade-value-reason', { value: exact, reason: c.reason });
+  const text = c.run === 'nominal' ? said : t('grade-worst-run', { text: said, run: c.run });
+  const td = c.pass ? el('td', { textContent: shown, title: text }) : el('td', {}, [cause(shown, text)]);
   td.className = `value ${c.pass ? 'pass' : 'fail'}`;
   return td;
 }
@@ -117,13 +120,13 @@ function columnsOf(shown) {
     ...carried,
     {
       id: 'line',
-      head: ['line'],
+      head: [t('grade-head-line')],
       cell: (i) => el('td', { textContent: String(shown.rows[i].line) }),
       key: (i) => shown.rows[i].line,
     },
     {
       id: 'verdict',
-      head: ['verdict'],
+      head: [t('grade-head-verdict')],
       cell: (i) => verdictCell(result(i)),
       // Passed, failed, then not judged (refused, malformed…); not graded yet last.
       key: (i) => (result(i) ? (result(i).verdict ? (result(i).pass ? 0 : 1) : 2) : null),
@@ -131,7 +134,7 @@ function columnsOf(shown) {
     ...criteria,
     {
       id: 'link',
-      head: ['link'],
+      head: [t('grade-head-link')],
       cell: (i) => el('td', { className: 'link', textContent: shown.shown[i].link, title: shown.shown[i].link }),
       key: (i) => shown.shown[i].link,
     },

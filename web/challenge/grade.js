@@ -9,6 +9,8 @@ import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { download } from '../ui/dom.js';
 import { GradeTable } from './grade-table.js';
+import { t } from '../l10n/l10n.js';
+import { integer } from '../analysis/digits.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -23,10 +25,10 @@ const KEEP_EVERY_MS = 1000;
 /**
  * A grading: the challenge's canonical link and criteria, the class file's name, header and
  * submissions, each submission's result by index (only what the table and the CSV need), and what
- * to say of the file's encoding when the core read it as another than UTF-8 ('' for UTF-8).
+ * to say of the file's encoding when the core read it as another than UTF-8 (nothing for UTF-8).
  * @typedef {{key: string, challenge: string, need: P.Jobs['challenge']['result']['need'], name: string,
  *   header: string, columns: string[], rows: P.ClassFileRow[], shown: P.Jobs['grade-class']['result']['shown'],
- *   results: Record<number, Result>, readAs: string}} Grading
+ *   results: Record<number, Result>, readAs: string[]}} Grading
  */
 
 // JSON has no infinite number (a settling time never reached is one): it is kept as this.
@@ -96,6 +98,40 @@ async function offerBuiltins(client) {
 }
 
 /**
+ * What the status line says as `job` starts grading, `from` of its submissions kept from the last
+ * grading: its sentences, one after the other.
+ * @param {Grading} job
+ * @param {number} from
+ */
+function startedText(job, from) {
+  const total = integer(job.rows.length);
+  const grading = from
+    ? t('grade-status-grading-kept', { total, kept: integer(from) })
+    : t('grade-status-grading', { total });
+  return [grading, ...job.readAs].join(' ');
+}
+
+/**
+ * What the status line says as `job`'s grading ends: finished (`error` null), or stopped by
+ * `error` ('cancelled' on Cancel); `stored` is whether the browser's storage took its results.
+ * @param {Grading} job
+ * @param {string | null} error
+ * @param {boolean} stored
+ */
+function endedText(job, error, stored) {
+  const total = integer(job.rows.length);
+  const results = Object.values(job.results);
+  if (error === null) {
+    const passed = integer(results.filter((r) => r.pass).length);
+    const unstored = stored ? [] : [t('grade-not-stored')];
+    return [t('grade-status-done', { total, passed }), ...job.readAs, ...unstored].join(' ');
+  }
+  const args = { graded: integer(results.length), total, reason: error };
+  if (error === 'cancelled') return t(stored ? 'grade-status-cancelled-kept' : 'grade-status-cancelled-lost', args);
+  return t(stored ? 'grade-status-stopped-kept' : 'grade-status-stopped-lost', args);
+}
+
+/**
  * The Grade section of the Challenge tab; `client` is the page's worker.
  * @param {{client: RunClient}} page
  */
@@ -117,14 +153,14 @@ export function createGrading({ client }) {
    */
   async function read() {
     const text = $('grade-challenge', HTMLInputElement).value.trim();
-    if (!text) throw new Error('name a challenge: a built-in’s name or a challenge link');
+    if (!text) throw new Error(t('grade-no-challenge'));
     const { bytes, name } = await classBytes();
-    if (bytes.length === 0) throw new Error('choose a class file, or paste the links, one a line');
+    if (bytes.length === 0) throw new Error(t('grade-no-file'));
     // The challenge by its canonical link, whichever way it was named.
     const { encoded, need } = await client.job('challenge', { text });
     const plan = await client.job('grade-class', { text: encoded, bytes });
     if (plan.error) throw new Error(plan.error);
-    if (plan.rows.length === 0) throw new Error('the file holds no submission');
+    if (plan.rows.length === 0) throw new Error(t('grade-no-submission'));
     // A grading is kept for the same challenge and the same submissions, however they were given.
     const key = JSON.stringify([encoded, plan.header, plan.rows]);
     return {
@@ -137,7 +173,7 @@ export function createGrading({ client }) {
       rows: plan.rows,
       shown: plan.shown,
       results: kept(key),
-      readAs: plan.encoding ? ` The class file was read as ${plan.encoding} (it is not UTF-8).` : '',
+      readAs: plan.encoding ? [t('grade-read-as', { encoding: plan.encoding })] : [],
     };
   }
 
@@ -146,7 +182,7 @@ export function createGrading({ client }) {
     $('grade-cancel', HTMLButtonElement).disabled = false;
     $('grade-cancel', HTMLButtonElement).focus();
     body.grading = 'reading';
-    status.textContent = 'Reading the class file…';
+    status.textContent = t('grade-status-reading');
     const reading = ++readings;
     try {
       const grading = await read();
@@ -156,7 +192,7 @@ export function createGrading({ client }) {
     } catch (e) {
       if (reading !== readings) return;
       body.grading = 'refused';
-      status.textContent = `Not graded: ${/** @type {Error} */ (e).message}.`;
+      status.textContent = t('grade-refused', { reason: /** @type {Error} */ (e).message });
       return done();
     }
     table.draw(job);
@@ -177,11 +213,11 @@ export function createGrading({ client }) {
     const from = total - todo.length;
     progress.hidden = false;
     body.grading = 'running';
-    status.textContent = `Grading ${total} submissions${from ? `, ${from} kept from the last grading` : ''}…${mine.readAs}`;
+    status.textContent = startedText(mine, from);
     let keptAt = 0;
     const tell = (/** @type {number} */ done) => {
       progress.value = (from + done) / total;
-      count.textContent = `Graded ${from + done} of ${total}`;
+      count.textContent = t('grade-count', { done: integer(from + done), total: integer(total) });
     };
     tell(0);
     try {
@@ -199,21 +235,12 @@ export function createGrading({ client }) {
           tell(done);
         },
       );
-      const stored = keep(mine);
-      const passed = Object.values(mine.results).filter((r) => r.pass).length;
-      status.textContent = `Graded ${total} of ${total}: ${passed} passed.${mine.readAs}${stored ? '' : ' The browser’s storage did not take this grading: download it now.'}`;
+      status.textContent = endedText(mine, null, keep(mine));
       body.grading = 'done';
     } catch (e) {
-      const stored = keep(mine);
-      const n = Object.keys(mine.results).length;
-      const where = stored
-        ? 'kept in this browser; Grade goes on from there'
-        : 'not kept (the browser’s storage refused them)';
-      status.textContent =
-        /** @type {Error} */ (e).message === 'cancelled'
-          ? `Cancelled: ${n} of ${total} graded, ${where}.`
-          : `The grading stopped: ${/** @type {Error} */ (e).message}. ${n} of ${total} graded, ${where}.`;
-      body.grading = /** @type {Error} */ (e).message === 'cancelled' ? 'cancelled' : 'failed';
+      const { message } = /** @type {Error} */ (e);
+      status.textContent = endedText(mine, message, keep(mine));
+      body.grading = message === 'cancelled' ? 'cancelled' : 'failed';
     }
   }
 
@@ -224,7 +251,7 @@ export function createGrading({ client }) {
     if (body.grading !== 'reading') return pool.cancel();
     readings++;
     body.grading = 'cancelled';
-    status.textContent = 'Cancelled while the class file was read: nothing was graded.';
+    status.textContent = t('grade-status-cancelled-reading');
     done();
   });
   $('grade-csv', HTMLButtonElement).addEventListener('click', () => {
@@ -233,7 +260,11 @@ export function createGrading({ client }) {
     const { text, whole, rows } = csvOf(shown);
     download(new Blob([text], { type: 'text/csv' }), `imlab-grade-${shown.name}${whole ? '' : '-partial'}.csv`);
     if (!whole)
-      status.textContent = `Downloaded the first ${rows} of ${shown.rows.length} rows, in order: Grade goes on from where it stopped, and imlab grade --resume can finish the file.`;
+      status.textContent = t('grade-downloaded-partial', {
+        rows: integer(rows),
+        total: integer(shown.rows.length),
+        command: 'imlab grade --resume',
+      });
   });
   acceptDrops();
 }

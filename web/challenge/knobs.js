@@ -3,6 +3,7 @@
 import { ui } from '../ui/page.js';
 import { el } from '../ui/dom.js';
 import { setField } from '../run/controls.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -39,11 +40,13 @@ export function knob(a, knobs) {
         : el('input', { type: 'text', inputMode: 'decimal', name: a.field, id, spellcheck: false })
   );
   control.value = a.value ?? '';
-  const unit = a.unit ? ` ${a.unit}` : '';
-  const range = /** @type {Record<string, () => string>} */ ({
-    choice: () => `one of ${a.options.join(', ')}`,
-    formula: () => `a formula of your own (${a.unit}; the walkthrough’s “Write this step” lists the names)`,
-    range: () => `${a.lo} to ${a.hi}${unit}`,
+  const allowed = /** @type {Record<string, () => string>} */ ({
+    choice: () => t('challenge-allowed-choice', { options: a.options.join(', ') }),
+    formula: () => t('challenge-allowed-formula', { unit: a.unit }),
+    range: () =>
+      a.unit
+        ? t('challenge-allowed-range-unit', { lo: String(a.lo), hi: String(a.hi), unit: a.unit })
+        : t('challenge-allowed-range', { lo: String(a.lo), hi: String(a.hi) }),
   })[a.kind]();
   const rangeId = `${id}-range`;
   control.setAttribute('aria-describedby', rangeId);
@@ -60,8 +63,11 @@ export function knob(a, knobs) {
   });
   return el('label', { htmlFor: id, className: 'field' }, [
     el('span', { className: 'key', textContent: a.field }),
-    el('span', { className: 'doc', textContent: `${a.doc}${unit ? ` (${a.unit})` : ''}` }),
+    el('span', {
+      className: 'doc',
+      textContent: a.unit ? t('challenge-knob-doc', { doc: a.doc, unit: a.unit }) : a.doc,
+    }),
     control,
-    el('span', { className: 'range', id: rangeId, textContent: `allowed: ${range}` }),
+    el('span', { className: 'range', id: rangeId, textContent: allowed }),
   ]);
 }

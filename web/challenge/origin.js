@@ -5,6 +5,7 @@
 // browser (or this one, once its site data is cleared) knows none of them. The canonical text is
 // the core's (its challenge link without a student's try.* parts); nothing here reads a link.
 import { el } from '../ui/dom.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import { RunClient } from '../client/run-client.js' */
 /** @import { Challenge } from './challenge.js' */
@@ -20,12 +21,12 @@ const STORE = 'imlab.composed-challenges';
 /** The most digests kept (64 characters each): the oldest are dropped beyond it. */
 const KEEP = 2000;
 
-/** What the header says of each origin: text, so that it never rests on colour. */
+/** What the header says of each origin, by its message: text, so that it never rests on colour. */
 const SAY = {
-  builtin: 'Built-in challenge',
-  mine: 'Set by you in this browser: it composed exactly this challenge (bounds and title unchanged)',
-  other: 'Not a challenge you set in this browser',
-  unknown: 'This browser keeps no record of the challenges it composed',
+  builtin: 'challenge-origin-builtin',
+  mine: 'challenge-origin-mine',
+  other: 'challenge-origin-other',
+  unknown: 'challenge-origin-unknown',
 };
 
 /**
@@ -92,7 +93,7 @@ const editedNote = (name) =>
   el('p', {
     id: 'challenge-edited',
     className: 'warning',
-    textContent: `Edited: this link carries the built-in challenge ${name}’s title, but not its terms. It is graded as the challenge it is, not as ${name}.`,
+    textContent: t('challenge-edited', { name }),
   });
 
 /**
@@ -104,16 +105,17 @@ const editedNote = (name) =>
 export function header(desc, origin) {
   const title = el('h2', { textContent: desc.title, tabIndex: -1 });
   title.setAttribute('aria-describedby', 'challenge-origin');
-  const mark = el('p', { id: 'challenge-origin', className: `origin origin-${origin}`, textContent: SAY[origin] });
+  const mark = el('p', { id: 'challenge-origin', className: `origin origin-${origin}`, textContent: t(SAY[origin]) });
   mark.setAttribute('role', 'note');
   mark.dataset.origin = origin;
   return [
-    el('p', { className: 'lesson-count', textContent: 'Challenge' }),
+    el('p', { className: 'lesson-count', textContent: t('challenge-kind') }),
     title,
     mark,
     // What a lecturer compares at a glance with `imlab challenge`'s: the challenge's terms.
     el('p', { className: 'fingerprint hint' }, [
-      'Fingerprint ',
+      t('challenge-fingerprint'),
+      ' ',
       el('code', { id: 'challenge-fingerprint', textContent: desc.fingerprint }),
     ]),
     ...(desc.edited_from ? [editedNote(desc.edited_from)] : []),
