@@ -8,7 +8,15 @@ import { execFileSync } from 'node:child_process';
 import { existsSync, readFileSync, readdirSync, writeFileSync } from 'node:fs';
 import { LESSONS } from '../web/teaching/teaching.js';
 import { lessonsIn } from './texts.mjs';
-import { LESSON_TEXTS, namedIn, parseTables, render, withoutPlaceholders } from '../web/teaching/measured.js';
+import { FluentResource } from '@fluent/bundle';
+import {
+  LESSON_TEXTS,
+  namedIn,
+  parseTables,
+  placeholdersOf,
+  render,
+  withoutPlaceholders,
+} from '../web/teaching/measured.js';
 import { numbersIn } from './claims.mjs';
 import { SECTIONS, STABILITY_CAUSES, WALKTHROUGH_GIVENS, WALKTHROUGH_HOLDS } from '../web/teaching/walkthrough-text.js';
 import { declarations, markedIn, measuredDocs, prose, renderDoc } from '../scripts/measured-docs.mjs';
@@ -138,6 +146,38 @@ test('the check fails on a table whose value differs', () => {
 });
 
 /**
+ * The English messages of `file` (web/locales/en/) whose ids are `ids`: each one's text with its
+ * variables written back as the placeholders they name ({ $a-b--draws } as {a.b#draws}), or null
+ * where the file has no such message.
+ * @param {string} file
+ * @param {string[]} ids
+ */
+function englishMessages(file, ids) {
+  const resource = new FluentResource(readFileSync(new URL(`../web/locales/en/${file}`, import.meta.url), 'utf8'));
+  const values = new Map(resource.body.map((m) => [m.id, m.value]));
+  const text = (pattern) =>
+    typeof pattern === 'string'
+      ? pattern
+      : pattern
+          .map((p) => {
+            if (typeof p === 'string') return p;
+            if (p.type === 'var') return `{ $${p.name} }`;
+            if (p.type === 'str') return p.value;
+            throw new Error(`${file}: a measured text holds a ${p.type} expression`);
+          })
+          .join('');
+  return ids.map((id) => (values.get(id) ? placeholdersOf(text(values.get(id))) : null));
+}
+
+// The walkthrough's measured texts: its sections' prose, notes and what their runs show, and the
+// stability report's causes, each the id of its English message.
+const WALKTHROUGH_IDS = [
+  ...SECTIONS.flatMap((s) => [...s.prose, ...(s.note ? [s.note] : []), ...(s.shows ?? [])]),
+  ...Object.values(STABILITY_CAUSES),
+];
+const WALKTHROUGH_TEXTS = englishMessages('walkthrough.ftl', WALKTHROUGH_IDS);
+
+/**
  * Every measured text: its name, its table's file, the strings a reader reads, the conditions its
  * words state and the settings it names. A lesson's table is `ID.csv`.
  */
@@ -152,18 +192,17 @@ export const MEASURED = [
   {
     name: 'walkthrough',
     file: 'walkthrough.csv',
-    texts: [
-      ...SECTIONS.flatMap((s) => [...s.prose, s.note ?? '', ...(s.shows ?? [])]),
-      ...Object.values(STABILITY_CAUSES),
-    ],
+    texts: WALKTHROUGH_TEXTS.map((text) => text ?? ''),
+    missing: WALKTHROUGH_IDS.filter((_, i) => WALKTHROUGH_TEXTS[i] === null),
     holds: WALKTHROUGH_HOLDS,
     givens: WALKTHROUGH_GIVENS,
   },
 ];
 
-for (const { name, file, texts, holds: conditions, givens } of MEASURED) {
+for (const { name, file, texts, missing = [], holds: conditions, givens } of MEASURED) {
   test(`${name}: numbers from its table, conclusions that hold`, () => {
     assert.ok(FILES.includes(file), `no table ${file}`);
+    assert.deepEqual(missing, [], 'texts without an English message');
     const own = tableOf(file);
     const named = new Set(texts.flatMap(namedIn));
     for (const id of named) assert.ok(own.has(id), `${id}: not in ${file}`);

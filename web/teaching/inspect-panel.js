@@ -1,7 +1,11 @@
 // The walkthrough's inspect panel: every term of the design at one sample, by step, with its
 // value, unit and meaning, and the Kalman gain; exact values in tooltips and in the copied text.
+// Its words are the page's messages (teaching-page.ftl): a sample is inspected from the first plot
+// on. The terms' meanings and units are the core's.
 import { six } from '../plots/plots.js';
 import { el } from '../ui/dom.js';
+import { t } from '../l10n/l10n.js';
+import { decimal } from './walkthrough-sections.js';
 import { plain, tex } from './tex.js';
 
 /**
@@ -10,11 +14,12 @@ import { plain, tex } from './tex.js';
  * @typedef {import('../worker/protocol.js').Inspected['snapshot']} Snapshot
  */
 
-// Terms of the inspect panel, grouped by step: [column, TeX label].
-/** @type {[string, [string, string][]][]} */
+// Terms of the inspect panel, grouped by step: each group's caption (a message and its variables)
+// and its terms, [column, TeX label].
+/** @type {[[string, Record<string, number>?], [string, string][]][]} */
 const INSPECT = [
   [
-    'Step 1',
+    ['inspect-group-step', { step: 1 }],
     [
       ['z1', 'z_1'],
       ['v1', 'v_1'],
@@ -24,7 +29,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Step 2',
+    ['inspect-group-step', { step: 2 }],
     [
       ['z2', 'z_2'],
       ['v2', 'v_2'],
@@ -34,7 +39,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Step 3',
+    ['inspect-group-step', { step: 3 }],
     [
       ['z3', 'z_3'],
       ['v3', 'v_3'],
@@ -44,7 +49,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Step 4',
+    ['inspect-group-step', { step: 4 }],
     [
       ['z4', 'z_4'],
       ['v4', 'v_4'],
@@ -54,7 +59,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Voltage (54) and limit',
+    ['inspect-group-voltage'],
     [
       ['u_a_cmd', 'u_1\\ \\text{before}'],
       ['u_b_cmd', 'u_2\\ \\text{before}'],
@@ -64,7 +69,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Estimate x̂ (k|k)',
+    ['inspect-group-estimate'],
     [
       ['omega_hat', '\\hat x_1'],
       ['i_sa_hat', '\\hat x_2'],
@@ -74,7 +79,7 @@ const INSPECT = [
     ],
   ],
   [
-    'Measured and true',
+    ['inspect-group-measured'],
     [
       ['y_a', 'y_1'],
       ['y_b', 'y_2'],
@@ -101,26 +106,29 @@ const exact = (v) => String(v);
 function panelHead(snap, value, doc, ts, onClose) {
   const digits = Math.max(0, -Math.floor(Math.log10(ts)) + 1);
   const time = value.t.toFixed(digits).replace(/0+$/, '').replace(/\.$/, '');
-  const close = el('button', { type: 'button', className: 'close', textContent: 'Close (Esc)' });
+  const close = el('button', { type: 'button', className: 'close', textContent: t('inspect-close') });
   close.setAttribute('aria-keyshortcuts', 'Escape');
   close.addEventListener('click', onClose);
-  const copy = el('button', { type: 'button', className: 'copy', textContent: 'Copy exact values' });
+  const copy = el('button', { type: 'button', className: 'copy', textContent: t('inspect-copy') });
   const lines = snap.columns.map((/** @type {string} */ c) => `${c}\t${exact(value[c])}\t${doc[c][1]}`);
   copy.addEventListener('click', async () => {
     const text = [`k\t${snap.k}`, ...lines].join('\n');
     try {
       await navigator.clipboard.writeText(text);
-      copy.textContent = 'Copied';
+      copy.textContent = t('inspect-copied');
     } catch {
-      copy.textContent = 'Copy failed: select the table instead';
+      copy.textContent = t('inspect-copy-failed');
     }
   });
-  const title = el('h2', { id: 'inspect-title', textContent: `Inspect sample k = ${snap.k}, t = ${time} s` });
+  const title = el('h2', {
+    id: 'inspect-title',
+    textContent: t('inspect-title', { k: String(snap.k), time: decimal(time) }),
+  });
   return el('div', { className: 'inspect-head' }, [title, copy, close]);
 }
 
 /**
- * A table of columns `names`, each a column header.
+ * A table's row of column headers `names`.
  * @param {string[]} names
  */
 const headRow = (names) =>
@@ -131,19 +139,23 @@ const headRow = (names) =>
   );
 
 /**
+ * The tooltip of value `v`: its exact value.
+ * @param {number} v
+ */
+const exactTitle = (v) => t('inspect-exact', { value: exact(v) });
+
+/**
  * One table a group of INSPECT: each term's value (6 significant digits), unit and meaning.
  * @param {Record<string, number>} value
  * @param {Record<string, [string, string]>} doc
  */
 function termTables(value, doc) {
-  return INSPECT.map(([title, terms]) => {
-    const table = el('table', {}, [
-      el('caption', { textContent: title }),
-      headRow(['term', 'value', 'unit', 'meaning']),
-    ]);
+  const head = [t('inspect-term'), t('inspect-value'), t('inspect-unit'), t('inspect-meaning')];
+  return INSPECT.map(([[title, args], terms]) => {
+    const table = el('table', {}, [el('caption', { textContent: t(title, args) }), headRow(head)]);
     for (const [col, label] of terms) {
       const [meaning, unit] = doc[col];
-      const cell = el('td', { textContent: six(value[col]), title: `exact: ${exact(value[col])}` });
+      const cell = el('td', { textContent: six(value[col]), title: exactTitle(value[col]) });
       cell.dataset.exact = exact(value[col]);
       const row = el('tr', {}, [
         el('th', { scope: 'row' }, [tex(label, false, plain(label))]),
@@ -164,15 +176,15 @@ function termTables(value, doc) {
  */
 function gainTable(snap) {
   const gain = el('table', {}, [
-    el('caption', { textContent: 'Kalman gain K_k (A⁻¹ × state unit) and L = K_k/Ts (per second)' }),
-    headRow(['row', 'K·1', 'K·2', 'L·1', 'L·2']),
+    el('caption', { textContent: t('inspect-gain-caption') }),
+    headRow([t('inspect-gain-row'), 'K·1', 'K·2', 'L·1', 'L·2']),
   ]);
   snap.gain.forEach((/** @type {number[]} */ row, /** @type {number} */ i) => {
     gain.append(
       el('tr', {}, [
         el('th', { scope: 'row' }, [tex(`K_{${i + 1}\\cdot}`, false, `K${i + 1}·`)]),
-        ...row.map((v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
-        ...snap.l[i].map((/** @type {number} */ v) => el('td', { textContent: six(v), title: `exact: ${exact(v)}` })),
+        ...row.map((v) => el('td', { textContent: six(v), title: exactTitle(v) })),
+        ...snap.l[i].map((/** @type {number} */ v) => el('td', { textContent: six(v), title: exactTitle(v) })),
       ]),
     );
   });

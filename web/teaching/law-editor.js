@@ -1,31 +1,34 @@
 // "Write this step": a step's own law in the walkthrough. Its editor is the settings form's field
 // (law.v1..law.v4) as a knob; the formula is typeset by the core's TeX as it is typed, an error is
 // marked at its place, and after a run the core's verdict says whether the law gives the step's
-// designed dynamics. The names the law may use come from the core too.
+// designed dynamics. The names the law may use come from the core too. Its words are the page's
+// messages (teaching-page.ftl): a verdict shows in the settings before the walkthrough is built.
 import { el } from '../ui/dom.js';
+import { num, t } from '../l10n/l10n.js';
 import { paperLaw, verdictLine } from '../ui/verdict-line.js';
 import { tex } from './tex.js';
 
 /** @typedef {import('../worker/protocol.js').Jobs} Jobs */
 
 /**
- * The block of step `law.step` (1–4): its explanation, the knob's box, the preview, the verdict
- * and the names it may use.
- * @param {{step: number, output: string, intro: string}} law
+ * The block of step `step` (1–4): its explanation (`intro`), the knob's box, the preview, the
+ * verdict and the names it may use.
+ * @param {number} step
+ * @param {string} intro
  */
-export function lawBlock(law) {
+export function lawBlock(step, intro) {
   const box = el('div', { className: 'law' });
-  box.dataset.step = String(law.step);
+  box.dataset.step = String(step);
   box.dataset.lawScope = '';
   const knobs = el('div', { className: 'knobs' });
-  knobs.dataset.keys = `law.v${law.step}`;
+  knobs.dataset.keys = `law.v${step}`;
   box.append(
-    el('h3', { textContent: 'Write this step' }),
-    el('p', { textContent: law.intro }),
+    el('h3', { textContent: t('law-write') }),
+    el('p', { textContent: intro }),
     knobs,
-    el('div', { className: 'law-preview', id: `law-preview-${law.step}` }),
-    verdictLine(law.step),
-    el('details', { className: 'law-names' }, [el('summary', { textContent: 'The names and functions you can use' })]),
+    el('div', { className: 'law-preview', id: `law-preview-${step}` }),
+    verdictLine(step),
+    el('details', { className: 'law-names' }, [el('summary', { textContent: t('law-names') })]),
   );
   return box;
 }
@@ -62,7 +65,7 @@ export function showPreview(box, preview, text) {
           chars.slice(at - 1 + len).join(''),
         ];
   out.replaceChildren(
-    el('p', { className: 'law-error', textContent: at === 0 ? reason : `At character ${at}: ${reason}` }),
+    el('p', { className: 'law-error', textContent: at === 0 ? reason : t('law-error-at', { at: num(at), reason }) }),
     el('code', { className: 'law-text' }, parts),
   );
 }
@@ -97,16 +100,24 @@ export function showVerdicts(root, verdicts) {
       return typed !== null && typed !== law.trim();
     };
     const stale = !!verdict && (edited(step, verdict.law) || (verdict.on !== null && edited(step - 1, verdict.on)));
-    const text = !verdict
-      ? paperLaw(step)
-      : stale
-        ? `Not the law typed: the run shown, and this verdict and the residual plot, are of v${step} = ${verdict.law}${verdict.on !== null ? ` after v${step - 1} = ${verdict.on}` : ''}. ${verdict.text}`
-        : verdict.text;
+    const text = !verdict ? paperLaw(step) : stale ? staleText(step, verdict) : verdict.text;
     if (line.textContent !== text) line.textContent = text;
     line.classList.toggle('stale', stale);
     line.classList.toggle('good', !stale && verdict?.designed === true);
     line.classList.toggle('bad', !stale && verdict?.designed === false);
   }
+}
+
+/**
+ * The verdict `verdict` on step `step`'s law, said to be of a law other than the one typed.
+ * @param {number} step
+ * @param {Jobs['law-verdicts']['result'][number]} verdict
+ */
+function staleText(step, verdict) {
+  const args = { output: `v${step}`, law: verdict.law, verdict: verdict.text };
+  return verdict.on === null
+    ? t('law-stale', args)
+    : t('law-stale-after', { ...args, previous: `v${step - 1}`, previousLaw: verdict.on });
 }
 
 /**
@@ -144,16 +155,16 @@ export function fillNames(container, language) {
         ]),
       );
     const head = el('tr', {}, [
-      el('th', { scope: 'col', textContent: 'name' }),
-      el('th', { scope: 'col', textContent: 'symbol' }),
-      el('th', { scope: 'col', textContent: 'unit' }),
-      el('th', { scope: 'col', textContent: 'meaning' }),
+      el('th', { scope: 'col', textContent: t('law-names-name') }),
+      el('th', { scope: 'col', textContent: t('law-names-symbol') }),
+      el('th', { scope: 'col', textContent: t('law-names-unit') }),
+      el('th', { scope: 'col', textContent: t('law-names-meaning') }),
     ]);
     const functions = language.functions.map((f) => f.doc).join('; ');
     details.replaceChildren(
       /** @type {HTMLElement} */ (details.querySelector('summary')),
       el('div', { className: 'table-scroll' }, [el('table', {}, [head, ...rows])]),
-      el('p', { textContent: `With + − * / ^ (or · and −), parentheses, numbers and the functions ${functions}.` }),
+      el('p', { textContent: t('law-names-functions', { functions }) }),
     );
   }
 }

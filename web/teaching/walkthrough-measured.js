@@ -1,7 +1,7 @@
-// The design walkthrough's measured statements (web/teaching/walkthrough-text.js): the conditions
-// its words state over its measurements table (web/teaching/measurements/walkthrough.csv) and the
-// phrases with digits that are settings or constants, not measurements. tests/measurements.test.mjs
-// checks both.
+// The design walkthrough's measured statements (its English messages,
+// web/locales/en/walkthrough.ftl): the conditions its words state over its measurements table
+// (web/teaching/measurements/walkthrough.csv) and the phrases with digits that are settings or
+// constants, not measurements. tests/measurements.test.mjs checks both.
 
 // What the words state about the runs, as conditions over the table.
 export const WALKTHROUGH_HOLDS = [

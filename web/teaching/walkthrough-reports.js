@@ -1,10 +1,12 @@
 // What a run's results say in the walkthrough: the stability report (V against its bound) and the
-// table comparing the Euler and RK4 predictors. The figures come from the core; this formats them.
+// table comparing the Euler and RK4 predictors. The figures come from the core; this formats them
+// in the words of the walkthrough's messages.
+import { FluentNumber } from '@fluent/bundle';
 import { el } from '../ui/dom.js';
+import { t } from '../l10n/l10n.js';
 import { percent } from '../plots/numbers.js';
 import { STABILITY_CAUSES } from './walkthrough-text.js';
-import { TABLE } from './table.js';
-import { render } from './measured.js';
+import { decimal, measured } from './walkthrough-sections.js';
 
 /**
  * The metrics of a finished run that recorded something.
@@ -16,15 +18,30 @@ import { render } from './measured.js';
  * @param {import('../worker/protocol.js').Done['stability']} st
  */
 export function stabilityText(st) {
-  if (!st) return 'Nothing was recorded.';
+  if (!st) return t('walkthrough-stability-nothing');
   const b = st.bound;
-  const head = `λ = 2·min(k) = ${b.lambda} 1/s, ε = ${b.eps} (${b.eps ? 'robust terms on' : 'robust terms off, so the bound is V(0)·e^(−λt)'}). `;
-  if (st.outside === 0) return `${head}V stays under the bound at all ${st.samples} samples.`;
-  const why = render(STABILITY_CAUSES[st.cause] ?? '', TABLE);
+  const bound = { lambda: decimal(String(b.lambda)), eps: decimal(String(b.eps)) };
+  const head = t(b.eps ? 'walkthrough-stability-bound-robust' : 'walkthrough-stability-bound-off', bound);
+  if (st.outside === 0) return `${head} ${t('walkthrough-stability-under', { samples: count(st.samples) })}`;
+  const cause = STABILITY_CAUSES[st.cause];
+  const why = cause ? measured(cause) : '';
   // V is above the bound at some sample, so at a first one.
   const first = /** @type {number} */ (st.first_outside);
-  return `${head}V is above the bound at ${st.outside} of ${st.samples} samples, first at t = ${Number(first.toPrecision(6))} s; ${st.outside_saturated} of them with the voltage saturated (${st.saturated} samples are saturated in all). ${why}`;
+  const above = t('walkthrough-stability-above', {
+    outside: count(st.outside),
+    samples: count(st.samples),
+    first: decimal(String(Number(first.toPrecision(6)))),
+    outsideSaturated: count(st.outside_saturated),
+    saturated: count(st.saturated),
+  });
+  return `${head} ${above} ${why}`;
 }
+
+/**
+ * A count of samples as the report writes it, digits ungrouped, and as a number for the plural.
+ * @param {number} n
+ */
+const count = (n) => new FluentNumber(n, { useGrouping: false });
 
 /**
  * The runs of one scenario with each predictor (`results`), as a sentence and a table.
@@ -33,12 +50,12 @@ export function stabilityText(st) {
 export function comparison(results) {
   const rows = [
     [
-      'predictor',
-      'tracking RMS (rad/s)',
-      'speed-estimate RMS (rad/s)',
-      'flux-estimate RMS (Wb)',
-      'mean NIS',
-      'samples at the voltage limit',
+      t('walkthrough-compare-predictor'),
+      t('walkthrough-compare-tracking'),
+      t('walkthrough-compare-speed'),
+      t('walkthrough-compare-flux'),
+      t('walkthrough-compare-nis'),
+      t('walkthrough-compare-saturated'),
     ],
   ];
   for (const r of results) {
@@ -47,10 +64,10 @@ export function comparison(results) {
     if (!m) throw new Error(`the ${r.predictor} run recorded nothing`);
     rows.push([
       r.predictor,
-      m.tracking_rms.toPrecision(3),
-      m.speed_estimate_error_rms.toPrecision(3),
-      m.flux_estimate_error_rms.toPrecision(3),
-      m.mean_nis.toPrecision(3),
+      decimal(m.tracking_rms.toPrecision(3)),
+      decimal(m.speed_estimate_error_rms.toPrecision(3)),
+      decimal(m.flux_estimate_error_rms.toPrecision(3)),
+      decimal(m.mean_nis.toPrecision(3)),
       percent(m.saturated_share),
     ]);
   }
@@ -78,7 +95,9 @@ export function comparison(results) {
   // Every run's metrics are there, as the rows above found.
   return [
     el('p', {
-      textContent: `Same scenario and seed, only the EKF predictor differs; figures from t = ${/** @type {Metrics} */ (results[0].metrics).transient_end.toPrecision(3)} s on, the end of the start-up transient, as in the figures strip.`,
+      textContent: t('walkthrough-compare-note', {
+        from: decimal(/** @type {Metrics} */ (results[0].metrics).transient_end.toPrecision(3)),
+      }),
     }),
     table,
   ];

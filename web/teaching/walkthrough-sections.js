@@ -1,22 +1,54 @@
 // The walkthrough's sections as the page shows them: each one's prose (its numbers filled in from
 // the measurements table), equations, knobs and plots, the lumped-parameter table, and the note
-// that the IFOC baseline drives the motor.
+// that the IFOC baseline drives the motor. Their words are messages of the teaching part
+// (walkthrough.ftl), loaded before the sections are built.
 import { el } from '../ui/dom.js';
+import { language, t, teachingLoaded } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
 import { lawBlock } from './law-editor.js';
 import { TABLE } from './table.js';
-import { render } from './measured.js';
+import { measuredArgs } from './measured.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { PlotDef } from '../plots/plot-defs.js' */
+/** @import { Label, SectionPlot } from './walkthrough-text.js' */
+
+/** @type {Map<string, Record<string, string | number>>} the measurements as variables, by language */
+const measurements = new Map();
 
 /**
- * A template of the walkthrough's text with its measurements filled in.
- * @param {string} template
+ * The message `id` of the walkthrough's text with its measurements filled in.
+ * @param {string} id
  */
-const measured = (template) => render(template, TABLE);
+export function measured(id) {
+  let args = measurements.get(language);
+  if (!args) {
+    args = measuredArgs(TABLE, language);
+    measurements.set(language, args);
+  }
+  return t(id, args);
+}
+
+/**
+ * A number as written in JavaScript (`String`, `toPrecision`), with the decimal separator of the
+ * language shown and its digits unchanged: a table's or a report's figure, as exact as the core's.
+ * @param {string} text
+ */
+export function decimal(text) {
+  const separator = new Intl.NumberFormat(language).formatToParts(0.5).find((p) => p.type === 'decimal')?.value;
+  return separator ? text.replace('.', separator) : text;
+}
+
+/**
+ * A plot's label as shown: its message, or its symbols. A plot's columns are read before the
+ * teaching texts are in (a run asks for them), its words only once its section is built: until
+ * then a message is its id.
+ * @param {Label} label
+ */
+const shownLabel = (label) =>
+  typeof label === 'string' ? label : teachingLoaded() ? t(label.id, label.args) : label.id;
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
 const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);
@@ -40,26 +72,54 @@ export function plotDefs(sectionDivs) {
       ['law', s.law?.plot],
     ]);
     for (const [key, plot] of plots) {
-      if (!plot) continue;
-      /** @type {PlotDef['constants']} */
-      const constants = plot.nisBand
-        ? [['2.5 % quantile'], ['97.5 % quantile']]
-        : plot.bound
-          ? [[`+${plot.bound}`], [`−${plot.bound}`]]
-          : [];
-      defs.push({
-        ...plot,
-        id: `${s.id}-${key}`,
-        constants,
-        // The section's box for its plots, once the sections are built.
-        get container() {
-          return sectionDivs[s.id];
-        },
-        backstepping: BACKSTEPPING.has(s.id),
-      });
+      if (plot) defs.push(plotDef(plot, `${s.id}-${key}`, sectionDivs, s.id));
     }
   }
   return defs;
+}
+
+/**
+ * The definition of `plot`, plot `id` of section `section`, drawn in the section's box for its
+ * plots (`sectionDivs`, by id); its words are read when it is drawn.
+ * @param {SectionPlot} plot
+ * @param {string} id
+ * @param {Record<string, HTMLElement>} sectionDivs
+ * @param {string} section
+ * @returns {PlotDef}
+ */
+function plotDef(plot, id, sectionDivs, section) {
+  const { title, unit, series, ...rest } = plot;
+  return {
+    ...rest,
+    id,
+    get title() {
+      return shownLabel({ id: title });
+    },
+    get unit() {
+      return shownLabel(unit);
+    },
+    get series() {
+      return series.map(([column, label, ...more]) => {
+        /** @type {import('../plots/plot-defs.js').PlotSeries} */
+        const shown = [column, shownLabel(label), ...more];
+        return shown;
+      });
+    },
+    get constants() {
+      /** @type {NonNullable<PlotDef['constants']>} */
+      const lines = plot.nisBand
+        ? [[shownLabel({ id: 'walkthrough-nis-low' })], [shownLabel({ id: 'walkthrough-nis-high' })]]
+        : plot.bound
+          ? [[`+${plot.bound}`], [`−${plot.bound}`]]
+          : [];
+      return lines;
+    },
+    // The section's box for its plots, once the sections are built.
+    get container() {
+      return sectionDivs[section];
+    },
+    backstepping: BACKSTEPPING.has(section),
+  };
 }
 
 /**
@@ -72,49 +132,47 @@ export function plotDefs(sectionDivs) {
  */
 export function sectionElement(s, onCompare) {
   const div = el('section', { className: 'step', id: `section-${s.id}` });
-  div.append(el('h2', { textContent: s.title }));
+  const title = t(s.title);
+  div.append(el('h2', { textContent: title }));
   for (const p of s.prose) div.append(el('p', { textContent: measured(p) }));
   if (s.figure)
     div.append(
       el('figure', { className: 'diagram' }, [
         scrollBox(
           el('div', { className: 'table-scroll' }, [
-            el('img', { src: s.figure.src, alt: s.figure.alt, loading: 'lazy', width: 760, height: 300 }),
+            el('img', { src: s.figure.src, alt: t(`${s.figure.text}.alt`), loading: 'lazy', width: 760, height: 300 }),
           ]),
-          `Diagram of section ${s.title}`,
+          t('walkthrough-diagram-label', { section: title }),
         ),
-        el('figcaption', { textContent: s.figure.caption }),
+        el('figcaption', { textContent: t(s.figure.text) }),
       ]),
     );
-  s.equations.forEach((e, i) => div.append(scrollBox(laterTex(e), `Equation ${i + 1} of section ${s.title}`)));
+  s.equations.forEach((e, i) =>
+    div.append(scrollBox(laterTex(e), t('walkthrough-equation-label', { number: i + 1, section: title }))),
+  );
   if (s.note) div.append(el('p', { className: 'note', textContent: measured(s.note) }));
   // The numbers a run gives, apart from the derivation they illustrate.
   if (s.shows)
     div.append(
       el('div', { className: 'run-shows' }, [
-        el('h3', { textContent: 'What the run shows' }),
+        el('h3', { textContent: t('walkthrough-run-shows') }),
         ...s.shows.map((p) => el('p', { textContent: measured(p) })),
       ]),
     );
-  if (s.lumped)
-    div.append(scrollBox(el('div', { className: 'lumped' }), 'Lumped parameters of the plant and the model'));
+  if (s.lumped) div.append(scrollBox(el('div', { className: 'lumped' }), t('walkthrough-lumped-label')));
   if (s.stability)
-    div.append(el('p', { className: 'stability-report', textContent: 'Run a scenario to compare V with the bound.' }));
+    div.append(el('p', { className: 'stability-report', textContent: t('walkthrough-stability-waiting') }));
   if (s.compare) {
-    const button = el('button', {
-      type: 'button',
-      className: 'compare',
-      textContent: 'Compare Euler and RK4 predictors on this scenario',
-    });
+    const button = el('button', { type: 'button', className: 'compare', textContent: t('walkthrough-compare-button') });
     button.addEventListener('click', onCompare);
-    div.append(button, scrollBox(el('div', { className: 'compare-result' }), 'Euler and RK4 predictors compared'));
+    div.append(button, scrollBox(el('div', { className: 'compare-result' }), t('walkthrough-compare-label')));
   }
   if (s.knobs.length) {
     const knobs = el('div', { className: 'knobs' });
     knobs.dataset.keys = s.knobs.join(' ');
-    div.append(el('h3', { textContent: 'Design knobs' }), knobs);
+    div.append(el('h3', { textContent: t('walkthrough-knobs') }), knobs);
   }
-  if (s.law) div.append(lawBlock(s.law));
+  if (s.law) div.append(lawBlock(s.law.step, t(s.law.intro)));
   const plots = el('div', { className: 'section-plots' });
   div.append(plots);
   return [div, plots];
@@ -128,11 +186,7 @@ export function sectionElement(s, onCompare) {
 export function ifocNote(container, ifoc) {
   let note = container.querySelector('.ifoc-note');
   if (ifoc && !note) {
-    note = el('p', {
-      className: 'ifoc-note',
-      textContent:
-        'This scenario runs the classical IFOC baseline. The backstepping terms below are evaluated from the EKF estimate for comparison; they are not what drives the motor.',
-    });
+    note = el('p', { className: 'ifoc-note', textContent: t('walkthrough-ifoc-note') });
     container.prepend(note);
   } else if (!ifoc && note) note.remove();
 }
@@ -190,9 +244,12 @@ export function lumpedTable(info) {
   for (const which of /** @type {const} */ (['plant', 'model'])) {
     table.append(
       el('tr', {}, [
-        el('th', { scope: 'row', textContent: which }),
+        el('th', {
+          scope: 'row',
+          textContent: t(which === 'plant' ? 'walkthrough-lumped-plant' : 'walkthrough-lumped-model'),
+        }),
         ...LUMPED.map((k) => {
-          const cell = el('td', { textContent: info[which][k].toPrecision(5) });
+          const cell = el('td', { textContent: decimal(info[which][k].toPrecision(5)) });
           if (info.plant[k] !== info.model[k]) cell.className = 'differs';
           return cell;
         }),

@@ -1,7 +1,9 @@
 // The design walkthrough: for each of the eight sections its prose, its equations (KaTeX), its
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
-// Every number shown here comes from the core (through the worker); the page only formats it.
+// Every number shown here comes from the core (through the worker); the page only formats it. Its
+// words are the teaching part's messages (walkthrough.ftl), fetched before the sections are built.
 import { Plots } from '../plots/plots.js';
+import { loadTeaching, t, teachingLoaded } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
@@ -70,8 +72,10 @@ export class Walkthrough {
     this.pending = null;
     this.opened = false; // whether the walkthrough has been shown
     this.onCompare = onCompare;
-    /** @type {string | null} the last run's stability report */
-    this.report = null;
+    /** @type {import('../worker/protocol.js').Done['stability'] | undefined} the last run's stability report */
+    this.stability = undefined;
+    /** @type {Promise<boolean> | null} the sections being built (whether they were) */
+    this.building = null;
     /** @type {(() => void) | null} told when the sections are built */
     this.onBuilt = null;
     /** @type {() => Promise<Jobs['law-language']['result']>} asks for the language of the steps' own laws */
@@ -117,10 +121,27 @@ export class Walkthrough {
 
   /**
    * Builds the sections, once: when the walkthrough is first shown or the page is idle after the
-   * first run is drawn, whichever comes first (the first plot does not wait for them). They take
-   * the last description and stability report.
+   * first run is drawn, whichever comes first (the first plot does not wait for them), once their
+   * texts are in. They take the last description and stability report. Resolves to whether they
+   * are built: when their texts could not be fetched, the next call tries again.
+   * @returns {Promise<boolean>}
    */
   build() {
+    this.building ??= loadTeaching().then(
+      () => {
+        this.buildSections();
+        return true;
+      },
+      () => {
+        this.building = null;
+        return false;
+      },
+    );
+    return this.building;
+  }
+
+  /** Builds the sections in the container, once; their texts are in. */
+  buildSections() {
     if (this.built()) return;
     for (const s of SECTIONS) {
       const [section, plots] = sectionElement(s, this.onCompare);
@@ -128,10 +149,15 @@ export class Walkthrough {
       this.container.append(section);
     }
     if (this.info) this.describe(this.info);
-    if (this.report !== null)
-      /** @type {Element} */ (this.container.querySelector('.stability-report')).textContent = this.report;
+    this.showReport();
     showVerdicts(this.container, this.verdicts);
     this.onBuilt?.();
+  }
+
+  /** Writes the last run's stability report in its section, once built and a run has ended. */
+  showReport() {
+    const report = this.container.querySelector('.stability-report');
+    if (report && this.stability !== undefined) report.textContent = stabilityText(this.stability);
   }
 
   /**
@@ -161,8 +187,7 @@ export class Walkthrough {
    * @param {string} reason
    */
   verdictsFailed(reason) {
-    for (const root of this.lawRoots())
-      sayOfTypedLaws(root, `The verdict on your law could not be computed: ${reason}`);
+    for (const root of this.lawRoots()) sayOfTypedLaws(root, t('law-verdict-failed', { reason }));
   }
 
   /** Where verdicts are shown: the steps here, and the settings form's own-law fields. */
@@ -213,9 +238,8 @@ export class Walkthrough {
     this.nisBand = nisBand;
     this.stale = true;
     this.pending = null;
-    this.report = stabilityText(stability);
-    const report = this.container.querySelector('.stability-report');
-    if (report) report.textContent = this.report;
+    this.stability = stability;
+    this.showReport();
   }
 
   /**
@@ -226,7 +250,7 @@ export class Walkthrough {
   checkingLaws(checking) {
     this.showVerdicts([]);
     if (!checking) return;
-    for (const root of this.lawRoots()) sayOfTypedLaws(root, 'Checking your law against the designed dynamics…');
+    for (const root of this.lawRoots()) sayOfTypedLaws(root, t('law-checking'));
   }
 
   /** Whether the walkthrough is on screen. */
@@ -239,10 +263,16 @@ export class Walkthrough {
     return !this.stale && this.pending === null;
   }
 
-  /** The walkthrough has just been shown: its equations are typeset (the first time) and learn
-   * whether they scroll, and a waiting view is drawn. */
+  /** The walkthrough has just been shown: once its sections are built, its equations are typeset
+   * (the first time) and learn whether they scroll, and a waiting view is drawn. Should its texts
+   * fail to load (the network gone), the page says so. */
   shown() {
-    this.build();
+    if (teachingLoaded()) this.buildSections();
+    this.build().then((built) => (built ? this.opening() : say(t('walkthrough-load-failed'))));
+  }
+
+  /** The walkthrough is shown with its sections built. */
+  opening() {
     if (!this.opened) this.previewLaws();
     this.listNames();
     this.opened = true;
@@ -251,9 +281,9 @@ export class Walkthrough {
     typesetWaiting(this.container).then(
       () =>
         markScrollable([.../** @type {NodeListOf<HTMLElement>} */ (this.container.querySelectorAll('.scroll-box'))]),
-      () => say('The equations could not be loaded: check the connection and open the walkthrough again.'),
+      () => say(t('walkthrough-equations-failed')),
     );
-    if (this.pending) {
+    if (this.pending && this.visible()) {
       this.plots.show(this.pending, { ifoc: this.ifoc });
       this.pending = null;
     }
@@ -267,7 +297,7 @@ export class Walkthrough {
   receive(view) {
     if (this.stale) {
       this.stale = false;
-      if (this.visible()) this.plots.show(view, { ifoc: this.ifoc });
+      if (this.visible() && this.built()) this.plots.show(view, { ifoc: this.ifoc });
       else this.pending = view;
     } else if (this.pending === null) {
       this.plots.refine(view);
