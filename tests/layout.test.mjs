@@ -5,6 +5,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { browserSuite, openWalkthrough, settled } from './browser.mjs';
+import { LANGS } from '../scripts/l10n-lint.mjs';
+import { messagesOf } from './texts.mjs';
 
 const suite = browserSuite();
 const TABS = ['plots', 'walkthrough', 'lessons', 'analysis'];
@@ -80,6 +82,68 @@ for (const [width, height] of [
       await check('settings open');
     }));
 }
+
+/**
+ * The visible elements whose text is cut by their own box (wider or taller than a box that hides
+ * what overflows it), as `tag#id.class: text`.
+ */
+const clipped = (page) =>
+  page.evaluate(() =>
+    [...document.querySelectorAll('body *')]
+      .filter((e) => {
+        if (!e.checkVisibility({ checkVisibilityCSS: true }) || e.closest('.sr-only, .katex, .u-over, canvas'))
+          return false;
+        const style = getComputedStyle(e);
+        const hides = (o) => o === 'hidden' || o === 'clip';
+        return (
+          (hides(style.overflowX) && e.scrollWidth > e.clientWidth + 1) ||
+          (hides(style.overflowY) && e.scrollHeight > e.clientHeight + 1)
+        );
+      })
+      .filter((e) => e.textContent.trim() !== '' && e.clientWidth > 1)
+      .map(
+        (e) => `${e.tagName.toLowerCase()}#${e.id}.${[...e.classList].join('.')}: ${e.textContent.trim().slice(0, 40)}`,
+      ),
+  );
+
+// Every language on a phone and a wide screen: the page in that language, on every tab (the
+// settings open, a lesson open) neither scrolls sideways nor cuts a text off in its box.
+for (const lang of LANGS)
+  test(`${lang}: at 390×844 and 1440×900 no tab scrolls sideways or cuts its text, with the settings and a lesson open`, () =>
+    withPage(`?v=1&preset=step#lang=${lang}`, [390, 844], async (page) => {
+      assert.equal(await page.evaluate(() => document.documentElement.lang), lang);
+      const run = messagesOf(lang, 'page.ftl').get('run-button');
+      assert.equal((await page.textContent('#run'))?.trim(), run?.trim(), 'the Run button speaks the language');
+      const found = [];
+      const check = async (where) => {
+        const { over, culprits } = await sideways(page);
+        if (over > 0)
+          found.push(`${where}: the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);
+        found.push(...(await clipped(page)).map((c) => `${where}: cut off: ${c}`));
+      };
+      for (const size of [
+        [390, 844],
+        [1440, 900],
+      ]) {
+        await page.setViewportSize({ width: size[0], height: size[1] });
+        for (const tab of [...TABS, 'challenge']) {
+          await showTab(page, tab);
+          await check(`${size[0]} px, ${tab}`);
+        }
+        await showTab(page, 'plots');
+        await page.click('#settings-toggle');
+        await check(`${size[0]} px, settings open`);
+        await page.click('#settings-toggle');
+      }
+      await showTab(page, 'lessons');
+      await page.click('#lessons [data-lesson] >> nth=3');
+      await page.waitForSelector('#lesson-panel:not([hidden])');
+      await page.click('#lesson-panel .hint summary');
+      await check('1440 px, a lesson open');
+      await page.setViewportSize({ width: 390, height: 844 });
+      await check('390 px, a lesson open');
+      assert.deepEqual(found, []);
+    }));
 
 /**
  * The smallest font size of visible text on the page: every non-blank text node whose element has

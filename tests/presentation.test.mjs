@@ -1,12 +1,14 @@
-// Presentation mode, every lesson, at 1280×720 and 1024×768: opened one after another, each lesson
-// shows the plot its question is about (the lesson's `plot`) whole, its title, axes and legend
-// inside the window and clipped by no box, beside its question, which its column holds without
-// scrolling; the model-error map's axis text is as large as the other plots'. One browser, one
-// page a size, the lessons in turn; each check waits on the page's own states.
+// Presentation mode, every lesson, at 1280×720 and 1024×768, in every language the page speaks:
+// opened one after another, each lesson shows the plot its question is about (the lesson's `plot`)
+// whole, its title, axes and legend inside the window and clipped by no box, beside its question,
+// which its column holds without scrolling, set at 24 px or more; the model-error map's axis text
+// is as large as the other plots'. One browser, one page a size and language, the lessons in turn,
+// two pages at a time; each check waits on the page's own states.
 import { describe, test } from 'node:test';
 import assert from 'node:assert/strict';
 import { browserSuite, settled } from './browser.mjs';
 import { LESSONS } from '../web/teaching/teaching.js';
+import { LANGUAGES } from '../web/l10n/languages.js';
 
 const suite = browserSuite();
 // A smaller map than the lesson's own (3 cells × 2 seeds for 11 × 10): its plot is laid out the same.
@@ -88,40 +90,41 @@ async function openLesson(page, i) {
   await page.waitForSelector(`#lesson-panel[data-shown="${lesson.id}"]`);
 }
 
-// The two sizes run side by side, each in its own page and worker.
+// Two pages run side by side, each with its own worker.
 describe('presentation mode, every lesson', { concurrency: 2 }, () => {
-  for (const [width, height] of [
-    [1280, 720],
-    [1024, 768],
-  ])
-    test(`presentation mode at ${width}×${height}: every lesson shows its plot whole beside its whole question`, () =>
-      suite.withPage('?v=1&preset=step#present=1', async (page) => {
-        await page.setViewportSize({ width, height });
-        await settled(page);
-        assert.equal(await page.locator('#lessons [data-lesson]').count(), LESSONS.length);
-        const found = [];
-        for (const [i, lesson] of LESSONS.entries()) {
-          await openLesson(page, i);
-          const at = await placement(page);
-          const where = `lesson ${i + 1} (${lesson.id})`;
-          assert.equal(at.plot, lesson.plot, `${where}: the plot marked`);
-          assert.equal(at.tab, `panel-${lesson.tab ?? 'plots'}`, `${where}: the plot's tab`);
-          if (at.column[0] > at.column[1]) at.out.push(`its column scrolls: ${at.column[0]} > ${at.column[1]} px`);
-          if (at.size < 24) at.out.push(`its question is set at ${at.size} px`);
-          if (!at.beside) at.out.push('its question does not stand beside the plot');
-          found.push(...at.out.map((o) => `${where}: ${o}`));
-          if (lesson.map) {
-            // The map's axis text is as large as another plot's in presentation mode.
-            const fonts = await page.evaluate(() => ({
-              map: window.imlab.map()?.axes.map((a) => a.font[2]),
-              speed: window.imlab.plots.drawn()[0].axes.map((a) => a.font[2]),
-            }));
-            assert.ok(fonts.map, `${where}: the map's plot is drawn`);
-            for (const px of fonts.map)
-              if (px < Math.min(...fonts.speed))
-                found.push(`${where}: the map's ticks are ${px} px, a plot's ${fonts.speed}`);
+  for (const [lang] of LANGUAGES)
+    for (const [width, height] of [
+      [1280, 720],
+      [1024, 768],
+    ])
+      test(`${lang}: presentation mode at ${width}×${height}: every lesson shows its plot whole beside its whole question`, () =>
+        suite.withPage(`?v=1&preset=step#present=1&lang=${lang}`, async (page) => {
+          await page.setViewportSize({ width, height });
+          await settled(page);
+          assert.equal(await page.locator('#lessons [data-lesson]').count(), LESSONS.length);
+          const found = [];
+          for (const [i, lesson] of LESSONS.entries()) {
+            await openLesson(page, i);
+            const at = await placement(page);
+            const where = `${lang}: lesson ${i + 1} (${lesson.id})`;
+            assert.equal(at.plot, lesson.plot, `${where}: the plot marked`);
+            assert.equal(at.tab, `panel-${lesson.tab ?? 'plots'}`, `${where}: the plot's tab`);
+            if (at.column[0] > at.column[1]) at.out.push(`its column scrolls: ${at.column[0]} > ${at.column[1]} px`);
+            if (at.size < 24) at.out.push(`its question is set at ${at.size} px`);
+            if (!at.beside) at.out.push('its question does not stand beside the plot');
+            found.push(...at.out.map((o) => `${where}: ${o}`));
+            if (lesson.map) {
+              // The map's axis text is as large as another plot's in presentation mode.
+              const fonts = await page.evaluate(() => ({
+                map: window.imlab.map()?.axes.map((a) => a.font[2]),
+                speed: window.imlab.plots.drawn()[0].axes.map((a) => a.font[2]),
+              }));
+              assert.ok(fonts.map, `${where}: the map's plot is drawn`);
+              for (const px of fonts.map)
+                if (px < Math.min(...fonts.speed))
+                  found.push(`${where}: the map's ticks are ${px} px, a plot's ${fonts.speed}`);
+            }
           }
-        }
-        assert.deepEqual(found, []);
-      }));
+          assert.deepEqual(found, []);
+        }));
 });

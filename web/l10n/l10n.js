@@ -48,6 +48,7 @@ export async function useLanguage(lang) {
   language = lang;
   bundle = new FluentBundle(lang, { useIsolating: false });
   loading.clear();
+  teaching = false;
   document.documentElement.lang = lang;
   if (lang === 'en') add(EN_PAGE, 'en/page');
   else await fetchPart('page');
@@ -75,11 +76,22 @@ async function fetchPart(part) {
 export function loadTeaching() {
   let promise = loading.get('teaching');
   if (!promise) {
-    promise = fetchPart('teaching');
+    promise = fetchPart('teaching').then(
+      () => void (teaching = true),
+      (e) => {
+        // Asked again, it is fetched again.
+        loading.delete('teaching');
+        throw e;
+      },
+    );
     loading.set('teaching', promise);
   }
   return promise;
 }
+
+let teaching = false;
+/** Whether the teaching texts are loaded. */
+export const teachingLoaded = () => teaching;
 
 /** The message files of the language shown that the page fetches (the service worker keeps them). */
 export const languageFiles = () => Object.values(FILES[language] ?? {});
@@ -139,4 +151,55 @@ export function num(value, fraction) {
   })
     .format(value)
     .replace(/^-/, '−');
+}
+
+/**
+ * A message of the core (crate/src/text/message.rs): its id in web/locales/LANG/core-*.ftl and its
+ * arguments, each text shown as it is, a whole number, a number with its shortest digits
+ * (`{real}`), one with a fixed number of decimals (`{fixed, fraction}`), another message, or a
+ * list of messages.
+ * @typedef {{id: string, args: Record<string, CoreArg>}} CoreMessage
+ * @typedef {string | number | {real: number} | {fixed: number, fraction: number} | CoreMessage | CoreMessage[]} CoreArg
+ */
+
+/**
+ * Whether `value` is a message of the core, as it crosses from the worker.
+ * @param {unknown} value
+ * @returns {value is CoreMessage}
+ */
+export const isCoreMessage = (value) =>
+  typeof value === 'object' &&
+  value !== null &&
+  typeof (/** @type {CoreMessage} */ (value).id) === 'string' &&
+  'args' in value;
+
+/**
+ * What the worker said, in the language shown: a message of the core rendered from the language's
+ * messages, or a text as it is (the page's own words, already in the language, or the core's not yet
+ * given as a message).
+ * @param {string | CoreMessage} text
+ * @returns {string}
+ */
+export function said(text) {
+  if (!isCoreMessage(text)) return String(text);
+  /** @type {Record<string, string | number | FluentNumber>} */
+  const args = {};
+  for (const [name, arg] of Object.entries(text.args)) {
+    if (typeof arg === 'string' || typeof arg === 'number') args[name] = arg;
+    else if (Array.isArray(arg)) args[name] = arg.map(said).join(t('core-list-separator'));
+    else if (isCoreMessage(arg)) args[name] = said(arg);
+    else if ('real' in arg) args[name] = shortest(arg.real);
+    else args[name] = num(arg.fixed, arg.fraction);
+  }
+  return t(text.id, args);
+}
+
+/**
+ * `value` with the fewest digits that read back to it, as the core writes it, with the language's
+ * decimal separator.
+ * @param {number} value
+ */
+function shortest(value) {
+  const separator = new Intl.NumberFormat(language).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
+  return String(value).replace('.', separator);
 }
