@@ -1,6 +1,7 @@
 //! Motor parameters in SI units and the paper's lumped parameters a1..a10, b (Section 2.1).
 
 use serde::{Deserialize, Serialize};
+use crate::text::Message;
 use std::fmt;
 
 /// Physical parameters of the induction motor and its load (SI units).
@@ -157,21 +158,28 @@ pub enum ParamError {
     },
 }
 
+impl ParamError {
+    /// What the error says, as a message of `core-scenario.ftl`.
+    pub fn message(&self) -> Message {
+        match self {
+            ParamError::NotPositive { name, value } => Message::new("param-not-positive")
+                .text("name", *name)
+                .real("value", *value),
+            ParamError::Negative { name, value } => Message::new("param-negative")
+                .text("name", *name)
+                .real("value", *value),
+            ParamError::SigmaNotPositive { sigma, m, ls, lr } => Message::new("param-sigma")
+                .fixed("sigma", *sigma, 6)
+                .real("m", *m)
+                .real("ls", *ls)
+                .real("lr", *lr),
+        }
+    }
+}
+
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ParamError::NotPositive { name, value } => {
-                write!(f, "{name} = {value} must be a finite number > 0")
-            }
-            ParamError::Negative { name, value } => {
-                write!(f, "{name} = {value} must be a finite number ≥ 0")
-            }
-            ParamError::SigmaNotPositive { sigma, m, ls, lr } => write!(
-                f,
-                "leakage σ = Ls − M²/Lr = {sigma:.6} H must be > 0 (M = {m}, Ls = {ls}, Lr = {lr}): \
-                 M² must be smaller than Ls·Lr"
-            ),
-        }
+        self.message().fmt(f)
     }
 }
 

@@ -46,8 +46,51 @@ pub fn panic_message() -> Option<String> {
     LAST_PANIC.with(|p| p.borrow().clone())
 }
 
-fn js_error(e: impl std::fmt::Display) -> JsValue {
-    JsValue::from_str(&e.to_string())
+/// An error as the page receives it: the core's message (its id and arguments, which the page
+/// renders in the reader's language) where the error has one, else its text.
+trait Refusal {
+    fn refusal(&self) -> JsValue;
+}
+
+/// Errors said as their text.
+macro_rules! said_as_text {
+    ($($t:ty),*) => {$(
+        impl Refusal for $t {
+            fn refusal(&self) -> JsValue {
+                JsValue::from_str(&self.to_string())
+            }
+        }
+    )*};
+}
+
+impl Refusal for crate::text::Message {
+    fn refusal(&self) -> JsValue {
+        serde_wasm_bindgen::to_value(self).unwrap_or_else(|e| JsValue::from_str(&e.to_string()))
+    }
+}
+
+said_as_text!(
+    String,
+    &str,
+    crate::challenge::ChallengeError,
+    crate::sim::SimError,
+    serde_wasm_bindgen::Error
+);
+
+impl Refusal for crate::params::ParamError {
+    fn refusal(&self) -> JsValue {
+        self.message().refusal()
+    }
+}
+
+impl Refusal for crate::scenario::ScenarioError {
+    fn refusal(&self) -> JsValue {
+        self.message().refusal()
+    }
+}
+
+fn js_error(e: impl Refusal) -> JsValue {
+    e.refusal()
 }
 
 /// A closed-loop run, advanced in chunks from JavaScript.

@@ -5,7 +5,7 @@ use crate::control::Reference;
 use crate::record::Row;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::sim::{mib, trace_bytes, Simulation, MAX_TRACE_BYTES};
-use crate::text::{csv, short};
+use crate::text::{csv, short, Message};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -187,13 +187,10 @@ pub fn sweep_point(
     let bytes = trace_bytes(&run.s, 1);
     if bytes > MAX_TRACE_BYTES {
         return Err(ScenarioError::TooLarge {
-            what: format!(
-                "each sweep run keeps its {} samples, {} MiB, more than the {} MiB allowed; \
-                 shorten the sweep's run length or raise 'ts'",
-                run.s.steps(),
-                mib(bytes),
-                MAX_TRACE_BYTES >> 20
-            ),
+            what: Message::new("sweep-run-too-large")
+                .count("samples", run.s.steps())
+                .fixed("mib", mib(bytes), 1)
+                .count("max", MAX_TRACE_BYTES >> 20),
         });
     }
     let mut sim = Simulation::new(&run.s, 1)?;
@@ -241,14 +238,14 @@ impl SineRun {
             return Err(ScenarioError::OutOfRange {
                 key: "sine.amp".to_string(),
                 value: settings.amp,
-                allowed: "0 < sine.amp for a sweep".to_string(),
+                allowed: Message::new("sweep-allowed-amp"),
             });
         }
         if freq >= 0.5 / s.ts {
             return Err(ScenarioError::OutOfRange {
                 key: "freq".to_string(),
                 value: freq,
-                allowed: format!("below the Nyquist frequency 1/(2·Ts) = {} Hz", 0.5 / s.ts),
+                allowed: Message::new("sweep-allowed-nyquist").real("nyquist", 0.5 / s.ts),
             });
         }
         let half = settings.duration / 2.0;
@@ -257,11 +254,9 @@ impl SineRun {
             return Err(ScenarioError::OutOfRange {
                 key: "freq".to_string(),
                 value: freq,
-                allowed: format!(
-                    "at least one period in the fit window: freq ≥ {} Hz for a {} s run",
-                    1.0 / half,
-                    settings.duration
-                ),
+                allowed: Message::new("sweep-allowed-period")
+                    .real("least", 1.0 / half)
+                    .real("duration", settings.duration),
             });
         }
         let period = 1.0 / freq;
@@ -305,14 +300,10 @@ impl SineRun {
         if !resolved {
             return Err(unmeasurable(
                 settings,
-                format!(
-                    "the fit of ω_d itself over the fit window finds {} rad/s, more than {} % off \
-                     (the amplitude's square underflows, or offset + amplitude rounds to the \
-                     offset {} rad/s)",
-                    short(reference_amp),
-                    SWEEP_AMP_TOL * 100.0,
-                    short(settings.offset)
-                ),
+                Message::new("sweep-unresolved")
+                    .short("found", reference_amp)
+                    .real("tolerance", SWEEP_AMP_TOL * 100.0)
+                    .short("offset", settings.offset),
             ));
         }
         Ok(())
@@ -351,10 +342,10 @@ impl SineRun {
         if let Some((name, value)) = figures.iter().find(|(_, v)| !v.is_finite()) {
             return Err(unmeasurable(
                 settings,
-                format!(
-                    "at {} Hz the response reads as {name} = {value}, too small for the fit",
-                    short(freq)
-                ),
+                Message::new("sweep-too-small")
+                    .short("freq", freq)
+                    .text("name", *name)
+                    .real("value", *value),
             ));
         }
         let settled =
@@ -419,11 +410,11 @@ fn failed_point(freq: f64, rated_current: f64, failure: Option<String>) -> Sweep
 }
 
 /// The error for a sweep amplitude that cannot be measured, with the reason.
-fn unmeasurable(settings: &SweepSettings, reason: String) -> ScenarioError {
+fn unmeasurable(settings: &SweepSettings, reason: Message) -> ScenarioError {
     ScenarioError::OutOfRange {
         key: "sine.amp".to_string(),
         value: settings.amp,
-        allowed: format!("an amplitude the sweep can measure: {reason}; raise the amplitude"),
+        allowed: Message::new("sweep-allowed-measurable").said("reason", reason),
     }
 }
 

@@ -2,7 +2,7 @@
 
 use super::{CODEC_VERSION, MAX_SCENARIO_BYTES, PRESETS};
 use crate::params::ParamError;
-use crate::text::{excerpt, short};
+use crate::text::{excerpt, Message};
 use std::fmt;
 
 /// Why a scenario string or value was refused. Every variant names the field (or the piece of
@@ -46,7 +46,7 @@ pub enum ScenarioError {
         /// The value given.
         value: String,
         /// What the field takes.
-        expected: String,
+        expected: Message,
     },
     /// A value outside the field's allowed range.
     OutOfRange {
@@ -55,7 +55,7 @@ pub enum ScenarioError {
         /// The value given.
         value: f64,
         /// The allowed range, e.g. "0 < k1 ≤ 1000000 (1/s)".
-        allowed: String,
+        allowed: Message,
     },
     /// A reference parameter that does not belong to the scenario's reference kind.
     NotApplicable {
@@ -86,73 +86,68 @@ pub enum ScenarioError {
     /// A run that would need more steps or memory than allowed.
     TooLarge {
         /// What was too large and the limit.
-        what: String,
+        what: Message,
     },
 }
 
-impl fmt::Display for ScenarioError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+impl ScenarioError {
+    /// What the error says, as a message of `core-scenario.ftl`.
+    pub fn message(&self) -> Message {
         use ScenarioError::*;
         let q = |text: &str| excerpt(text);
         match self {
-            Missing { key } => write!(
-                f,
-                "field '{key}' is missing (a scenario starts with v={CODEC_VERSION}&preset=NAME)"
-            ),
-            UnsupportedVersion { value } => write!(
-                f,
-                "field 'v' = '{}': unsupported codec version, allowed: {CODEC_VERSION}",
-                q(value)
-            ),
-            UnknownPreset { name } => write!(
-                f,
-                "field 'preset' = '{}': unknown preset, allowed: {}",
-                q(name),
-                PRESETS
-                    .iter()
-                    .map(|p| p.name)
-                    .collect::<Vec<_>>()
-                    .join(", ")
-            ),
-            UnknownKey { key } => write!(
-                f,
-                "field '{}' is not a scenario field (the settings form and `imlab describe` list them)",
-                q(key)
-            ),
-            DuplicateKey { key } => write!(f, "field '{}' is given more than once", q(key)),
-            Malformed { piece } => write!(f, "'{}' is not of the form key=value", q(piece)),
+            Missing { key } => Message::new("scenario-missing")
+                .text("key", *key)
+                .count("version", CODEC_VERSION),
+            UnsupportedVersion { value } => Message::new("scenario-unsupported-version")
+                .text("value", q(value))
+                .count("version", CODEC_VERSION),
+            UnknownPreset { name } => Message::new("scenario-unknown-preset")
+                .text("name", q(name))
+                .text(
+                    "presets",
+                    PRESETS.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+                ),
+            UnknownKey { key } => Message::new("scenario-unknown-key").text("key", q(key)),
+            DuplicateKey { key } => Message::new("scenario-duplicate-key").text("key", q(key)),
+            Malformed { piece } => Message::new("scenario-malformed").text("piece", q(piece)),
             BadValue {
                 key,
                 value,
                 expected,
-            } => write!(
-                f,
-                "field '{key}' = '{}': not valid, expected {expected}",
-                q(value)
-            ),
+            } => Message::new("scenario-bad-value")
+                .text("key", key.as_str())
+                .text("value", q(value))
+                .said("expected", expected.clone()),
             OutOfRange {
                 key,
                 value,
                 allowed,
-            } => write!(
-                f,
-                "field '{key}' = {}: out of range, allowed {allowed}",
-                short(*value)
-            ),
-            NotApplicable { key, reference } => write!(
-                f,
-                "field '{key}' does not apply to the reference '{reference}' (set ref= first)"
-            ),
-            Physics { which, error } => write!(f, "{which} parameters: {error}"),
-            BadFormula { key, error } => write!(f, "field '{key}': {error}"),
-            TooLong { bytes } => write!(
-                f,
-                "the scenario is {bytes} bytes long, more than the {MAX_SCENARIO_BYTES} bytes \
-                 ({} KiB) allowed",
-                MAX_SCENARIO_BYTES / 1024
-            ),
-            TooLarge { what } => write!(f, "{what}"),
+            } => Message::new("scenario-out-of-range")
+                .text("key", key.as_str())
+                .short("value", *value)
+                .said("allowed", allowed.clone()),
+            NotApplicable { key, reference } => Message::new("scenario-not-applicable")
+                .text("key", key.as_str())
+                .text("reference", *reference),
+            Physics { which, error } => Message::new("scenario-physics")
+                .text("which", *which)
+                .said("error", error.message()),
+            BadFormula { key, error } => Message::new("scenario-bad-formula")
+                .text("key", *key)
+                .text("error", error.to_string()),
+            TooLong { bytes } => Message::new("scenario-too-long")
+                .count("bytes", *bytes)
+                .count("max", MAX_SCENARIO_BYTES)
+                .count("kib", MAX_SCENARIO_BYTES / 1024),
+            TooLarge { what } => what.clone(),
         }
+    }
+}
+
+impl fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.message().fmt(f)
     }
 }
 

@@ -7,6 +7,7 @@ use crate::control::Reference;
 use crate::inverter::Shape;
 use crate::observer::Predictor;
 use crate::text::percent::{self, Plus};
+use crate::text::Message;
 use serde::Serialize;
 
 /// Largest seed: the largest integer a JavaScript number holds exactly (2^53 − 1), so that the
@@ -441,12 +442,12 @@ pub(super) fn field(key: &str) -> Option<&'static Field> {
 }
 
 impl Field {
-    fn allowed(&self) -> String {
+    fn allowed(&self) -> Message {
         match self.access {
-            Access::Choice { options, .. } => options.join(" | "),
-            Access::Formula { step } => format!(
-                "a formula of the names step {step} may use (`imlab describe` lists them), or empty"
-            ),
+            Access::Choice { options, .. } => {
+                Message::new("scenario-allowed-choice").text("options", options.join(" | "))
+            }
+            Access::Formula { step } => Message::new("scenario-allowed-formula").count("step", step),
             Access::Number { .. } => {
                 let Range {
                     min,
@@ -454,14 +455,23 @@ impl Field {
                     max,
                     integer,
                 } = self.range;
-                let lo = if min_open { "<" } else { "≤" };
-                let unit = if self.unit.is_empty() {
-                    String::new()
+                let range = Message::new("scenario-allowed-range")
+                    .real("min", min)
+                    .text("below", if min_open { "<" } else { "≤" })
+                    .text("key", self.key)
+                    .real("max", max);
+                let range = if self.unit.is_empty() {
+                    range
                 } else {
-                    format!(" ({})", self.unit)
+                    Message::new("scenario-allowed-unit")
+                        .said("range", range)
+                        .text("unit", self.unit)
                 };
-                let int = if integer { ", whole number" } else { "" };
-                format!("{min} {lo} {} ≤ {max}{unit}{int}", self.key)
+                if integer {
+                    Message::new("scenario-allowed-whole").said("range", range)
+                } else {
+                    range
+                }
             }
         }
     }
@@ -503,7 +513,7 @@ impl Field {
                 let text = decode_formula(value).ok_or_else(|| ScenarioError::BadValue {
                     key: self.key.to_string(),
                     value: value.to_string(),
-                    expected: "a formula, percent-encoded as UTF-8".to_string(),
+                    expected: Message::new("scenario-expected-formula"),
                 })?;
                 if text.trim().is_empty() {
                     s.law[step as usize - 1] = None;
@@ -523,7 +533,7 @@ impl Field {
                     return Err(ScenarioError::BadValue {
                         key: self.key.to_string(),
                         value: value.to_string(),
-                        expected: format!("one of {}", options.join(", ")),
+                        expected: Message::new("scenario-expected-one-of").text("options", options.join(", ")),
                     });
                 }
                 set(s, value);
@@ -533,7 +543,7 @@ impl Field {
                 let v: f64 = parse_number(value).ok_or_else(|| ScenarioError::BadValue {
                     key: self.key.to_string(),
                     value: value.to_string(),
-                    expected: "a decimal number".to_string(),
+                    expected: Message::new("scenario-expected-number"),
                 })?;
                 self.check(v)?;
                 if !set(s, v) {

@@ -5,7 +5,7 @@ use super::fields::{fields, Access};
 use super::{preset, ControllerKind, Scenario, ScenarioError};
 use crate::control::law::Laws;
 use crate::inverter::Shape;
-use crate::text::short;
+use crate::text::Message;
 
 /// `v` rounded down to three significant digits.
 fn down3(v: f64) -> f64 {
@@ -65,8 +65,7 @@ impl Scenario {
             return Err(ScenarioError::OutOfRange {
                 key: "pwm".to_string(),
                 value: 1.0,
-                allowed: "pwm=1 with vlimit=circle or hex: a two-level inverter cannot make the box's corners"
-                    .to_string(),
+                allowed: Message::new("scenario-allowed-pwm"),
             });
         }
         for (which, p) in [("plant", &self.plant), ("model", &self.model)] {
@@ -75,21 +74,20 @@ impl Scenario {
         }
         // In f64, so that a count past usize (or the clamp in `steps`) is still shown as it is.
         let samples = (self.duration / self.ts).round();
-        let (duration, ts) = (short(self.duration), short(self.ts));
         if samples > MAX_STEPS as f64 {
             return Err(ScenarioError::TooLarge {
-                what: format!(
-                    "'duration'/'ts' = {duration} s / {ts} s = {} samples is more than the {MAX_STEPS} allowed; \
-                     shorten 'duration' or raise 'ts'",
-                    short(samples)
-                ),
+                what: Message::new("scenario-too-many-samples")
+                    .short("duration", self.duration)
+                    .short("ts", self.ts)
+                    .short("samples", samples)
+                    .count("max", MAX_STEPS),
             });
         }
         if samples < 1.0 {
             return Err(ScenarioError::TooLarge {
-                what: format!(
-                    "'duration' = {duration} s is shorter than one sample, 'ts' = {ts} s"
-                ),
+                what: Message::new("scenario-shorter-than-sample")
+                    .short("duration", self.duration)
+                    .short("ts", self.ts),
             });
         }
         // At most MAX_STEPS × 8,000 here, far inside u64.
@@ -97,29 +95,29 @@ impl Scenario {
         let work = samples as u64 * per_sample;
         if work > MAX_WORK {
             let substeps = self.substeps;
-            let plant = if self.drive.pwm {
-                format!("'substeps' = {substeps} on each of 7 PWM intervals")
+            let plant = Message::new(if self.drive.pwm {
+                "scenario-work-substeps-pwm"
             } else {
-                format!("'substeps' = {substeps}")
-            };
+                "scenario-work-substeps"
+            })
+            .count("substeps", substeps);
             let how = if per_sample / u64::from(substeps) > if self.drive.pwm { 7 } else { 1 } {
-                format!(
-                    "{plant}, and {substeps} for the perfect observer's prediction ('delay.comp')"
-                )
+                Message::new("scenario-work-prediction")
+                    .said("plant", plant)
+                    .count("substeps", substeps)
             } else {
                 plant
             };
-            let pwm_hint = if self.drive.pwm {
-                ", or turn 'pwm' off"
-            } else {
-                ""
-            };
             return Err(ScenarioError::TooLarge {
-                what: format!(
-                    "the run's work, {samples} samples ('duration'/'ts' = {duration} s / {ts} s) × \
-                     {per_sample} plant RK4 steps a sample ({how}) = {work} steps, is more than the \
-                     {MAX_WORK} allowed; lower 'substeps' or 'duration', or raise 'ts'{pwm_hint}"
-                ),
+                what: Message::new("scenario-too-much-work")
+                    .real("samples", samples)
+                    .short("duration", self.duration)
+                    .short("ts", self.ts)
+                    .count("per_sample", per_sample)
+                    .said("how", how)
+                    .count("work", work)
+                    .count("max", MAX_WORK)
+                    .text("pwm", if self.drive.pwm { "yes" } else { "no" }),
             });
         }
         self.check_law_work(samples)
@@ -142,28 +140,31 @@ impl Scenario {
         let laws = self.laws()?;
         let per_sample = laws.work();
         let works = laws.works();
-        let mut parts: Vec<String> = (0..4)
+        let mut parts: Vec<Message> = (0..4)
             .filter(|&i| works[i] > 0)
-            .map(|i| format!("law.v{} {}", i + 1, works[i]))
+            .map(|i| {
+                Message::new("scenario-law-work-step")
+                    .count("step", i + 1)
+                    .count("work", works[i])
+            })
             .collect();
         let chains = per_sample - works.iter().sum::<u64>();
         if chains > 0 {
-            parts.push(format!("the rates of the own v1 and v3 {chains}"));
+            parts.push(Message::new("scenario-law-work-rates").count("work", chains));
         }
         let fits = (MAX_LAW_WORK / per_sample) as f64;
-        let (duration, ts) = (short(self.duration), short(self.ts));
         Err(ScenarioError::TooLarge {
-            what: format!(
-                "the laws' work, {samples} samples ('duration'/'ts' = {duration} s / {ts} s) × \
-                 {per_sample} operations a sample ({}) = {work}, is more than the {MAX_LAW_WORK} \
-                 allowed (a sine or cosine counts 64 operations, a power 32, exp, ln, tanh and \
-                 atan2 12 each); write laws that take at most {} operations a sample, or \
-                 shorten 'duration' to {} s or raise 'ts' to {} s",
-                parts.join(", "),
-                MAX_LAW_WORK / samples as u64,
-                short(down3(fits * self.ts)),
-                short(up3(self.duration / fits)),
-            ),
+            what: Message::new("scenario-law-work")
+                .real("samples", samples)
+                .short("duration", self.duration)
+                .short("ts", self.ts)
+                .count("per_sample", per_sample)
+                .list("parts", parts)
+                .count("work", work)
+                .count("max", MAX_LAW_WORK)
+                .count("fits", MAX_LAW_WORK / samples as u64)
+                .short("duration_fit", down3(fits * self.ts))
+                .short("ts_fit", up3(self.duration / fits)),
         })
     }
 

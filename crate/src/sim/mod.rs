@@ -10,6 +10,7 @@ use crate::record::{
     COLUMNS, COLUMN_DOCS, NUM_COLUMNS,
 };
 use crate::scenario::{Scenario, ScenarioError};
+use crate::text::Message;
 use closed_loop::{with_filter, Loop, LoopState, Observer};
 pub use closed_loop::{LawFailure, SimError};
 use serde::Serialize;
@@ -26,11 +27,8 @@ pub fn trace_bytes(scenario: &Scenario, every: usize) -> usize {
 }
 
 /// `bytes` in MiB, rounded up to a tenth, so a size just over a limit never reads as equal to it.
-pub fn mib(bytes: usize) -> String {
-    format!(
-        "{:.1}",
-        (bytes as f64 / f64::from(1 << 20) * 10.0).ceil() / 10.0
-    )
+pub fn mib(bytes: usize) -> f64 {
+    (bytes as f64 / f64::from(1 << 20) * 10.0).ceil() / 10.0
 }
 
 /// How a run keeps its samples.
@@ -76,7 +74,7 @@ impl Simulation {
             return Err(ScenarioError::OutOfRange {
                 key: "every".to_string(),
                 value: 0.0,
-                allowed: "1 ≤ every".to_string(),
+                allowed: Message::new("scenario-allowed-every"),
             });
         }
         let steps = scenario.steps();
@@ -87,18 +85,13 @@ impl Simulation {
         let bytes = trace_bytes(scenario, every);
         if !traced && bytes > MAX_TRACE_BYTES {
             // Only a caller that keeps every n-th sample can keep fewer.
-            let fewer = if every > 1 {
-                ", or keep fewer samples (a larger 'every')"
-            } else {
-                ""
-            };
             return Err(ScenarioError::TooLarge {
-                what: format!(
-                    "recording {rows} samples × {NUM_COLUMNS} columns needs {} MiB, more than the {} MiB allowed; \
-                     shorten 'duration' or raise 'ts'{fewer}",
-                    mib(bytes),
-                    MAX_TRACE_BYTES >> 20
-                ),
+                what: Message::new("scenario-trace-too-large")
+                    .count("rows", rows)
+                    .count("columns", NUM_COLUMNS)
+                    .fixed("mib", mib(bytes), 1)
+                    .count("max", MAX_TRACE_BYTES >> 20)
+                    .text("fewer", if every > 1 { "yes" } else { "no" }),
             });
         }
         let (lp, state) = Loop::new(scenario)?;

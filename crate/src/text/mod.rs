@@ -1,11 +1,13 @@
 //! The ground floor for text, used by every module above it: how the core writes numbers into
 //! its messages and figures (`numbers`), how it quotes user input (`quote`), its one percent
-//! codec (`percent`) and its one CSV escaping rule (`csv`).
+//! codec (`percent`), its one CSV escaping rule (`csv`), and what it says to a person (`message`).
 
 pub mod csv;
+mod message;
 mod numbers;
 pub mod percent;
 mod quote;
 
+pub use message::{Arg, Message};
 pub use numbers::{rounded, short, significant, time_text};
 pub use quote::{escape_invisible, excerpt, is_invisible, EXCERPT_CHARS};

@@ -1,0 +1,190 @@
+//! What the core says to a person, as a message id of `web/locales/LANG/core-*.ftl` and its
+//! arguments: the page renders it in the reader's language, and the CLI (and every text the core
+//! writes for a file, such as a CSV's causes) in English from the same English messages, so the two
+//! say the same thing.
+
+use serde::Serialize;
+use std::collections::BTreeMap;
+use std::fmt;
+
+/// A message: its id in the message files and its arguments by name. Its `Display` is its
+/// English text.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Message {
+    /// The message's id (`scenario-unknown-key`).
+    pub id: &'static str,
+    /// Its arguments, by the names the message files use.
+    pub args: BTreeMap<&'static str, Arg>,
+}
+
+/// An argument of a [`Message`]: words the reader gave or a name (shown as they are), a count (a
+/// whole number, which a language may choose a plural by), a number written with its shortest
+/// digits, a number with a fixed number of decimals, or another message.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+#[serde(untagged)]
+pub enum Arg {
+    /// Text shown as it is: a name, a key, quoted input.
+    Text(String),
+    /// A whole number.
+    Count(i64),
+    /// A number written with the fewest digits that read back to it (Rust's `{}`).
+    Real {
+        /// The number.
+        real: f64,
+    },
+    /// A number written with `fraction` decimals.
+    Fixed {
+        /// The number.
+        fixed: f64,
+        /// Its decimals.
+        fraction: u8,
+    },
+    /// A message said inside this one.
+    Said(Box<Message>),
+    /// Messages listed, in order.
+    List(Vec<Message>),
+}
+
+impl Message {
+    /// The message `id`, with no arguments yet.
+    pub fn new(id: &'static str) -> Message {
+        Message {
+            id,
+            args: BTreeMap::new(),
+        }
+    }
+
+    /// With text `value` as `name`.
+    pub fn text(mut self, name: &'static str, value: impl Into<String>) -> Message {
+        self.args.insert(name, Arg::Text(value.into()));
+        self
+    }
+
+    /// With the whole number `value` as `name`.
+    pub fn count(mut self, name: &'static str, value: impl TryInto<i64>) -> Message {
+        let value = value.try_into().unwrap_or(i64::MAX);
+        self.args.insert(name, Arg::Count(value));
+        self
+    }
+
+    /// With `value` as `name`, in its shortest digits.
+    pub fn real(mut self, name: &'static str, value: f64) -> Message {
+        self.args.insert(name, Arg::Real { real: value });
+        self
+    }
+
+    /// With `value` as `name`, with `fraction` decimals.
+    pub fn fixed(mut self, name: &'static str, value: f64, fraction: u8) -> Message {
+        self.args.insert(
+            name,
+            Arg::Fixed {
+                fixed: value,
+                fraction,
+            },
+        );
+        self
+    }
+
+    /// With `value` as `name`, as [`short`](super::short) writes it: its shortest digits, in
+    /// scientific notation past twelve characters.
+    pub fn short(self, name: &'static str, value: f64) -> Message {
+        let plain = format!("{value}");
+        if plain.len() > 12 {
+            self.text(name, format!("{value:e}"))
+        } else {
+            self.real(name, value)
+        }
+    }
+
+    /// With the messages `items` as `name`, a list (joined by ", " in English).
+    pub fn list(mut self, name: &'static str, items: Vec<Message>) -> Message {
+        self.args.insert(name, Arg::List(items));
+        self
+    }
+
+    /// With the message `said` as `name`.
+    pub fn said(mut self, name: &'static str, said: Message) -> Message {
+        self.args.insert(name, Arg::Said(Box::new(said)));
+        self
+    }
+}
+
+#[cfg(feature = "english")]
+mod english {
+    use super::{Arg, Message};
+    use fluent_bundle::concurrent::FluentBundle;
+    use fluent_bundle::{FluentArgs, FluentResource, FluentValue};
+    use std::sync::OnceLock;
+
+    /// The English message files of the core, as the page has them.
+    const FILES: &[(&str, &str)] = &[(
+        "core-scenario.ftl",
+        include_str!("../../../web/locales/en/core-scenario.ftl"),
+    )];
+
+    fn bundle() -> &'static FluentBundle<FluentResource> {
+        static BUNDLE: OnceLock<FluentBundle<FluentResource>> = OnceLock::new();
+        BUNDLE.get_or_init(|| {
+            let mut bundle = FluentBundle::new_concurrent(vec!["en".parse().expect("a language id")]);
+            bundle.set_use_isolating(false);
+            for (name, text) in FILES {
+                let resource = FluentResource::try_new((*text).to_owned())
+                    .unwrap_or_else(|(_, e)| panic!("web/locales/en/{name} does not parse: {e:?}"));
+                bundle
+                    .add_resource(resource)
+                    .unwrap_or_else(|e| panic!("web/locales/en/{name}: {e:?}"));
+            }
+            bundle
+        })
+    }
+
+    /// `message` in English.
+    pub(super) fn render(message: &Message) -> String {
+        let bundle = bundle();
+        let Some(pattern) = bundle.get_message(message.id).and_then(|m| m.value()) else {
+            panic!("no English message {}", message.id);
+        };
+        let mut args = FluentArgs::new();
+        for (name, arg) in &message.args {
+            let value: FluentValue = match arg {
+                Arg::Text(text) => FluentValue::from(text.as_str()),
+                Arg::Count(n) => FluentValue::from(*n),
+                Arg::Real { real } => FluentValue::from(real.to_string()),
+                Arg::Fixed { fixed, fraction } => FluentValue::from(format!("{fixed:.*}", *fraction as usize)),
+                Arg::Said(inner) => FluentValue::from(render(inner)),
+                Arg::List(items) => FluentValue::from(items.iter().map(render).collect::<Vec<_>>().join(", ")),
+            };
+            args.set(*name, value);
+        }
+        let mut errors = vec![];
+        let text = bundle.format_pattern(pattern, Some(&args), &mut errors);
+        assert!(errors.is_empty(), "message {}: {errors:?}", message.id);
+        text.into_owned()
+    }
+}
+
+#[cfg(feature = "english")]
+impl fmt::Display for Message {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&english::render(self))
+    }
+}
+
+#[cfg(not(feature = "english"))]
+impl fmt::Display for Message {
+    /// The run's module carries no message files and sends its messages as they are, for the
+    /// page to render; a message written as text there names its id and arguments.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}{:?}", self.id, self.args)
+    }
+}
