@@ -6,9 +6,11 @@
 //   node scripts/l10n-lint.mjs [LANG...]
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { FluentResource } from '@fluent/bundle';
+import { LANGUAGES } from '../web/l10n/languages.js';
 
 const ROOT = new URL('../web/locales/', import.meta.url).pathname;
-export const LANGS = ['de', 'es', 'fr', 'zh-CN', 'ja'];
+/** The translations: every language the page speaks but English. */
+export const LANGS = LANGUAGES.map(([code]) => code).filter((code) => code !== 'en');
 
 /**
  * The messages of an FTL text: id (or id.attribute) → its source text, with the parser's errors.

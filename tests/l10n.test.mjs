@@ -25,6 +25,12 @@ test('the page offers the languages the checks cover', () => {
     ['en', ...LANGS],
   );
   assert.deepEqual(readdirSync(LOCALES).sort(), ['en', ...LANGS].sort());
+  // The guides' pages name the same languages.
+  const docs = readFileSync(new URL('../scripts/docs_html.py', import.meta.url), 'utf8');
+  assert.deepEqual(
+    [...docs.match(/LANGUAGES = \{(.*)\}/)[1].matchAll(/"([^"]+)": "([^"]+)"/g)].map((m) => [m[1], m[2]]),
+    LANGUAGES.filter(([code]) => code !== 'en'),
+  );
 });
 
 for (const lang of LANGS)
