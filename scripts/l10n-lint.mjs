@@ -74,6 +74,12 @@ export function glossary(lang) {
 }
 
 /**
+ * A pattern that finds `word` where a word starts (so "rating" is not found in "integrating").
+ * @param {string} word
+ */
+const startsWord = (word) => new RegExp(`(^|[^\\p{L}])${word.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}`, 'iu');
+
+/**
  * The problems of `lang`'s translation of the English file `file` (e.g. 'lessons.ftl'); `given`
  * replaces the files and the glossary (for the checks' own test).
  * @param {string} lang
@@ -101,8 +107,13 @@ export function problems(lang, file, given) {
       if (at < 0) out.push(`${lang}/${file}: ${id} states ${n}, which the English does not`);
       else left.splice(at, 1);
     }
+    // A term is read in the words of the English, not in a variable's name, code or a setting.
+    const words = source
+      .replace(VARIABLE, ' ')
+      .replace(/`[^`]*`/g, ' ')
+      .replace(/\S*[=.]\S*[a-z0-9]/gi, ' ');
     for (const { en: word, term, avoid } of terms) {
-      if (!source.toLowerCase().includes(word.toLowerCase())) continue;
+      if (!startsWord(word).test(words)) continue;
       if (!text.toLowerCase().includes(term.toLowerCase()))
         out.push(`${lang}/${file}: ${id} says “${word}” in English but not “${term}”`);
       for (const a of avoid)
