@@ -74,6 +74,17 @@ export function glossary(lang) {
 }
 
 /**
+ * The words of a message's text: without its variables, its code and its settings (`k1=600`,
+ * `model.j`).
+ * @param {string} text
+ */
+const prose = (text) =>
+  text
+    .replace(VARIABLE, ' ')
+    .replace(/`[^`]*`/g, ' ')
+    .replace(/[\w.-]*[=.:][\w.-]*[a-z0-9]/gi, ' ');
+
+/**
  * A pattern that finds `word` where a word starts (so "rating" is not found in "integrating").
  * @param {string} word
  */
@@ -108,16 +119,14 @@ export function problems(lang, file, given) {
       else left.splice(at, 1);
     }
     // A term is read in the words of the English, not in a variable's name, code or a setting.
-    const words = source
-      .replace(VARIABLE, ' ')
-      .replace(/`[^`]*`/g, ' ')
-      .replace(/\S*[=.]\S*[a-z0-9]/gi, ' ');
+    const words = prose(source);
+    const translated = prose(text).toLowerCase();
     for (const { en: word, term, avoid } of terms) {
       if (!startsWord(word).test(words)) continue;
-      if (!text.toLowerCase().includes(term.toLowerCase()))
+      if (!translated.includes(term.toLowerCase()))
         out.push(`${lang}/${file}: ${id} says “${word}” in English but not “${term}”`);
       for (const a of avoid)
-        if (text.toLowerCase().includes(a.toLowerCase())) out.push(`${lang}/${file}: ${id} says “${a}”, not “${term}”`);
+        if (translated.includes(a.toLowerCase())) out.push(`${lang}/${file}: ${id} says “${a}”, not “${term}”`);
     }
   }
   return out;
