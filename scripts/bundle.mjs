@@ -239,8 +239,10 @@ html = once(
   `<script type="module" src="web/${main.name}"></script>${preloads}`,
 );
 // The page's own words are its English messages: each element of static/index.html with a
-// `data-l10n-id` (holding text only) gets the message's text and its attributes, escaped, as
-// @fluent/dom gives them in another language.
+// `data-l10n-id` gets the message's attributes and, when the message has a text, that text, escaped,
+// as @fluent/dom gives them in another language. An element whose message has a text holds text
+// only; one that holds other elements (a region, a list of links) or none at all (an input) takes a
+// message of attributes only, as @fluent/dom leaves such an element's children alone.
 const enBundle = new FluentBundle('en', { useIsolating: false });
 const enErrors = enBundle.addResource(new FluentResource(enPage));
 if (enErrors.length) throw new Error(`bundle: web/locales/en: ${enErrors.join('; ')}`);
@@ -248,23 +250,27 @@ const escapeHtml = (/** @type {string} */ text) =>
   text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c] ?? c);
 let filled = 0;
 html = html.replace(
-  /<([a-z0-9]+)([^>]*?) data-l10n-id="([a-z0-9-]+)"([^>]*)>([^<]*)<\/\1>/g,
+  /<([a-z0-9]+)([^>]*?) data-l10n-id="([a-z0-9-]+)"([^>]*)>(?:([^<]*)<\/\1>)?/g,
   (whole, tag, before, id, after, content) => {
     const message = enBundle.getMessage(id);
     if (!message) throw new Error(`bundle: index.html names ${id}, which web/locales/en has not`);
-    if (content.trim() !== '') throw new Error(`bundle: index.html writes text in ${id}: it is the message's`);
+    if (content !== undefined && content.trim() !== '')
+      throw new Error(`bundle: index.html writes text in ${id}: it is the message's`);
+    if (content === undefined && message.value !== null)
+      throw new Error(`bundle: ${id} has a text, but its element in index.html holds other elements or none`);
     let attrs = `${before} data-l10n-id="${id}"${after}`;
     for (const [name, pattern] of Object.entries(message.attributes)) {
       if (new RegExp(` ${name}=`).test(attrs)) throw new Error(`bundle: index.html writes ${id}'s ${name}`);
       attrs += ` ${name}="${escapeHtml(enBundle.formatPattern(pattern))}"`;
     }
-    const text = message.value === null ? '' : escapeHtml(enBundle.formatPattern(message.value));
     filled++;
+    if (content === undefined) return `<${tag}${attrs}>`;
+    const text = message.value === null ? '' : escapeHtml(enBundle.formatPattern(message.value));
     return `<${tag}${attrs}>${text}</${tag}>`;
   },
 );
 if (filled !== html.split(' data-l10n-id=').length - 1)
-  throw new Error('bundle: an element of index.html with a data-l10n-id holds other elements');
+  throw new Error('bundle: an element of index.html with a data-l10n-id was not filled');
 writeFileSync(join(dist, 'index.html'), html);
 
 // The service worker, with the list of files it fetches when it installs: every hashed file of
