@@ -19,7 +19,7 @@
 //
 //   node scripts/bundle.mjs DIST
 import { createHash } from 'node:crypto';
-import { cpSync, existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join, relative } from 'node:path';
 import * as esbuild from 'esbuild';
 import { FluentBundle, FluentResource } from '@fluent/bundle';
@@ -142,19 +142,20 @@ const tables = readdirSync(TABLES_DIR)
 // (the page needs it before its first plot); every other file is fetched when its language is
 // shown, and the teaching part when a lesson or the walkthrough is first opened.
 const LOCALES = join('web', 'locales');
-const PARTS = {
-  page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', 'core.ftl'],
-  teaching: ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'],
-};
+const TEACHING = ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'];
+/** The files of `lang`'s `part`: the teaching texts, or every other file (the page's and the core's). */
+const partOf = (/** @type {string} */ lang, /** @type {string} */ part) =>
+  readdirSync(join(LOCALES, lang))
+    .filter((n) => n.endsWith('.ftl') && TEACHING.includes(n) === (part === 'teaching'))
+    .sort();
 /** @type {Record<string, Record<string, string>>} */
 const localeFiles = {};
 let enPage = '';
 rmSync(join(dist, 'locales'), { recursive: true, force: true });
 for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
-  for (const [part, names] of Object.entries(PARTS)) {
-    const text = names
-      .filter((n) => existsSync(join(LOCALES, lang, n)))
+  for (const part of ['page', 'teaching']) {
+    const text = partOf(lang, part)
       .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
       .join('\n');
     if (text === '') continue;
@@ -238,8 +239,10 @@ html = once(
   `<script type="module" src="web/${main.name}"></script>${preloads}`,
 );
 // The page's own words are its English messages: each element of static/index.html with a
-// `data-l10n-id` (holding text only) gets the message's text and its attributes, escaped, as
-// @fluent/dom gives them in another language.
+// `data-l10n-id` gets the message's attributes and, when the message has a text, that text, escaped,
+// as @fluent/dom gives them in another language. An element whose message has a text holds text
+// only; one that holds other elements (a region, a list of links) or none at all (an input) takes a
+// message of attributes only, as @fluent/dom leaves such an element's children alone.
 const enBundle = new FluentBundle('en', { useIsolating: false });
 const enErrors = enBundle.addResource(new FluentResource(enPage));
 if (enErrors.length) throw new Error(`bundle: web/locales/en: ${enErrors.join('; ')}`);
@@ -247,23 +250,27 @@ const escapeHtml = (/** @type {string} */ text) =>
   text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c] ?? c);
 let filled = 0;
 html = html.replace(
-  /<([a-z0-9]+)([^>]*?) data-l10n-id="([a-z0-9-]+)"([^>]*)>([^<]*)<\/\1>/g,
+  /<([a-z0-9]+)([^>]*?) data-l10n-id="([a-z0-9-]+)"([^>]*)>(?:([^<]*)<\/\1>)?/g,
   (whole, tag, before, id, after, content) => {
     const message = enBundle.getMessage(id);
     if (!message) throw new Error(`bundle: index.html names ${id}, which web/locales/en has not`);
-    if (content.trim() !== '') throw new Error(`bundle: index.html writes text in ${id}: it is the message's`);
+    if (content !== undefined && content.trim() !== '')
+      throw new Error(`bundle: index.html writes text in ${id}: it is the message's`);
+    if (content === undefined && message.value !== null)
+      throw new Error(`bundle: ${id} has a text, but its element in index.html holds other elements or none`);
     let attrs = `${before} data-l10n-id="${id}"${after}`;
     for (const [name, pattern] of Object.entries(message.attributes)) {
       if (new RegExp(` ${name}=`).test(attrs)) throw new Error(`bundle: index.html writes ${id}'s ${name}`);
       attrs += ` ${name}="${escapeHtml(enBundle.formatPattern(pattern))}"`;
     }
-    const text = message.value === null ? '' : escapeHtml(enBundle.formatPattern(message.value));
     filled++;
+    if (content === undefined) return `<${tag}${attrs}>`;
+    const text = message.value === null ? '' : escapeHtml(enBundle.formatPattern(message.value));
     return `<${tag}${attrs}>${text}</${tag}>`;
   },
 );
 if (filled !== html.split(' data-l10n-id=').length - 1)
-  throw new Error('bundle: an element of index.html with a data-l10n-id holds other elements');
+  throw new Error('bundle: an element of index.html with a data-l10n-id was not filled');
 writeFileSync(join(dist, 'index.html'), html);
 
 // The service worker, with the list of files it fetches when it installs: every hashed file of

@@ -6,9 +6,11 @@
 //   node scripts/l10n-lint.mjs [LANG...]
 import { readFileSync, readdirSync, existsSync } from 'node:fs';
 import { FluentResource } from '@fluent/bundle';
+import { LANGUAGES } from '../web/l10n/languages.js';
 
 const ROOT = new URL('../web/locales/', import.meta.url).pathname;
-export const LANGS = ['de', 'es', 'fr', 'zh-CN', 'ja'];
+/** The translations: every language the page speaks but English. */
+export const LANGS = LANGUAGES.map(([code]) => code).filter((code) => code !== 'en');
 
 /**
  * The messages of an FTL text: id (or id.attribute) → its source text, with the parser's errors.
@@ -72,6 +74,23 @@ export function glossary(lang) {
 }
 
 /**
+ * The words of a message's text: without its variables, its code and its settings (`k1=600`,
+ * `model.j`).
+ * @param {string} text
+ */
+const prose = (text) =>
+  text
+    .replace(VARIABLE, ' ')
+    .replace(/`[^`]*`/g, ' ')
+    .replace(/[\w.-]*[=.:][\w.-]*[a-z0-9]/gi, ' ');
+
+/**
+ * A pattern that finds `word` where a word starts (so "rating" is not found in "integrating").
+ * @param {string} word
+ */
+const startsWord = (word) => new RegExp(`(^|[^\\p{L}])${word.replace(/[.*+?^${}()|[\]\\]/g, '\\$&')}`, 'iu');
+
+/**
  * The problems of `lang`'s translation of the English file `file` (e.g. 'lessons.ftl'); `given`
  * replaces the files and the glossary (for the checks' own test).
  * @param {string} lang
@@ -99,12 +118,15 @@ export function problems(lang, file, given) {
       if (at < 0) out.push(`${lang}/${file}: ${id} states ${n}, which the English does not`);
       else left.splice(at, 1);
     }
+    // A term is read in the words of the English, not in a variable's name, code or a setting.
+    const words = prose(source);
+    const translated = prose(text).toLowerCase();
     for (const { en: word, term, avoid } of terms) {
-      if (!source.toLowerCase().includes(word.toLowerCase())) continue;
-      if (!text.toLowerCase().includes(term.toLowerCase()))
+      if (!startsWord(word).test(words)) continue;
+      if (!translated.includes(term.toLowerCase()))
         out.push(`${lang}/${file}: ${id} says “${word}” in English but not “${term}”`);
       for (const a of avoid)
-        if (text.toLowerCase().includes(a.toLowerCase())) out.push(`${lang}/${file}: ${id} says “${a}”, not “${term}”`);
+        if (translated.includes(a.toLowerCase())) out.push(`${lang}/${file}: ${id} says “${a}”, not “${term}”`);
     }
   }
   return out;

@@ -25,6 +25,12 @@ test('the page offers the languages the checks cover', () => {
     ['en', ...LANGS],
   );
   assert.deepEqual(readdirSync(LOCALES).sort(), ['en', ...LANGS].sort());
+  // The guides' pages name the same languages.
+  const docs = readFileSync(new URL('../scripts/docs_html.py', import.meta.url), 'utf8');
+  assert.deepEqual(
+    [...docs.match(/LANGUAGES = \{(.*)\}/)[1].matchAll(/"([^"]+)": "([^"]+)"/g)].map((m) => [m[1], m[2]]),
+    LANGUAGES.filter(([code]) => code !== 'en'),
+  );
 });
 
 for (const lang of LANGS)
@@ -48,7 +54,13 @@ test('the checks fail on a missing message, a lost variable, a typed number and 
 });
 
 test('every message the page names is an English message', () => {
-  const ids = new Set(FILES.flatMap((f) => [...messages(readFileSync(`${LOCALES}en/${f}`, 'utf8')).keys()]));
+  // A message with attributes only is named by its id, each attribute by `id.attribute`.
+  const ids = new Set(
+    FILES.flatMap((f) => [...messages(readFileSync(`${LOCALES}en/${f}`, 'utf8')).keys()]).flatMap((id) => [
+      id,
+      id.split('.')[0],
+    ]),
+  );
   const named = [];
   const walk = (dir) => {
     for (const e of readdirSync(dir, { withFileTypes: true })) {

@@ -15,10 +15,10 @@ if (globalThis.imlabBoot === undefined) {
   boot.worker.onmessage = ({ data }) => boot.early.push(data);
   boot.worker.onerror = (e) => {
     e.preventDefault();
-    boot.failure ??= e.message || 'unknown error';
+    boot.failure ??= { message: e.message };
   };
   boot.worker.onmessageerror = () => {
-    boot.failure ??= 'a message from it could not be read';
+    boot.failure ??= { message: '', unreadable: true };
   };
   globalThis.imlabBoot = boot;
 }

@@ -1,6 +1,6 @@
 // Page wiring: one worker owns the core; the page sends scenarios and draws what comes back.
 // This file composes the page's parts, each in its own module, and wires them to each other.
-import { Plots, PLOTS } from './plots/plots.js';
+import { Plots, mainPlots } from './plots/plots.js';
 import { buildGroups } from './run/controls.js';
 import { fieldValue } from './ui/scenario.js';
 import { challengeFromUrl, fragment, scenarioFromUrl, setFragment } from './ui/url.js';
@@ -137,7 +137,7 @@ try {
   await useLanguage(asked);
 } catch (e) {
   await useLanguage('en');
-  state.notice = `The page could not load its ${asked} messages (${/** @type {Error} */ (e).message}): it is in English.`;
+  state.notice = t('page-language-failed', { language: asked, reason: /** @type {Error} */ (e).message });
   say(state.notice, 'info');
 }
 wireLanguageMenu();
@@ -152,7 +152,7 @@ const client = new RunClient(
     if (restarting) pins.show([], []);
   },
 );
-const plots = new Plots(ui.plots, PLOTS, {
+const plots = new Plots(ui.plots, mainPlots(), {
   onWindow: (t0, t1) => views.requestWindow(t0, t1),
   onFull: () => views.fullRun(),
   onPick: (t) => views.requestInspect(t),
@@ -245,7 +245,7 @@ function loadChallengeTools() {
     },
     (e) => {
       challengeTools = null;
-      say(`The Challenge tab’s composer and grading could not be loaded: ${e.message}. Open the tab again to retry.`);
+      say(t('page-challenge-tools-failed', { reason: e.message }));
     },
   );
   return challengeTools;
@@ -305,7 +305,7 @@ const lessons = new LessonPanel({
     pins.clear();
     // The lesson's own run brings the walkthrough's view; the last run's is not asked for.
     tabs.showTab(lesson.tab ?? 'plots', { fetch: false });
-    if (lesson.map) robust.fill(lesson.map).catch((e) => say(`The lesson's map was not read: ${e.message}.`));
+    if (lesson.map) robust.fill(lesson.map).catch((e) => say(t('page-lesson-map-failed', { reason: e.message })));
     window.scrollTo(0, 0);
     return settings.load(link ?? lesson.run);
   },
@@ -324,9 +324,11 @@ async function differencesFrom(from, text) {
   try {
     await client.describe(text);
   } catch (e) {
-    return e instanceof ScenarioRefused ? [`the core refused some of them (${/** @type {Error} */ (e).message})`] : [];
+    return e instanceof ScenarioRefused
+      ? [t('lesson-differences-refused', { reason: /** @type {Error} */ (e).message })]
+      : [];
   }
-  return client.job('scenario-differences', { from, text }).catch(() => ['they could not be compared with it']);
+  return client.job('scenario-differences', { from, text }).catch(() => [t('lesson-differences-uncompared')]);
 }
 wireShare({ state });
 
@@ -339,7 +341,7 @@ function lessonFromUrl() {
   if (id === null || challengeFromUrl()) return false;
   if (lessons.openById(id, location.search.slice(1) || null)) return true;
   setFragment('lesson', null);
-  state.notice = `No lesson named '${excerpt(id)}'. Lessons: ${LESSONS.map((l) => l.id).join(', ')}.`;
+  state.notice = t('page-no-lesson', { lesson: excerpt(id), lessons: LESSONS.map((l) => l.id).join(', ') });
   say(state.notice, 'info');
   return false;
 }
@@ -361,7 +363,7 @@ document.addEventListener('keydown', (e) => {
 // Cancel stops the run, the pins being run or the CSV export, whichever is under way.
 ui.cancel.addEventListener('click', () => {
   if (state.pinning && !state.running) client.post({ type: 'pin-cancel' });
-  else if (state.export) exporter.cancel('CSV export cancelled');
+  else if (state.export) exporter.cancel(t('export-csv-cancelled'));
   else client.post({ type: 'cancel', id: state.runId });
 });
 // An open challenge holds the address (url.js): its entries are not scenarios to go back to.

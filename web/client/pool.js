@@ -1,7 +1,8 @@
 // A pool of workers for stateless jobs (sweeps, seed runs, maps, challenge checks): one job a
 // worker at a time, results in job order, Cancel that stops at once, a crashed worker replaced.
 import { WORKER_URL } from '../worker-url.js';
-import { watch } from './watch.js';
+import { jobError, watch } from './watch.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -62,7 +63,7 @@ class Member {
   reply(type, job) {
     this.waiting?.reject(new Error('cancelled'));
     return new Promise((resolve, reject) => {
-      if (this.failed) reject(new Error(`a worker failed (${this.failed})`));
+      if (this.failed) reject(new Error(t('pool-worker-failed', { reason: this.failed })));
       else this.waiting = { type, job, resolve, reject };
     });
   }
@@ -72,7 +73,7 @@ class Member {
    * @param {string} reason
    * @param {Error} [error]
    */
-  fail(reason, error = new Error(`a worker failed (${reason}); the next run starts a fresh one`)) {
+  fail(reason, error = new Error(t('pool-worker-failed-restart', { reason }))) {
     if (this.failed) return;
     this.failed = reason;
     this.worker.terminate();
@@ -126,7 +127,7 @@ export class Pool {
         const message = /** @type {P.JobMessage} */ ({ type: 'job', job, ...jobs[index] });
         member.worker.postMessage(message);
         const data = await reply;
-        if (data.error) throw new Error(data.error);
+        if (data.error) throw new Error(jobError(data));
         const result = /** @type {P.Jobs[K]['result']} */ (data.result);
         results[index] = result;
         onDone(++done, index, result);

@@ -2,7 +2,7 @@
 // Describe requests, jobs and challenge measures are answered as promises; every other message
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
-import { watch } from './watch.js';
+import { crashReason, errorReason, jobError, unreadable, watch } from './watch.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -72,13 +72,15 @@ export class RunClient {
       for (const data of boot.early) {
         if (this.failures !== failures) return;
         try {
-          if (data.type === 'crashed') this.fail(data.message);
+          if (data.type === 'crashed') this.fail(crashReason(data));
           else this.receive(data);
         } catch (e) {
           reportError(e);
         }
       }
-      if (boot.failure && this.failures === failures) this.fail(boot.failure);
+      const { failure } = boot;
+      if (failure && this.failures === failures)
+        this.fail(failure.unreadable ? unreadable() : errorReason(failure.message));
     });
   }
 
@@ -186,7 +188,7 @@ export class RunClient {
    */
   receive(data) {
     if (data.type === 'job') {
-      this.answer(`job ${data.job}`, data.error, data.result);
+      this.answer(`job ${data.job}`, jobError(data), data.result);
     } else if (data.type === 'challenge-measured') {
       this.answer(`measure ${data.id}`, data.error, data.measures);
     } else if (data.type === 'described') {

@@ -1,19 +1,49 @@
-// How numbers read on the page: counts in its sentences; on a plot, the legend's read-out, and the
-// axes' tick steps, tick labels and the room time ticks need; the same on every chart.
+// How numbers read on the page: counts and measured values in its sentences, in the language
+// shown; on a plot, the legend's read-out, and the axes' tick steps, tick labels and the room time
+// ticks need; the same on every chart.
+import { language } from '../l10n/l10n.js';
 
 /**
- * A whole number as the page's sentences write it: thousands grouped by commas, as in English,
- * which the page is in whatever the browser's language (and no locale's data is loaded for it).
+ * A number as JavaScript writes it (`text`, from String() or toFixed()), in the language shown: its
+ * decimal point and leading minus the language's. English keeps it as written.
+ * @param {string} text
+ */
+export function local(text) {
+  if (language === 'en') return text;
+  const parts = new Intl.NumberFormat(language).formatToParts(1.5);
+  const point = parts.find((p) => p.type === 'decimal')?.value ?? '.';
+  return text.replace('.', point).replace(/^-/, '−');
+}
+
+/**
+ * `value` to `digits` significant digits, as the page's sentences write a measured value: 0.01234
+ * to three is "0.0123" (no trailing zeros).
+ * @param {number} value
+ * @param {number} digits
+ */
+export const sig = (value, digits) => local(String(Number(value.toPrecision(digits))));
+
+/**
+ * `value` with `digits` decimals, as the page's sentences write it.
+ * @param {number} value
+ * @param {number} digits
+ */
+export const fixed = (value, digits) => local(value.toFixed(digits));
+
+/**
+ * A whole number as the page's sentences write it: in English, thousands grouped by commas; in
+ * another language, as the language groups them.
  * @param {number} n
  */
-export const count = (n) => String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ',');
+export const count = (n) =>
+  language === 'en' ? String(n).replace(/\B(?=(\d{3})+(?!\d))/g, ',') : new Intl.NumberFormat(language).format(n);
 
 /**
  * A share (0 to 1) as a percentage of three significant figures, as the figures strip writes the
  * share of samples at the voltage limit: 0.0123 is "1.23 %", none is "0 %".
  * @param {number} share
  */
-export const percent = (share) => `${Number((share * 100).toPrecision(3))} %`;
+export const percent = (share) => `${sig(share * 100, 3)} %`;
 
 // Tick steps of 1, 2 and 5 times a power of ten: a step of 2.5 would cost every label one more digit.
 export const STEPS = Array.from({ length: 33 }, (_, i) => i - 16).flatMap((e) =>

@@ -1,4 +1,5 @@
 // The trajectory plots of the Plots tab: each one's title, units and signals.
+import { t } from '../l10n/l10n.js';
 
 // Each plot: [column, label, axis, sign, about]; axis 'y2' puts a series on the right-hand scale,
 // sign −1 draws the column negated (the lower half of a ±band), and `about` adds the column to
@@ -20,50 +21,54 @@
  *   container?: HTMLElement, nisBand?: boolean, bound?: string}} PlotDef
  */
 
-/** @type {PlotDef[]} */
-export const PLOTS = [
+/**
+ * The trajectory plots, their titles and signals in the language shown (its messages are loaded
+ * before the page builds its plots).
+ * @returns {PlotDef[]}
+ */
+export const mainPlots = () => [
   {
     id: 'speed',
-    title: 'Rotor speed',
+    title: t('plot-speed'),
     unit: 'rad/s',
     series: [
-      ['omega_ref', 'ω_d reference'],
-      ['omega_hat', 'ω̂ estimated'],
-      ['omega', 'ω true'],
+      ['omega_ref', t('plot-speed-reference')],
+      ['omega_hat', t('plot-speed-estimated')],
+      ['omega', t('plot-speed-true')],
     ],
   },
   {
     id: 'speed-error',
-    title: 'Speed tracking error ω − ω_d',
+    title: t('plot-speed-error'),
     unit: 'rad/s',
     series: [['omega_err', 'ω − ω_d']],
   },
   {
     id: 'flux',
-    title: 'Rotor-flux modulus',
+    title: t('plot-flux'),
     unit: 'Wb',
     series: [
-      ['flux_ref', '√ψ_d target'],
-      ['flux_hat', '|φ̂| estimated'],
-      ['flux', '|φ| true'],
+      ['flux_ref', t('plot-flux-target')],
+      ['flux_hat', t('plot-flux-estimated')],
+      ['flux', t('plot-flux-true')],
     ],
   },
   {
     id: 'current',
-    title: 'Stator currents',
+    title: t('plot-current'),
     unit: 'A',
     series: [
-      ['i_sa_hat', 'î_sa estimated'],
-      ['i_sb_hat', 'î_sb estimated'],
-      ['i_sa', 'i_sa true'],
-      ['i_sb', 'i_sb true'],
+      ['i_sa_hat', t('plot-current-a-estimated')],
+      ['i_sb_hat', t('plot-current-b-estimated')],
+      ['i_sa', t('plot-current-a-true')],
+      ['i_sb', t('plot-current-b-true')],
     ],
   },
   {
     id: 'voltage',
-    title: 'Applied stator voltages (after the limit)',
+    title: t('plot-voltage'),
     unit: 'V',
-    constants: [['+limit'], ['−limit']],
+    constants: [[t('plot-voltage-limit-high')], [t('plot-voltage-limit-low')]],
     series: [
       ['u_a', 'u_sa'],
       ['u_b', 'u_sb'],
@@ -71,37 +76,34 @@ export const PLOTS = [
   },
   {
     id: 'z13',
-    title: 'Tracking errors',
+    title: t('plot-z13'),
     unit: 'rad/s',
     unit2: 'Wb²',
     backstepping: true,
     series: [
       ['z1', 'z1 = ω̂ − ω_d (rad/s)'],
-      ['z3', 'z3 = |φ̂|² − ψ_d (Wb², right)', 'y2'],
+      ['z3', t('plot-z13-flux'), 'y2'],
     ],
   },
   {
     id: 'z24',
-    title: 'Virtual-control errors',
+    title: t('plot-z24'),
     unit: 'rad/s²',
     unit2: 'Wb²/s',
     backstepping: true,
     series: [
-      ['z2', 'z2 torque error (rad/s²)'],
-      ['z4', 'z4 flux-rate error (Wb²/s, right)', 'y2'],
+      ['z2', t('plot-z24-torque')],
+      ['z4', t('plot-z24-flux'), 'y2'],
     ],
   },
   {
     id: 'est',
-    title: 'Estimation errors',
+    title: t('plot-est'),
     unit: 'rad/s',
     unit2: 'Wb',
     series: [
       ['omega_est_err', 'ω − ω̂ (rad/s)'],
-      ['flux_est_err', '|φ| − |φ̂| (Wb, right)', 'y2'],
+      ['flux_est_err', t('plot-est-flux'), 'y2'],
     ],
   },
 ];
-
-/** The backstepping plots' title suffix when the IFOC baseline drives the motor. */
-export const NOT_DRIVING = ' (computed for comparison; not driving the motor)';

@@ -2,11 +2,11 @@
 // Each plot draws the M4 envelope the worker sends for its own columns: every point is a recorded
 // sample at its own time, so no zoom draws an edge the samples do not have.
 import uPlot from '../../vendor/uPlot.esm.js';
-import { NOT_DRIVING } from './plot-defs.js';
+import { t } from '../l10n/l10n.js';
 import { chartOptions } from './options.js';
 import { inspectByKeys } from './inspect.js';
 
-export { PLOTS } from './plot-defs.js';
+export { mainPlots } from './plot-defs.js';
 export { six } from './numbers.js';
 
 /** @typedef {import('./plot-defs.js').PlotDef} PlotDef */
@@ -92,7 +92,7 @@ export class Plots {
 
   /** @param {PlotDef} plot */
   title(plot) {
-    return plot.backstepping && this.ifoc ? plot.title + NOT_DRIVING : plot.title;
+    return plot.backstepping && this.ifoc ? t('plot-not-driving', { title: plot.title }) : plot.title;
   }
 
   /**
@@ -100,11 +100,14 @@ export class Plots {
    * @param {PlotDef} plot
    */
   caption(plot) {
-    const units = plot.unit2 ? `${plot.unit} (left) and ${plot.unit2} (right)` : plot.unit;
     const signals = plot.series.map(([, label]) => label).join('; ');
-    const keys =
-      'Focus the plot and use the arrow keys to inspect the run sample by sample (Shift: 1 % of the window).';
-    return `${this.title(plot)}, in ${units} against time t in s. Signals: ${signals}.${this.captions ? ` ${this.captions}` : ''} ${keys}`;
+    const axes = t(plot.unit2 ? 'plot-caption-two-axes' : 'plot-caption', {
+      title: this.title(plot),
+      unit: plot.unit,
+      unit2: plot.unit2 ?? '',
+      signals,
+    });
+    return [axes, this.captions, t('plot-caption-keys')].filter((s) => s !== '').join(' ');
   }
 
   /**

@@ -2,6 +2,8 @@
 // Text from the URL or the core only ever reaches the page through textContent and values.
 import { el } from '../ui/dom.js';
 import { verdictLine } from '../ui/verdict-line.js';
+import { t } from '../l10n/l10n.js';
+import { local } from '../plots/numbers.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -13,19 +15,20 @@ import { verdictLine } from '../ui/verdict-line.js';
  * @typedef {HTMLInputElement | HTMLSelectElement} Control
  */
 
-const GROUPS = {
-  reference: 'Reference',
-  controller: 'Controller: backstepping or classical IFOC',
-  gains: 'Backstepping gains',
-  observer: 'Observer (EKF)',
-  noise: 'Noise and seed',
-  plant: 'Plant: the simulated motor',
-  model: 'Model: what the EKF and controller assume',
-  load: 'Unknown load step',
-  limits: 'Voltage limit (box), rating, duration and timing',
-  drive: 'Drive: computation delay, inverter limit and PWM',
-  law: 'Your own laws for the backstepping steps (empty: the paper’s)',
-};
+// The form's groups, in order; each group's title is the message `settings-group-GROUP`.
+const GROUPS = [
+  'reference',
+  'controller',
+  'gains',
+  'observer',
+  'noise',
+  'plant',
+  'model',
+  'load',
+  'limits',
+  'drive',
+  'law',
+];
 const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 
 /**
@@ -34,10 +37,13 @@ const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
  */
 function allowed(f) {
   if (f.options.length) return f.options.join(' | ');
-  if (f.formula) return 'a formula of the names the walkthrough’s “Write this step” lists; empty: the paper’s law';
-  const lo = f.min_open ? '<' : '≤';
-  const unit = f.unit ? ` ${f.unit}` : '';
-  return `${f.min} ${lo} ${f.key} ≤ ${f.max}${unit}${f.integer ? ', whole number' : ''}`;
+  if (f.formula) return t('settings-allowed-formula');
+  return t(f.integer ? 'settings-allowed-whole' : 'settings-allowed-range', {
+    min: local(String(f.min)),
+    op: f.min_open ? '<' : '≤',
+    key: f.key,
+    max: `${local(String(f.max))}${f.unit ? ` ${f.unit}` : ''}`,
+  });
 }
 
 /**
@@ -155,12 +161,12 @@ export function renderFields(form, info) {
   const first = form.childElementCount === 0;
   shown.set(form, info);
   form.replaceChildren();
-  for (const [group, title] of Object.entries(GROUPS)) {
+  for (const group of GROUPS) {
     const fields = fieldsOf(info, group);
     if (!fields.length) continue;
     const details = el('details', { open: first ? OPEN_GROUPS.has(group) : open.has(group) });
     details.dataset.group = group;
-    const summary = el('summary', { textContent: title });
+    const summary = el('summary', { textContent: t(`settings-group-${group}`) });
     // Built as it is opened: on the click (by the pointer or the keyboard), before it is drawn
     // open, or as it opens otherwise.
     summary.addEventListener('click', () => buildGroups(form, [details]));
@@ -215,7 +221,7 @@ function controlOf(form, key) {
 export function fieldControl(f, prefix) {
   const control = input(f);
   control.id = `${prefix}-${f.key}`;
-  control.title = `allowed: ${allowed(f)}`;
+  control.title = t('settings-allowed', { values: allowed(f) });
   const unit = f.unit ? ` (${f.unit})` : '';
   return el('label', { htmlFor: control.id, className: 'field' }, [
     el('span', { className: 'key', textContent: f.key }),
@@ -247,7 +253,7 @@ export function formScenario(form, preset) {
   const info = shown.get(form);
   /** @type {[string, string][]} */
   const fields = [];
-  for (const group of Object.keys(GROUPS)) {
+  for (const group of GROUPS) {
     for (const f of info ? fieldsOf(info, group) : []) {
       const control = namedControl(form, f.key);
       fields.push([f.key, control ? valueOf(control) : String(f.value)]);

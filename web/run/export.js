@@ -1,6 +1,7 @@
 // Downloads: the run's CSV, which the worker sends in chunks of rows, and a PNG of the plots in
 // the open tab.
-import { count } from '../plots/numbers.js';
+import { fixed, sig } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
 import { say, ui } from '../ui/page.js';
 import { png } from './png.js';
 import { download } from '../ui/dom.js';
@@ -26,7 +27,7 @@ export function createExport({ client, state, plots, walkthrough }) {
     ui.csv.disabled = true;
     ui.cancel.disabled = false;
     ui.progress.value = 0;
-    ui.status.textContent = 'Exporting CSV…';
+    ui.status.textContent = t('export-csv-starting');
     document.body.dataset.export = 'running';
     client.post({ type: 'csv', id: state.runId, serial });
   }
@@ -63,9 +64,9 @@ export function createExport({ client, state, plots, walkthrough }) {
   function pngHeader() {
     const figures = state.figures
       .filter((f) => !f.name.startsWith('mean_nis_'))
-      .map((f) => `${f.label} ${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`)
+      .map((f) => `${f.label} ${sig(f.value, 4)}${f.unit ? ` ${f.unit}` : ''}`)
       .concat(state.unreached.map((u) => `${u.label}: ${u.text}`));
-    const lines = [`IM Lab · ${/** @type {P.Info} */ (state.info).encoded}`];
+    const lines = [`${t('page-name')} · ${/** @type {P.Info} */ (state.info).encoded}`];
     for (let i = 0; i < figures.length; i += 3) lines.push(figures.slice(i, i + 3).join(' · '));
     return lines;
   }
@@ -75,7 +76,7 @@ export function createExport({ client, state, plots, walkthrough }) {
     const tab = /** @type {HTMLElement} */ (document.querySelector('[role=tab][aria-selected=true]')).dataset.tab;
     const set = tab === 'walkthrough' ? walkthrough.plots : plots;
     if (set.view === null || (tab === 'walkthrough' && !walkthrough.drawn())) {
-      say('These plots are still being drawn; export them in a moment.', 'info');
+      say(t('export-png-not-ready'), 'info');
       return;
     }
     // The plots' series are labelled with text.
@@ -100,9 +101,13 @@ export function createExport({ client, state, plots, walkthrough }) {
       } catch (e) {
         if (state.export !== job) return;
         const stored = job.parts.reduce((sum, p) => sum + p.size, 0);
-        endExport('failed', 'CSV export failed');
+        endExport('failed', t('export-csv-failed-status'));
         say(
-          `The browser refused to hold more than ${(stored / 1e6).toFixed(0)} MB of CSV (${/** @type {Error} */ (e).name}). Export this run with the command line instead: imlab run '${state.ranScenario}' --out run.csv`,
+          t('export-csv-refused', {
+            megabytes: fixed(stored / 1e6, 0),
+            error: /** @type {Error} */ (e).name,
+            command: `imlab run '${state.ranScenario}' --out run.csv`,
+          }),
         );
         return;
       }
@@ -110,17 +115,17 @@ export function createExport({ client, state, plots, walkthrough }) {
       job.parts.push(part);
       ui.progress.value = total ? rows / total : 1;
       if (rows < total) {
-        ui.status.textContent = `Exporting CSV: ${count(rows)} of ${count(total)} rows`;
+        ui.status.textContent = t('export-csv-progress', { rows, total });
         client.post({ type: 'csv-next', serial });
         return;
       }
       download(new Blob(job.parts, { type: 'text/csv' }), `${fileStem()}.csv`);
-      endExport('done', `CSV exported: ${count(total)} rows`);
+      endExport('done', t('export-csv-done', { total }));
     },
     'csv-failed'({ serial, message }) {
       if (state.export?.serial !== serial) return;
-      endExport('failed', 'CSV export failed');
-      say(`The CSV export failed: ${message}.`);
+      endExport('failed', t('export-csv-failed-status'));
+      say(t('export-csv-failed', { reason: message ?? t('export-csv-gone') }));
     },
   };
 

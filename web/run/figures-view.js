@@ -2,7 +2,8 @@
 // trend, the compact row of key figures, and the warnings they must not be read without.
 import { ui } from '../ui/page.js';
 import { el } from '../ui/dom.js';
-import { percent } from '../plots/numbers.js';
+import { local, percent, sig } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { Plots } from '../plots/plots.js' */
@@ -15,6 +16,13 @@ import { percent } from '../plots/numbers.js';
  * @typedef {P.Done['unreached'][number]} Unreached
  * @typedef {P.Done['warnings'][number]} Warning
  */
+
+/**
+ * A value and its unit, if it has one.
+ * @param {string} value
+ * @param {string} unit
+ */
+const withUnit = (value, unit) => (unit ? `${value} ${unit}` : value);
 
 // The figures the compact row shows, in this order.
 const KEY_FIGURES = ['tracking_rms', 'current_peak', 'mean_nis', 'speed_error_final'];
@@ -34,15 +42,16 @@ function showKeyFigures(figures, { peak_to_rated: toRated, nis_inside: inside })
   const parts = KEY_FIGURES.map((name) => figures.find((f) => f.name === name))
     .filter((f) => f !== undefined)
     .map((f) => {
-      const value = `${Number(f.value.toPrecision(3))}${f.unit ? ` ${f.unit}` : ''}`;
+      const value = withUnit(sig(f.value, 3), f.unit);
       const span = document.createElement('span');
       if (f.name === 'current_peak' && toRated !== null)
-        span.textContent = `peak |i_s| ${value} (${Number(toRated.toPrecision(2))}× rated)`;
+        span.textContent = t('figures-key-peak', { value, ratio: sig(toRated, 2) });
       else if (f.name === 'speed_error_final' && f.trend) {
-        span.textContent = `final ω − ω_d ${value} (${{ settled: 'settled', changing: 'still changing', drifting: 'drifting', fluctuating: 'fluctuating', 'ran away': 'ran away' }[/** @type {Trend} */ (f.trend).state]})`;
+        span.textContent = t('figures-key-final', { value, trend: f.trend.state.replace(' ', '-') });
         if (!f.trend.settled) span.className = 'unsettled';
       } else if (f.name === 'mean_nis' && inside !== null) {
-        span.textContent = `mean NIS ${Number(f.value.toPrecision(4))} (${inside ? 'inside' : 'outside'} its 95 % band)`;
+        const nis = sig(f.value, 4);
+        span.textContent = t(inside ? 'figures-key-nis-inside' : 'figures-key-nis-outside', { value: nis });
       } else span.textContent = `${f.label} ${value}`;
       return span;
     });
@@ -58,20 +67,22 @@ function showKeyFigures(figures, { peak_to_rated: toRated, nis_inside: inside })
  */
 function trendText(f) {
   const { rate, over, tolerance, scatter, to_go: toGo, state } = /** @type {Trend} */ (f.trend);
-  const unit = f.unit ? ` ${f.unit}` : '';
-  const approach =
-    toGo == null
-      ? ''
-      : `; the means of the last three tenths approach a value ${Number(toGo.toPrecision(2))}${unit} away`;
-  const fit = `line through the last ${Number((over * 1e3).toPrecision(3))} ms: ${Number(rate.toPrecision(3))}${unit} per s, the samples scattering ${Number(scatter.toPrecision(2))}${unit} about it${approach}; settled means the line moves within ${Number(tolerance.toPrecision(2))}${unit} and four times the scatter fits it`;
-  if (state === 'settled') return ['settled by the end of the run', fit];
-  if (state === 'ran away') return ['the run ran away: not a final value', fit];
-  if (state === 'drifting')
-    return ['drifting with the EKF’s random-walk estimate of the load or R_r: a longer run ends elsewhere', fit];
-  if (state === 'fluctuating')
-    return [`fluctuating by ±${Number(scatter.toPrecision(2))}${unit}: the last sample is not a final value`, fit];
-  const left = toGo != null && toGo > tolerance ? ` (about ${Number(toGo.toPrecision(2))}${unit} still to go)` : '';
-  return [`still changing: ${Number(rate.toPrecision(2))}${unit} per s at the end; run longer${left}`, fit];
+  /** @param {number} x @param {number} digits */
+  const v = (x, digits) => withUnit(sig(x, digits), f.unit);
+  const fit = t(toGo == null ? 'figures-trend-fit' : 'figures-trend-fit-approach', {
+    ms: sig(over * 1e3, 3),
+    rate: v(rate, 3),
+    scatter: v(scatter, 2),
+    'to-go': toGo == null ? '' : v(toGo, 2),
+    tolerance: v(tolerance, 2),
+  });
+  if (state === 'settled') return [t('figures-trend-settled'), fit];
+  if (state === 'ran away') return [t('figures-trend-ran-away'), fit];
+  if (state === 'drifting') return [t('figures-trend-drifting'), fit];
+  if (state === 'fluctuating') return [t('figures-trend-fluctuating', { scatter: v(scatter, 2) }), fit];
+  if (toGo != null && toGo > tolerance)
+    return [t('figures-trend-changing-to-go', { rate: v(rate, 2), 'to-go': v(toGo, 2) }), fit];
+  return [t('figures-trend-changing', { rate: v(rate, 2) }), fit];
 }
 
 /**
@@ -85,7 +96,7 @@ function unreachedItem(u) {
   Object.assign(item.dataset, { name: `${u.name}_reached`, value: '0' });
   item.append(
     el('dt', { textContent: u.label }),
-    el('dd', { textContent: u.text, title: `no value: ${u.text}; ${u.window}` }),
+    el('dd', { textContent: u.text, title: t('figures-no-value', { reason: u.text, window: u.window }) }),
     el('dd', { className: 'window', textContent: u.window }),
   );
   return item;
@@ -111,8 +122,8 @@ export function createFiguresView({ plotSets }) {
     /** @param {P.RunFigure} f */
     const fmt = (f) => {
       if (f.name === 'saturated_share') return percent(f.value);
-      if (f.unit === 's' && Math.abs(f.value) < 1) return `${Number((f.value * 1e3).toPrecision(4))} ms`;
-      return `${Number(f.value.toPrecision(4))}${f.unit ? ` ${f.unit}` : ''}`;
+      if (f.unit === 's' && Math.abs(f.value) < 1) return `${sig(f.value * 1e3, 4)} ms`;
+      return withUnit(sig(f.value, 4), f.unit);
     };
     const nis = Object.fromEntries(figures.filter((f) => f.name.startsWith('mean_nis')).map((f) => [f.name, f.value]));
     const rated = figures.find((f) => f.name === 'current_rated');
@@ -125,10 +136,14 @@ export function createFiguresView({ plotSets }) {
         let text = fmt(f);
         const toRated = { current_peak: derived.peak_to_rated, current_rms: derived.rms_to_rated }[f.name] ?? null;
         if (rated && toRated !== null) {
-          text += ` (${Number(toRated.toPrecision(3))}× the rated ${Number(rated.value.toPrecision(4))} A)`;
+          text = t('figures-to-rated', { value: text, ratio: sig(toRated, 3), rated: sig(rated.value, 4) });
         }
         if (f.name === 'mean_nis' && 'mean_nis_low' in nis && derived.nis_inside !== null) {
-          text += ` (95 % band ${Number(nis.mean_nis_low.toPrecision(3))}–${Number(nis.mean_nis_high.toPrecision(3))}: ${derived.nis_inside ? 'inside' : 'outside'})`;
+          text = t(derived.nis_inside ? 'figures-nis-inside' : 'figures-nis-outside', {
+            value: text,
+            low: sig(nis.mean_nis_low, 3),
+            high: sig(nis.mean_nis_high, 3),
+          });
         }
         const item = /** @type {HTMLElement} */ (el('div', { className: 'figure' }));
         item.dataset.name = f.name;
@@ -146,7 +161,7 @@ export function createFiguresView({ plotSets }) {
           el('dt', { textContent: f.label }),
           el('dd', {
             textContent: text,
-            title: `exact: ${f.value}${f.unit ? ` ${f.unit}` : ''}; ${f.window}`,
+            title: t('figures-exact', { value: withUnit(local(String(f.value)), f.unit), window: f.window }),
           }),
           el('dd', { className: 'window', textContent: f.window }),
         );
@@ -174,14 +189,14 @@ export function createFiguresView({ plotSets }) {
       )
       .join('; ');
     for (const set of plotSets)
-      set.describe(sentence ? `Figures of this run: ${sentence}.${warning ? ` ${warning}` : ''}` : '');
+      set.describe(sentence ? [t('figures-caption', { figures: sentence }), warning].filter(Boolean).join(' ') : '');
   }
 
   ui.figuresToggle.addEventListener('click', () => {
     const open = !ui.figures.classList.contains('open');
     ui.figures.classList.toggle('open', open);
     ui.figuresToggle.setAttribute('aria-expanded', String(open));
-    ui.figuresToggle.textContent = open ? 'Fewer figures' : 'All figures';
+    ui.figuresToggle.textContent = t(open ? 'figures-fewer' : 'figures-all');
   });
 
   return { show };

@@ -1,6 +1,7 @@
 // Pins: runs kept in the worker beside the current one, listed in the Analysis tab and kept in
 // the link (`#pins=`), and the overlay that compares one column of them with the current run.
-import { count, pageNumbers } from '../plots/numbers.js';
+import { fixed, pageNumbers } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
 import uPlot from '../../vendor/uPlot.esm.js';
 import { $, say, ui } from '../ui/page.js';
 import { decodePins, fragment, setFragment } from '../ui/url.js';
@@ -22,16 +23,17 @@ const MAX_PINS_SENT = 5;
 const COLOURS = ['#000', '#1f77b4', '#d62728', '#2ca02c', '#9467bd'];
 
 /**
- * One overlay chart `width` px wide: `series` against the times `t`, named `names`. The current
- * run, first when it is drawn, is black; each pin keeps its colour in both charts.
+ * One overlay chart `width` px wide: `series` against the times `time`, named `names`. The current
+ * run, first when it is drawn (`withCurrent`), is black; each pin keeps its colour in both charts.
  * @param {string} title
  * @param {string[]} names
- * @param {Float64Array} t
+ * @param {boolean} withCurrent
+ * @param {Float64Array} time
  * @param {Float64Array[]} series
  * @param {number} width
  * @returns {HTMLElement}
  */
-function overlayChart(title, names, t, series, width) {
+function overlayChart(title, names, withCurrent, time, series, width) {
   const div = el('div', { className: 'plot' });
   const opts = {
     title,
@@ -42,13 +44,13 @@ function overlayChart(title, names, t, series, width) {
       { label: 't (s)' },
       ...names.map((name, i) => ({
         label: name,
-        stroke: COLOURS[(i + (names[0] === 'current' ? 0 : 1)) % COLOURS.length],
+        stroke: COLOURS[(i + (withCurrent ? 0 : 1)) % COLOURS.length],
         width: 2,
       })),
     ],
     axes: [{ label: 't (s)' }, { size: 80 }],
   };
-  new uPlot(pageNumbers(opts), [t, ...series], div);
+  new uPlot(pageNumbers(opts), [time, ...series], div);
   return div;
 }
 
@@ -60,21 +62,33 @@ function overlayChart(title, names, t, series, width) {
  */
 function pinsFromLink(shared) {
   if (shared.length > MAX_PINS_CHARS) {
-    say(
-      `The pins in the address were not run: ${count(shared.length)} characters, more than the ${count(MAX_PINS_CHARS)} a pins fragment may hold.`,
-    );
+    say(t('pins-link-too-long', { length: shared.length, max: MAX_PINS_CHARS }));
     setFragment('pins', null);
     return null;
   }
   const { scenarios, malformed } = decodePins(shared);
   if (malformed.length)
-    say(`Ignored a malformed pin in the address: ${listed(malformed.map((m) => `'${excerpt(m)}'`))}.`);
+    say(t('pins-link-malformed', { pins: listed(malformed.map((m) => `'${excerpt(m)}'`)), count: malformed.length }));
   // The core pins a few runs at most and names the rest; no more are sent than it can take.
   const sent = scenarios.slice(0, MAX_PINS_SENT);
   const dropped = scenarios.length - sent.length;
-  if (dropped > 0)
-    say(`Only the first ${MAX_PINS_SENT} pins in the address were run; ${count(dropped)} more were left out.`);
+  if (dropped > 0) say(t('pins-link-dropped', { sent: MAX_PINS_SENT, dropped }));
   return sent;
+}
+
+/**
+ * The sentence that names each scenario not pinned, and why: `Could not pin A: why; could not pin
+ * B: why.`, cut after a few.
+ * @param {P.PinRejected[]} rejected
+ */
+function rejectedSentence(rejected) {
+  const clauses = rejected.map((r, i) =>
+    t(i === 0 ? 'pins-rejected-first' : 'pins-rejected-next', {
+      scenario: excerpt(r.scenario),
+      reason: 'message' in r ? r.message : t(r.cancelled === 'unrun' ? 'pins-reason-unrun' : 'pins-reason-cancelled'),
+    }),
+  );
+  return t('pins-rejected', { list: listed(clauses, '; ') });
 }
 
 /**
@@ -94,9 +108,9 @@ export function createPins({ client, state, plots }) {
     setFragment('pins', scenarios.length ? scenarios.map(encodeURIComponent).join('|') : null);
     $('pins').replaceChildren(
       ...scenarios.map((s, i) => {
-        const unpin = el('button', { type: 'button', textContent: 'Unpin' });
+        const unpin = el('button', { type: 'button', textContent: t('pins-unpin') });
         unpin.addEventListener('click', () => client.post({ type: 'unpin', index: i }));
-        const li = el('li', { textContent: `pin ${i + 1}: ${legends[i] ?? ''}` });
+        const li = el('li', { textContent: t('pins-item', { n: i + 1, legend: legends[i] ?? '' }) });
         li.append(unpin);
         return li;
       }),
@@ -129,18 +143,20 @@ export function createPins({ client, state, plots }) {
     window.imlab.overlay = { column, data };
     const n = state.pins.length;
     const label = $('overlay-column', HTMLSelectElement).selectedOptions[0].textContent;
-    const pinNames = state.pins.map((_, i) => `pin ${i + 1}`);
+    const pinNames = state.pins.map((_, i) => t('pins-name', { n: i + 1 }));
     $('overlay-plots').replaceChildren(
       overlayChart(
-        `${label}: current run and pinned runs`,
-        ['current', ...pinNames],
+        t('pins-overlay-title', { column: label }),
+        [t('pins-current'), ...pinNames],
+        true,
         data[0],
         data.slice(1, 2 + n),
         plots.width(),
       ),
       overlayChart(
-        `${label}: current − pin`,
-        pinNames.map((p) => `current − ${p}`),
+        t('pins-difference-title', { column: label }),
+        state.pins.map((_, i) => t('pins-difference', { n: i + 1 })),
+        false,
         data[0],
         data.slice(2 + n),
         plots.width(),
@@ -176,7 +192,11 @@ export function createPins({ client, state, plots }) {
       ui.cancel.disabled = false;
       if (!state.running) {
         ui.progress.value = done / total;
-        ui.status.textContent = `Running pin ${index + 1} of ${count}: ${((100 * done) / total).toFixed(0)} %`;
+        ui.status.textContent = t('pins-status-running', {
+          n: index + 1,
+          count,
+          percent: fixed((100 * done) / total, 0),
+        });
       }
       document.body.dataset.pinning = 'running';
     },
@@ -184,16 +204,10 @@ export function createPins({ client, state, plots }) {
       if (state.pinning) {
         state.pinning = false;
         ui.cancel.disabled = !state.running && state.export === null;
-        if (!state.running) ui.status.textContent = cancelled ? 'Pinning cancelled' : 'Pinned';
+        if (!state.running) ui.status.textContent = t(cancelled ? 'pins-status-cancelled' : 'pins-status-done');
       }
       document.body.dataset.pinning = cancelled ? 'cancelled' : 'done';
-      if (rejected.length)
-        say(
-          `Could not pin ${listed(
-            rejected.map((r) => `${excerpt(r.scenario)}: ${r.message}`),
-            '; could not pin ',
-          )}.`,
-        );
+      if (rejected.length) say(rejectedSentence(rejected));
       show(scenarios, legends);
     },
     overlay({ id, column, data }) {

@@ -1,6 +1,7 @@
 // The run of the scenario in the form: starting it, its progress and status line, how it ended,
 // and the plots, figures and walkthrough it fills when it is done.
-import { count } from '../plots/numbers.js';
+import { fixed, sig } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
 import { $, say, ui } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 import { markRun } from '../ui/url.js';
@@ -36,11 +37,9 @@ const painted = () =>
  * @param {State['transient']} transient
  */
 function showTransient(transient) {
-  ui.fitLabel.textContent = transient
-    ? `Fit y-axes after the start-up transient (t ≥ ${Number((transient.t * 1e3).toPrecision(3))} ms)`
-    : 'Fit y-axes after the start-up transient';
+  ui.fitLabel.textContent = transient ? t('view-fit-from', { ms: sig(transient.t * 1e3, 3) }) : t('view-fit');
   ui.fitLabel.title = transient?.reason ?? '';
-  $('fit-reason').textContent = transient ? `Start-up transient: ${transient.reason}.` : '';
+  $('fit-reason').textContent = transient ? t('view-transient-reason', { reason: transient.reason }) : '';
 }
 
 /**
@@ -54,16 +53,16 @@ function showTransient(transient) {
 function reportEnd(failure, warnings, rows, ms) {
   const ranAway = warnings.find((w) => w.kind === 'runaway');
   if (failure) {
-    say(`The run stopped early: ${failure}. The plots show the ${count(rows)} samples before it.`);
-    ui.status.textContent = `Stopped after ${count(rows)} samples`;
+    say(t('run-stopped-early', { reason: failure, rows }));
+    ui.status.textContent = t('run-status-stopped', { rows });
     document.body.dataset.state = 'failed';
   } else if (ranAway) {
     // The simulation completed, but as a control run it failed: say so before any figure.
-    say(`${ranAway.text} The plots show what the motor did.`);
-    ui.status.textContent = `Ran away: ${count(rows)} samples in ${ms.toFixed(0)} ms`;
+    say(t('run-ran-away', { warning: ranAway.text }));
+    ui.status.textContent = t('run-status-ran-away', { rows, ms: fixed(ms, 0) });
     document.body.dataset.state = 'failed';
   } else {
-    ui.status.textContent = `${count(rows)} samples in ${ms.toFixed(0)} ms`;
+    ui.status.textContent = t('run-status-done', { rows, ms: fixed(ms, 0) });
     document.body.dataset.state = 'done';
   }
 }
@@ -136,8 +135,8 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     if (document.body.dataset.state === 'crashed') say(''); // the crash was told; this is the retry
     // The new run replaces the one being exported in the worker.
     if (state.export) {
-      exporter.cancel('CSV export cancelled');
-      say('The CSV export was cancelled: a new run started.', 'info');
+      exporter.cancel(t('export-csv-cancelled'));
+      say(t('export-csv-cancelled-by-run'), 'info');
     }
     const id = ++state.runId;
     state.ranScenario = state.info.encoded;
@@ -148,7 +147,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     document.body.dataset.started = String(id); // runs started: tests wait on it, not on a time
     started = performance.now();
     ui.progress.value = 0;
-    ui.status.textContent = `Running ${count(state.info.steps)} samples…`;
+    ui.status.textContent = t('run-status-starting', { samples: state.info.steps });
     walkthrough.closeInspect();
     setBusy(true);
     // The run keeps the whole-run view of the main plots, and of the walkthrough's once it has been
@@ -165,35 +164,33 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
    * @param {boolean} restarting
    */
   function workerFailed(reason, restarting) {
-    if (state.export) exporter.end('failed', 'CSV export stopped');
+    if (state.export) exporter.end('failed', t('export-csv-stopped'));
     const wasRunning = state.running;
     state.pinning = false;
     setBusy(false);
     ui.csv.disabled = true;
     document.body.dataset.state = 'crashed';
-    if (wasRunning) ui.status.textContent = 'Stopped: the simulation worker failed';
+    if (wasRunning) ui.status.textContent = t('run-status-worker-failed');
     if (!restarting) {
-      say(`The simulation worker could not start (${reason}). Reload the page to try again.`);
+      say(t('run-worker-not-started', { reason }));
       return;
     }
-    const dropped = state.pins.length
-      ? ` The pinned runs were dropped: ${state.pins.map((p) => excerpt(p)).join('; ')}.`
-      : '';
-    say(`The simulation worker failed (${reason}). It was restarted; press Run to try again.${dropped}`);
+    const pins = state.pins.map((p) => excerpt(p)).join('; ');
+    say(t(state.pins.length ? 'run-worker-failed-pins' : 'run-worker-failed', { reason, pins }));
   }
 
   /** @type {P.Handlers} */
   const handlers = {
-    invalid({ id, message }) {
+    invalid({ id, message, comparison }) {
       if (id === state.runId) {
         setBusy(false);
-        say(message);
+        say(comparison ? t('compare-failed', { reason: message }) : message);
       }
     },
     progress({ id, done, total }) {
       if (id !== state.runId) return;
       ui.progress.value = done / total;
-      ui.status.textContent = `Running: ${count(done)} of ${count(total)} samples`;
+      ui.status.textContent = t('run-status-progress', { done, total });
     },
     async done({ id, rows, failure, view, computeMs, stability, figures, unreached, transient, warnings, ...derived }) {
       if (id !== state.runId) return;
@@ -235,7 +232,7 @@ export function createRun({ client, state, plots, walkthrough, views, figuresVie
     cancelled({ id }) {
       if (id !== state.runId) return;
       setBusy(false);
-      ui.status.textContent = `Cancelled at ${(ui.progress.value * 100).toFixed(0)} %`;
+      ui.status.textContent = t('run-status-cancelled', { percent: fixed(ui.progress.value * 100, 0) });
       document.body.dataset.state = 'cancelled';
     },
   };

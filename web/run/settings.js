@@ -6,6 +6,7 @@ import { formScenario, forwardKnob, markInvalid, renderFields, syncFields } from
 import { ScenarioRefused, WorkerFailed } from '../client/run-client.js';
 import { DEFAULT_PRESET, DEFAULT_SCENARIO, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listed } from '../ui/quote.js';
+import { t } from '../l10n/l10n.js';
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
 
@@ -47,16 +48,16 @@ async function describeLoaded(client, state, text) {
     });
     if (info !== null) {
       say(
-        `Some settings in the address were rejected and left at the preset's values: ${listed(
-          rejected.map((r) => r.message),
-          '; ',
-        )}.`,
+        t('settings-link-rejected', {
+          list: listed(
+            rejected.map((r) => r.message),
+            '; ',
+          ),
+        }),
       );
       return info;
     }
-    say(
-      `The scenario in the address was rejected: ${/** @type {Error} */ (e).message}. Showing ${DEFAULT_PRESET} instead.`,
-    );
+    say(t('settings-link-refused', { reason: /** @type {Error} */ (e).message, preset: DEFAULT_PRESET }));
     return client.describe(DEFAULT_SCENARIO);
   }
 }
@@ -158,7 +159,7 @@ export function createSettings({
     // A changed run is not the preset's: what the description says of the preset's run (its
     // speed, its outcome) need not hold for it, and the page says so.
     ui.presetDoc.textContent = info.changed.length
-      ? `Preset ${ui.preset.value}: ${description}. This run changes ${info.changed.join(', ')}, so what the preset's description says of its run need not hold for this one.`
+      ? t('settings-preset-changed', { preset: ui.preset.value, description, fields: info.changed.join(', ') })
       : description;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);

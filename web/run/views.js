@@ -2,6 +2,7 @@
 // state at one time (inspect), and the walkthrough's own view and predictor comparison.
 import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 /** @import { State } from '../main.js' */
@@ -84,19 +85,14 @@ export function createViews({ client, state, plots, walkthrough, stale }) {
   /** The comparison's box (its section is built with it) and its mark. */
   function comparison() {
     const box = /** @type {HTMLElement} */ ($('walkthrough').querySelector('.compare-result'));
-    compared ??= stale.add({
-      name: 'compare',
-      what: 'This comparison is',
-      press: '“Run”, then the comparison’s button,',
-      before: box,
-      shows: [box],
-    });
+    // Its mark says the message stale-compare.
+    compared ??= stale.add({ name: 'compare', before: box, shows: [box] });
     return { box, mark: compared };
   }
 
   function compare() {
     const { box, mark } = comparison();
-    box.textContent = 'Running both predictors…';
+    box.textContent = t('compare-running');
     mark.forget();
     client.post({ type: 'compare', id: state.runId });
   }

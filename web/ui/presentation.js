@@ -2,9 +2,9 @@
 // the link as `#present=1`), the settings drawer it and small screens use, and an embed
 // (`#embed=PLOT,PLOT...`) that shows a few plots in a frame of any size.
 import { $, say, ui } from './page.js';
-import { PLOTS } from '../plots/plots.js';
 import { fragment, setFragment } from './url.js';
 import { excerpt } from './quote.js';
+import { t } from '../l10n/l10n.js';
 
 const PLOT_HEIGHT = { normal: [260, 220], present: [380, 320] };
 // The least height of an embedded chart, however small its frame (px): a plot area of about
@@ -133,8 +133,9 @@ export function createPresentation({ state, plots, walkthrough, rescaled }) {
   // figures, the plots sharing the frame's height, so that the frame holds them at any size.
   const embedded = fragment('embed');
   if (embedded !== null) {
-    const asked = embedded.split(',').slice(0, PLOTS.length);
-    const ids = asked.filter((id) => PLOTS.some((p) => p.id === id));
+    const all = plots.defs.map((p) => p.id);
+    const asked = embedded.split(',').slice(0, all.length);
+    const ids = asked.filter((id) => all.includes(id));
     const unknown = asked.filter((id) => !ids.includes(id));
     if (ids.length === 0) ids.push('speed');
     document.body.classList.add('embed');
@@ -144,7 +145,12 @@ export function createPresentation({ state, plots, walkthrough, rescaled }) {
       div.classList.toggle('embedded', ids.includes(/** @type {string} */ (div.dataset.plot)));
     // Kept until the user acts: a load's message would otherwise clear it.
     if (unknown.length)
-      state.notice = `No plot named ${unknown.map((id) => `'${excerpt(id)}'`).join(', ')}; showing ${ids.join(', ')}. Plots: ${PLOTS.map((p) => p.id).join(', ')}.`;
+      state.notice = t('embed-unknown-plots', {
+        names: unknown.map((id) => `'${excerpt(id)}'`).join(', '),
+        count: unknown.length,
+        shown: ids.join(', '),
+        plots: all.join(', '),
+      });
     say(state.notice ?? '', 'info');
     fitEmbed = () => plots.resize(embedHeight(ids.length));
     window.addEventListener('resize', fitEmbed);

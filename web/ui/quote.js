@@ -1,5 +1,5 @@
 // How a message quotes input: one part escaped and cut, a list bounded.
-import { count } from '../plots/numbers.js';
+import { t } from '../l10n/l10n.js';
 
 // The characters a message escapes: the Unicode categories Cc, Cf, Zl and Zp, as the core's.
 const INVISIBLE = /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u;
@@ -35,6 +35,6 @@ export function excerpt(text, max = 40) {
  */
 export function listed(items, sep = ', ') {
   const shown = items.slice(0, LISTED).join(sep);
-  return items.length > LISTED ? `${shown} … and ${count(items.length - LISTED)} more` : shown;
+  return items.length > LISTED ? t('list-more', { list: shown, count: items.length - LISTED }) : shown;
 }
 const LISTED = 5;

@@ -1,5 +1,6 @@
 // The links the page hands out: the address of this run, and an embed code for the plots in view.
 import { say, ui } from './page.js';
+import { t } from '../l10n/l10n.js';
 
 /** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
 function plotsInView() {
@@ -23,9 +24,9 @@ export function wireShare({ state }) {
   ui.copy.addEventListener('click', async () => {
     try {
       await navigator.clipboard.writeText(location.href);
-      say('Link copied: it reproduces this run bit for bit.', 'info');
+      say(t('share-link-copied'), 'info');
     } catch {
-      say(`Copy this link: ${location.href}`, 'info');
+      say(t('share-copy-this-link', { link: location.href }), 'info');
     }
   });
 
@@ -34,16 +35,19 @@ export function wireShare({ state }) {
     if (!info) return; // no scenario described yet: nothing to embed
     const ids = plotsInView();
     const src = `${location.origin}${location.pathname}?${info.encoded}#embed=${ids.join(',')}`;
-    const title = `IM Lab: ${info.preset}, ${ids.join(', ')}`.replace(/[&<"]/g, (c) => `&#${c.charCodeAt(0)};`);
+    const title = t('share-embed-title', { preset: info.preset, plots: ids.join(', ') }).replace(
+      /[&<"]/g,
+      (c) => `&#${c.charCodeAt(0)};`,
+    );
     // The plots share whatever height the frame has; this one gives each about 300 px.
     const height = 140 + 300 * ids.length;
     const code = `<iframe src="${src.replaceAll('"', '%22')}" title="${title}" width="100%" height="${height}" style="border:0;max-width:960px" loading="lazy"></iframe>`;
-    const what = `the ${ids.join(', ')} plot${ids.length > 1 ? 's' : ''} of this run (the Trajectories plots in view)`;
+    const what = { plots: ids.join(', '), count: ids.length };
     try {
       await navigator.clipboard.writeText(code);
-      say(`Embed code copied: ${what}. Paste it into a slide or a course page.`, 'info');
+      say(t('share-embed-copied', what), 'info');
     } catch {
-      say(`Copy this embed code for ${what}: ${code}`, 'info');
+      say(t('share-embed-copy-this', { ...what, code }), 'info');
     }
   });
 }

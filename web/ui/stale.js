@@ -7,17 +7,18 @@
 // scenarios are the same exactly when their texts are.
 import { el } from './dom.js';
 import { excerpt } from './quote.js';
+import { t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
 /**
  * A result the page marks while it is of an earlier scenario: its `name` (the body's
- * `data-NAME-stale` is set while it is marked, and its mark's id is `NAME-stale`), what it is
- * (`what`, the subject of the mark's sentence), the button that runs it again (`press`, as the page
- * labels it), the element the mark goes before, the elements that show it (outlined while marked),
- * the buttons that export it without naming its scenario (off while marked) and what the mark says
- * of its export.
- * @typedef {{name: string, what: string, press: string, before: HTMLElement, shows: HTMLElement[],
+ * `data-NAME-stale` is set while it is marked, its mark's id is `NAME-stale`, and the mark says the
+ * message `stale-NAME`: what the result is, the button that runs it again, what it means for its
+ * export), the element the mark goes before, the elements that show it (outlined while marked) and
+ * the buttons that export it without naming its scenario (off while marked). `what`, `press` and
+ * `exportNote` are not shown: the message holds the mark's words.
+ * @typedef {{name: string, what?: string, press?: string, before: HTMLElement, shows: HTMLElement[],
  *   exports?: HTMLButtonElement[], exportNote?: string, back?: boolean}} Result
  */
 
@@ -40,7 +41,7 @@ export function createStale({ state, load }) {
    * @param {Result} result
    */
   function add(result) {
-    const { name, what, press, before, shows, exports = [], exportNote = '', back = false } = result;
+    const { name, before, shows, exports = [], back = false } = result;
     /** @type {string | null} */
     let scenario = null; // the scenario of the result shown
     const text = el('span');
@@ -48,7 +49,7 @@ export function createStale({ state, load }) {
       text,
     ]);
     if (back) {
-      const button = el('button', { type: 'button', textContent: 'Back to its scenario' });
+      const button = el('button', { type: 'button', textContent: t('stale-back') });
       button.addEventListener('click', () => scenario !== null && load(scenario));
       mark.append(' ', button);
     }
@@ -60,9 +61,7 @@ export function createStale({ state, load }) {
     function update() {
       if (!mark.isConnected) before.before(mark);
       const stale = scenario !== null && state.info !== null && scenario !== state.info.encoded;
-      const said = stale
-        ? `${what} of an earlier scenario (${excerpt(/** @type {string} */ (scenario), QUOTED)}), not of the settings now. Press ${press} to bring it up to date.${exportNote ? ` ${exportNote}` : ''}`
-        : '';
+      const said = stale ? t(`stale-${name}`, { scenario: excerpt(/** @type {string} */ (scenario), QUOTED) }) : '';
       if (text.textContent !== said) text.textContent = said;
       mark.hidden = !stale;
       for (const e of shows) e.classList.toggle('stale-result', stale);

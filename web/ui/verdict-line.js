@@ -1,12 +1,13 @@
 // The line that shows a step's own law's verdict, beside the law's field: in the walkthrough's
 // step and in the settings form. The verdicts fill it (web/teaching/law-editor.js).
 import { el } from './dom.js';
+import { t } from '../l10n/l10n.js';
 
 /**
  * What a step without a law of its own runs.
  * @param {number} step
  */
-export const paperLaw = (step) => `No law of your own yet: this step runs the paper’s v${step}.`;
+export const paperLaw = (step) => t('law-paper-default', { step });
 
 /**
  * The line that shows step `step`'s verdict, saying what it runs until a verdict comes. It belongs to the

@@ -25,7 +25,7 @@ const pins = () => /** @type {Comparison} */ (comparison);
 
 /**
  * The pins message, naming each scenario refused or not run, and whether pinning was cancelled.
- * @param {{scenario: string, message: string}[]} rejected
+ * @param {P.PinRejected[]} rejected
  * @param {boolean} cancelled
  * @returns {P.Pins}
  */
@@ -43,10 +43,11 @@ function pinsMessage(rejected = [], cancelled = false) {
 export async function pinAll({ scenarios, column }) {
   const me = { cancelled: false };
   pinning = me;
+  /** @type {P.PinRejected[]} */
   const rejected = [];
   for (const [index, scenario] of scenarios.entries()) {
     if (me.cancelled) {
-      rejected.push({ scenario, message: 'not run: pinning was cancelled' });
+      rejected.push({ scenario, cancelled: 'unrun' });
       continue;
     }
     let sim;
@@ -73,7 +74,7 @@ export async function pinAll({ scenarios, column }) {
     }
     if (me.cancelled) {
       sim.free();
-      rejected.push({ scenario, message: 'cancelled' });
+      rejected.push({ scenario, cancelled: 'running' });
       continue;
     }
     try {

@@ -198,14 +198,16 @@ export {};
  */
 /**
  * Unprompted: the core trapped (a panic, running out of memory) or the worker hit an uncaught
- * error. The worker never calls the core again; the page replaces it.
- * @typedef {{type: 'crashed', message: string}} Crashed
+ * error. The worker never calls the core again; the page replaces it. `message` is the error, `panic`
+ * the core's panic message if it left one, `memory` whether the trap most likely means the core ran
+ * out of memory (an allocation failure aborts without a panic); the page says them in words.
+ * @typedef {{type: 'crashed', message: string, panic?: string, memory?: boolean}} Crashed
  */
 /** @typedef {{type: 'described', req: number, checked: Checked}} Described */
 /**
  * A request the core refused: `req` for a describe that failed other than by its scenario's
- * fault, `id` for a run's request.
- * @typedef {{type: 'invalid', req?: number, id?: number, message: string}} Invalid
+ * fault, `id` for a run's request; `comparison` when it was the comparison of the EKF's predictors.
+ * @typedef {{type: 'invalid', req?: number, id?: number, message: string, comparison?: boolean}} Invalid
  */
 /** @typedef {{type: 'progress', id: number, done: number, total: number}} Progress */
 /**
@@ -221,18 +223,21 @@ export {};
 /** @typedef {{type: 'cancelled', id: number}} Cancelled */
 /** @typedef {{type: 'view', id: number, set: string, view: View}} ViewReply */
 /**
- * One chunk of a CSV export (the chunks concatenate to the CSV; the last has rows === total).
+ * One chunk of a CSV export (the chunks concatenate to the CSV; the last has rows === total), or
+ * why the export failed: the core's message, or null when the worker no longer holds the run.
  * @typedef {{type: 'csv', serial: number, bytes: Uint8Array, rows: number, total: number}} CsvChunk
- * @typedef {{type: 'csv-failed', serial: number, message: string}} CsvFailed
+ * @typedef {{type: 'csv-failed', serial: number, message: string | null}} CsvFailed
  */
 /** @typedef {{type: 'inspected', id: number, t: number, snapshot: Snapshot}} Inspected */
 /**
  * @typedef {{type: 'compared', id: number, results: {predictor: string, scenario: string, metrics: Metrics | null}[]}} Compared
  */
 /**
+ * The pins, and each scenario not pinned: the core's message why, or, when pinning was
+ * cancelled, whether it was cancelled before the scenario ran ('unrun') or while it ran.
  * @typedef {{type: 'pin-progress', index: number, count: number, done: number, total: number}} PinProgress
- * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: {scenario: string, message: string}[],
- *   cancelled: boolean}} Pins
+ * @typedef {{scenario: string, message: string} | {scenario: string, cancelled: 'unrun' | 'running'}} PinRejected
+ * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: PinRejected[], cancelled: boolean}} Pins
  */
 /**
  * The overlay's samples: times, the current run, each pin, then each pin's difference to the run.
@@ -243,8 +248,9 @@ export {};
  * @typedef {{type: 'challenge-measured', id: number, measures: Measures | null, error?: string}} Measured
  */
 /**
- * A job's result (the `result` of its kind in Jobs), or why it failed.
- * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string}} JobReply
+ * A job's result (the `result` of its kind in Jobs), or why it failed: `error`, with `unloaded`
+ * when the tools could not be fetched (`error` is then the browser's).
+ * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string, unloaded?: boolean}} JobReply
  */
 
 /**

@@ -244,7 +244,7 @@ export async function exportCsv({ id, serial }) {
   exporting = null;
   const me = held(id);
   if (!me) {
-    post({ type: 'csv-failed', serial, message: 'this run is no longer held by the worker; run it again' });
+    post({ type: 'csv-failed', serial, message: null });
     return;
   }
   const total = me.sim.rows;
@@ -315,7 +315,7 @@ export async function compare({ id }) {
     }
     post({ type: 'compared', id, results });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: `Comparison failed: ${e}` });
+    if (!trapped(e)) post({ type: 'invalid', id, message: String(e), comparison: true });
   }
 }
 

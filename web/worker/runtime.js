@@ -52,12 +52,10 @@ export function crash(error) {
       // The instance is too broken to read the message; the trap's own text still tells.
     }
   }
-  let message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
+  const message = error instanceof Error ? `${error.name}: ${error.message}` : String(error);
   // A Rust allocation failure aborts without a panic, as an 'unreachable' trap.
-  if (panic) message += `; Rust panic: ${panic}`;
-  else if (error instanceof WebAssembly.RuntimeError && /unreachable/.test(error.message))
-    message += '; most likely the core ran out of memory';
-  post({ type: 'crashed', message });
+  const memory = !panic && error instanceof WebAssembly.RuntimeError && /unreachable/.test(error.message);
+  post({ type: 'crashed', message, panic, memory });
 }
 
 /**

@@ -83,11 +83,7 @@ async function job(request) {
   try {
     jobs = await loadTools();
   } catch (e) {
-    post({
-      type: 'job',
-      job: request.job,
-      error: `The tools could not be loaded (${e}): check the connection and try again.`,
-    });
+    post({ type: 'job', job: request.job, error: String(e), unloaded: true });
     return;
   }
   if (isCrashed()) return;

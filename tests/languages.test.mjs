@@ -1,0 +1,90 @@
+// The language a page speaks: the link's `lang=`, else the browser's preferred language the page
+// speaks, else English; only that language's messages are fetched, and kept for offline use; the
+// menu switches the language and keeps the run; every link the page writes names the language.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { browserSuite, settled } from './browser.mjs';
+import { LANGUAGES } from '../web/l10n/languages.js';
+import { messagesOf } from './texts.mjs';
+
+const suite = browserSuite();
+
+/**
+ * Opens `path` in a fresh context with `options` (a browser locale), noting the languages whose
+ * message files it fetches (`locales/LANG/…`), runs `body(page, fetched)`, and fails on any
+ * console or page error.
+ */
+async function withContext(options, path, body) {
+  const errors = [];
+  const fetched = [];
+  const context = await suite.browser.newContext(options);
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  page.on('request', (r) => {
+    const m = new URL(r.url()).pathname.match(/\/locales\/([^/]+)\//);
+    if (m) fetched.push(m[1]);
+  });
+  try {
+    await page.goto(`${suite.server.url}${path}`);
+    await body(page, fetched);
+  } finally {
+    await context.close();
+  }
+  assert.deepEqual(errors, [], 'console errors');
+}
+
+test('a link’s lang= chooses the language; only its messages are fetched, and kept offline', () =>
+  withContext({ locale: 'en-US' }, '?v=1&preset=step#lang=de', async (page, fetched) => {
+    assert.equal(await settled(page), 'done');
+    assert.equal(await page.evaluate(() => document.documentElement.lang), 'de');
+    assert.equal(await page.inputValue('#language'), 'de');
+    // The lessons' texts are fetched once the page is idle, for the Lessons tab and offline use.
+    await page.click('#tab-lessons');
+    await page.waitForSelector('#lessons [data-lesson]');
+    assert.equal(
+      (await page.textContent('#lessons h3'))?.trim(),
+      `1. ${messagesOf('de', 'lessons.ftl').get('step-response-title')}`,
+    );
+    assert.deepEqual([...new Set(fetched)], ['de']);
+    await page.waitForFunction(() => document.body.dataset.offline === 'kept');
+    const kept = await page.evaluate(async () => {
+      const cache = await caches.open('imlab-v1');
+      return (await cache.keys()).map((r) => new URL(r.url).pathname).filter((p) => p.includes('/locales/'));
+    });
+    assert.ok(kept.length >= 2 && kept.every((p) => p.includes('/locales/de/')), `kept: ${kept}`);
+  }));
+
+test('with no lang= the browser’s preferred language the page speaks is chosen, else English', async () => {
+  for (const [locale, expected] of [
+    ['ja-JP', 'ja'],
+    ['fr-CA', 'fr'],
+    ['zh-CN', 'zh-CN'],
+    ['pt-BR', 'en'],
+  ])
+    await withContext({ locale }, '?v=1&preset=step', async (page) => {
+      assert.equal(await settled(page), 'done');
+      assert.equal(await page.evaluate(() => document.documentElement.lang), expected, locale);
+    });
+});
+
+test('the menu switches the language and keeps the run; Copy link names the language', () =>
+  suite.withPage('?v=1&preset=step&k1=600', async (page) => {
+    assert.equal(await settled(page), 'done');
+    assert.deepEqual(
+      await page.$$eval('#language option', (options) => options.map((o) => [o.value, o.textContent])),
+      LANGUAGES.map(([code, name]) => [code, name]),
+    );
+    await Promise.all([page.waitForEvent('load'), page.selectOption('#language', 'fr')]);
+    assert.equal(await settled(page), 'done');
+    const url = new URL(page.url());
+    assert.equal(url.search, '?v=1&preset=step&k1=600');
+    assert.match(url.hash, /lang=fr/);
+    assert.equal(await page.evaluate(() => document.documentElement.lang), 'fr');
+    await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
+    await page.click('#copy-link');
+    await page.waitForFunction(() => navigator.clipboard.readText().then((t) => t.includes('lang=')));
+    const copied = new URL(await page.evaluate(() => navigator.clipboard.readText()));
+    assert.equal(copied.search, '?v=1&preset=step&k1=600');
+    assert.match(copied.hash, /(^#|&)lang=fr(&|$)/);
+  }));
