@@ -418,14 +418,14 @@ impl Description {
 #[derive(Serialize)]
 pub struct Rejected {
     key: Option<String>,
-    message: String,
+    message: crate::text::Message,
 }
 
 impl Rejected {
     fn of(e: &crate::scenario::ScenarioError) -> Rejected {
         Rejected {
             key: e.key().map(str::to_string),
-            message: e.to_string(),
+            message: e.message(),
         }
     }
 }

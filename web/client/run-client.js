@@ -3,6 +3,7 @@
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { crashReason, errorReason, jobError, unreadable, watch } from './watch.js';
+import { spoken } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -73,7 +74,7 @@ export class RunClient {
         if (this.failures !== failures) return;
         try {
           if (data.type === 'crashed') this.fail(crashReason(data));
-          else this.receive(data);
+          else this.receive(spoken(data));
         } catch (e) {
           reportError(e);
         }

@@ -1,7 +1,7 @@
 // What every client of a worker does with it: its messages to `onMessage`, and every way it can
 // fail (its 'crashed' message, an uncaught error, a message that cannot be read) to `onFail`
 // once, with the reason in words.
-import { t } from '../l10n/l10n.js';
+import { spoken, t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -38,7 +38,7 @@ export const jobError = ({ error, unloaded }) =>
 export function watch(worker, { onMessage, onFail }) {
   worker.onmessage = (/** @type {MessageEvent<P.FromWorker>} */ { data }) => {
     if (data.type === 'crashed') onFail(crashReason(data));
-    else onMessage(data);
+    else onMessage(spoken(data));
   };
   worker.onerror = (e) => {
     e.preventDefault();

@@ -6,6 +6,7 @@ import { negotiateLanguages } from '@fluent/langneg';
 import { DOMLocalization } from '@fluent/dom';
 import { EN_PAGE, FILES } from './catalog.js';
 import { LANGUAGES } from './languages.js';
+import { isCoreMessage } from './core-message.js';
 
 export { LANGUAGES };
 
@@ -153,25 +154,7 @@ export function num(value, fraction) {
     .replace(/^-/, '−');
 }
 
-/**
- * A message of the core (crate/src/text/message.rs): its id in web/locales/LANG/core-*.ftl and its
- * arguments, each text shown as it is, a whole number, a number with its shortest digits
- * (`{real}`), one with a fixed number of decimals (`{fixed, fraction}`), another message, or a
- * list of messages.
- * @typedef {{id: string, args: Record<string, CoreArg>}} CoreMessage
- * @typedef {string | number | {real: number} | {fixed: number, fraction: number} | CoreMessage | CoreMessage[]} CoreArg
- */
-
-/**
- * Whether `value` is a message of the core, as it crosses from the worker.
- * @param {unknown} value
- * @returns {value is CoreMessage}
- */
-export const isCoreMessage = (value) =>
-  typeof value === 'object' &&
-  value !== null &&
-  typeof (/** @type {CoreMessage} */ (value).id) === 'string' &&
-  'args' in value;
+/** @import { CoreMessage } from './core-message.js' */
 
 /**
  * What the worker said, in the language shown: a message of the core rendered from the language's
@@ -202,4 +185,19 @@ export function said(text) {
 function shortest(value) {
   const separator = new Intl.NumberFormat(language).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
   return String(value).replace('.', separator);
+}
+
+/**
+ * `data` from the worker with every message of the core in it said in the language shown, in
+ * place (typed arrays and other objects that are not plain are left as they are).
+ * @template T
+ * @param {T} data
+ * @returns {T}
+ */
+export function spoken(data) {
+  if (isCoreMessage(data)) return /** @type {T} */ (said(data));
+  if (Array.isArray(data)) data.forEach((v, i) => (data[i] = spoken(v)));
+  else if (typeof data === 'object' && data !== null && Object.getPrototypeOf(data) === Object.prototype)
+    for (const [k, v] of Object.entries(data)) /** @type {Record<string, unknown>} */ (data)[k] = spoken(v);
+  return data;
 }

@@ -12,6 +12,7 @@ import {
   grade_link,
   Simulation,
 } from '../../pkg/imlab.js';
+import { refusal } from '../l10n/core-message.js';
 
 /** @import {Jobs} from './protocol.js' */
 /** @import {Measures} from '../../pkg/imlab.js' */
@@ -52,7 +53,7 @@ function measureRun(scenario) {
       while (!sim.finished) sim.step_for(1e9);
     } catch (e) {
       if (e instanceof WebAssembly.RuntimeError) throw e;
-      stopped = String(e);
+      stopped = refusal(e);
     }
     const measures = challenge_measure(sim);
     if (stopped && !measures.failure) measures.failure = stopped;

@@ -3,6 +3,7 @@
 import { Comparison, Simulation } from '../../pkg-run/imlab.js';
 import { heldSim, held } from './run.js';
 import { post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
+import { refusal } from '../l10n/core-message.js';
 
 /** @import * as P from './protocol.js' */
 
@@ -58,7 +59,7 @@ export async function pinAll({ scenarios, column }) {
     } catch (e) {
       sim?.free();
       if (trapped(e)) return;
-      rejected.push({ scenario, message: String(e) });
+      rejected.push({ scenario, message: refusal(e) });
       continue;
     }
     while (!sim.finished) {
@@ -81,7 +82,7 @@ export async function pinAll({ scenarios, column }) {
       pins().adopt(sim); // takes the run; `sim` is spent
     } catch (e) {
       if (trapped(e)) return;
-      rejected.push({ scenario, message: String(e) });
+      rejected.push({ scenario, message: refusal(e) });
     }
   }
   if (pinning === me) pinning = null;

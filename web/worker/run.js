@@ -3,6 +3,7 @@
 // comparison, a challenge's measures).
 import { challenge_measure, Simulation, variant } from '../../pkg-run/imlab.js';
 import { isCrashed, post, refuse, SLICE_MS, trapped, yieldToMessages } from './runtime.js';
+import { refusal } from '../l10n/core-message.js';
 
 /** @import * as P from './protocol.js' */
 /** @import {Metrics} from '../../pkg-run/imlab.js' */
@@ -151,7 +152,7 @@ export async function run({ id, scenario, groups, buckets, overlay }) {
       computeMs += performance.now() - start;
     } catch (e) {
       if (trapped(e)) return;
-      failure = String(e);
+      failure = refusal(e);
       break;
     }
     post({ type: 'progress', id, done: sim.done, total: sim.total });
@@ -229,7 +230,7 @@ export function measure({ id }) {
     const me = held(id);
     post({ type: 'challenge-measured', id, measures: me ? challenge_measure(me.sim) : null });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'challenge-measured', id, measures: null, error: String(e) });
+    if (!trapped(e)) post({ type: 'challenge-measured', id, measures: null, error: refusal(e) });
   }
 }
 
@@ -253,7 +254,7 @@ export async function exportCsv({ id, serial }) {
     try {
       bytes = me.sim.csv_chunk(rows, CSV_ROWS);
     } catch (e) {
-      if (!trapped(e)) post({ type: 'csv-failed', serial, message: String(e) });
+      if (!trapped(e)) post({ type: 'csv-failed', serial, message: refusal(e) });
       return;
     }
     rows = Math.min(total, rows + CSV_ROWS);
@@ -315,7 +316,7 @@ export async function compare({ id }) {
     }
     post({ type: 'compared', id, results });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', id, message: String(e), comparison: true });
+    if (!trapped(e)) post({ type: 'invalid', id, message: refusal(e), comparison: true });
   }
 }
 

@@ -1,6 +1,7 @@
 // The worker's runtime: how it posts to the page, yields to the page's messages between slices
 // of work, and reports a crash of the core once.
 import { panic_message } from '../../pkg-run/imlab.js';
+import { refusal } from '../l10n/core-message.js';
 
 /** @typedef {import('./protocol.js').FromWorker} FromWorker */
 /** @typedef {import('./protocol.js').View} View */
@@ -75,7 +76,7 @@ export function trapped(e) {
  * @param {number} id
  */
 export function refuse(e, id) {
-  if (!trapped(e)) post({ type: 'invalid', id, message: String(e) });
+  if (!trapped(e)) post({ type: 'invalid', id, message: refusal(e) });
 }
 
 self.addEventListener('unhandledrejection', (e) => {

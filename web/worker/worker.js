@@ -9,6 +9,7 @@ import { cancelPins, holdPins, overlay, pinAll, unpin, unpinAll } from './pins.j
 import { cancel, compare, csvAnswer, exportCsv, inspect, measure, run, viewOf, warmUp } from './run.js';
 import { addPanicSource, isCrashed, post, trapped } from './runtime.js';
 import { TOOLS_WASM_URL, WASM_URL } from './wasm-url.js';
+import { refusal } from '../l10n/core-message.js';
 
 /** @import * as P from './protocol.js' */
 
@@ -39,7 +40,7 @@ function describeScenario(request) {
           : recover(request.scenario);
     post({ type: 'described', req, checked });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'invalid', req, message: String(e) });
+    if (!trapped(e)) post({ type: 'invalid', req, message: refusal(e) });
   }
 }
 
@@ -83,14 +84,14 @@ async function job(request) {
   try {
     jobs = await loadTools();
   } catch (e) {
-    post({ type: 'job', job: request.job, error: String(e), unloaded: true });
+    post({ type: 'job', job: request.job, error: refusal(e), unloaded: true });
     return;
   }
   if (isCrashed()) return;
   try {
     post({ type: 'job', job: request.job, result: runJob(jobs, request.kind, request) });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'job', job: request.job, error: String(e) });
+    if (!trapped(e)) post({ type: 'job', job: request.job, error: refusal(e) });
   }
 }
 
