@@ -107,7 +107,7 @@ test('a sweep of an earlier scenario is marked, its CSV off; going back to its s
     const { text, greyed } = await marking(page, 'sweep', shown);
     assert.match(
       text,
-      /^These Bode plots and this table are of an earlier scenario \(v=1&preset=step\), not of the settings now\. Press “Run sweep” to bring it up to date\. Their CSV, which does not name its scenario, is off until then\./,
+      /^These Bode plots and this table are of an earlier scenario \(v=1&preset=step\), not of the settings now\. Press “Run sweep” to bring them up to date\. Their CSV, which does not name its scenario, is off until then\./,
     );
     assert.deepEqual(greyed, [true, true]);
     assert.equal(await page.isDisabled('#sweep-csv'), true);
@@ -136,7 +136,7 @@ test('seed bands of an earlier scenario are marked, their CSV off, until the see
     const { text, greyed } = await marking(page, 'seeds', ['#seeds-plots']);
     assert.match(
       text,
-      /^These seed bands are of an earlier scenario \(v=1&preset=step&duration=0\.5\), not of the settings now\. Press “Run seeds” to bring it up to date\./,
+      /^These seed bands are of an earlier scenario \(v=1&preset=step&duration=0\.5\), not of the settings now\. Press “Run seeds” to bring them up to date\./,
     );
     assert.deepEqual(greyed, [true]);
     assert.equal(await page.isDisabled('#seeds-csv'), true);

@@ -144,7 +144,7 @@ run-worker-failed-pins = The simulation worker failed ({ $reason }). It was rest
 # $language is the code of the language asked for (de).
 page-language-failed = The page could not load its { $language } messages ({ $reason }): it is in English.
 page-challenge-tools-failed = The Challenge tab’s composer and grading could not be loaded: { $reason }. Open the tab again to retry.
-page-lesson-map-failed = The lesson's map was not read: { $reason }.
+page-lesson-map-failed = The lesson’s map could not be loaded: { $reason }.
 # $lesson is the name the address asked for; $lessons lists the lessons' names.
 page-no-lesson = No lesson named '{ $lesson }'. Lessons: { $lessons }.
 # Why a lesson's link could not be compared with the lesson's run: these complete the lesson
@@ -212,8 +212,8 @@ embed-unknown-plots = No plot named { $names }; showing { $shown }. Plots: { $pl
 
 stale-back = Back to its scenario
 stale-map = This map is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run map” to bring it up to date. Its CSV names the scenario it was run for.
-stale-sweep = These Bode plots and this table are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run sweep” to bring it up to date. Their CSV, which does not name its scenario, is off until then.
-stale-seeds = These seed bands are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run seeds” to bring it up to date. Their CSV, which does not name its scenario, is off until then.
+stale-sweep = These Bode plots and this table are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run sweep” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
+stale-seeds = These seed bands are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run seeds” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
 stale-challenge = This verdict is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run and check” to bring it up to date. “Copy submission link” copies the link of the settings it checked.
 # The walkthrough's comparison of the EKF's predictors.
 stale-compare = This comparison is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run”, then the comparison’s button, to bring it up to date.
