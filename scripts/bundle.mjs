@@ -19,7 +19,7 @@
 //
 //   node scripts/bundle.mjs DIST
 import { createHash } from 'node:crypto';
-import { cpSync, existsSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
+import { cpSync, mkdirSync, readFileSync, readdirSync, rmSync, writeFileSync } from 'node:fs';
 import { basename, join, relative } from 'node:path';
 import * as esbuild from 'esbuild';
 import { FluentBundle, FluentResource } from '@fluent/bundle';
@@ -142,19 +142,20 @@ const tables = readdirSync(TABLES_DIR)
 // (the page needs it before its first plot); every other file is fetched when its language is
 // shown, and the teaching part when a lesson or the walkthrough is first opened.
 const LOCALES = join('web', 'locales');
-const PARTS = {
-  page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', 'core.ftl'],
-  teaching: ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'],
-};
+const TEACHING = ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'];
+/** The files of `lang`'s `part`: the teaching texts, or every other file (the page's and the core's). */
+const partOf = (/** @type {string} */ lang, /** @type {string} */ part) =>
+  readdirSync(join(LOCALES, lang))
+    .filter((n) => n.endsWith('.ftl') && TEACHING.includes(n) === (part === 'teaching'))
+    .sort();
 /** @type {Record<string, Record<string, string>>} */
 const localeFiles = {};
 let enPage = '';
 rmSync(join(dist, 'locales'), { recursive: true, force: true });
 for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
-  for (const [part, names] of Object.entries(PARTS)) {
-    const text = names
-      .filter((n) => existsSync(join(LOCALES, lang, n)))
+  for (const part of ['page', 'teaching']) {
+    const text = partOf(lang, part)
       .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
       .join('\n');
     if (text === '') continue;
