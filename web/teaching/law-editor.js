@@ -3,8 +3,10 @@
 // marked at its place, and after a run the core's verdict says whether the law gives the step's
 // designed dynamics. The names the law may use come from the core too. Its words are the page's
 // messages (teaching-page.ftl): a verdict shows in the settings before the walkthrough is built.
+// The core's words (why a formula is refused, the verdict) come as its messages (core-law.ftl),
+// rendered with said().
 import { el } from '../ui/dom.js';
-import { num, t } from '../l10n/l10n.js';
+import { num, said, t } from '../l10n/l10n.js';
 import { paperLaw, verdictLine } from '../ui/verdict-line.js';
 import { tex } from './tex.js';
 
@@ -54,7 +56,8 @@ export function showPreview(box, preview, text) {
     return;
   }
   // The core gives the TeX or the error.
-  const { at, len, reason } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
+  const { at, len, reason: why } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
+  const reason = said(why);
   const chars = [...text];
   const parts =
     at === 0
@@ -100,7 +103,7 @@ export function showVerdicts(root, verdicts) {
       return typed !== null && typed !== law.trim();
     };
     const stale = !!verdict && (edited(step, verdict.law) || (verdict.on !== null && edited(step - 1, verdict.on)));
-    const text = !verdict ? paperLaw(step) : stale ? staleText(step, verdict) : verdict.text;
+    const text = !verdict ? paperLaw(step) : stale ? staleText(step, verdict) : said(verdict.text);
     if (line.textContent !== text) line.textContent = text;
     line.classList.toggle('stale', stale);
     line.classList.toggle('good', !stale && verdict?.designed === true);
@@ -114,7 +117,7 @@ export function showVerdicts(root, verdicts) {
  * @param {Jobs['law-verdicts']['result'][number]} verdict
  */
 function staleText(step, verdict) {
-  const args = { output: `v${step}`, law: verdict.law, verdict: verdict.text };
+  const args = { output: `v${step}`, law: verdict.law, verdict: said(verdict.text) };
   return verdict.on === null
     ? t('law-stale', args)
     : t('law-stale-after', { ...args, previous: `v${step - 1}`, previousLaw: verdict.on });

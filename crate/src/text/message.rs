@@ -127,10 +127,16 @@ mod english {
     use std::sync::OnceLock;
 
     /// The English message files of the core, as the page has them.
-    const FILES: &[(&str, &str)] = &[(
-        "core-scenario.ftl",
-        include_str!("../../../web/locales/en/core-scenario.ftl"),
-    )];
+    const FILES: &[(&str, &str)] = &[
+        (
+            "core-scenario.ftl",
+            include_str!("../../../web/locales/en/core-scenario.ftl"),
+        ),
+        (
+            "core-law.ftl",
+            include_str!("../../../web/locales/en/core-law.ftl"),
+        ),
+    ];
 
     fn bundle() -> &'static FluentBundle<FluentResource> {
         static BUNDLE: OnceLock<FluentBundle<FluentResource>> = OnceLock::new();

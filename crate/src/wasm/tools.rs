@@ -279,7 +279,9 @@ pub fn law_language() -> Result<Ts<Language>, JsValue> {
 #[wasm_bindgen]
 pub fn law_preview(step: u8, text: &str) -> Result<Ts<crate::control::law::Preview>, JsValue> {
     if !(1..=4).contains(&step) {
-        return Err(js_error(format!("step {step}: the steps are 1 to 4")));
+        return Err(js_error(
+            crate::text::Message::new("law-no-such-step").count("step", step),
+        ));
     }
     to_js(&crate::control::law::preview(step, text))
 }
@@ -291,7 +293,7 @@ pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdic
     let s = Scenario::parse(scenario).map_err(js_error)?;
     let model = s.model.lumped().map_err(js_error)?;
     let verdicts = crate::control::law::verdicts(&s.law, &model, &s.gains)
-        .map_err(|(step, e)| js_error(format!("law.v{step}: {e}")))?;
+        .map_err(|(step, e)| js_error(crate::control::law::refused(step, &e)))?;
     to_js_list(&verdicts)
 }
 
