@@ -3,8 +3,8 @@
 // marked at its place, and after a run the core's verdict says whether the law gives the step's
 // designed dynamics. The names the law may use come from the core too. Its words are the page's
 // messages (teaching-page.ftl): a verdict shows in the settings before the walkthrough is built.
-// The core's words (why a formula is refused, the verdict) come as its messages (core-law.ftl),
-// rendered with said().
+// The core's words (why a formula is refused, the verdict, what each name means) come as its
+// messages (core-law.ftl), rendered with said().
 import { el } from '../ui/dom.js';
 import { num, said, t } from '../l10n/l10n.js';
 import { paperLaw, verdictLine } from '../ui/verdict-line.js';
@@ -139,7 +139,8 @@ export function sayOfTypedLaws(root, text) {
 }
 
 /**
- * Lists in each step's block the names its law may use (`language`, the core's) and the functions.
+ * Lists in each step's block the names its law may use (`language`, the core's) and the functions,
+ * each with its meaning in the language shown.
  * @param {HTMLElement} container
  * @param {Jobs['law-language']['result']} language
  */
@@ -154,7 +155,7 @@ export function fillNames(container, language) {
           el('td', {}, [el('code', { textContent: n.name })]),
           el('td', {}, [tex(n.tex, false, n.name)]),
           el('td', { textContent: n.unit }),
-          el('td', { textContent: n.doc }),
+          el('td', { textContent: said(n.doc) }),
         ]),
       );
     const head = el('tr', {}, [
@@ -163,7 +164,7 @@ export function fillNames(container, language) {
       el('th', { scope: 'col', textContent: t('law-names-unit') }),
       el('th', { scope: 'col', textContent: t('law-names-meaning') }),
     ]);
-    const functions = language.functions.map((f) => f.doc).join('; ');
+    const functions = language.functions.map((f) => said(f.doc)).join('; ');
     details.replaceChildren(
       /** @type {HTMLElement} */ (details.querySelector('summary')),
       el('div', { className: 'table-scroll' }, [el('table', {}, [head, ...rows])]),

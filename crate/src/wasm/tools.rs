@@ -243,7 +243,23 @@ fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
 #[derive(Serialize)]
 pub struct LawFunction {
     name: &'static str,
-    doc: &'static str,
+    doc: crate::text::Message,
+}
+
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+/// A name a law may use (see [`crate::control::formula::Name`]): its symbol in TeX, its unit, its
+/// meaning and the first step whose law may use it.
+#[derive(Serialize)]
+pub struct LawName {
+    name: &'static str,
+    tex: &'static str,
+    unit: &'static str,
+    doc: crate::text::Message,
+    from_step: u8,
 }
 
 #[cfg_attr(
@@ -254,7 +270,7 @@ pub struct LawFunction {
 /// The names and functions a step's own law may use.
 #[derive(Serialize)]
 pub struct Language {
-    names: &'static [crate::control::formula::Name],
+    names: Vec<LawName>,
     functions: Vec<LawFunction>,
     paper: [&'static str; 4],
 }
@@ -265,10 +281,22 @@ pub struct Language {
 pub fn law_language() -> Result<Ts<Language>, JsValue> {
     use crate::control::formula::{FUNCTIONS, NAMES};
     to_js(&Language {
-        names: NAMES,
+        names: NAMES
+            .iter()
+            .map(|n| LawName {
+                name: n.name,
+                tex: n.tex,
+                unit: n.unit,
+                doc: n.doc(),
+                from_step: n.from_step,
+            })
+            .collect(),
         functions: FUNCTIONS
             .iter()
-            .map(|&(name, _, _, doc)| LawFunction { name, doc })
+            .map(|&(name, _, _, doc)| LawFunction {
+                name,
+                doc: crate::text::Message::new(doc),
+            })
             .collect(),
         paper: crate::control::law::PAPER,
     })

@@ -147,3 +147,82 @@ law-mistake-drift-5 = it has the model's drift f̂5 where ψ4 has the observer's
 law-mistake-factor-si4 = the factor of x̂̇4 leaves out si4: the rate of 2·x̂4·si4 in ψ3 gives 2·si4·x̂̇4
 law-mistake-factor-si5 = the factor of x̂̇5 leaves out si5: the rate of 2·x̂5·si5 in ψ3 gives 2·si5·x̂̇5
 law-mistake-robust-4 = it writes the robust term −h4²/(4·ε4)·z4 of (53) without the switch robust, so it acts while the robust terms are off
+
+## The names a law may use: what each one means (its name, symbol and unit are shown beside it)
+
+formula-name-x1h = estimated rotor speed ω̂ (posterior x̂1)
+formula-name-x2h = estimated stator current î_sa
+formula-name-x3h = estimated stator current î_sb
+formula-name-x4h = estimated rotor flux φ̂_ra
+formula-name-x5h = estimated rotor flux φ̂_rb
+formula-name-x2 = measured stator current i_sa
+formula-name-x3 = measured stator current i_sb
+formula-name-xt2 = residual x̃2 = x2 − x̂2
+formula-name-xt3 = residual x̃3 = x3 − x̂3
+formula-name-dxt2 = nominal rate of x̃2: −(a7 + l21)·x̃2 − l22·x̃3
+formula-name-dxt3 = nominal rate of x̃3: −l31·x̃2 − (a7 + l32)·x̃3
+formula-name-dx4h = observer rate of x̂4: −a8·x̂4 − a9·x̂1·x̂5 + a10·x̂2 + si4
+formula-name-dx5h = observer rate of x̂5: −a8·x̂5 + a9·x̂1·x̂4 + a10·x̂3 + si5
+formula-name-wd = speed reference ω_d
+formula-name-dwd = its first derivative
+formula-name-ddwd = its second derivative
+formula-name-psi-d = flux target for x̂4² + x̂5²
+formula-name-si1 = observer injection into x̂1: l11·x̃2 + l12·x̃3
+formula-name-si2 = observer injection into x̂2
+formula-name-si3 = observer injection into x̂3
+formula-name-si4 = observer injection into x̂4
+formula-name-si5 = observer injection into x̂5
+formula-name-l11 = observer gain L = K/Ts, row 1, column 1
+formula-name-l12 = observer gain, row 1, column 2
+formula-name-l21 = observer gain, row 2, column 1
+formula-name-l22 = observer gain, row 2, column 2
+formula-name-l31 = observer gain, row 3, column 1
+formula-name-l32 = observer gain, row 3, column 2
+formula-name-l41 = observer gain, row 4, column 1
+formula-name-l42 = observer gain, row 4, column 2
+formula-name-l51 = observer gain, row 5, column 1
+formula-name-l52 = observer gain, row 5, column 2
+formula-name-a1 = μ = 3·np·M/(2·J·Lr): a1·(x3·x̂4 − x2·x̂5) is the torque over J
+formula-name-a2 = T0/J (the estimate â2 when the EKF estimates the load)
+formula-name-a3 = Cf/J
+formula-name-a5 = α·β, with α = Rr/Lr and β = M/(σ·Lr)
+formula-name-a6 = np·β
+formula-name-a7 = γ = Rs/σ + α·β·M
+formula-name-a8 = α = Rr/Lr
+formula-name-a9 = np
+formula-name-a10 = α·M
+formula-name-b = 1/σ
+formula-name-da2 = rate of â2 (its injection) when the EKF estimates the load, else 0
+formula-name-k1 = speed-error rate
+formula-name-k2 = torque-error rate (k2 = a7 + a8 + k2s1)
+formula-name-k3 = flux-error rate
+formula-name-k4 = flux-rate-error rate
+formula-name-k1s1 = k1 − a3
+formula-name-k2s1 = k2 − a7 − a8
+formula-name-h2 = bound on |d̃2| of (38)
+formula-name-eps2 = ε2 of (38)
+formula-name-h4 = bound on |d̃4| of (53)
+formula-name-eps4 = ε4 of (53)
+formula-name-robust = 1 when the robust terms (38) and (53) are on, else 0
+formula-name-z1 = speed error x̂1 − ω_d
+formula-name-z3 = flux error x̂4² + x̂5² − ψ_d
+formula-name-v1 = step 1's virtual control (yours when you wrote it)
+formula-name-z2 = torque error a1·(x3·x̂4 − x2·x̂5) − v1
+formula-name-v3 = step 3's virtual control (yours when you wrote it)
+formula-name-z4 = flux-rate error 2·a10·(x2·x̂4 + x3·x̂5) − v3
+
+## The functions a law may call: each one written with its arguments, and what it gives (the
+## function's name and its arguments are the language's: keep them)
+
+formula-function-sqrt = sqrt(x): square root
+formula-function-exp = exp(x): exponential
+formula-function-ln = ln(x): natural logarithm
+formula-function-sin = sin(x): sine, x in rad
+formula-function-cos = cos(x): cosine, x in rad
+formula-function-tanh = tanh(x): hyperbolic tangent
+formula-function-abs = abs(x): absolute value
+formula-function-sign = sign(x): −1, 0 or 1
+formula-function-atan2 = atan2(y, x), the angle of (x, y) (rad)
+formula-function-min = min(a, b): the smaller
+formula-function-max = max(a, b): the larger
+formula-function-sat = sat(x, m): x limited to [−m, m]
