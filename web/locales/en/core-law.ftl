@@ -19,7 +19,7 @@ formula-nests-too-deep = the formula nests deeper than { $max } levels here
 formula-ends-early = the formula ends where a number, a name or '(' is expected
 formula-never-closed = this '(' is never closed
 formula-expected-close = expected ')' or an operator here
-# $op is the operator typed (+ * / ^ ) ,).
+# $op is the operator typed (* / ^ ) or ,), a product written · or × given as *.
 formula-misplaced-operator = '{ $op }' where a number, a name or '(' is expected
 # $name is the name typed; $functions lists the functions' names.
 formula-no-function = no function '{ $name }': the functions are { $functions }
