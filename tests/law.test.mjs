@@ -108,6 +108,13 @@ test('a law link opens with the law in its field, typeset, and the names it may 
     assert.ok(!names.includes('v1'));
     const step2 = await page.$$eval('#section-step2 .law-names td code', (cells) => cells.map((c) => c.textContent));
     assert.ok(step2.includes('v1') && step2.includes('z2'));
+    // Each name's and function's meaning is the core's, said in the language shown.
+    const x1h = await page.$$eval('#section-step1 .law-names tr', (trs) =>
+      trs.map((tr) => [...tr.querySelectorAll('td')].map((td) => td.textContent)).find((cells) => cells[0] === 'x1h'),
+    );
+    assert.deepEqual([x1h?.[2], x1h?.[3]], ['rad/s', 'estimated rotor speed ω̂ (posterior x̂1)']);
+    const functions = await page.textContent('#section-step1 .law-names p');
+    assert.match(functions, /sqrt\(x\): square root; exp\(x\): exponential; /);
   }));
 
 test('a law not finite at some drawn states is judged so with its cause, and its residual is no figure', () =>

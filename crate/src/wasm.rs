@@ -64,8 +64,10 @@ macro_rules! said_as_text {
 }
 
 impl Refusal for crate::text::Message {
+    /// As every value the page receives (see [`raw_js`]): its arguments a plain object, which
+    /// the page's `said()` reads (the default serializer would make them a `Map`).
     fn refusal(&self) -> JsValue {
-        serde_wasm_bindgen::to_value(self).unwrap_or_else(|e| JsValue::from_str(&e.to_string()))
+        raw_js(self).unwrap_or_else(|e| e)
     }
 }
 
@@ -84,6 +86,12 @@ impl Refusal for crate::params::ParamError {
 }
 
 impl Refusal for crate::scenario::ScenarioError {
+    fn refusal(&self) -> JsValue {
+        self.message().refusal()
+    }
+}
+
+impl Refusal for crate::control::formula::FormulaError {
     fn refusal(&self) -> JsValue {
         self.message().refusal()
     }

@@ -546,7 +546,7 @@ fn a_formula_with_an_invisible_character_is_quoted_as_escapes_everywhere() {
                 shows(&scenario, &e.to_string());
             }
             if let Some(e) = imlab::control::law::preview(1, &text).error {
-                shows(&scenario, &e.reason);
+                shows(&scenario, &e.reason.to_string());
             }
             let out = output(["describe", scenario.as_str()]);
             shows(&scenario, &String::from_utf8_lossy(&out.stderr));

@@ -179,9 +179,19 @@ fn figures_and_transient_are_the_core_values() {
 
 #[wasm_bindgen_test]
 fn a_formula_refused_for_an_invisible_character_quotes_it_as_an_escape() {
+    /// The reason, a message of the core with the character quoted.
+    #[derive(serde::Deserialize)]
+    struct Reason {
+        id: String,
+        args: Quoted,
+    }
+    #[derive(serde::Deserialize)]
+    struct Quoted {
+        char: String,
+    }
     #[derive(serde::Deserialize)]
     struct Error {
-        reason: String,
+        reason: Reason,
     }
     #[derive(serde::Deserialize)]
     struct Preview {
@@ -203,9 +213,11 @@ fn a_formula_refused_for_an_invisible_character_quotes_it_as_an_escape() {
             serde_wasm_bindgen::from_value(imlab::wasm::law_preview(1, &law).unwrap().into())
                 .unwrap();
         let reason = preview.error.unwrap().reason;
+        let quoted = reason.args.char;
+        assert_eq!(reason.id, "formula-not-in-language");
         assert!(
-            reason.contains(&escaped) && !reason.chars().any(imlab::text::is_invisible),
-            "{reason:?}"
+            quoted.contains(&escaped) && !quoted.chars().any(imlab::text::is_invisible),
+            "{quoted:?}"
         );
     }
 }

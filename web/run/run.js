@@ -79,7 +79,7 @@ function judgeLaws({ client, state, walkthrough }, id) {
   // A run with own laws was started: its scenario is the one it ran.
   client.job('law-verdicts', { scenario: /** @type {string} */ (state.ranScenario) }).then(
     (verdicts) => id === state.runId && walkthrough.showVerdicts(verdicts),
-    (/** @type {Error} */ e) => id === state.runId && walkthrough.verdictsFailed(e.message),
+    (/** @type {unknown} */ e) => id === state.runId && walkthrough.verdictsFailed(e),
   );
 }
 

@@ -106,7 +106,11 @@ impl ScenarioError {
                 .text("name", q(name))
                 .text(
                     "presets",
-                    PRESETS.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+                    PRESETS
+                        .iter()
+                        .map(|p| p.name)
+                        .collect::<Vec<_>>()
+                        .join(", "),
                 ),
             UnknownKey { key } => Message::new("scenario-unknown-key").text("key", q(key)),
             DuplicateKey { key } => Message::new("scenario-duplicate-key").text("key", q(key)),
@@ -135,7 +139,7 @@ impl ScenarioError {
                 .said("error", error.message()),
             BadFormula { key, error } => Message::new("scenario-bad-formula")
                 .text("key", *key)
-                .text("error", error.to_string()),
+                .said("error", error.message()),
             TooLong { bytes } => Message::new("scenario-too-long")
                 .count("bytes", *bytes)
                 .count("max", MAX_SCENARIO_BYTES)

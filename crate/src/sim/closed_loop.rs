@@ -166,7 +166,7 @@ pub(super) struct Loop {
     /// dynamics at the verdict's drawn states and parameter values (see
     /// [`crate::control::law::check`]): what the run's own samples cannot tell, as a parameter
     /// written as its number.
-    law_drawn: OnceCell<Option<Result<f64, String>>>,
+    law_drawn: OnceCell<Option<Result<f64, law::Unjudged>>>,
     /// The lumped parameters the controller assumes, for the delay compensation's prediction.
     model: Lumped,
     /// The inverter's voltage limit.
@@ -362,7 +362,7 @@ impl Loop {
             .get_or_init(|| law::worst(&self.scenario.law, &self.model, &self.scenario.gains));
         Some(match drawn {
             Some(Ok(drawn)) => Ok(run.max(*drawn)),
-            Some(Err(cause)) => Err(cause.clone()),
+            Some(Err(cause)) => Err(cause.to_string()),
             None => Ok(run),
         })
     }

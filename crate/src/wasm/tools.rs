@@ -243,7 +243,23 @@ fn whole(what: &str, value: f64) -> Result<u64, JsValue> {
 #[derive(Serialize)]
 pub struct LawFunction {
     name: &'static str,
-    doc: &'static str,
+    doc: crate::text::Message,
+}
+
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+/// A name a law may use (see [`crate::control::formula::Name`]): its symbol in TeX, its unit, its
+/// meaning and the first step whose law may use it.
+#[derive(Serialize)]
+pub struct LawName {
+    name: &'static str,
+    tex: &'static str,
+    unit: &'static str,
+    doc: crate::text::Message,
+    from_step: u8,
 }
 
 #[cfg_attr(
@@ -254,7 +270,7 @@ pub struct LawFunction {
 /// The names and functions a step's own law may use.
 #[derive(Serialize)]
 pub struct Language {
-    names: &'static [crate::control::formula::Name],
+    names: Vec<LawName>,
     functions: Vec<LawFunction>,
     paper: [&'static str; 4],
 }
@@ -265,10 +281,22 @@ pub struct Language {
 pub fn law_language() -> Result<Ts<Language>, JsValue> {
     use crate::control::formula::{FUNCTIONS, NAMES};
     to_js(&Language {
-        names: NAMES,
+        names: NAMES
+            .iter()
+            .map(|n| LawName {
+                name: n.name,
+                tex: n.tex,
+                unit: n.unit,
+                doc: n.doc(),
+                from_step: n.from_step,
+            })
+            .collect(),
         functions: FUNCTIONS
             .iter()
-            .map(|&(name, _, _, doc)| LawFunction { name, doc })
+            .map(|&(name, _, _, doc)| LawFunction {
+                name,
+                doc: crate::text::Message::new(doc),
+            })
             .collect(),
         paper: crate::control::law::PAPER,
     })
@@ -279,7 +307,9 @@ pub fn law_language() -> Result<Ts<Language>, JsValue> {
 #[wasm_bindgen]
 pub fn law_preview(step: u8, text: &str) -> Result<Ts<crate::control::law::Preview>, JsValue> {
     if !(1..=4).contains(&step) {
-        return Err(js_error(format!("step {step}: the steps are 1 to 4")));
+        return Err(js_error(
+            crate::text::Message::new("law-no-such-step").count("step", step),
+        ));
     }
     to_js(&crate::control::law::preview(step, text))
 }
@@ -291,7 +321,7 @@ pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdic
     let s = Scenario::parse(scenario).map_err(js_error)?;
     let model = s.model.lumped().map_err(js_error)?;
     let verdicts = crate::control::law::verdicts(&s.law, &model, &s.gains)
-        .map_err(|(step, e)| js_error(format!("law.v{step}: {e}")))?;
+        .map_err(|(step, e)| js_error(crate::control::law::refused(step, &e)))?;
     to_js_list(&verdicts)
 }
 

@@ -20,7 +20,8 @@ scenario-out-of-range = field '{ $key }' = { $value }: out of range, allowed { $
 scenario-not-applicable = field '{ $key }' does not apply to the reference '{ $reference }' (set ref= first)
 # $which is "plant" or "model", the prefix of the fields; $error is a param-* message.
 scenario-physics = { $which } parameters: { $error }
-# $error says where and why the formula was refused.
+# $error says where and why the formula was refused (formula-at or another formula-* message of
+# core-law.ftl).
 scenario-bad-formula = field '{ $key }': { $error }
 scenario-too-long = the scenario is { $bytes } bytes long, more than the { $max } bytes ({ $kib } KiB) allowed
 

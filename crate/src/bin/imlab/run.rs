@@ -50,14 +50,14 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
             2 => " (steps 2–4)",
             _ => " (step 4)",
         };
-        writeln!(out, "{:6} {:14} {}{steps}", n.name, n.unit, n.doc)?;
+        writeln!(out, "{:6} {:14} {}{steps}", n.name, n.unit, n.doc())?;
     }
     writeln!(
         out,
         "# With + - * / ^, parentheses, numbers and the functions:"
     )?;
-    for (name, _, _, doc) in formula::FUNCTIONS {
-        writeln!(out, "{name:6} {doc}")?;
+    for &(name, _, _, doc) in formula::FUNCTIONS {
+        writeln!(out, "{name:6} {}", imlab::text::Message::new(doc))?;
     }
     Ok(())
 }

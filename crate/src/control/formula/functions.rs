@@ -29,25 +29,21 @@ pub enum Function {
     Sat,
 }
 
-/// Every function: its name, its arguments and its meaning.
+/// Every function: its name, its arguments and the id of its meaning in `core-law.ftl`
+/// (`formula-function-` and the name: "sqrt(x): square root").
 pub const FUNCTIONS: &[(&str, Function, usize, &str)] = &[
-    ("sqrt", Function::Sqrt, 1, "sqrt(x): square root"),
-    ("exp", Function::Exp, 1, "exp(x): exponential"),
-    ("ln", Function::Ln, 1, "ln(x): natural logarithm"),
-    ("sin", Function::Sin, 1, "sin(x): sine, x in rad"),
-    ("cos", Function::Cos, 1, "cos(x): cosine, x in rad"),
-    ("tanh", Function::Tanh, 1, "tanh(x): hyperbolic tangent"),
-    ("abs", Function::Abs, 1, "abs(x): absolute value"),
-    ("sign", Function::Sign, 1, "sign(x): −1, 0 or 1"),
-    (
-        "atan2",
-        Function::Atan2,
-        2,
-        "atan2(y, x), the angle of (x, y) (rad)",
-    ),
-    ("min", Function::Min, 2, "min(a, b): the smaller"),
-    ("max", Function::Max, 2, "max(a, b): the larger"),
-    ("sat", Function::Sat, 2, "sat(x, m): x limited to [−m, m]"),
+    ("sqrt", Function::Sqrt, 1, "formula-function-sqrt"),
+    ("exp", Function::Exp, 1, "formula-function-exp"),
+    ("ln", Function::Ln, 1, "formula-function-ln"),
+    ("sin", Function::Sin, 1, "formula-function-sin"),
+    ("cos", Function::Cos, 1, "formula-function-cos"),
+    ("tanh", Function::Tanh, 1, "formula-function-tanh"),
+    ("abs", Function::Abs, 1, "formula-function-abs"),
+    ("sign", Function::Sign, 1, "formula-function-sign"),
+    ("atan2", Function::Atan2, 2, "formula-function-atan2"),
+    ("min", Function::Min, 2, "formula-function-min"),
+    ("max", Function::Max, 2, "formula-function-max"),
+    ("sat", Function::Sat, 2, "formula-function-sat"),
 ];
 
 impl Function {

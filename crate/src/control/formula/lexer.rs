@@ -1,7 +1,7 @@
 //! The lexer: a formula's text cut into numbers, names and operators.
 
 use super::FormulaError;
-use crate::text::excerpt;
+use crate::text::{excerpt, Message};
 
 #[derive(Clone, Debug, PartialEq)]
 pub(super) enum Token {
@@ -40,13 +40,17 @@ pub(super) fn tokens(text: &str) -> Result<Vec<(Token, usize, usize)>, FormulaEr
             }
             let written: String = chars[start..i].iter().collect();
             let value: f64 = written.parse().map_err(|_| {
-                FormulaError::new(start + 1, i - start, format!("'{written}' is not a number"))
+                FormulaError::new(
+                    start + 1,
+                    i - start,
+                    Message::new("formula-not-a-number").text("written", written.as_str()),
+                )
             })?;
             if !value.is_finite() {
                 return Err(FormulaError::new(
                     start + 1,
                     i - start,
-                    format!("'{written}' is too large for a number"),
+                    Message::new("formula-number-too-large").text("written", written),
                 ));
             }
             out.push((Token::Num(value, written), start + 1, i - start));
@@ -71,10 +75,7 @@ pub(super) fn tokens(text: &str) -> Result<Vec<(Token, usize, usize)>, FormulaEr
                 return Err(FormulaError::new(
                     start + 1,
                     1,
-                    format!(
-                        "'{}' is not part of the language (+ − * / ^, parentheses, names, numbers)",
-                        excerpt(&c.to_string())
-                    ),
+                    Message::new("formula-not-in-language").text("char", excerpt(&c.to_string())),
                 ))
             }
         };

@@ -3,6 +3,7 @@
 use super::lexer::{tokens, Token};
 use super::program::{constant, Program};
 use super::{index, BinOp, FormulaError, Node, FUNCTIONS, MAX_CHARS, MAX_NESTING, NAMES};
+use crate::text::Message;
 
 /// The parser: precedence climbing over the tokens, refusing names the step may not use.
 struct Parser<'a> {
@@ -57,7 +58,11 @@ impl Parser<'_> {
             self.pos += 1;
             let right = self.unary()?;
             if op == BinOp::Div && constant(&right) == Some(0.0) && self.zero_division.is_none() {
-                self.zero_division = Some(FormulaError::new(at, 1, "division by zero"));
+                self.zero_division = Some(FormulaError::new(
+                    at,
+                    1,
+                    Message::new("formula-division-by-zero"),
+                ));
             }
             left = Node::Bin(op, Box::new(left), Box::new(right));
         }
@@ -77,7 +82,7 @@ impl Parser<'_> {
             return Err(FormulaError::new(
                 at,
                 len,
-                format!("the formula nests deeper than {MAX_NESTING} levels here"),
+                Message::new("formula-nests-too-deep").count("max", MAX_NESTING),
             ));
         }
         if self.at_op('-') {
@@ -106,7 +111,7 @@ impl Parser<'_> {
             return Err(FormulaError::new(
                 self.end,
                 1,
-                "the formula ends where a number, a name or '(' is expected",
+                Message::new("formula-ends-early"),
             ));
         };
         self.pos += 1;
@@ -117,9 +122,9 @@ impl Parser<'_> {
                 if !self.at_op(')') {
                     let (here, n) = self.here();
                     return Err(if self.peek().is_none() {
-                        FormulaError::new(at, 1, "this '(' is never closed")
+                        FormulaError::new(at, 1, Message::new("formula-never-closed"))
                     } else {
-                        FormulaError::new(here, n, "expected ')' or an operator here")
+                        FormulaError::new(here, n, Message::new("formula-expected-close"))
                     });
                 }
                 self.pos += 1;
@@ -130,7 +135,7 @@ impl Parser<'_> {
             Token::Op(c) => Err(FormulaError::new(
                 at,
                 1,
-                format!("'{c}' where a number, a name or '(' is expected"),
+                Message::new("formula-misplaced-operator").text("op", c.to_string()),
             )),
         }
     }
@@ -141,7 +146,9 @@ impl Parser<'_> {
             return Err(FormulaError::new(
                 at,
                 len,
-                format!("no function '{id}': the functions are {}", known.join(", ")),
+                Message::new("formula-no-function")
+                    .text("name", id)
+                    .text("functions", known.join(", ")),
             ));
         };
         self.pos += 1; // '('
@@ -155,7 +162,7 @@ impl Parser<'_> {
             return Err(FormulaError::new(
                 here,
                 n,
-                format!("expected ',' or ')' in {id}( )"),
+                Message::new("formula-expected-argument-end").text("name", id),
             ));
         }
         self.pos += 1;
@@ -163,11 +170,10 @@ impl Parser<'_> {
             return Err(FormulaError::new(
                 at,
                 len,
-                format!(
-                    "{id} takes {arity} argument{}, not {}",
-                    if arity == 1 { "" } else { "s" },
-                    args.len()
-                ),
+                Message::new("formula-arguments")
+                    .text("name", id)
+                    .count("arity", arity)
+                    .count("given", args.len()),
             ));
         }
         Ok(Node::Call(f, args))
@@ -179,42 +185,32 @@ impl Parser<'_> {
             Some(i) => Err(FormulaError::new(
                 at,
                 len,
-                format!(
-                    "'{id}' is not known in step {}: it comes from step {}'s law",
-                    self.step,
-                    NAMES[i].from_step - 1
-                ),
+                Message::new("formula-later-name")
+                    .text("name", id)
+                    .count("step", self.step)
+                    .count("from", NAMES[i].from_step - 1),
             )),
             None if FUNCTIONS.iter().any(|f| f.0 == id) => Err(FormulaError::new(
                 at,
                 len,
-                format!("'{id}' is a function: write {id}( )"),
+                Message::new("formula-is-function").text("name", id),
             )),
             None => Err(FormulaError::new(
                 at,
                 len,
-                match unmeasured(id) {
-                    Some(why) => format!("'{id}' is {why}"),
-                    None => format!("unknown name '{id}' (see the list of names)"),
-                },
+                Message::new(unmeasured(id).unwrap_or("formula-unknown-name")).text("name", id),
             )),
         }
     }
 }
 
-/// Why a name of the true state or of an unmeasured error is not in the language: a sensorless
-/// controller has only the measured currents and its own estimates.
+/// Why a name of the true state or of an unmeasured error is not in the language, as the id of
+/// its message: a sensorless controller has only the measured currents and its own estimates.
 fn unmeasured(id: &str) -> Option<&'static str> {
     Some(match id {
-        "x1" => {
-            "the true speed, which a sensorless controller does not have: write its estimate x1h"
-        }
-        "x4" | "x5" => "a true rotor flux, which no drive measures: write its estimate x4h or x5h",
-        "xt1" | "xt4" | "xt5" => {
-            "an estimation error of an unmeasured state, which a sensorless controller cannot \
-             know: the paper leaves such terms in d̃2 and d̃4, which the robust term \
-             (robust·h²/(4ε)·z) is designed against"
-        }
+        "x1" => "formula-true-speed",
+        "x4" | "x5" => "formula-true-flux",
+        "xt1" | "xt4" | "xt5" => "formula-unmeasured-error",
         _ => return None,
     })
 }
@@ -226,12 +222,14 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
         return Err(FormulaError::new(
             0,
             0,
-            format!("the formula has {length} characters, more than the {MAX_CHARS} allowed"),
+            Message::new("formula-too-long")
+                .count("length", length)
+                .count("max", MAX_CHARS),
         ));
     }
     let tokens = tokens(text)?;
     if tokens.is_empty() {
-        return Err(FormulaError::new(0, 0, "the formula is empty"));
+        return Err(FormulaError::new(0, 0, Message::new("formula-empty")));
     }
     let mut parser = Parser {
         tokens: &tokens,
@@ -243,10 +241,10 @@ pub fn parse(text: &str, step: u8) -> Result<Node, FormulaError> {
     };
     let node = parser.expr()?;
     if let Some((token, at, len)) = parser.peek() {
-        let what = match token {
-            Token::Op(')') => "this ')' has no '(' before it".to_string(),
-            _ => "expected an operator here (a product is written with *)".to_string(),
-        };
+        let what = Message::new(match token {
+            Token::Op(')') => "formula-unopened",
+            _ => "formula-expected-operator",
+        });
         return Err(FormulaError::new(*at, *len, what));
     }
     match parser.zero_division {
@@ -290,14 +288,17 @@ mod tests {
         for (text, step, at, needle) in cases {
             let e = parse(text, *step).expect_err(text);
             assert_eq!(e.at, *at, "{text}: {e}");
-            assert!(e.reason.contains(needle), "{text}: {e}");
+            assert!(e.reason.to_string().contains(needle), "{text}: {e}");
         }
         let long = "x1h + ".repeat(400) + "1";
-        assert!(parse(&long, 1).unwrap_err().reason.contains("characters"));
+        assert!(parse(&long, 1)
+            .unwrap_err()
+            .to_string()
+            .contains("characters"));
         let costly = "x1h*x1h*x1h + ".repeat(140) + "1";
         assert!(Program::parse(&costly, 1)
             .unwrap_err()
-            .reason
+            .to_string()
             .contains("operations"));
         let deep = "(".repeat(40) + "1" + &")".repeat(40);
         // Parentheses alone push nothing; a chain of powers does.
@@ -305,13 +306,13 @@ mod tests {
         let deep = "2^".repeat(40) + "1";
         assert!(Program::parse(&deep, 1)
             .unwrap_err()
-            .reason
+            .to_string()
             .contains("deep"));
         // The parser follows at most MAX_NESTING levels: deeper input is refused, not recursed.
         let nested = "(".repeat(900) + "1" + &")".repeat(900);
         let e = parse(&nested, 1).unwrap_err();
         assert!(
-            e.reason.contains("nests deeper") && e.at == MAX_NESTING + 1,
+            e.reason.to_string().contains("nests deeper") && e.at == MAX_NESTING + 1,
             "{e}"
         );
     }
@@ -321,14 +322,17 @@ mod tests {
         // Too deep for the evaluator's stack, with a division by zero inside.
         let deep = "2^".repeat(40) + "(x1h/0)";
         let e = Program::parse(&deep, 1).unwrap_err();
-        assert!(e.reason.contains("values deep"), "{e}");
+        assert!(e.reason.to_string().contains("values deep"), "{e}");
         assert_eq!(parse(&deep, 1).unwrap_err(), e);
         // Nested past what the parser follows, after a division by zero.
         let nested = "1/0 + ".to_string() + &"-".repeat(900) + "1";
         let e = parse(&nested, 1).unwrap_err();
-        assert!(e.reason.contains("nests deeper"), "{e}");
+        assert!(e.reason.to_string().contains("nests deeper"), "{e}");
         // Shallow, the division by zero is the reason, at its place.
         let e = parse("x1h + 1/(2 - 2)", 1).unwrap_err();
-        assert_eq!((e.at, e.reason.as_str()), (8, "division by zero"));
+        assert_eq!(
+            (e.at, e.reason.to_string()),
+            (8, "division by zero".to_string())
+        );
     }
 }

@@ -1,6 +1,7 @@
 //! The compiled form: a formula as postfix operations on a stack, with its limits checked.
 
 use super::{parse, BinOp, FormulaError, Function, Node, MAX_DEPTH, MAX_OPS, SIGNALS};
+use crate::text::Message;
 
 /// One operation of a program, on a stack of values: each binary operation also comes fused with
 /// a signal or a number as its right operand (one dispatch where there would be two).
@@ -148,10 +149,9 @@ impl Program {
             return Err(FormulaError::new(
                 0,
                 0,
-                format!(
-                    "the formula takes {} operations, more than the {MAX_OPS} allowed",
-                    ops.len()
-                ),
+                Message::new("formula-too-many-operations")
+                    .count("operations", ops.len())
+                    .count("max", MAX_OPS),
             ));
         }
         let (mut depth, mut deepest) = (0usize, 0usize);
@@ -163,7 +163,9 @@ impl Program {
             return Err(FormulaError::new(
                 0,
                 0,
-                format!("the formula nests {deepest} values deep, more than the {MAX_DEPTH} allowed: write it with fewer nested parentheses"),
+                Message::new("formula-too-deep")
+                    .count("depth", deepest)
+                    .count("max", MAX_DEPTH),
             ));
         }
         Ok(Program {

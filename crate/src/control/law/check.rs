@@ -9,6 +9,8 @@ use crate::control::formula::{self, FormulaError, Node, Program, SIGNALS};
 use crate::control::RefSample;
 use crate::params::Lumped;
 use crate::rng::Rng;
+use crate::text::Message;
+use std::fmt;
 
 /// How a step's law compares with its designed dynamics.
 #[cfg_attr(
@@ -29,10 +31,10 @@ pub struct Verdict {
     /// The largest |v_i − v_i,ref| over the drawn states, relative to the size of the paper's
     /// terms there; None where it is not a number (the text says why).
     pub worst: Option<f64>,
-    /// What it gets wrong, when it can be named.
-    pub finding: Option<String>,
-    /// The verdict in words.
-    pub text: String,
+    /// What it gets wrong, when it can be named: a `law-*` message of `core-law.ftl`.
+    pub finding: Option<Message>,
+    /// The verdict in words, a `law-*` message of `core-law.ftl`.
+    pub text: Message,
 }
 
 /// States drawn for the verdict.
@@ -183,11 +185,7 @@ fn drawing(
     }
     let laws = Laws::parse(&own).map_err(|(_, e)| e)?;
     if laws.step(step).is_none() {
-        return Err(FormulaError::new(
-            0,
-            0,
-            "the step has no law of its own".to_string(),
-        ));
+        return Err(FormulaError::new(0, 0, Message::new("law-no-own-law")));
     }
     let paper = formula::parse(PAPER[i], step).expect("the paper's law parses");
     let terms: Vec<Program> = formula::terms(&paper)
@@ -208,18 +206,160 @@ fn drawing(
     Ok(Drawing { laws, paper, draws })
 }
 
+/// Why the largest difference of a step's law from its reference is not a number.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Unjudged {
+    /// The student's own earlier step gave no finite value at any drawn state, so step `step`
+    /// never ran.
+    NeverRuns {
+        /// The step.
+        step: u8,
+    },
+    /// The law differs from the reference where the paper's law is all but zero, by no finite
+    /// share of its size.
+    NoShare {
+        /// The step.
+        step: u8,
+    },
+    /// The law differs infinitely from the reference at `count` of the drawn states, the first
+    /// of them where it read `names`.
+    Infinite {
+        /// The step.
+        step: u8,
+        /// At how many drawn states.
+        count: usize,
+        /// The names the law reads and their values at the first of them.
+        names: Vec<(&'static str, f64)>,
+    },
+    /// The law is not a finite number at `count` of the drawn states: at the first of them it
+    /// gives `value`, reading `names`.
+    NotFinite {
+        /// The step.
+        step: u8,
+        /// At how many drawn states.
+        count: usize,
+        /// What the law gives there (inf, −inf or NaN).
+        value: f64,
+        /// The names the law reads and their values there.
+        names: Vec<(&'static str, f64)>,
+    },
+}
+
+impl Unjudged {
+    /// What it says, as a message of `core-law.ftl`.
+    pub fn message(&self) -> Message {
+        match self {
+            Unjudged::NeverRuns { step } => Message::new("law-never-runs")
+                .text("before", OUTPUTS[*step as usize - 2].0)
+                .count("draws", DRAWS)
+                .count("step", *step),
+            Unjudged::NoShare { step } => {
+                let (output, unit) = OUTPUTS[*step as usize - 1];
+                Message::new("law-no-share")
+                    .text("output", output)
+                    .text("unit", unit)
+            }
+            Unjudged::Infinite { step, count, names } => {
+                let (output, unit) = OUTPUTS[*step as usize - 1];
+                Message::new("law-differs-infinitely")
+                    .text("output", output)
+                    .text("unit", unit)
+                    .count("count", *count)
+                    .count("draws", DRAWS)
+                    .text("reads", if names.is_empty() { "none" } else { "some" })
+                    .list("names", super::named_messages(names))
+            }
+            Unjudged::NotFinite {
+                step,
+                count,
+                value,
+                names,
+            } => {
+                let (output, unit) = OUTPUTS[*step as usize - 1];
+                Message::new("law-not-finite")
+                    .text("output", output)
+                    .text("unit", unit)
+                    .count("count", *count)
+                    .count("draws", DRAWS)
+                    // inf, -inf or NaN, as Rust writes them.
+                    .text("value", value.to_string())
+                    .text("reads", if names.is_empty() { "none" } else { "some" })
+                    .list("names", super::named_messages(names))
+            }
+        }
+    }
+}
+
+impl fmt::Display for Unjudged {
+    /// Its message in English.
+    #[cfg(feature = "english")]
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.message().fmt(f)
+    }
+
+    /// The run's module carries no message files, and a run's warnings are still text: there the
+    /// cause is written in English as `core-law.ftl` says it.
+    #[cfg(not(feature = "english"))]
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.english())
+    }
+}
+
+impl Unjudged {
+    /// Its English, written here for the run's module, which has no message files (a test holds
+    /// it to `core-law.ftl`'s).
+    #[cfg(any(test, not(feature = "english")))]
+    fn english(&self) -> String {
+        let at = |names: &[(&str, f64)], before: &str| {
+            if names.is_empty() {
+                ", reading no signal".to_string()
+            } else {
+                let names: Vec<String> = names
+                    .iter()
+                    .map(|(name, v)| format!("{name} = {}", crate::text::short(*v)))
+                    .collect();
+                format!("{before}at {}", names.join(", "))
+            }
+        };
+        match self {
+            Unjudged::NeverRuns { step } => format!(
+                "your {} gives no finite value at any of the {DRAWS} drawn states, so step {step} never runs",
+                OUTPUTS[*step as usize - 2].0
+            ),
+            Unjudged::NoShare { step } => {
+                let (symbol, unit) = OUTPUTS[*step as usize - 1];
+                format!("your {symbol} ({unit}) differs from the {symbol} that gives the designed dynamics where the paper's law is all but zero, by no finite share of its size")
+            }
+            Unjudged::Infinite { step, count, names } => {
+                let (symbol, unit) = OUTPUTS[*step as usize - 1];
+                format!(
+                    "your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {count} of the {DRAWS} drawn states{}",
+                    at(names, ", e.g. ")
+                )
+            }
+            Unjudged::NotFinite {
+                step,
+                count,
+                value,
+                names,
+            } => {
+                let (symbol, unit) = OUTPUTS[*step as usize - 1];
+                format!(
+                    "your {symbol} ({unit}) is not a finite number at {count} of the {DRAWS} drawn states: it gives {value}{}",
+                    at(names, " ")
+                )
+            }
+        }
+    }
+}
+
 /// The largest difference of step `step`'s law from its reference over the drawn states,
 /// relative to the paper's law's size at each; or why it is not a number: the step never ran,
 /// or the law is not finite at some of them.
-fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, String> {
-    let i = step as usize - 1;
-    let (symbol, unit) = OUTPUTS[i];
+fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, Unjudged> {
     let draws = &drawing.draws;
     if draws.is_empty() {
-        return Err(format!(
-            "your {} gives no finite value at any of the {DRAWS} drawn states, so step {step} never runs",
-            OUTPUTS[i - 1].0
-        ));
+        return Err(Unjudged::NeverRuns { step });
     }
     let not_finite: Vec<&Drawn> = draws
         .iter()
@@ -234,25 +374,21 @@ fn worst_of(step: u8, drawing: &Drawing) -> Result<f64, String> {
         return if worst.is_finite() {
             Ok(worst)
         } else {
-            Err(format!("your {symbol} ({unit}) differs from the {symbol} that gives the designed dynamics where the paper's law is all but zero, by no finite share of its size"))
+            Err(Unjudged::NoShare { step })
         };
     };
     let law = drawing.laws.step(step).expect("the step has its own law");
-    let names = super::named_values(law, &first.s);
-    let at = if names.is_empty() {
-        ", reading no signal".to_string()
-    } else {
-        format!(" at {names}")
-    };
-    let n = not_finite.len();
+    let names = super::read_values(law, &first.s);
+    let count = not_finite.len();
     Err(if first.mine.is_finite() {
-        let e_g = if names.is_empty() { "" } else { ", e.g." };
-        format!("your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {n} of the {DRAWS} drawn states{e_g}{at}")
+        Unjudged::Infinite { step, count, names }
     } else {
-        format!(
-            "your {symbol} ({unit}) is not a finite number at {n} of the {DRAWS} drawn states: it gives {}{at}",
-            first.mine
-        )
+        Unjudged::NotFinite {
+            step,
+            count,
+            value: first.mine,
+            names,
+        }
     })
 }
 
@@ -263,8 +399,8 @@ pub fn worst(
     texts: &[Option<String>; 4],
     model: &Lumped,
     gains: &Gains,
-) -> Option<Result<f64, String>> {
-    let mut out: Option<Result<f64, String>> = None;
+) -> Option<Result<f64, Unjudged>> {
+    let mut out: Option<Result<f64, Unjudged>> = None;
     for step in (1..=4u8).filter(|&step| {
         texts[step as usize - 1]
             .as_ref()
@@ -297,13 +433,12 @@ pub fn check(
         Ok(worst) => worst,
         Err(cause) => {
             let text = if drawn.draws.is_empty() {
-                format!("Your step {step} cannot be judged: {cause}.")
+                Message::new("law-cannot-judge")
             } else {
-                format!(
-                    "Your step {step} does not give the designed dynamics {}: {cause}.",
-                    DESIGNED[i]
-                )
-            };
+                Message::new("law-not-designed-because").text("designed", DESIGNED[i])
+            }
+            .count("step", step)
+            .said("cause", cause.message());
             return Ok(Verdict {
                 step,
                 law,
@@ -350,25 +485,17 @@ pub fn check(
         .chained(step)
         .and_then(|_| laws.step(step - 1))
         .map(|l| l.text.clone());
-    let (on, theirs) = match (laws.chained(step), &unchained) {
-        (Some(_), None) => (
-            format!(" with your own {before}"),
-            "the one that gives them",
-        ),
-        _ => (String::new(), "the paper's"),
+    let own = matches!((laws.chained(step), &unchained), (Some(_), None));
+    let caveats = caveats(before, unchained, failed);
+    let verdict = |id: &'static str| {
+        Message::new(id)
+            .count("step", step)
+            .text("designed", DESIGNED[i])
+            .text("own", if own { "yes" } else { "no" })
+            .text("before", before)
+            .text("output", symbol)
+            .count("draws", DRAWS)
     };
-    let mut caveat = unchained
-        .filter(|names| !names.is_empty())
-        .map_or_else(String::new, |names| {
-            format!(
-                " Your {before} reads {names}, whose rate the loop does not have (it holds the voltage a later step chooses, or a derivative the loop lacks), so this step is judged on the paper's {before}."
-            )
-        });
-    if failed > 0 {
-        caveat += &format!(
-            " Your {before} gives no finite value at {failed} of the {DRAWS} drawn states, which this step is not judged at."
-        );
-    }
     if designed {
         return Ok(Verdict {
             step,
@@ -377,29 +504,29 @@ pub fn check(
             designed,
             worst: Some(worst),
             finding: None,
-            text: format!(
-                "Your step {step} gives the designed dynamics {}{on}: your {symbol} equals {theirs} to {:.0e} of its size at {DRAWS} drawn states and parameter values.{caveat}",
-                DESIGNED[i],
-                worst.max(f64::EPSILON)
-            ),
+            text: digits(
+                verdict("law-designed"),
+                "worst",
+                format!("{:.0e}", worst.max(f64::EPSILON)),
+            )
+            .said("caveats", caveats),
         });
     }
     let finding = mistakes
         .iter()
         .zip(&mistake_match)
         .find(|(_, m)| **m)
-        .map(|((_, why), _)| why.to_string())
+        .map(|((_, why), _)| Message::new(why))
         .or_else(|| single_term(&parts, &rows, &diffs))
         .or_else(|| rate_of_z(&laws, step, model, gains));
-    let text = format!(
-        "Your step {step} does not give the designed dynamics {}{on}: your {symbol} ({unit}) differs from {theirs} by up to {} of its size at {DRAWS} drawn states. {}{caveat}",
-        DESIGNED[i],
-        three(worst),
-        finding.as_deref().map_or_else(
-            || "The difference is not one term of the paper's law: compare your law with the step's derivation term by term.".to_string(),
-            |f| format!("The difference: {f}."),
-        )
-    );
+    let difference = match &finding {
+        Some(f) => Message::new("law-difference").said("finding", f.clone()),
+        None => Message::new("law-difference-unnamed"),
+    };
+    let text = digits(verdict("law-not-designed"), "worst", three(worst))
+        .text("unit", unit)
+        .said("difference", difference)
+        .said("caveats", caveats);
     Ok(Verdict {
         step,
         law,
@@ -409,6 +536,30 @@ pub fn check(
         finding,
         text,
     })
+}
+
+/// What a verdict adds after its sentence about the student's own earlier step `before`: that
+/// it reads the names `unchained` (when it does), whose rates the loop does not have, and that it
+/// gave no finite value at `failed` of the drawn states (when it did not at some).
+fn caveats(before: &str, unchained: Option<String>, failed: usize) -> Message {
+    let unread = unchained.filter(|names| !names.is_empty()).map(|names| {
+        Message::new("law-caveat-unchained")
+            .text("before", before)
+            .text("names", names)
+    });
+    let failed = (failed > 0).then(|| {
+        Message::new("law-caveat-failed")
+            .text("before", before)
+            .count("failed", failed)
+            .count("draws", DRAWS)
+    });
+    match (unread, failed) {
+        (None, None) => Message::new("law-caveat-none"),
+        (Some(one), None) | (None, Some(one)) => one,
+        (Some(unread), Some(failing)) => Message::new("law-caveat-both")
+            .said("unread", unread)
+            .said("failing", failing),
+    }
 }
 
 /// The verdict of every step with its own law in `texts`, checked with the scenario's `model`
@@ -438,7 +589,7 @@ struct Part {
     sign: f64,
     program: Program,
     /// "the term +x" or "the part +y of the term +x".
-    label: String,
+    label: Message,
 }
 
 /// The paper's terms, then the parts of those that are products of sums (2·(a + b)·c gives
@@ -449,7 +600,7 @@ fn parts(terms: &[(f64, &Node)]) -> Vec<Part> {
         .map(|(sign, node)| Part {
             sign: *sign,
             program: Program::new(node).expect("a term compiles"),
-            label: format!("the term {}", signed(*sign, &formula::text(node))),
+            label: Message::new("law-term").text("term", signed(*sign, &formula::text(node))),
         })
         .collect();
     for (sign, node) in terms {
@@ -462,10 +613,9 @@ fn parts(terms: &[(f64, &Node)]) -> Vec<Part> {
             out.push(Part {
                 sign: sign * s,
                 program: Program::new(&m).expect("a part compiles"),
-                label: format!(
-                    "the part {} of the term {whole}",
-                    signed(sign * s, &formula::text(&m))
-                ),
+                label: Message::new("law-term-part")
+                    .text("part", signed(sign * s, &formula::text(&m)))
+                    .text("term", whole.as_str()),
             });
         }
     }
@@ -474,7 +624,7 @@ fn parts(terms: &[(f64, &Node)]) -> Vec<Part> {
 
 /// A difference that is one of the paper's terms or parts times a constant: that term missing
 /// (−1), with its sign flipped (−2) or twice (+1), or scaled.
-fn single_term(parts: &[Part], rows: &[Vec<f64>], diffs: &[f64]) -> Option<String> {
+fn single_term(parts: &[Part], rows: &[Vec<f64>], diffs: &[f64]) -> Option<Message> {
     for (j, part) in parts.iter().enumerate() {
         let (mut dot, mut norm) = (0.0, 0.0);
         for (row, d) in rows.iter().zip(diffs) {
@@ -492,17 +642,16 @@ fn single_term(parts: &[Part], rows: &[Vec<f64>], diffs: &[f64]) -> Option<Strin
         if !fits {
             continue;
         }
-        let label = &part.label;
         let what = if (c + 1.0).abs() < 1e-6 {
-            format!("{label} of the paper's law is missing")
+            Message::new("law-term-missing")
         } else if (c + 2.0).abs() < 1e-6 {
-            format!("{label} has the wrong sign")
+            Message::new("law-term-wrong-sign")
         } else if (c - 1.0).abs() < 1e-6 {
-            format!("{label} is there twice")
+            Message::new("law-term-twice")
         } else {
-            format!("{label} is {} times what it should be", three(1.0 + c))
+            digits(Message::new("law-term-scaled"), "factor", three(1.0 + c))
         };
-        return Some(what);
+        return Some(what.said("label", part.label.clone()));
     }
     None
 }
@@ -520,7 +669,7 @@ fn signed(sign: f64, text: &str) -> String {
 
 /// With the scenario's own parameters and gains, a law that is the paper's plus c·z_i gives
 /// ż_i = −(k_i − c)·z_i + (coupling): the rate its error decays at, against the designed one.
-fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<String> {
+fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<Message> {
     let i = step as usize - 1;
     let z = formula::index(["z1", "z2", "z3", "z4"][i]).expect("named");
     let mut rng = Rng::new(SEED);
@@ -547,19 +696,25 @@ fn rate_of_z(laws: &Laws, step: u8, model: &Lumped, gains: &Gains) -> Option<Str
         .iter()
         .all(|(_, d, size)| d.abs() <= TOLERANCE * size.max(1.0))
     {
-        return Some(
-            "it equals the paper's law at this scenario's parameter values and gains only: a \
-             parameter or a gain is written as its number where the law needs its name"
-                .to_string(),
-        );
+        return Some(Message::new("law-scenario-values-only"));
     }
     let designed = gains.designed_rate(step);
     let (now, meant) = distinct(designed - c, designed);
-    Some(format!(
-        "it is the paper's law {} {}·z{step}: with this scenario's parameters your z{step} decays at {now} /s, not {meant} /s; check the gain and the sign of your z{step} terms",
-        if c < 0.0 { "minus" } else { "plus" },
-        three(c.abs()),
-    ))
+    let message = Message::new("law-rate-of-z")
+        .text("sign", if c < 0.0 { "minus" } else { "plus" })
+        .text("z", format!("z{step}"));
+    let message = digits(message, "gain", three(c.abs()));
+    let message = digits(message, "now", now);
+    Some(digits(message, "meant", meant))
+}
+
+/// `message` with the number written `text` as `name`: as a number (which a language writes with
+/// its decimal separator) where Rust writes that number so, else as the text (1.20e-5).
+fn digits(message: Message, name: &'static str, text: String) -> Message {
+    match text.parse::<f64>() {
+        Ok(v) if v.to_string() == text => message.real(name, v),
+        _ => message.text(name, text),
+    }
 }
 
 /// `a` and `b` to three significant digits, or to as many more as tell them apart.
@@ -590,4 +745,42 @@ fn three(v: f64) -> String {
     }
     let factor = 10f64.powi(2 - e);
     format!("{}", (v * factor).round() / factor)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_run_modules_english_of_a_cause_is_the_message_files() {
+        let names = vec![("x1h", 3.25), ("z1", -1e-300)];
+        for cause in [
+            Unjudged::NeverRuns { step: 2 },
+            Unjudged::NoShare { step: 3 },
+            Unjudged::Infinite {
+                step: 1,
+                count: 7,
+                names: names.clone(),
+            },
+            Unjudged::Infinite {
+                step: 4,
+                count: 200,
+                names: vec![],
+            },
+            Unjudged::NotFinite {
+                step: 1,
+                count: 3,
+                value: f64::INFINITY,
+                names,
+            },
+            Unjudged::NotFinite {
+                step: 2,
+                count: 200,
+                value: f64::NAN,
+                names: vec![],
+            },
+        ] {
+            assert_eq!(cause.message().to_string(), cause.english());
+        }
+    }
 }

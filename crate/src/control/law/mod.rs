@@ -20,11 +20,12 @@
 mod check;
 mod mistakes;
 
-pub use check::{check, verdicts, worst, Verdict, DRAWS, TOLERANCE};
+pub use check::{check, verdicts, worst, Unjudged, Verdict, DRAWS, TOLERANCE};
 
 use super::backstepping::{Adapted, Backstepping, ControlError, ControlInput, Custom, Gathered};
 use super::chain;
 use super::formula::{self, FormulaError, Program, NAMES, SIGNALS};
+use crate::text::Message;
 use std::cell::{Cell, RefCell};
 
 /// The paper's law of each step in the language, with the robust terms (which vanish with
@@ -297,12 +298,40 @@ pub fn step_values<C: Custom>(
 
 /// The names a law reads and their values, as "x1h = 3.2, z1 = −0.01".
 pub fn named_values(law: &Law, signals: &[f64; SIGNALS]) -> String {
+    read_values(law, signals)
+        .iter()
+        .map(|(name, v)| format!("{name} = {}", crate::text::short(*v)))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// The names a law reads, each with its value in `signals`.
+fn read_values(law: &Law, signals: &[f64; SIGNALS]) -> Vec<(&'static str, f64)> {
     law.program
         .names()
         .iter()
-        .map(|&i| format!("{} = {}", NAMES[i].name, crate::text::short(signals[i])))
-        .collect::<Vec<_>>()
-        .join(", ")
+        .map(|&i| (NAMES[i].name, signals[i]))
+        .collect()
+}
+
+/// Names and their values as messages, "x1h = 3.2" each, for a list.
+fn named_messages(names: &[(&'static str, f64)]) -> Vec<Message> {
+    names
+        .iter()
+        .map(|(name, v)| {
+            Message::new("law-named-value")
+                .text("name", *name)
+                .short("value", *v)
+        })
+        .collect()
+}
+
+/// Step `step`'s own law refused for `error`, as a message of `core-law.ftl`
+/// ("law.v2: at character 3: …").
+pub fn refused(step: u8, error: &FormulaError) -> Message {
+    Message::new("law-refused")
+        .count("step", step)
+        .said("error", error.message())
 }
 
 /// A formula as an editor shows it while it is typed: typeset, or refused at its place.
