@@ -3,7 +3,7 @@
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { crashReason, errorReason, jobError, unreadable, watch } from './watch.js';
-import { spoken } from '../l10n/l10n.js';
+import { said, spoken } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -20,7 +20,7 @@ export class WorkerFailed extends Error {}
 export class ScenarioRefused extends Error {
   /** @param {P.Checked['rejected'][number]} rejected */
   constructor({ key, message }) {
-    super(message);
+    super(said(message));
     this.key = key;
   }
 }
