@@ -108,7 +108,7 @@ test('a lecturer composes a challenge from a preset; a student fails it, passes 
     );
     assert.match(
       link,
-      /&need\.settling_time=max:0\.004&need\.current_peak=max:4&vary=seeds:2\.\.3&robust=settling_time,current_peak$/,
+      /&need\.settling_time=max:0\.004&need\.current_peak=max:4&vary=seeds:2\.\.3&robust=settling_time,current_peak#lang=en$/,
     );
     assert.match(await page.inputValue('#compose-brief'), /You may change only:\n\s+k1\s+600 to 5000/);
     await page.click('#compose-copy-link');
