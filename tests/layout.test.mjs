@@ -131,9 +131,11 @@ for (const lang of LANGS)
           await check(`${size[0]} px, ${tab}`);
         }
         await showTab(page, 'plots');
-        await page.click('#settings-toggle');
+        // A wide screen shows the settings beside the plots; a phone opens them from the run bar.
+        const drawer = await page.isVisible('#settings-toggle');
+        if (drawer) await page.click('#settings-toggle');
         await check(`${size[0]} px, settings open`);
-        await page.click('#settings-toggle');
+        if (drawer) await page.click('#settings-toggle');
       }
       await showTab(page, 'lessons');
       await page.click('#lessons [data-lesson] >> nth=3');
