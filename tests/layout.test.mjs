@@ -91,9 +91,14 @@ const clipped = (page) =>
   page.evaluate(() =>
     [...document.querySelectorAll('body *')]
       .filter((e) => {
-        if (!e.checkVisibility({ checkVisibilityCSS: true }) || e.closest('.sr-only, .katex, .u-over, canvas'))
+        // A tab's panel kept laid out while another shows, and a box meant to scroll, cut nothing.
+        if (
+          !e.checkVisibility({ checkVisibilityCSS: true }) ||
+          e.closest('.sr-only, .katex, .u-over, canvas, .scroll-box')
+        )
           return false;
         const style = getComputedStyle(e);
+        if (style.contentVisibility === 'hidden') return false;
         const hides = (o) => o === 'hidden' || o === 'clip';
         return (
           (hides(style.overflowX) && e.scrollWidth > e.clientWidth + 1) ||

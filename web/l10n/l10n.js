@@ -1,7 +1,7 @@
 // The page's words in the reader's language: Fluent messages (web/locales/LANG/*.ftl), the language
 // negotiated from the link's `lang=` and the browser's preferences, numbers formatted for the
 // language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
-import { FluentBundle, FluentNumber, FluentResource } from '@fluent/bundle';
+import { FluentBundle, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
 import { DOMLocalization } from '@fluent/dom';
 import { EN_PAGE, FILES } from './catalog.js';
@@ -100,7 +100,7 @@ export const languageFiles = () => Object.values(FILES[language] ?? {});
  * The message `id` (or its attribute, `id.attr`) with `args`, in the language shown. A message the
  * language lacks is a mistake of the page: logged, and the id shown.
  * @param {string} id
- * @param {Record<string, string | number | FluentNumber>} [args]
+ * @param {Record<string, string | number | import('@fluent/bundle').FluentNumber>} [args]
  */
 export function t(id, args) {
   const [name, attr] = id.split('.');
@@ -118,29 +118,8 @@ export function t(id, args) {
 }
 
 /**
- * A number shown in the language: its decimal separator and grouping (from five digits on), a
- * minus sign for negatives. `fraction` fixes the digits after the separator.
- */
-export class ShownNumber extends FluentNumber {
-  /**
-   * @param {number} value
-   * @param {number} [fraction]
-   */
-  constructor(value, fraction) {
-    super(value, {
-      useGrouping: 'min2',
-      ...(fraction === undefined ? {} : { minimumFractionDigits: fraction, maximumFractionDigits: fraction }),
-    });
-  }
-
-  /** @param {import('@fluent/bundle').Scope} scope */
-  toString(scope) {
-    return super.toString(scope).replace(/^-/, '−');
-  }
-}
-
-/**
- * `value` shown in the language shown, as ShownNumber does.
+ * `value` shown in the language shown: its decimal separator and grouping (from five digits on),
+ * a minus sign for negatives; `fraction` fixes the digits after the separator.
  * @param {number} value
  * @param {number} [fraction]
  */
@@ -151,55 +130,4 @@ export function num(value, fraction) {
   })
     .format(value)
     .replace(/^-/, '−');
-}
-
-/**
- * A message of the core (crate/src/text/message.rs): its id in web/locales/LANG/core-*.ftl and its
- * arguments, each text shown as it is, a whole number, a number with its shortest digits
- * (`{real}`), one with a fixed number of decimals (`{fixed, fraction}`), another message, or a
- * list of messages.
- * @typedef {{id: string, args: Record<string, CoreArg>}} CoreMessage
- * @typedef {string | number | {real: number} | {fixed: number, fraction: number} | CoreMessage | CoreMessage[]} CoreArg
- */
-
-/**
- * Whether `value` is a message of the core, as it crosses from the worker.
- * @param {unknown} value
- * @returns {value is CoreMessage}
- */
-export const isCoreMessage = (value) =>
-  typeof value === 'object' &&
-  value !== null &&
-  typeof (/** @type {CoreMessage} */ (value).id) === 'string' &&
-  'args' in value;
-
-/**
- * What the worker said, in the language shown: a message of the core rendered from the language's
- * messages, or a text as it is (the page's own words, already in the language, or the core's not yet
- * given as a message).
- * @param {string | CoreMessage} text
- * @returns {string}
- */
-export function said(text) {
-  if (!isCoreMessage(text)) return String(text);
-  /** @type {Record<string, string | number | FluentNumber>} */
-  const args = {};
-  for (const [name, arg] of Object.entries(text.args)) {
-    if (typeof arg === 'string' || typeof arg === 'number') args[name] = arg;
-    else if (Array.isArray(arg)) args[name] = arg.map(said).join(t('core-list-separator'));
-    else if (isCoreMessage(arg)) args[name] = said(arg);
-    else if ('real' in arg) args[name] = shortest(arg.real);
-    else args[name] = num(arg.fixed, arg.fraction);
-  }
-  return t(text.id, args);
-}
-
-/**
- * `value` with the fewest digits that read back to it, as the core writes it, with the language's
- * decimal separator.
- * @param {number} value
- */
-function shortest(value) {
-  const separator = new Intl.NumberFormat(language).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
-  return String(value).replace('.', separator);
 }
