@@ -3,7 +3,6 @@
 // language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
 import { FluentBundle, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
-import { DOMLocalization } from '@fluent/dom';
 import { EN_PAGE, FILES } from './catalog.js';
 import { LANGUAGES } from './languages.js';
 
@@ -50,9 +49,14 @@ export async function useLanguage(lang) {
   loading.clear();
   teaching = false;
   document.documentElement.lang = lang;
-  if (lang === 'en') add(EN_PAGE, 'en/page');
-  else await fetchPart('page');
-  if (lang !== 'en') await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
+  if (lang === 'en') {
+    add(EN_PAGE, 'en/page');
+    return;
+  }
+  // The build wrote the page's English words into it: another language replaces them, with
+  // @fluent/dom fetched beside its messages (an English page carries neither).
+  const [{ DOMLocalization }] = await Promise.all([import('@fluent/dom'), fetchPart('page')]);
+  await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
 }
 
 /** @returns {Generator<FluentBundle>} */
