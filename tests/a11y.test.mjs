@@ -164,7 +164,7 @@ test('an embed shows one plot, runs, and loads in an iframe snippet', () =>
     // It embeds the plots in view: at 720×520, the speed plot alone.
     assert.match(
       snippet,
-      /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed" title="IM Lab: step, speed"/,
+      /^<iframe src="http:\/\/127\.0\.0\.1:\d+\/\?v=1&preset=step#embed=speed&lang=en" title="IM Lab: step, speed"/,
     );
     const host = await page.context().newPage();
     await host.setContent(`<!doctype html><title>course page</title>${snippet}`);

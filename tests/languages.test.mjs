@@ -68,6 +68,19 @@ test('with no lang= the browser’s preferred language the page speaks is chosen
     });
 });
 
+test('a link the page writes names the language a browser’s preference chose', () =>
+  withContext({ locale: 'ja-JP' }, '?v=1&preset=step', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.context().grantPermissions(['clipboard-read', 'clipboard-write']);
+    await page.click('#copy-link');
+    await page.waitForFunction(() => navigator.clipboard.readText().then((t) => t.includes('lang=')));
+    assert.match(new URL(await page.evaluate(() => navigator.clipboard.readText())).hash, /^#lang=ja$/);
+    await page.click('#copy-embed');
+    await page.waitForFunction(() => navigator.clipboard.readText().then((t) => t.startsWith('<iframe')));
+    const embed = await page.evaluate(() => navigator.clipboard.readText());
+    assert.match(embed, /#embed=[a-z,]+&amp;lang=ja"|#embed=[a-z,]+&lang=ja"/);
+  }));
+
 test('the menu switches the language and keeps the run; Copy link names the language', () =>
   suite.withPage('?v=1&preset=step&k1=600', async (page) => {
     assert.equal(await settled(page), 'done');

@@ -91,9 +91,14 @@ const clipped = (page) =>
   page.evaluate(() =>
     [...document.querySelectorAll('body *')]
       .filter((e) => {
-        if (!e.checkVisibility({ checkVisibilityCSS: true }) || e.closest('.sr-only, .katex, .u-over, canvas'))
+        // A tab's panel kept laid out while another shows, and a box meant to scroll, cut nothing.
+        if (
+          !e.checkVisibility({ checkVisibilityCSS: true }) ||
+          e.closest('.sr-only, .katex, .u-over, canvas, .scroll-box')
+        )
           return false;
         const style = getComputedStyle(e);
+        if (style.contentVisibility === 'hidden') return false;
         const hides = (o) => o === 'hidden' || o === 'clip';
         return (
           (hides(style.overflowX) && e.scrollWidth > e.clientWidth + 1) ||
@@ -131,9 +136,11 @@ for (const lang of LANGS)
           await check(`${size[0]} px, ${tab}`);
         }
         await showTab(page, 'plots');
-        await page.click('#settings-toggle');
+        // A wide screen shows the settings beside the plots; a phone opens them from the run bar.
+        const drawer = await page.isVisible('#settings-toggle');
+        if (drawer) await page.click('#settings-toggle');
         await check(`${size[0]} px, settings open`);
-        await page.click('#settings-toggle');
+        if (drawer) await page.click('#settings-toggle');
       }
       await showTab(page, 'lessons');
       await page.click('#lessons [data-lesson] >> nth=3');

@@ -124,7 +124,8 @@ const untypedInDoc = (text, givens) =>
 
 test('the measurements table is what the core measures now', () => {
   // Each run once, on both cores; the message lists every row that differs.
-  const tables = [...FILES.map((f) => DIR + f), ...DOCS.map((d) => d.table)];
+  // A translated guide reads its English guide's table: each table once.
+  const tables = [...new Set([...FILES.map((f) => DIR + f), ...DOCS.map((d) => d.table)])];
   execFileSync(CLI, ['claims', '--check', ...tables], { stdio: ['ignore', 'ignore', 'pipe'] });
 });
 

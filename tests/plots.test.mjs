@@ -272,6 +272,7 @@ test('a walkthrough knob re-runs the scenario, and an invalid value is marked at
 test('each lesson opens its panel with the question, a hint and an answer toggle', () =>
   withPage('v=1&preset=decay', async (page) => {
     await page.click('[data-tab=lessons]');
+    await page.waitForSelector('#lessons [data-lesson]');
     const lessons = await page.$$eval('#lessons [data-lesson]', (bs) => bs.map((b) => b.dataset.lesson));
     assert.equal(lessons.length, LESSONS.length);
     await page.click(`#lessons [data-lesson="${lessons[0]}"]`);

@@ -101,6 +101,9 @@ describe('presentation mode, every lesson', { concurrency: 2 }, () => {
         suite.withPage(`?v=1&preset=step#present=1&lang=${lang}`, async (page) => {
           await page.setViewportSize({ width, height });
           await settled(page);
+          // The lessons are listed once their texts are fetched (the tab pointed at, or the page idle).
+          await page.hover('#tab-lessons');
+          await page.waitForSelector('#lessons [data-lesson]', { state: 'attached' });
           assert.equal(await page.locator('#lessons [data-lesson]').count(), LESSONS.length);
           const found = [];
           for (const [i, lesson] of LESSONS.entries()) {

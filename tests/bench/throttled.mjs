@@ -7,6 +7,7 @@
 //
 //   node tests/bench/throttled.mjs                  this build (dist/)
 //   BENCH_VS_DIST=DIR node tests/bench/throttled.mjs this build and another build's dist/ side by side
+//   BENCH_PATH='#lang=de' node tests/bench/throttled.mjs  the page opened with that query or fragment
 //
 // Run by `make bench`. Prints, for each build, serving and profile, the median (min–max) of
 // BENCH_REPS (default 5) loads, and the bytes the network sent before the first plot; with two
@@ -27,6 +28,9 @@ if (!Number.isInteger(REPS) || REPS < 1)
 const chosen = (list, env, key) => list.filter((x) => !process.env[env] || key(x).startsWith(process.env[env]));
 
 const ROOT = new URL('../../dist/', import.meta.url).pathname;
+// What the page is opened with after its address: nothing (the default scenario, in the
+// browser's language) unless BENCH_PATH says, e.g. '#lang=ja'.
+const PATH = process.env.BENCH_PATH ?? '';
 const builds = [['this build', ROOT]];
 if (process.env.BENCH_VS_DIST) builds.push([`other (${process.env.BENCH_VS_DIST})`, process.env.BENCH_VS_DIST]);
 
@@ -102,7 +106,8 @@ for (const profile of chosen(PROFILES, 'BENCH_PROFILES', (p) => p.name)) {
       served.push({ buildName, copy, ...(await counted(copy.dir, compressed)), runs: [] });
     }
     // The builds' loads alternate, so that a slower spell of the machine falls on both alike.
-    for (let r = 0; r < REPS; r++) for (const build of served) build.runs.push(await loads(build.url, profile));
+    for (let r = 0; r < REPS; r++)
+      for (const build of served) build.runs.push(await loads(`${build.url}${PATH}`, profile));
     for (const { buildName, copy, server, runs } of served) {
       server.close();
       copy.done();

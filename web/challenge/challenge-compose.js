@@ -10,6 +10,7 @@ import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
 import { remember } from './origin.js';
 import { t } from '../l10n/l10n.js';
+import { withLanguage } from '../ui/language.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -31,7 +32,7 @@ import { t } from '../l10n/l10n.js';
  * @param {boolean} kept
  */
 function made(desc, checkBox, kept) {
-  const url = `${location.origin}${location.pathname}?${desc.encoded}`;
+  const url = withLanguage(`${location.origin}${location.pathname}?${desc.encoded}`);
   const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
   const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
   const copied = el('p', { className: 'hint', role: 'status' });

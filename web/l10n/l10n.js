@@ -1,9 +1,8 @@
 // The page's words in the reader's language: Fluent messages (web/locales/LANG/*.ftl), the language
 // negotiated from the link's `lang=` and the browser's preferences, numbers formatted for the
 // language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
-import { FluentBundle, FluentNumber, FluentResource } from '@fluent/bundle';
+import { FluentBundle, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
-import { DOMLocalization } from '@fluent/dom';
 import { EN_PAGE, FILES } from './catalog.js';
 import { LANGUAGES } from './languages.js';
 import { isCoreMessage } from './core-message.js';
@@ -51,9 +50,14 @@ export async function useLanguage(lang) {
   loading.clear();
   teaching = false;
   document.documentElement.lang = lang;
-  if (lang === 'en') add(EN_PAGE, 'en/page');
-  else await fetchPart('page');
-  if (lang !== 'en') await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
+  if (lang === 'en') {
+    add(EN_PAGE, 'en/page');
+    return;
+  }
+  // The build wrote the page's English words into it: another language replaces them, with
+  // @fluent/dom fetched beside its messages (an English page carries neither).
+  const [{ DOMLocalization }] = await Promise.all([import('@fluent/dom'), fetchPart('page')]);
+  await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
 }
 
 /** @returns {Generator<FluentBundle>} */
@@ -101,7 +105,7 @@ export const languageFiles = () => Object.values(FILES[language] ?? {});
  * The message `id` (or its attribute, `id.attr`) with `args`, in the language shown. A message the
  * language lacks is a mistake of the page: logged, and the id shown.
  * @param {string} id
- * @param {Record<string, string | number | FluentNumber>} [args]
+ * @param {Record<string, string | number | import('@fluent/bundle').FluentNumber>} [args]
  */
 export function t(id, args) {
   const [name, attr] = id.split('.');
@@ -119,29 +123,8 @@ export function t(id, args) {
 }
 
 /**
- * A number shown in the language: its decimal separator and grouping (from five digits on), a
- * minus sign for negatives. `fraction` fixes the digits after the separator.
- */
-export class ShownNumber extends FluentNumber {
-  /**
-   * @param {number} value
-   * @param {number} [fraction]
-   */
-  constructor(value, fraction) {
-    super(value, {
-      useGrouping: 'min2',
-      ...(fraction === undefined ? {} : { minimumFractionDigits: fraction, maximumFractionDigits: fraction }),
-    });
-  }
-
-  /** @param {import('@fluent/bundle').Scope} scope */
-  toString(scope) {
-    return super.toString(scope).replace(/^-/, '−');
-  }
-}
-
-/**
- * `value` shown in the language shown, as ShownNumber does.
+ * `value` shown in the language shown: its decimal separator and grouping (from five digits on),
+ * a minus sign for negatives; `fraction` fixes the digits after the separator.
  * @param {number} value
  * @param {number} [fraction]
  */
@@ -165,7 +148,7 @@ export function num(value, fraction) {
  */
 export function said(text) {
   if (!isCoreMessage(text)) return String(text);
-  /** @type {Record<string, string | number | FluentNumber>} */
+  /** @type {Record<string, string | number | import('@fluent/bundle').FluentNumber>} */
   const args = {};
   for (const [name, arg] of Object.entries(text.args)) {
     if (typeof arg === 'string' || typeof arg === 'number') args[name] = arg;

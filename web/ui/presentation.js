@@ -20,8 +20,8 @@ const PRESENT_MARGIN = 8;
 // The widths a lesson's column may take beside the results in presentation mode (rem), narrowest
 // first, up to at most this share of the window, so that the plot keeps the rest; and the sizes
 // its question may be set in (rem), largest first, down to 24 px, which a projected room reads.
-const QUESTION_WIDTHS = [15, 17, 19, 21, 23, 25, 27, 29, 31];
-const QUESTION_MAX_SHARE = 0.5;
+const QUESTION_WIDTHS = [15, 17, 19, 21, 23, 25, 27, 29, 31, 33, 35];
+const QUESTION_MAX_SHARE = 0.55;
 const QUESTION_SIZES = [1.25, 1.2];
 
 /**

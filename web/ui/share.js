@@ -1,6 +1,7 @@
 // The links the page hands out: the address of this run, and an embed code for the plots in view.
 import { say, ui } from './page.js';
 import { t } from '../l10n/l10n.js';
+import { withLanguage } from './language.js';
 
 /** The Trajectories plots the user is looking at: those at least half in view, else the speed plot. */
 function plotsInView() {
@@ -23,10 +24,10 @@ function plotsInView() {
 export function wireShare({ state }) {
   ui.copy.addEventListener('click', async () => {
     try {
-      await navigator.clipboard.writeText(location.href);
+      await navigator.clipboard.writeText(withLanguage(location.href));
       say(t('share-link-copied'), 'info');
     } catch {
-      say(t('share-copy-this-link', { link: location.href }), 'info');
+      say(t('share-copy-this-link', { link: withLanguage(location.href) }), 'info');
     }
   });
 
@@ -34,7 +35,7 @@ export function wireShare({ state }) {
     const info = state.info;
     if (!info) return; // no scenario described yet: nothing to embed
     const ids = plotsInView();
-    const src = `${location.origin}${location.pathname}?${info.encoded}#embed=${ids.join(',')}`;
+    const src = withLanguage(`${location.origin}${location.pathname}?${info.encoded}#embed=${ids.join(',')}`);
     const title = t('share-embed-title', { preset: info.preset, plots: ids.join(', ') }).replace(
       /[&<"]/g,
       (c) => `&#${c.charCodeAt(0)};`,

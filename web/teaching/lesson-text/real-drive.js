@@ -37,7 +37,7 @@ export default {
   givens: [
     'Does 200 Hz survive',
     'hexagon of a 540 V DC link',
-    '540/√3 ≈ 311.8 V across its flats and 360 V at its corners',
+    '540/√3 ≈ 311.8 V from its centre to its flats and 360 V at its corners',
     '±400 V box has 566 V corners',
     'PWM at 20 kHz',
     'This run lasts 1 s',
