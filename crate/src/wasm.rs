@@ -64,8 +64,10 @@ macro_rules! said_as_text {
 }
 
 impl Refusal for crate::text::Message {
+    /// As every value the page receives (see [`raw_js`]): its arguments a plain object, which
+    /// the page's `said()` reads (the default serializer would make them a `Map`).
     fn refusal(&self) -> JsValue {
-        serde_wasm_bindgen::to_value(self).unwrap_or_else(|e| JsValue::from_str(&e.to_string()))
+        raw_js(self).unwrap_or_else(|e| e)
     }
 }
 
@@ -73,7 +75,6 @@ said_as_text!(
     String,
     &str,
     crate::challenge::ChallengeError,
-    crate::sim::SimError,
     serde_wasm_bindgen::Error
 );
 
@@ -84,6 +85,12 @@ impl Refusal for crate::params::ParamError {
 }
 
 impl Refusal for crate::scenario::ScenarioError {
+    fn refusal(&self) -> JsValue {
+        self.message().refusal()
+    }
+}
+
+impl Refusal for crate::sim::SimError {
     fn refusal(&self) -> JsValue {
         self.message().refusal()
     }
@@ -173,10 +180,13 @@ impl Simulation {
         self.inner.is_finished()
     }
 
-    /// The failure that stopped the run, if any.
+    /// The failure that stopped the run, if any: the core's message.
     #[wasm_bindgen(getter)]
-    pub fn failure(&self) -> Option<String> {
-        self.inner.failure().map(|e| e.to_string())
+    pub fn failure(&self) -> Result<Option<Ts<crate::text::Message>>, JsValue> {
+        self.inner
+            .failure()
+            .map(|e| to_js(&e.message()))
+            .transpose()
     }
 
     /// The scenario in its compact form.
@@ -327,7 +337,8 @@ impl Simulation {
 #[derive(Serialize)]
 pub struct PresetInfo {
     name: &'static str,
-    description: &'static str,
+    /// What it shows (`preset-NAME`).
+    description: crate::text::Message,
 }
 
 /// Presets as `[{name, description}]`.
@@ -337,7 +348,7 @@ pub fn presets() -> Result<Vec<Ts<PresetInfo>>, JsValue> {
         .iter()
         .map(|p| PresetInfo {
             name: p.name,
-            description: p.description,
+            description: p.description.clone(),
         })
         .collect();
     to_js_list(&list)
