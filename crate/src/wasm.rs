@@ -75,7 +75,6 @@ said_as_text!(
     String,
     &str,
     crate::challenge::ChallengeError,
-    crate::sim::SimError,
     serde_wasm_bindgen::Error
 );
 
@@ -92,6 +91,12 @@ impl Refusal for crate::scenario::ScenarioError {
 }
 
 impl Refusal for crate::control::formula::FormulaError {
+    fn refusal(&self) -> JsValue {
+        self.message().refusal()
+    }
+}
+
+impl Refusal for crate::sim::SimError {
     fn refusal(&self) -> JsValue {
         self.message().refusal()
     }
@@ -181,10 +186,13 @@ impl Simulation {
         self.inner.is_finished()
     }
 
-    /// The failure that stopped the run, if any.
+    /// The failure that stopped the run, if any: the core's message.
     #[wasm_bindgen(getter)]
-    pub fn failure(&self) -> Option<String> {
-        self.inner.failure().map(|e| e.to_string())
+    pub fn failure(&self) -> Result<Option<Ts<crate::text::Message>>, JsValue> {
+        self.inner
+            .failure()
+            .map(|e| to_js(&e.message()))
+            .transpose()
     }
 
     /// The scenario in its compact form.
@@ -335,7 +343,8 @@ impl Simulation {
 #[derive(Serialize)]
 pub struct PresetInfo {
     name: &'static str,
-    description: &'static str,
+    /// What it shows (`preset-NAME`).
+    description: crate::text::Message,
 }
 
 /// Presets as `[{name, description}]`.
@@ -345,7 +354,7 @@ pub fn presets() -> Result<Vec<Ts<PresetInfo>>, JsValue> {
         .iter()
         .map(|p| PresetInfo {
             name: p.name,
-            description: p.description,
+            description: p.description.clone(),
         })
         .collect();
     to_js_list(&list)

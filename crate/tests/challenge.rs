@@ -288,7 +288,7 @@ fn the_figures_criteria_name_are_the_reports() {
                 continue;
             }
             let info = figure_info(f.name).expect(f.name);
-            assert_eq!((info.label, info.unit), (f.label, f.unit), "{}", f.name);
+            assert_eq!((&info.label, info.unit), (&f.label, f.unit), "{}", f.name);
         }
     }
 }

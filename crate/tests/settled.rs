@@ -183,9 +183,12 @@ fn a_settling_time_not_reached_by_the_end_is_reported_as_such() {
     // In the settling time's place: after the tracking figures.
     assert_eq!(figures[u.index - 1].name, "tracking_peak");
     assert_eq!(figures[u.index].name, "saturated_share");
-    assert_eq!(u.window, "from the step at 50 ms");
+    assert_eq!(u.window.to_string(), "from the step at 50 ms");
     assert_eq!(u.end, sim.time(sim.len() - 1));
-    assert_eq!(u.text, "not settled by the end of the run (t = 99.95 ms)");
+    assert_eq!(
+        u.text.to_string(),
+        "not settled by the end of the run (t = 99.95 ms)"
+    );
     // The command says so in its place, and prints no settling time.
     let out = Command::new(env!("CARGO_BIN_EXE_imlab"))
         .args(["metrics", link])

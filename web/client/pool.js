@@ -8,7 +8,7 @@ import { t } from '../l10n/l10n.js';
 
 /**
  * A reply a member waits for: the worker's 'ready', or a job's reply.
- * @typedef {{type: 'ready' | 'job', job: number | undefined, resolve: (data: P.Ready | P.JobReply) => void,
+ * @typedef {{type: 'ready' | 'job', job: number | undefined, resolve: (data: P.Spoken<P.Ready | P.JobReply>) => void,
  *   reject: (error: Error) => void}} Waiting
  */
 
@@ -47,18 +47,18 @@ class Member {
    * A newer wait (another run took the pool) cancels the older one.
    * @overload
    * @param {'ready'} type
-   * @returns {Promise<P.Ready>}
+   * @returns {Promise<P.Spoken<P.Ready>>}
    */
   /**
    * @overload
    * @param {'job'} type
    * @param {number} job
-   * @returns {Promise<P.JobReply>}
+   * @returns {Promise<P.Spoken<P.JobReply>>}
    */
   /**
    * @param {Waiting['type']} type
    * @param {number} [job]
-   * @returns {Promise<P.Ready | P.JobReply>}
+   * @returns {Promise<P.Spoken<P.Ready | P.JobReply>>}
    */
   reply(type, job) {
     this.waiting?.reject(new Error('cancelled'));

@@ -185,7 +185,7 @@ export class RunClient {
   /**
    * Settles the request a reply answers, or hands an unprompted message to the page's handler
    * of its type.
-   * @param {P.FromWorker} data
+   * @param {P.ToPage} data
    */
   receive(data) {
     if (data.type === 'job') {
@@ -198,7 +198,7 @@ export class RunClient {
       this.answer(`describe ${data.req}`, data.message);
     } else {
       if (data.type === 'ready') this.ready = true;
-      const handler = /** @type {(data: P.FromWorker) => void} */ (this.handlers[data.type]);
+      const handler = /** @type {(data: P.ToPage) => void} */ (this.handlers[data.type]);
       handler(data);
     }
   }

@@ -25,7 +25,7 @@ export const unreadable = () => t('worker-unreadable');
 
 /**
  * Why a job failed, in words, from its reply: the core's error, or the tools not loaded.
- * @param {P.JobReply} reply
+ * @param {Pick<P.JobReply, 'error' | 'unloaded'>} reply
  */
 export const jobError = ({ error, unloaded }) =>
   unloaded ? t('worker-tools-not-loaded', { reason: error ?? '' }) : error;
@@ -33,7 +33,7 @@ export const jobError = ({ error, unloaded }) =>
 /**
  * Wires `worker` to `onMessage(data)` and `onFail(reason)`.
  * @param {Worker} worker
- * @param {{onMessage: (data: P.FromWorker) => void, onFail: (reason: string) => void}} handlers
+ * @param {{onMessage: (data: P.ToPage) => void, onFail: (reason: string) => void}} handlers
  */
 export function watch(worker, { onMessage, onFail }) {
   worker.onmessage = (/** @type {MessageEvent<P.FromWorker>} */ { data }) => {

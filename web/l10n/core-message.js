@@ -8,6 +8,20 @@
  */
 
 /**
+ * A value of the core as the page reads it: every message of the core in it said, as text in the
+ * language shown (l10n.js, spoken); typed arrays as they are, arrays and tuples as arrays and
+ * tuples.
+ * @template T
+ * @typedef {T extends CoreMessage
+ *   ? string
+ *   : T extends ArrayBufferView
+ *     ? T
+ *     : T extends object
+ *       ? {[K in keyof T]: Spoken<T[K]>}
+ *       : T} Spoken
+ */
+
+/**
  * Whether `value` is a message of the core.
  * @param {unknown} value
  * @returns {value is CoreMessage}

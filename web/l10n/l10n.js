@@ -137,7 +137,7 @@ export function num(value, fraction) {
     .replace(/^-/, '−');
 }
 
-/** @import { CoreMessage } from './core-message.js' */
+/** @import { CoreMessage, Spoken } from './core-message.js' */
 
 /**
  * What the worker said, in the language shown: a message of the core rendered from the language's
@@ -175,12 +175,12 @@ function shortest(value) {
  * place (typed arrays and other objects that are not plain are left as they are).
  * @template T
  * @param {T} data
- * @returns {T}
+ * @returns {Spoken<T>}
  */
 export function spoken(data) {
-  if (isCoreMessage(data)) return /** @type {T} */ (said(data));
+  if (isCoreMessage(data)) return /** @type {Spoken<T>} */ (said(data));
   if (Array.isArray(data)) data.forEach((v, i) => (data[i] = spoken(v)));
   else if (typeof data === 'object' && data !== null && Object.getPrototypeOf(data) === Object.prototype)
     for (const [k, v] of Object.entries(data)) /** @type {Record<string, unknown>} */ (data)[k] = spoken(v);
-  return data;
+  return /** @type {Spoken<T>} */ (data);
 }

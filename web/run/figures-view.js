@@ -13,8 +13,8 @@ import { t } from '../l10n/l10n.js';
  * its end (in words, in place of its value), and what the figures must not be read without: the
  * core's `Trend`, `Unreached` and `Warning`.
  * @typedef {NonNullable<P.RunFigure['trend']>} Trend
- * @typedef {P.Done['unreached'][number]} Unreached
- * @typedef {P.Done['warnings'][number]} Warning
+ * @typedef {P.Spoken<P.Done>['unreached'][number]} Unreached
+ * @typedef {P.Spoken<P.Done>['warnings'][number]} Warning
  */
 
 /**

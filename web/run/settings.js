@@ -125,7 +125,7 @@ export function createSettings({
   described = () => {},
   mayRun = () => true,
 }) {
-  /** @type {P.Ready['presets']} */
+  /** @type {P.Spoken<P.Ready>['presets']} */
   let presets = []; // the core's presets: {name, description}
   // Starts the run of the form's scenario, unless `mayRun` refuses it (it says why); resolves with
   // whether it started. It is asked only once the core has accepted the form's scenario, whose

@@ -14,7 +14,7 @@ import {
 } from '../../pkg/imlab.js';
 import { refusal } from '../l10n/core-message.js';
 
-/** @import {Jobs} from './protocol.js' */
+/** @import {RawJobs as Jobs} from './protocol.js' */
 /** @import {Measures} from '../../pkg/imlab.js' */
 
 /**

@@ -27,7 +27,7 @@ import { CHALLENGE_JOBS } from './challenge-jobs.js';
 
 export { initTools, panic_message };
 
-/** @typedef {import('./protocol.js').Jobs} Jobs */
+/** @typedef {import('./protocol.js').RawJobs} Jobs */
 
 /** @type {{[K in keyof Jobs]: (d: Jobs[K]['req']) => Jobs[K]['result']}} */
 export const JOBS = {

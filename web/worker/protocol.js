@@ -3,6 +3,12 @@
 // The module holds no code: the page's clients (client/) and the worker (worker/) import its
 // types. Every number in a reply comes from the core; the worker only moves messages.
 //
+// What the core says to a person crosses as its message (an id and arguments): the worker sends
+// it as the core gives it, and the page's client says it in the language shown before any part of
+// the page reads the reply (l10n.js, spoken). The replies are typed as the worker sends them
+// (FromWorker, RawJobs); the page reads them said (ToPage, Jobs, and the types it names: Info,
+// RunFigure, Checked).
+//
 // Requests carry `id` (a run), `req` (a describe), `job` (a job) or `serial` (an export), and the
 // reply carries the same key back. Buffers of views, overlays and CSV chunks are transferred.
 export {};
@@ -14,6 +20,12 @@ export {};
  *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
  *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
+ */
+
+/**
+ * A value of the core as the page reads it, its messages said (see core-message.js).
+ * @template T
+ * @typedef {import('../l10n/core-message.js').Spoken<T>} Spoken
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -45,16 +57,16 @@ export {};
 /**
  * A scenario as the core describes it: its canonical text in `encoded`, its preset, its fields
  * and the keys it changes of its preset.
- * @typedef {Description} Info
+ * @typedef {Spoken<Description>} Info
  */
 /**
  * A figure of a finished run, as the core's report writes it.
- * @typedef {Figure} RunFigure
+ * @typedef {Spoken<Figure>} RunFigure
  */
 /** @typedef {ClassRow} ClassFileRow */
 /**
  * A scenario checked: its description, or null when refused, and the fields refused.
- * @typedef {import('../../pkg/imlab.js').Checked} Checked
+ * @typedef {Spoken<import('../../pkg/imlab.js').Checked>} Checked
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -122,7 +134,8 @@ export {};
 // The jobs: `kind`, the fields it needs, and its result.
 
 /**
- * Every job, by kind: `req` its fields, `result` what it resolves with.
+ * Every job, by kind: `req` its fields, `result` what it resolves with, as the worker computes it
+ * (the page reads Jobs, the same said).
  * - 'sweep-plan': a sweep's plan read from its text (a link's `#sweep=`, as `imlab sweep --plan`
  *   takes it); 'sweep-plan-of' from a form's parts as written (`numbers` lo, hi, n, amp, offset,
  *   duration; `variants` their names): the plan, its text, frequencies, labels and caveats.
@@ -181,12 +194,17 @@ export {};
  *   'scenario-differences': {req: {from: string, text: string}, result: string[]},
  *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassView},
  *   'grade-link': {req: {text: string, row: ClassRow}, result: GradedView},
- * }} Jobs
+ * }} RawJobs
+ */
+
+/**
+ * Every job, by kind, as the page reads its result: its messages said.
+ * @typedef {{[K in keyof RawJobs]: {req: RawJobs[K]['req'], result: Spoken<RawJobs[K]['result']>}}} Jobs
  */
 
 /**
  * A job's request: its kind and fields.
- * @typedef {{[K in keyof Jobs]: {kind: K} & Jobs[K]['req']}[keyof Jobs]} JobRequest
+ * @typedef {{[K in keyof RawJobs]: {kind: K} & RawJobs[K]['req']}[keyof RawJobs]} JobRequest
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -203,7 +221,7 @@ export {};
  * out of memory (an allocation failure aborts without a panic); the page says them in words.
  * @typedef {{type: 'crashed', message: string, panic?: string, memory?: boolean}} Crashed
  */
-/** @typedef {{type: 'described', req: number, checked: Checked}} Described */
+/** @typedef {{type: 'described', req: number, checked: import('../../pkg/imlab.js').Checked}} Described */
 /**
  * A request the core refused: `req` for a describe that failed other than by its scenario's
  * fault, `id` for a run's request; `comparison` when it was the comparison of the EKF's predictors.
@@ -250,7 +268,7 @@ export {};
 /**
  * A job's result (the `result` of its kind in Jobs), or why it failed: `error`, with `unloaded`
  * when the tools could not be fetched (`error` is then the browser's).
- * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string, unloaded?: boolean}} JobReply
+ * @typedef {{type: 'job', job: number, result?: RawJobs[keyof RawJobs]['result'], error?: string, unloaded?: boolean}} JobReply
  */
 
 /**
@@ -260,6 +278,11 @@ export {};
  */
 
 /**
+ * Every message the worker sends, as the page reads it: its messages of the core said.
+ * @typedef {Spoken<FromWorker>} ToPage
+ */
+
+/**
  * The page's handlers of the messages no request waits on, by type.
- * @typedef {{[T in FromWorker['type']]?: (data: Extract<FromWorker, {type: T}>) => void}} Handlers
+ * @typedef {{[T in ToPage['type']]?: (data: Extract<ToPage, {type: T}>) => void}} Handlers
  */

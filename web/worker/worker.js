@@ -67,11 +67,11 @@ function loadTools() {
 
 /**
  * Job `kind` of `jobs` on its fields `d`.
- * @template {keyof P.Jobs} K
+ * @template {keyof P.RawJobs} K
  * @param {typeof import('./jobs.js').JOBS} jobs
  * @param {K} kind
- * @param {P.Jobs[K]['req']} d
- * @returns {P.Jobs[K]['result']}
+ * @param {P.RawJobs[K]['req']} d
+ * @returns {P.RawJobs[K]['result']}
  */
 function runJob(jobs, kind, d) {
   const jobOf = jobs[kind];

@@ -139,7 +139,7 @@ pub fn measure(sim: &Simulation) -> Measures {
         r.warnings
             .iter()
             .find(|w| w.kind == WarningKind::Runaway)
-            .map(|w| w.text.clone())
+            .map(|w| w.text.to_string())
     };
     let not_finite = r
         .warnings
@@ -147,7 +147,7 @@ pub fn measure(sim: &Simulation) -> Measures {
         .filter_map(|w| {
             w.figure.map(|name| NotFinite {
                 name: name.to_string(),
-                cause: w.text.clone(),
+                cause: w.text.to_string(),
             })
         })
         .collect();

@@ -15,6 +15,7 @@ use crate::control::formula::SIGNALS;
 use crate::control::RefSample;
 use crate::model::State;
 use crate::params::Lumped;
+use crate::text::Message;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -238,21 +239,23 @@ fn chosen<C: Custom>(
     }
 }
 
+impl ControlError {
+    /// Why the controller cannot produce a voltage, as a message of `core-run.ftl`.
+    pub fn message(&self) -> Message {
+        match self {
+            ControlError::SingularDecoupling { flux_sq } => Message::new("control-singular")
+                .text("flux", format!("{flux_sq:.3e}"))
+                .text("min", format!("{MIN_FLUX_SQ:e}")),
+            ControlError::Law { step, value } => Message::new("control-law")
+                .count("step", *step)
+                .text("value", value.to_string()),
+        }
+    }
+}
+
 impl fmt::Display for ControlError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            ControlError::SingularDecoupling { flux_sq } => write!(
-                f,
-                "decoupling matrix (55) is singular: estimated flux x̂4² + x̂5² = {flux_sq:.3e} Wb² \
-                 is below {MIN_FLUX_SQ:e} Wb²"
-            ),
-            ControlError::Law { step, value } => {
-                write!(
-                    f,
-                    "the law of step {step} gave {value}, not a finite number"
-                )
-            }
-        }
+        self.message().fmt(f)
     }
 }
 

@@ -12,7 +12,7 @@ use super::window::{Settling, Summand, Tenths, Window, TREND_TENTHS};
 #[cfg(test)]
 use crate::control::Reference;
 use crate::scenario::Scenario;
-use crate::text::time_text;
+use crate::text::Message;
 use serde::Serialize;
 
 /// One figure of a run.
@@ -25,14 +25,14 @@ use serde::Serialize;
 pub struct Figure {
     /// Machine name, used by `imlab metrics` and the tests, e.g. "tracking_rms".
     pub name: &'static str,
-    /// Short human label with symbols, e.g. "RMS of ω − ω_d".
-    pub label: &'static str,
+    /// Short human label with symbols, e.g. "RMS of ω − ω_d" (`figure-NAME`).
+    pub label: Message,
     /// The value, in `unit`.
     pub value: f64,
     /// Unit of `value` ("" for fractions and ratios).
     pub unit: &'static str,
     /// The part of the run it covers, e.g. "t ≥ 4.2 ms" or "last sample, t = 99.95 ms".
-    pub window: String,
+    pub window: Message,
     /// For a value read at the last sample: whether it had settled by then.
     pub trend: Option<Trend>,
 }
@@ -145,67 +145,47 @@ const TREND_SCATTER: f64 = 2.0;
     derive(tsify::Tsify),
     tsify(missing_as_null, hashmap_as_object)
 )]
-#[derive(Clone, Copy, Debug, Serialize)]
+#[derive(Clone, Debug, Serialize)]
 pub struct FigureInfo {
     /// Machine name, as `imlab metrics` prints it.
     pub name: &'static str,
-    /// In words, as `imlab metrics` and the page label it.
-    pub label: &'static str,
+    /// In words, as `imlab metrics` and the page label it (`figure-NAME` of `core-run.ftl`).
+    pub label: Message,
     /// Unit ("" for ratios).
     pub unit: &'static str,
 }
 
-const fn fig(name: &'static str, label: &'static str, unit: &'static str) -> FigureInfo {
-    FigureInfo { name, label, unit }
+/// The figure `name` in `unit`, labelled by its message `figure-NAME`.
+macro_rules! fig {
+    ($name:literal, $unit:literal) => {
+        $crate::record::FigureInfo {
+            name: $name,
+            label: $crate::text::Message::new(concat!("figure-", $name)),
+            unit: $unit,
+        }
+    };
 }
+pub(super) use fig;
 
 /// Every figure [`report`] can give, in its order.
 pub const FIGURE_INFO: &[FigureInfo] = &[
-    fig("transient_end", "start-up transient ends", "s"),
-    fig("tracking_rms", "RMS of ω − ω_d", "rad/s"),
-    fig("tracking_peak", "peak |ω − ω_d|", "rad/s"),
-    fig(
-        "settling_time",
-        "2 % settling time of ω after the step",
-        "s",
-    ),
-    fig(
-        "saturated_share",
-        "share of samples at the voltage limit",
-        "",
-    ),
-    fig("mean_nis", "mean NIS", ""),
-    fig(
-        "mean_nis_low",
-        "mean NIS, low end of a consistent filter's 95 % band",
-        "",
-    ),
-    fig(
-        "mean_nis_high",
-        "mean NIS, high end of a consistent filter's 95 % band",
-        "",
-    ),
-    fig("current_peak", "peak stator current |i_s|", "A"),
-    fig("current_rms", "RMS stator current |i_s|", "A"),
-    fig("current_rated", "rated current |i_s| (i_rated)", "A"),
-    fig("ripple_peak", "peak PWM current ripple", "A"),
-    fig(
-        "ripple_rms",
-        "RMS over the periods of the peak PWM current ripple",
-        "A",
-    ),
-    fig("flux_error_final", "final flux error |φ_r| − √ψ_d", "Wb"),
-    fig("speed_error_final", "final speed error ω − ω_d", "rad/s"),
-    fig(
-        "speed_estimate_error_final",
-        "final speed-estimate error ω − ω̂",
-        "rad/s",
-    ),
-    fig(
-        "law_residual",
-        "largest residual of your laws' designed dynamics, over the run and at the verdict's drawn states, relative to the paper's law",
-        "",
-    ),
+    fig!("transient_end", "s"),
+    fig!("tracking_rms", "rad/s"),
+    fig!("tracking_peak", "rad/s"),
+    fig!("settling_time", "s"),
+    fig!("saturated_share", ""),
+    fig!("mean_nis", ""),
+    fig!("mean_nis_low", ""),
+    fig!("mean_nis_high", ""),
+    fig!("current_peak", "A"),
+    fig!("current_rms", "A"),
+    fig!("current_rated", "A"),
+    fig!("ripple_peak", "A"),
+    fig!("ripple_rms", "A"),
+    fig!("flux_error_final", "Wb"),
+    fig!("speed_error_final", "rad/s"),
+    fig!("speed_estimate_error_final", "rad/s"),
+    fig!("law_residual", ""),
 ];
 
 /// The entry of the figure named `name`, if [`report`] gives one.
@@ -252,16 +232,16 @@ pub struct Unreached {
     /// The figure's machine name, e.g. "settling_time"; `imlab metrics` prints `NAME_reached,0,`.
     pub name: &'static str,
     /// The figure's label.
-    pub label: &'static str,
+    pub label: Message,
     /// Where it stands among the report's figures: before the figure at this index, or after
     /// the last when it equals their count.
     pub index: usize,
     /// The part of the run it covers, e.g. "from the step at 50 ms".
-    pub window: String,
+    pub window: Message,
     /// The time of the last sample, by which it was not reached (s).
     pub end: f64,
     /// In words, e.g. "not settled by the end of the run (t = 99.95 ms)".
-    pub text: String,
+    pub text: Message,
 }
 
 /// The transient and the figures of the rows `rows` recorded from scenario `s`, computed together:
@@ -320,12 +300,9 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
         unreached.push(unreached_figure(
             "settling_time",
             &out,
-            format!("from the step at {}", time_text(time)),
+            Message::new("window-from-step").time("time", time),
             last.t,
-            format!(
-                "not settled by the end of the run (t = {})",
-                time_text(last.t)
-            ),
+            Message::new("unreached-not-settled").time("time", last.t),
         ));
     }
     let mean_nis = w.nis / n;
@@ -440,15 +417,15 @@ struct Figures(Vec<Figure>);
 impl Figures {
     /// Adds the figure `name` with `value` over `window` and, for a final value, its `trend`;
     /// a value that is not finite is left out.
-    fn push(&mut self, name: &'static str, value: f64, window: &str, trend: Option<Trend>) {
+    fn push(&mut self, name: &'static str, value: f64, window: &Message, trend: Option<Trend>) {
         let info = figure_info(name).expect("a figure of the table");
         if value.is_finite() {
             self.0.push(Figure {
                 name,
-                label: info.label,
+                label: info.label.clone(),
                 value,
                 unit: info.unit,
-                window: window.to_string(),
+                window: window.clone(),
                 trend,
             });
         }
@@ -466,12 +443,12 @@ impl Figures {
         band: (f64, f64),
     ) {
         let n = w.n as f64;
-        let in_w = format!("t ≥ {}", time_text(end));
+        let in_w = Message::new("window-after-transient").time("time", end);
         let (low, high) = band;
         self.push(
             "transient_end",
             end,
-            &format!("start-up, t < {}", time_text(end)),
+            &Message::new("window-start-up").time("time", end),
             None,
         );
         self.push("tracking_rms", (w.tracking_sq / n).sqrt(), &in_w, None);
@@ -480,7 +457,7 @@ impl Figures {
             self.push(
                 "settling_time",
                 value,
-                &format!("from the step at {}", time_text(time)),
+                &Message::new("window-from-step").time("time", time),
                 None,
             );
         }
@@ -490,7 +467,12 @@ impl Figures {
         self.push("mean_nis_high", high, &in_w, None);
         self.push("current_peak", w.current_peak, &in_w, None);
         self.push("current_rms", (w.current_sq / n).sqrt(), &in_w, None);
-        self.push("current_rated", s.i_rated, "the motor's rating", None);
+        self.push(
+            "current_rated",
+            s.i_rated,
+            &Message::new("window-rating"),
+            None,
+        );
         if s.drive.pwm {
             self.push("ripple_peak", w.ripple_peak, &in_w, None);
             self.push("ripple_rms", (w.ripple_sq / n).sqrt(), &in_w, None);
@@ -499,7 +481,7 @@ impl Figures {
 
     /// Adds the final errors read at the last row `last`, each with its trend from `judge`.
     fn push_final(&mut self, last: &Row, judge: &TrendJudge) {
-        let at_last = format!("last sample, t = {}", time_text(last.t));
+        let at_last = Message::new("window-last-sample").time("time", last.t);
         let flux_final = last.flux - last.flux_ref;
         let flux_trend = judge.trend(0, flux_final, FLUX_TREND_TOL);
         let speed_trend = judge.trend(1, last.omega_err, SPEED_TREND_TOL);
@@ -520,15 +502,15 @@ impl Figures {
 fn unreached_figure(
     name: &str,
     figures: &[Figure],
-    window: String,
+    window: Message,
     end: f64,
-    text: String,
+    text: Message,
 ) -> Unreached {
     let rank = |name: &str| FIGURE_INFO.iter().position(|f| f.name == name);
     let info = figure_info(name).expect("a figure of the table");
     Unreached {
         name: info.name,
-        label: info.label,
+        label: info.label.clone(),
         index: figures
             .iter()
             .position(|f| rank(f.name) > rank(name))
@@ -577,6 +559,26 @@ mod tests {
 
     fn value(figures: &[Figure], name: &str) -> Option<f64> {
         figures.iter().find(|f| f.name == name).map(|f| f.value)
+    }
+
+    #[test]
+    fn every_figure_is_labelled_by_its_name() {
+        let all = FIGURE_INFO
+            .iter()
+            .chain([&crate::record::LOAD_RECOVERY_INFO]);
+        for f in all {
+            assert_eq!(f.label.id, format!("figure-{}", f.name));
+            // A message the English lacks panics here.
+            assert!(!f.label.to_string().is_empty(), "{}", f.name);
+        }
+        assert_eq!(
+            crate::record::LOAD_RECOVERY_INFO.name,
+            crate::record::LOAD_RECOVERY
+        );
+        assert_eq!(
+            figure_info("tracking_rms").unwrap().label.to_string(),
+            "RMS of ω − ω_d"
+        );
     }
 
     #[test]
@@ -708,7 +710,13 @@ mod tests {
         assert!((value(&f, "flux_error_final").unwrap() - 0.2).abs() < 1e-15);
         assert_eq!(value(&f, "speed_error_final"), Some(-0.3));
         assert_eq!(value(&f, "speed_estimate_error_final"), Some(0.25));
-        let window = |name| &f.iter().find(|f| f.name == name).unwrap().window;
+        let window = |name| {
+            f.iter()
+                .find(|f| f.name == name)
+                .unwrap()
+                .window
+                .to_string()
+        };
         assert_eq!(window("tracking_rms"), "t ≥ 7 ms");
         assert_eq!(window("speed_error_final"), "last sample, t = 19 ms");
         // A value that is not finite is left out rather than shown as NaN.

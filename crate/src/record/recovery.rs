@@ -2,7 +2,7 @@
 //! the scenario's load step. A challenge's criterion may name it beside the figures of
 //! [`super::report`]; the report itself does not give it.
 
-use super::figures::FigureInfo;
+use super::figures::{fig, FigureInfo};
 use super::samples::Samples;
 use crate::scenario::Scenario;
 
@@ -14,11 +14,7 @@ use crate::scenario::Scenario;
 pub const LOAD_RECOVERY: &str = "load_recovery_time";
 
 /// [`LOAD_RECOVERY`], in words.
-pub const LOAD_RECOVERY_INFO: FigureInfo = FigureInfo {
-    name: LOAD_RECOVERY,
-    label: "load recovery time after the load step",
-    unit: "s",
-};
+pub static LOAD_RECOVERY_INFO: FigureInfo = fig!("load_recovery_time", "s");
 
 /// The band of [`LOAD_RECOVERY`] (rad/s): 1 % of |ω_d| at the load step or 0.5 rad/s, whichever
 /// is larger (0.5 rad/s at the load presets' 50 rad/s, as the lessons read it).

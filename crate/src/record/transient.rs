@@ -5,7 +5,7 @@ use super::samples::Samples;
 use super::tally::{flux_err_sq, TransientTally, CHECKPOINT_EVERY};
 use crate::control::Reference;
 use crate::scenario::{ControllerKind, Scenario};
-use crate::text::time_text;
+use crate::text::Message;
 use serde::Serialize;
 use std::f64::consts::PI;
 
@@ -54,8 +54,9 @@ const SPEED_SETTLED: f64 = 2.0;
 pub struct Transient {
     /// End of the transient (s): a recorded sample time.
     pub t: f64,
-    /// One line naming the controller's and the observer's start-up times.
-    pub reason: String,
+    /// One line naming the controller's and the observer's start-up times (`transient-reason`
+    /// of `core-run.ftl`).
+    pub reason: Message,
 }
 
 /// The end of the start-up transient of a run: the first recorded sample time at or after the
@@ -95,7 +96,7 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
         return (
             Transient {
                 t: 0.0,
-                reason: "nothing recorded yet".to_string(),
+                reason: Message::new("transient-nothing-recorded"),
             },
             0,
         );
@@ -116,25 +117,24 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
     let target = event.unwrap_or(later).min(half);
     // The rows are in time order and the last one is at or after `half`.
     let index = rows.first_at(target).min(len - 1);
-    let never = || "never in the first half: not used".to_string();
-    let mut reason = format!(
-        "{controller}, counted from the observer's start-up: EKF innovation covariance settled at {} (2σ band within 10 % of its final value); EKF estimates converged at {} (2 ms mean NIS within twice its level in the second half, for 5 ms); flux estimate within 1.5 times its later RMS error from {} (for 5 ms); speed estimate within twice its later RMS error from {} (5 ms windows, for 5 ms)",
-        time_text(t_observer),
-        estimates.map_or_else(never, time_text),
-        flux.map_or_else(never, time_text),
-        speed.map_or_else(never, time_text)
-    );
-    if let Some(e) = event {
-        reason.push_str(&format!(
-            "; cut at the scenario's first event, at {}",
-            time_text(e)
-        ));
+    // A criterion's time, or the words for one never met.
+    let at = |reason: Message, name, t: Option<f64>| match t {
+        Some(t) => reason.time(name, t),
+        None => reason.said(name, Message::new("transient-never")),
+    };
+    let mut reason = Message::new("transient-reason")
+        .said("controller", controller)
+        .time("observer", t_observer);
+    reason = at(reason, "estimates", estimates);
+    reason = at(reason, "flux", flux);
+    reason = at(reason, "speed", speed);
+    let reason = if let Some(e) = event {
+        reason.text("end", "event").time("at", e)
     } else if later > half {
-        reason.push_str(&format!(
-            "; clamped to half the recorded run ({})",
-            time_text(half)
-        ));
-    }
+        reason.text("end", "half").time("at", half)
+    } else {
+        reason.text("end", "none")
+    };
     (
         Transient {
             t: rows.time(index),
@@ -145,25 +145,23 @@ pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
 }
 
 /// (b) The controller's own start-up: its duration (s) and the words that name it.
-fn controller_start_up(s: &Scenario) -> (f64, String) {
+fn controller_start_up(s: &Scenario) -> (f64, Message) {
     match s.controller {
         ControllerKind::Backstepping => {
             let g = &s.gains;
             let k = g.k1.min(g.k2).min(g.k3).min(g.k4);
             let t = CONTROLLER_TIME_CONSTANTS / k;
-            let words = format!(
-                "5 time constants of the slowest designed error rate (1/{k} s) = {}",
-                time_text(t)
-            );
+            let words = Message::new("transient-backstepping")
+                .real("k", k)
+                .time("time", t);
             (t, words)
         }
         ControllerKind::Ifoc => {
             let bw = s.ifoc.current_bw;
             let t = CONTROLLER_TIME_CONSTANTS / (2.0 * PI * bw);
-            let words = format!(
-                "5 time constants of the IFOC current loops (1/(2π·{bw} Hz)) = {}",
-                time_text(t)
-            );
+            let words = Message::new("transient-ifoc")
+                .real("bw", bw)
+                .time("time", t);
             (t, words)
         }
     }
@@ -472,8 +470,16 @@ mod tests {
         let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
         let (t, i) = transient(&s, &rows);
         assert_eq!((t.t, i), (rows[7].t, 7));
-        assert!(t.reason.contains("(1/1000 s) = 5 ms"), "{}", t.reason);
-        assert!(t.reason.contains("settled at 2 ms"), "{}", t.reason);
+        assert!(
+            t.reason.to_string().contains("(1/1000 s) = 5 ms"),
+            "{}",
+            t.reason
+        );
+        assert!(
+            t.reason.to_string().contains("settled at 2 ms"),
+            "{}",
+            t.reason
+        );
         // Within 10 % counts as settled; 11 % off at 19 ms does not: 20 ms, then 5 ms.
         let rows = trace(100, |k, r| {
             r.innov_band_a = match k {
@@ -489,12 +495,20 @@ mod tests {
         let rows = trace(100, |k, r| r.innov_band_a = band(k, 2));
         let (t, _) = transient(&s, &rows);
         assert_eq!(t.t, rows[10].t);
-        assert!(t.reason.contains("IFOC current loops"), "{}", t.reason);
+        assert!(
+            t.reason.to_string().contains("IFOC current loops"),
+            "{}",
+            t.reason
+        );
         // A run of 10 samples (0–9 ms) is clamped to its half, 4.5 ms: first sample 5 ms.
         let rows = trace(10, |k, r| r.innov_band_a = band(k, 2));
         let (t, i) = transient(&s, &rows);
         assert_eq!(i, 5);
-        assert!(t.reason.contains("clamped to half"), "{}", t.reason);
+        assert!(
+            t.reason.to_string().contains("clamped to half"),
+            "{}",
+            t.reason
+        );
         // One sample: the window is that sample.
         assert_eq!(transient(&s, &rows[..1].to_vec()).1, 0);
         // The estimates: NIS 50 until 30 ms, then 2. The first full 2 ms window with a mean
@@ -507,13 +521,17 @@ mod tests {
         let (t, i) = transient(&s, &rows);
         assert!((39..=40).contains(&i), "{}", t.reason);
         let converged = format!("EKF estimates converged at {} ms", i - 8);
-        assert!(t.reason.contains(&converged), "{}", t.reason);
+        assert!(t.reason.to_string().contains(&converged), "{}", t.reason);
         // A noise-free run whose NIS decays to zero: the estimates' part is not used.
         let rows = trace(100, |k, r| {
             r.innov_band_a = band(k, 2);
             r.nis = 100.0 * 0.5f64.powi(k as i32);
         });
-        assert!(transient(&s, &rows).0.reason.contains("not used"));
+        assert!(transient(&s, &rows)
+            .0
+            .reason
+            .to_string()
+            .contains("not used"));
     }
 
     #[test]
@@ -532,6 +550,7 @@ mod tests {
         assert_eq!(i, 29, "{}", t.reason);
         assert!(t
             .reason
+            .to_string()
             .contains("speed estimate within twice its later RMS error from 24 ms"));
         // A load step in the second half raises the error there; the second quarter's level
         // still ends the start-up at the same time.
@@ -555,6 +574,7 @@ mod tests {
         let (t, _) = transient(&s, &rows);
         assert!(
             t.reason
+                .to_string()
                 .contains("speed estimate within twice its later RMS error from never"),
             "{}",
             t.reason
@@ -575,6 +595,7 @@ mod tests {
         assert_eq!(i, 50, "{}", t.reason);
         assert!(t
             .reason
+            .to_string()
             .contains("cut at the scenario's first event, at 50 ms"));
         // An event before the controller's own start-up does not cut it, and a later one still
         // does.

@@ -2,7 +2,7 @@
 //! far outside the band of a consistent filter; and that band.
 
 use super::row::Row;
-use crate::text::rounded;
+use crate::text::Message;
 use serde::Serialize;
 
 /// Standard-normal quantile of 97.5 %: the 95 % two-sided band.
@@ -41,8 +41,9 @@ pub struct Warning {
     pub kind: WarningKind,
     /// The figure it stands in place of, for [`WarningKind::NotFinite`].
     pub figure: Option<&'static str>,
-    /// One or two sentences that name what happened, with the run's numbers.
-    pub text: String,
+    /// One or two sentences that name what happened, with the run's numbers (`warning-*` of
+    /// `core-run.ftl`).
+    pub text: Message,
 }
 
 /// A mean NIS this many times past an end of its 95 % band is called inconsistent.
@@ -71,38 +72,26 @@ pub(super) fn warnings_of(
         out.push(Warning {
             kind: WarningKind::Runaway,
             figure: None,
-            text: format!(
-                "The run ran away: at its end the true speed is {} rad/s from the reference, the speed estimate {} rad/s from the true speed, and the flux {} Wb against its target of {} Wb. The controller regulates the EKF's estimates; Theorem 4.6 bounds the closed loop only while the estimation errors stay bounded, and when they do not (a start-up error held only by the voltage limit, a wrong model at low speed) nothing bounds the motor.",
-                rounded(last.omega_err, 3),
-                rounded(-last.omega_est_err, 3),
-                rounded(last.flux, 3),
-                rounded(target, 3)
-            ),
+            text: Message::new("warning-runaway")
+                .rounded("speed", last.omega_err, 3)
+                .rounded("estimate", -last.omega_est_err, 3)
+                .rounded("flux", last.flux, 3)
+                .rounded("target", target, 3),
         });
     }
     let (low, high) = band;
-    let describe = |side: &str, meaning: &str| {
-        Warning {
+    let describe = |id: &'static str| Warning {
         kind: WarningKind::Inconsistent,
         figure: None,
-        text: format!(
-            "The EKF is inconsistent on this run: its mean NIS is {}, far {side} the 95 % band {}–{} of a filter whose model fits. {meaning}",
-            rounded(nis, 4),
-            rounded(low, 3),
-            rounded(high, 3)
-        ),
-    }
+        text: Message::new(id)
+            .rounded("nis", nis, 4)
+            .rounded("low", low, 3)
+            .rounded("high", high, 3),
     };
     if nis > FAR_OUTSIDE * high {
-        out.push(describe(
-            "above",
-            "Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.",
-        ));
+        out.push(describe("warning-inconsistent-above"));
     } else if nis < low / FAR_OUTSIDE {
-        out.push(describe(
-            "below",
-            "It assumes more noise than there is, so it follows the measurements more slowly than it could.",
-        ));
+        out.push(describe("warning-inconsistent-below"));
     }
     out
 }

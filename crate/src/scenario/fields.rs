@@ -1,5 +1,5 @@
-//! The field table of the codec, written once: each field's key, group, unit, allowed values,
-//! meaning and place in [`Scenario`].
+//! The field table of the codec, written once: each field's key, group, unit, allowed values
+//! and place in [`Scenario`]; its meaning is its message `field-KEY` of `core-run.ftl`.
 
 use super::presets::default_reference;
 use super::{ControllerKind, Scenario, ScenarioError};
@@ -72,13 +72,14 @@ const fn whole(min: f64, max: f64) -> Range {
     }
 }
 
-/// One field of the codec: its key, unit, allowed range and meaning.
+/// One field of the codec: its key, unit, allowed range and the id of its meaning.
 #[derive(Clone, Copy)]
 pub(super) struct Field {
     pub(super) key: &'static str,
     group: &'static str,
     pub(super) unit: &'static str,
     range: Range,
+    /// The message of its meaning, `field-KEY` (a dot of the key written as a hyphen).
     doc: &'static str,
     pub(super) access: Access,
 }
@@ -110,8 +111,8 @@ pub struct FieldInfo {
     /// For a field that holds a formula, a step's own law: the step (1–4); its value is then the
     /// formula's text, not its codec text.
     pub formula: Option<u8>,
-    /// Meaning.
-    pub doc: &'static str,
+    /// Meaning (`field-KEY` of `core-run.ftl`).
+    pub doc: Message,
     /// Current value as written in the codec, or None when it does not apply.
     pub value: Option<String>,
     /// Whether the field acts on this scenario (the page shows only those): the IFOC tuning only
@@ -199,7 +200,6 @@ macro_rules! motor {
                 stringify!($which),
                 "Ω",
                 closed(1e-6, 1000.0),
-                "stator resistance Rs",
                 at!($which.rs),
             ),
             number(
@@ -207,7 +207,6 @@ macro_rules! motor {
                 stringify!($which),
                 "Ω",
                 closed(1e-6, 1000.0),
-                "rotor resistance Rr",
                 at!($which.rr),
             ),
             number(
@@ -215,7 +214,6 @@ macro_rules! motor {
                 stringify!($which),
                 "H",
                 closed(1e-6, 100.0),
-                "mutual inductance M",
                 at!($which.m),
             ),
             number(
@@ -223,7 +221,6 @@ macro_rules! motor {
                 stringify!($which),
                 "H",
                 closed(1e-6, 100.0),
-                "stator inductance Ls",
                 at!($which.ls),
             ),
             number(
@@ -231,7 +228,6 @@ macro_rules! motor {
                 stringify!($which),
                 "H",
                 closed(1e-6, 100.0),
-                "rotor inductance Lr",
                 at!($which.lr),
             ),
             number(
@@ -239,7 +235,6 @@ macro_rules! motor {
                 stringify!($which),
                 "kg m²",
                 closed(1e-6, 1e4),
-                "rotor inertia J",
                 at!($which.j),
             ),
             number(
@@ -247,7 +242,6 @@ macro_rules! motor {
                 stringify!($which),
                 "",
                 whole(1.0, 50.0),
-                "pole pairs np",
                 at!($which.np),
             ),
             number(
@@ -255,7 +249,6 @@ macro_rules! motor {
                 stringify!($which),
                 "N m",
                 closed(0.0, 1e4),
-                "constant load torque T0",
                 at!($which.t0),
             ),
             number(
@@ -263,7 +256,6 @@ macro_rules! motor {
                 stringify!($which),
                 "N m s",
                 closed(0.0, 1e3),
-                "viscous friction Cf",
                 at!($which.cf),
             ),
         ]
@@ -275,7 +267,6 @@ const fn number(
     group: &'static str,
     unit: &'static str,
     range: Range,
-    doc: &'static str,
     access: Access,
 ) -> Field {
     Field {
@@ -283,34 +274,29 @@ const fn number(
         group,
         unit,
         range,
-        doc,
+        doc: "",
         access,
     }
 }
 
-const fn choice(
-    key: &'static str,
-    group: &'static str,
-    doc: &'static str,
-    access: Access,
-) -> Field {
+const fn choice(key: &'static str, group: &'static str, access: Access) -> Field {
     Field {
         key,
         group,
         unit: "",
         range: closed(0.0, 0.0),
-        doc,
+        doc: "",
         access,
     }
 }
 
-const fn law(key: &'static str, unit: &'static str, doc: &'static str, step: u8) -> Field {
+const fn law(key: &'static str, unit: &'static str, step: u8) -> Field {
     Field {
         key,
         group: "law",
         unit,
         range: closed(0.0, 0.0),
-        doc,
+        doc: "",
         access: Access::Formula { step },
     }
 }
@@ -339,85 +325,89 @@ fn set_reference(s: &mut Scenario, name: &str) {
 #[rustfmt::skip]
 fn table() -> Vec<Field> {
     let mut v = vec![
-        choice("ref", "reference", "speed reference kind", Access::Choice {
+        choice("ref", "reference", Access::Choice {
             options: &["constant", "sine", "step", "ramp"], get: |s| s.reference.kind(), set: set_reference,
         }),
-        number("ref.value", "reference", "rad/s", closed(-1000.0, 1000.0), "constant speed", reference!(Constant.value)),
-        number("sine.amp", "reference", "rad/s", closed(0.0, 1000.0), "sine amplitude", reference!(Sine.amp)),
-        number("sine.freq", "reference", "Hz", closed(0.0, 5000.0), "sine frequency", reference!(Sine.freq)),
-        number("sine.offset", "reference", "rad/s", closed(-1000.0, 1000.0), "constant added to the sine", reference!(Sine.offset)),
-        number("step.size", "reference", "rad/s", closed(-1000.0, 1000.0), "step size", reference!(Step.size)),
-        number("step.time", "reference", "s", closed(0.0, 10.0), "step time", reference!(Step.time)),
-        number("step.wn", "reference", "rad/s", above(0.0, 1e5), "step filter natural frequency ωn", reference!(Step.wn)),
-        number("ramp.start", "reference", "s", closed(0.0, 10.0), "ramp start time", reference!(Ramp.start)),
-        number("ramp.level", "reference", "rad/s", closed(-1000.0, 1000.0), "ramp plateau level", reference!(Ramp.level)),
-        number("ramp.slope", "reference", "rad/s²", above(0.0, 1e6), "ramp slope magnitude", reference!(Ramp.slope)),
-        number("ramp.hold", "reference", "s", closed(0.0, 10.0), "ramp plateau duration", reference!(Ramp.hold)),
-        number("psi_d", "reference", "Wb²", above(0.0, 4.0), "flux target for φa² + φb²", at!(psi_d)),
-        number("k1", "gains", "1/s", above(0.0, 1e6), "speed-error rate k1", at!(gains.k1)),
-        number("k2", "gains", "1/s", above(0.0, 1e6), "torque-error rate k2 = a7 + a8 + k2s1", at!(gains.k2)),
-        number("k3", "gains", "1/s", above(0.0, 1e6), "flux-error rate k3", at!(gains.k3)),
-        number("k4", "gains", "1/s", above(0.0, 1e6), "flux-derivative-error rate k4", at!(gains.k4)),
-        number("robust", "gains", "", whole(0.0, 1.0), "apply robust terms (38) and (53) (0/1)", flag!(gains.robust)),
-        number("eps2", "gains", "rad²/s⁵", above(0.0, 1e6), "ε2 of (38): the bound on z2·(v2s2 + d̃2)", at!(gains.eps2)),
-        number("h2", "gains", "rad/s³", closed(0.0, 1e9), "h2 of (38): bound on |d̃2|", at!(gains.h2)),
-        number("eps4", "gains", "Wb⁴/s³", above(0.0, 1e6), "ε4 of (53): the bound on z4·(v4s2 + d̃4)", at!(gains.eps4)),
-        number("h4", "gains", "Wb²/s²", closed(0.0, 1e9), "h4 of (53): bound on |d̃4|", at!(gains.h4)),
-        law("law.v1", "rad/s²", "your step 1: the virtual control v1 (empty: the paper's (26))", 1),
-        law("law.v2", "rad/s³", "your step 2: v2 (empty: the paper's (34))", 2),
-        law("law.v3", "Wb²/s", "your step 3: the virtual control v3 (empty: the paper's (45))", 3),
-        law("law.v4", "Wb²/s²", "your step 4: v4 (empty: the paper's (49))", 4),
-        choice("controller", "controller", "backstepping (paper) or ifoc (classical sensorless FOC baseline)", Access::Choice {
+        number("ref.value", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Constant.value)),
+        number("sine.amp", "reference", "rad/s", closed(0.0, 1000.0), reference!(Sine.amp)),
+        number("sine.freq", "reference", "Hz", closed(0.0, 5000.0), reference!(Sine.freq)),
+        number("sine.offset", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Sine.offset)),
+        number("step.size", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Step.size)),
+        number("step.time", "reference", "s", closed(0.0, 10.0), reference!(Step.time)),
+        number("step.wn", "reference", "rad/s", above(0.0, 1e5), reference!(Step.wn)),
+        number("ramp.start", "reference", "s", closed(0.0, 10.0), reference!(Ramp.start)),
+        number("ramp.level", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Ramp.level)),
+        number("ramp.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Ramp.slope)),
+        number("ramp.hold", "reference", "s", closed(0.0, 10.0), reference!(Ramp.hold)),
+        number("psi_d", "reference", "Wb²", above(0.0, 4.0), at!(psi_d)),
+        number("k1", "gains", "1/s", above(0.0, 1e6), at!(gains.k1)),
+        number("k2", "gains", "1/s", above(0.0, 1e6), at!(gains.k2)),
+        number("k3", "gains", "1/s", above(0.0, 1e6), at!(gains.k3)),
+        number("k4", "gains", "1/s", above(0.0, 1e6), at!(gains.k4)),
+        number("robust", "gains", "", whole(0.0, 1.0), flag!(gains.robust)),
+        number("eps2", "gains", "rad²/s⁵", above(0.0, 1e6), at!(gains.eps2)),
+        number("h2", "gains", "rad/s³", closed(0.0, 1e9), at!(gains.h2)),
+        number("eps4", "gains", "Wb⁴/s³", above(0.0, 1e6), at!(gains.eps4)),
+        number("h4", "gains", "Wb²/s²", closed(0.0, 1e9), at!(gains.h4)),
+        law("law.v1", "rad/s²", 1),
+        law("law.v2", "rad/s³", 2),
+        law("law.v3", "Wb²/s", 3),
+        law("law.v4", "Wb²/s²", 4),
+        choice("controller", "controller", Access::Choice {
             options: &["backstepping", "ifoc"],
             get: |s| match s.controller { ControllerKind::Backstepping => "backstepping", ControllerKind::Ifoc => "ifoc" },
             set: |s, name| s.controller = if name == "ifoc" { ControllerKind::Ifoc } else { ControllerKind::Backstepping },
         }),
-        number("ifoc.bw_i", "controller", "Hz", above(0.0, 5000.0), "IFOC current-loop bandwidth", at!(ifoc.current_bw)),
-        number("ifoc.bw_w", "controller", "Hz", above(0.0, 1000.0), "IFOC speed-loop bandwidth", at!(ifoc.speed_bw)),
-        number("ifoc.bw_mras", "controller", "Hz", above(0.0, 5000.0), "IFOC MRAS speed-estimator bandwidth", at!(ifoc.mras_bw)),
-        number("ifoc.i_max", "controller", "A", above(0.0, 1000.0), "IFOC q-current limit", at!(ifoc.current_limit)),
-        number("ifoc.ff", "controller", "", whole(0.0, 1.0), "IFOC torque feedforward J·ω̇_d + T0 + Cf·ω_d (0/1)", flag!(ifoc.ff)),
-        choice("ekf", "observer", "EKF predictor: euler (paper) or rk4", Access::Choice {
+        number("ifoc.bw_i", "controller", "Hz", above(0.0, 5000.0), at!(ifoc.current_bw)),
+        number("ifoc.bw_w", "controller", "Hz", above(0.0, 1000.0), at!(ifoc.speed_bw)),
+        number("ifoc.bw_mras", "controller", "Hz", above(0.0, 5000.0), at!(ifoc.mras_bw)),
+        number("ifoc.i_max", "controller", "A", above(0.0, 1000.0), at!(ifoc.current_limit)),
+        number("ifoc.ff", "controller", "", whole(0.0, 1.0), flag!(ifoc.ff)),
+        choice("ekf", "observer", Access::Choice {
             options: &["euler", "rk4"],
             get: |s| match s.ekf.predictor { Predictor::Euler => "euler", Predictor::Rk4 => "rk4" },
             set: |s, name| s.ekf.predictor = if name == "rk4" { Predictor::Rk4 } else { Predictor::Euler },
         }),
-        number("ekf.q", "observer", "(state unit)²/s", above(0.0, 1e6), "process noise Q = q·Ts·I, one number for every state: A²/s for the currents, (rad/s)²/s for ω, Wb²/s for the fluxes", at!(ekf.q)),
-        number("ekf.q_speed", "observer", "(rad/s)²/s", closed(0.0, 1e10), "process noise added to the speed state alone, Q_ωω = (q + q_speed)·Ts", at!(ekf.q_speed)),
+        number("ekf.q", "observer", "(state unit)²/s", above(0.0, 1e6), at!(ekf.q)),
+        number("ekf.q_speed", "observer", "(rad/s)²/s", closed(0.0, 1e10), at!(ekf.q_speed)),
         // R = r_std²·I must stay a positive number: below 1 µA it is numerically zero for the
         // innovation covariance S = HPHᵀ + R once P has converged.
-        number("ekf.r_std", "observer", "A", closed(1e-6, 10.0), "assumed current noise, R = r_std²·I", at!(ekf.r_std)),
-        number("ekf.load", "observer", "", whole(0.0, 1.0), "estimate the load a2 = T_L0/J as an EKF state (0/1)", flag!(ekf.load)),
-        number("ekf.q_load", "observer", "N² m²/s", above(0.0, 1e8), "random-walk intensity of the load torque", at!(ekf.q_load)),
-        number("ekf.load_std", "observer", "N m", above(0.0, 1e4), "initial standard deviation of the load estimate", at!(ekf.load_std)),
-        number("ekf.rr", "observer", "", whole(0.0, 1.0), "estimate the rotor resistance R_r as an EKF state (0/1)", flag!(ekf.rr)),
-        number("ekf.q_rr", "observer", "Ω²/s", above(0.0, 1e6), "random-walk intensity of the rotor resistance", at!(ekf.q_rr)),
-        number("ekf.rr_std", "observer", "Ω", above(0.0, 1000.0), "initial standard deviation of the R_r estimate", at!(ekf.rr_std)),
-        number("init_err", "observer", "", closed(0.0, 1.0), "initial relative estimation error", at!(init_error)),
-        number("perfect", "observer", "", whole(0.0, 1.0), "perfect observer: controller gets the true state (0/1)", flag!(perfect)),
-        number("noise", "noise", "A", closed(0.0, 10.0), "current-measurement noise std", at!(noise)),
-        number("seed", "noise", "", whole(0.0, MAX_SEED as f64), "noise seed", at!(seed)),
+        number("ekf.r_std", "observer", "A", closed(1e-6, 10.0), at!(ekf.r_std)),
+        number("ekf.load", "observer", "", whole(0.0, 1.0), flag!(ekf.load)),
+        number("ekf.q_load", "observer", "N² m²/s", above(0.0, 1e8), at!(ekf.q_load)),
+        number("ekf.load_std", "observer", "N m", above(0.0, 1e4), at!(ekf.load_std)),
+        number("ekf.rr", "observer", "", whole(0.0, 1.0), flag!(ekf.rr)),
+        number("ekf.q_rr", "observer", "Ω²/s", above(0.0, 1e6), at!(ekf.q_rr)),
+        number("ekf.rr_std", "observer", "Ω", above(0.0, 1000.0), at!(ekf.rr_std)),
+        number("init_err", "observer", "", closed(0.0, 1.0), at!(init_error)),
+        number("perfect", "observer", "", whole(0.0, 1.0), flag!(perfect)),
+        number("noise", "noise", "A", closed(0.0, 10.0), at!(noise)),
+        number("seed", "noise", "", whole(0.0, MAX_SEED as f64), at!(seed)),
     ];
     v.extend(motor!(plant));
     v.extend(motor!(model));
     v.extend([
-        number("load.time", "load", "s", closed(0.0, 10.0), "time of the unknown load step", at!(load_step.time)),
-        number("load.torque", "load", "N m", closed(-1e4, 1e4), "size of the unknown load step", at!(load_step.torque)),
-        number("vmax", "limits", "V", above(0.0, 1e5), "voltage limit per component", at!(voltage_limit)),
-        number("duration", "limits", "s", above(0.0, MAX_DURATION), "simulated time", at!(duration)),
-        number("ts", "limits", "s", closed(1e-7, 1e-2), "sampling period Ts", at!(ts)),
-        number("substeps", "limits", "", whole(1.0, 1000.0), "plant RK4 substeps per sample", at!(substeps)),
-        number("i_rated", "limits", "A", above(0.0, 1e4), "rated current: amplitude |i_s| of the rated phase current", at!(i_rated)),
-        number("delay", "drive", "", whole(0.0, 1.0), "computation delay: u_k applied one sample later (0/1)", flag!(drive.delay)),
-        number("delay.comp", "drive", "", whole(0.0, 1.0), "delay compensation: control from the one-step prediction x̂(k+1|k) (0/1)", flag!(drive.delay_comp)),
-        choice("vlimit", "drive", "voltage limit: box (±vmax per component, the paper), circle (|u| ≤ vdc/√3) or hex (two-level inverter)", Access::Choice {
+        number("load.time", "load", "s", closed(0.0, 10.0), at!(load_step.time)),
+        number("load.torque", "load", "N m", closed(-1e4, 1e4), at!(load_step.torque)),
+        number("vmax", "limits", "V", above(0.0, 1e5), at!(voltage_limit)),
+        number("duration", "limits", "s", above(0.0, MAX_DURATION), at!(duration)),
+        number("ts", "limits", "s", closed(1e-7, 1e-2), at!(ts)),
+        number("substeps", "limits", "", whole(1.0, 1000.0), at!(substeps)),
+        number("i_rated", "limits", "A", above(0.0, 1e4), at!(i_rated)),
+        number("delay", "drive", "", whole(0.0, 1.0), flag!(drive.delay)),
+        number("delay.comp", "drive", "", whole(0.0, 1.0), flag!(drive.delay_comp)),
+        choice("vlimit", "drive", Access::Choice {
             options: &["box", "circle", "hex"],
             get: |s| match s.drive.vlimit { Shape::Box => "box", Shape::Circle => "circle", Shape::Hex => "hex" },
             set: |s, name| s.drive.vlimit = match name { "circle" => Shape::Circle, "hex" => Shape::Hex, _ => Shape::Box },
         }),
-        number("vdc", "drive", "V", above(0.0, 1e5), "DC-link voltage of the circle and hex limits and of PWM", at!(drive.vdc)),
-        number("pwm", "drive", "", whole(0.0, 1.0), "two-level inverter, symmetric PWM at the sampling rate (0/1; vlimit circle or hex)", flag!(drive.pwm)),
+        number("vdc", "drive", "V", above(0.0, 1e5), at!(drive.vdc)),
+        number("pwm", "drive", "", whole(0.0, 1.0), flag!(drive.pwm)),
     ]);
+    // The id of each field's meaning, made once for the table's life.
+    for f in &mut v {
+        f.doc = Box::leak(format!("field-{}", f.key.replace('.', "-")).into_boxed_str());
+    }
     v
 }
 
@@ -584,7 +574,7 @@ impl Field {
                 Access::Formula { step } => Some(step),
                 _ => None,
             },
-            doc: self.doc,
+            doc: Message::new(self.doc),
             value: match self.access {
                 Access::Formula { step } => {
                     Some(s.law[step as usize - 1].clone().unwrap_or_default())
@@ -607,5 +597,29 @@ pub(crate) fn parse_number(text: &str) -> Option<f64> {
         text.parse().ok()
     } else {
         None
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_field_says_what_it_means_and_the_models_parameters_read_as_the_plants() {
+        let s = super::super::preset("step").unwrap();
+        for f in fields() {
+            let info = f.info(&s);
+            assert_eq!(info.doc.id, format!("field-{}", f.key.replace('.', "-")));
+            // A message the English lacks panics here.
+            assert!(!info.doc.to_string().is_empty(), "{}", f.key);
+            if let Some(parameter) = f.key.strip_prefix("model.") {
+                let plant = field(&format!("plant.{parameter}")).unwrap().info(&s);
+                assert_eq!(info.doc.to_string(), plant.doc.to_string());
+            }
+        }
+        assert_eq!(
+            field("k1").unwrap().info(&s).doc.to_string(),
+            "speed-error rate k1"
+        );
     }
 }

@@ -5,31 +5,42 @@ use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::Shape;
 use crate::observer::{EkfConfig, Predictor};
 use crate::params::MotorParams;
+use crate::text::Message;
 use std::f64::consts::PI;
 
 /// A named scenario with a one-line description.
 pub struct Preset {
     /// Name used in `preset=`.
     pub name: &'static str,
-    /// One line saying what it shows.
-    pub description: &'static str,
+    /// One line saying what it shows (`preset-NAME` of `core-run.ftl`).
+    pub description: Message,
+}
+
+/// The preset `name`, described by its message `preset-NAME`.
+macro_rules! described {
+    ($name:literal) => {
+        Preset {
+            name: $name,
+            description: Message::new(concat!("preset-", $name)),
+        }
+    };
 }
 
 /// All presets, in display order.
 pub const PRESETS: &[Preset] = &[
-    Preset { name: "sine200", description: "Paper Fig 2: track 0.5 sin(2π·200 t) rad/s with the EKF; the current peaks above the motor's rated current" },
-    Preset { name: "step", description: "Paper Fig 3: 0 → 0.5 rad/s step at 50 ms through a 200 Hz critically damped filter" },
-    Preset { name: "ramp", description: "Paper Fig 4: trapezoid to 100 rad/s at ±400 rad/s², hold, and back" },
-    Preset { name: "sine200-1rad", description: "1 rad/s at 200 Hz: saturates the 400 V limit, and its tracking error is more than three times sine200's" },
-    Preset { name: "sine200-rk4", description: "Fig 2 with an RK4 EKF predictor instead of the paper's Euler" },
-    Preset { name: "rr-mismatch", description: "Hold 50 rad/s with the motor's rotor resistance 10 % above the model's: the true speed recovers from the start-up over seconds and settles above the reference (run it for 6 s to see it end)" },
-    Preset { name: "load-step", description: "Hold 50 rad/s; an unknown 2 N m load step at 0.15 s that the 5-state EKF cannot see" },
-    Preset { name: "decay", description: "Perfect observer, no noise, ω_d ≡ 0: the errors decay at the designed 1200/s, then stop at a floor that shrinks with the sampling period" },
-    Preset { name: "ifoc-step", description: "Classical baseline: sensorless IFOC with an MRAS, step to 40 rad/s (MRAS is blind near zero speed)" },
-    Preset { name: "load-step-est", description: "load-step with the load a2 as an EKF state (RK4 predictor): the speed holds through the unknown step with an exact model, not with the motor's R_r 3 % below the model's" },
-    Preset { name: "rr-mismatch-est", description: "rr-mismatch with R_r as an EKF state (RK4 predictor): no slow transient, and R̂_r stays near the motor's value" },
-    Preset { name: "sine200-drive", description: "Does 200 Hz survive a real drive? sine200 with a one-sample computation delay, the 540 V inverter hexagon and PWM" },
-    Preset { name: "high-gain", description: "Gains 3000/s (2.5× the paper): the Euler EKF's prediction errors through the gains saturate the 400 V limit" },
+    described!("sine200"),
+    described!("step"),
+    described!("ramp"),
+    described!("sine200-1rad"),
+    described!("sine200-rk4"),
+    described!("rr-mismatch"),
+    described!("load-step"),
+    described!("decay"),
+    described!("ifoc-step"),
+    described!("load-step-est"),
+    described!("rr-mismatch-est"),
+    described!("sine200-drive"),
+    described!("high-gain"),
 ];
 
 // Tuning of the added EKF states (Section 3.1's remedies), justified in docs/model-and-paper.md.
@@ -240,4 +251,23 @@ pub(super) fn default_reference(kind: &str) -> Option<Reference> {
         },
         _ => return None,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_preset_says_what_it_shows() {
+        for p in PRESETS {
+            assert!(preset(p.name).is_some(), "{}", p.name);
+            assert_eq!(p.description.id, format!("preset-{}", p.name));
+            // A message the English lacks panics here.
+            assert!(!p.description.to_string().is_empty(), "{}", p.name);
+        }
+        assert_eq!(
+            PRESETS[1].description.to_string(),
+            "Paper Fig 3: 0 → 0.5 rad/s step at 50 ms through a 200 Hz critically damped filter"
+        );
+    }
 }

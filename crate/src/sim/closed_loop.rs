@@ -15,6 +15,7 @@ use crate::params::Lumped;
 use crate::record::{Row, Sink};
 use crate::rng::Rng;
 use crate::scenario::{ControllerKind, Scenario, ScenarioError};
+use crate::text::Message;
 use std::cell::{Cell, OnceCell};
 use std::fmt;
 
@@ -70,36 +71,42 @@ pub struct LawFailure {
     pub signals: String,
 }
 
+impl SimError {
+    /// Why the run stopped, as a message of `core-run.ftl`. A value that is not a finite number
+    /// (inf, NaN) is said as Rust writes it, as a name.
+    pub fn message(&self) -> Message {
+        match self {
+            SimError::Diverged { t, signal, value } => Message::new("sim-diverged")
+                .fixed("t", *t, 5)
+                .text("signal", *signal)
+                .text("value", format!("{value:e}")),
+            SimError::NotFinite { t, column, value } => Message::new("sim-not-finite")
+                .fixed("t", *t, 5)
+                .text("column", *column)
+                .text("value", value.to_string()),
+            SimError::Control { t, error } => Message::new("sim-control")
+                .fixed("t", *t, 5)
+                .said("error", error.message()),
+            SimError::Law(l) => Message::new("sim-law")
+                .count("step", l.step)
+                .text("formula", crate::text::excerpt(&l.text))
+                .text("value", l.value.to_string())
+                .fixed("t", l.t, 5)
+                .said(
+                    "reading",
+                    if l.signals.is_empty() {
+                        Message::new("sim-law-reads-nothing")
+                    } else {
+                        Message::new("sim-law-reads").text("signals", l.signals.as_str())
+                    },
+                ),
+        }
+    }
+}
+
 impl fmt::Display for SimError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            SimError::Diverged { t, signal, value } => {
-                write!(
-                    f,
-                    "diverged at t = {t:.5} s: {signal} = {value:e} left its bounds"
-                )
-            }
-            SimError::NotFinite { t, column, value } => write!(
-                f,
-                "stopped at t = {t:.5} s: column '{column}' would record {value}, not a finite number"
-            ),
-            SimError::Control { t, error } => {
-                write!(f, "controller failed at t = {t:.5} s: {error}")
-            }
-            SimError::Law(l) => write!(
-                f,
-                "your law.v{} = {} gave {} at t = {:.5} s, {}",
-                l.step,
-                crate::text::excerpt(&l.text),
-                l.value,
-                l.t,
-                if l.signals.is_empty() {
-                    "reading no signal".to_string()
-                } else {
-                    format!("from {}", l.signals)
-                }
-            ),
-        }
+        self.message().fmt(f)
     }
 }
 
@@ -753,5 +760,64 @@ impl Loop {
             rr_band: e.rotor_resistance.map_or(0.0, |(_, var)| 2.0 * var.sqrt()),
             i_ripple: ripple,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn why_a_run_stopped_reads_in_english() {
+        let says = |e: SimError| e.to_string();
+        assert_eq!(
+            says(SimError::Diverged {
+                t: 0.005,
+                signal: "speed ω",
+                value: -3.6521172027055076e6
+            }),
+            "diverged at t = 0.00500 s: speed ω = -3.6521172027055076e6 left its bounds"
+        );
+        assert_eq!(
+            says(SimError::NotFinite {
+                t: 0.0123,
+                column: "nis",
+                value: f64::INFINITY
+            }),
+            "stopped at t = 0.01230 s: column 'nis' would record inf, not a finite number"
+        );
+        assert_eq!(
+            says(SimError::Control {
+                t: 0.1,
+                error: ControlError::SingularDecoupling { flux_sq: 1.5e-9 }
+            }),
+            "controller failed at t = 0.10000 s: decoupling matrix (55) is singular: estimated \
+             flux x̂4² + x̂5² = 1.500e-9 Wb² is below 1e-6 Wb²"
+        );
+        assert_eq!(
+            says(SimError::Control {
+                t: 0.0,
+                error: ControlError::Law {
+                    step: 2,
+                    value: f64::NAN
+                }
+            }),
+            "controller failed at t = 0.00000 s: the law of step 2 gave NaN, not a finite number"
+        );
+        let law = |signals: &str| LawFailure {
+            t: 0.00005,
+            step: 1,
+            text: "1/z1".to_string(),
+            value: f64::NEG_INFINITY,
+            signals: signals.to_string(),
+        };
+        assert_eq!(
+            says(SimError::Law(Box::new(law("z1 = -0")))),
+            "your law.v1 = 1/z1 gave -inf at t = 0.00005 s, from z1 = -0"
+        );
+        assert_eq!(
+            says(SimError::Law(Box::new(law("")))),
+            "your law.v1 = 1/z1 gave -inf at t = 0.00005 s, reading no signal"
+        );
     }
 }

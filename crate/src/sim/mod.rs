@@ -279,16 +279,18 @@ impl Simulation {
         match self.lp.law_residual() {
             Some(Ok(value)) => figures.push(record::Figure {
                 name: info.name,
-                label: info.label,
+                label: info.label.clone(),
                 value,
                 unit: info.unit,
-                window: "the whole run and the verdict's drawn states".to_string(),
+                window: Message::new("window-law-residual"),
                 trend: None,
             }),
             Some(Err(cause)) => report.warnings.push(record::Warning {
                 kind: record::WarningKind::NotFinite,
                 figure: Some(info.name),
-                text: format!("{} is not a finite number: {cause}.", info.name),
+                text: Message::new("warning-not-finite")
+                    .text("figure", info.name)
+                    .text("cause", cause),
             }),
             None => {}
         }

@@ -56,8 +56,8 @@ pub enum Arg {
 }
 
 impl Message {
-    /// The message `id`, with no arguments yet.
-    pub fn new(id: &'static str) -> Message {
+    /// The message `id`, with no arguments yet (a constant's, too: a table's words).
+    pub const fn new(id: &'static str) -> Message {
         Message {
             id,
             args: BTreeMap::new(),
@@ -106,6 +106,32 @@ impl Message {
         }
     }
 
+    /// With `value` as `name`, as [`rounded`](super::rounded) writes it to `digits` significant
+    /// digits.
+    pub fn rounded(self, name: &'static str, value: f64, digits: i32) -> Message {
+        self.digits(name, super::rounded(value, digits))
+    }
+
+    /// With the time `t` (s) as `name`, as [`time_text`](super::time_text) writes it: a message
+    /// of its own (`time-ms` or `time-s`), with up to 4 significant digits.
+    pub fn time(self, name: &'static str, t: f64) -> Message {
+        let time = if t.abs() < 1.0 {
+            Message::new("time-ms").digits("ms", super::significant(t * 1e3, 4))
+        } else {
+            Message::new("time-s").digits("s", super::significant(t, 4))
+        };
+        self.said(name, time)
+    }
+
+    /// With the number written `text` as `name`: as a number when `text` is its shortest digits
+    /// (so that a language writes it with its own decimal separator), else as the text.
+    fn digits(self, name: &'static str, text: String) -> Message {
+        match text.parse::<f64>() {
+            Ok(value) if value.to_string() == text => self.real(name, value),
+            _ => self.text(name, text),
+        }
+    }
+
     /// With the messages `items` as `name`, a list (joined by ", " in English).
     pub fn list(mut self, name: &'static str, items: Vec<Message>) -> Message {
         self.args.insert(name, Arg::List(items));
@@ -135,6 +161,10 @@ mod english {
         (
             "core-law.ftl",
             include_str!("../../../web/locales/en/core-law.ftl"),
+        ),
+        (
+            "core-run.ftl",
+            include_str!("../../../web/locales/en/core-run.ftl"),
         ),
     ];
 

@@ -48,7 +48,7 @@ pub struct AllowView {
     hi: Option<f64>,
     options: Vec<String>,
     unit: &'static str,
-    doc: &'static str,
+    doc: crate::text::Message,
     /// The base scenario's value, as the codec writes it.
     value: Option<String>,
 }
@@ -81,7 +81,7 @@ enum OpKind {
 #[derive(Serialize)]
 pub struct NeedView {
     figure: String,
-    label: &'static str,
+    label: crate::text::Message,
     unit: &'static str,
     op: OpKind,
     bound: Option<f64>,
@@ -232,7 +232,7 @@ impl Challenge {
                     hi,
                     options,
                     unit: f.unit,
-                    doc: f.doc,
+                    doc: f.doc.clone(),
                     value: f.value.clone(),
                 }
             })
@@ -250,7 +250,7 @@ impl Challenge {
                 };
                 NeedView {
                     figure: n.figure.clone(),
-                    label: f.label,
+                    label: f.label.clone(),
                     unit: f.unit,
                     op,
                     bound,
@@ -376,7 +376,7 @@ pub fn challenge_builtins() -> Result<Vec<Ts<BuiltinView>>, JsValue> {
 #[derive(Serialize)]
 pub struct CriterionFigure {
     name: &'static str,
-    label: &'static str,
+    label: crate::text::Message,
     unit: &'static str,
     /// The bounds (`max`, `min`, `abs`, `band`) in the order a composer offers them.
     ops: &'static [&'static str],
@@ -392,7 +392,7 @@ pub fn challenge_figures() -> Result<Vec<Ts<CriterionFigure>>, JsValue> {
             let (ops, op) = crate::challenge::criterion_ops(f.name);
             CriterionFigure {
                 name: f.name,
-                label: f.label,
+                label: f.label.clone(),
                 unit: f.unit,
                 ops,
                 op,

@@ -219,7 +219,11 @@ pub fn robust_csv(
 pub fn robust_figures() -> Result<Vec<Ts<crate::record::FigureInfo>>, JsValue> {
     let info: Vec<_> = robust::MAP_FIGURES
         .iter()
-        .map(|f| *crate::record::figure_info(f).expect("a map's figures are report figures"))
+        .map(|f| {
+            crate::record::figure_info(f)
+                .expect("a map's figures are report figures")
+                .clone()
+        })
         .collect();
     to_js_list(&info)
 }
