@@ -142,8 +142,10 @@ const tables = readdirSync(TABLES_DIR)
 // (the page needs it before its first plot); every other file is fetched when its language is
 // shown, and the teaching part when a lesson or the walkthrough is first opened.
 const LOCALES = join('web', 'locales');
+// The core's messages are its files core-*.ftl, in the order of their names.
+const CORE = 'core-*.ftl';
 const PARTS = {
-  page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', 'core.ftl'],
+  page: ['page.ftl', 'teaching-page.ftl', 'tools.ftl', CORE],
   teaching: ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'],
 };
 /** @type {Record<string, Record<string, string>>} */
@@ -154,6 +156,13 @@ for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
   for (const [part, names] of Object.entries(PARTS)) {
     const text = names
+      .flatMap((n) =>
+        n === CORE
+          ? readdirSync(join(LOCALES, lang))
+              .filter((f) => /^core-.+\.ftl$/.test(f))
+              .sort()
+          : [n],
+      )
       .filter((n) => existsSync(join(LOCALES, lang, n)))
       .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
       .join('\n');

@@ -64,8 +64,11 @@ macro_rules! said_as_text {
 }
 
 impl Refusal for crate::text::Message {
+    /// The message as the views carry one (its arguments a plain object, not a `Map`, which
+    /// the page's `said()` and a worker's message both take as they are).
     fn refusal(&self) -> JsValue {
-        serde_wasm_bindgen::to_value(self).unwrap_or_else(|e| JsValue::from_str(&e.to_string()))
+        self.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+            .unwrap_or_else(|e| JsValue::from_str(&e.to_string()))
     }
 }
 

@@ -2,6 +2,7 @@
 // worker at a time, results in job order, Cancel that stops at once, a crashed worker replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { watch } from './watch.js';
+import { said } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -126,7 +127,8 @@ export class Pool {
         const message = /** @type {P.JobMessage} */ ({ type: 'job', job, ...jobs[index] });
         member.worker.postMessage(message);
         const data = await reply;
-        if (data.error) throw new Error(data.error);
+        // The core's message is said in the language shown.
+        if (data.error) throw new Error(said(data.error));
         const result = /** @type {P.Jobs[K]['result']} */ (data.result);
         results[index] = result;
         onDone(++done, index, result);

@@ -13,7 +13,7 @@ export {};
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
  *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
  *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
- *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
+ *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView, Message} from '../../pkg/imlab.js'
  */
 
 // ---------------------------------------------------------------------------------------------
@@ -243,8 +243,9 @@ export {};
  * @typedef {{type: 'challenge-measured', id: number, measures: Measures | null, error?: string}} Measured
  */
 /**
- * A job's result (the `result` of its kind in Jobs), or why it failed.
- * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string}} JobReply
+ * A job's result (the `result` of its kind in Jobs), or why it failed: the core's message (which
+ * the page says in its language), or the text of another error.
+ * @typedef {{type: 'job', job: number, result?: Jobs[keyof Jobs]['result'], error?: string | Message}} JobReply
  */
 
 /**

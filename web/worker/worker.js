@@ -94,8 +94,19 @@ async function job(request) {
   try {
     post({ type: 'job', job: request.job, result: runJob(jobs, request.kind, request) });
   } catch (e) {
-    if (!trapped(e)) post({ type: 'job', job: request.job, error: String(e) });
+    if (!trapped(e)) post({ type: 'job', job: request.job, error: refusal(e) });
   }
+}
+
+/**
+ * What a job that threw says: the core's message as it is (its id and arguments, which the page
+ * says in its language), or the text of any other error.
+ * @param {unknown} e
+ * @returns {string | import('../../pkg/imlab.js').Message}
+ */
+function refusal(e) {
+  const core = typeof e === 'object' && e !== null && 'id' in e && 'args' in e;
+  return core ? /** @type {import('../../pkg/imlab.js').Message} */ (e) : String(e);
 }
 
 /** @param {MessageEvent<P.ToWorker>} event */
