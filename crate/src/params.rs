@@ -1,7 +1,7 @@
 //! Motor parameters in SI units and the paper's lumped parameters a1..a10, b (Section 2.1).
 
-use serde::{Deserialize, Serialize};
 use crate::text::Message;
+use serde::{Deserialize, Serialize};
 use std::fmt;
 
 /// Physical parameters of the induction motor and its load (SI units).

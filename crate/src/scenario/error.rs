@@ -106,7 +106,11 @@ impl ScenarioError {
                 .text("name", q(name))
                 .text(
                     "presets",
-                    PRESETS.iter().map(|p| p.name).collect::<Vec<_>>().join(", "),
+                    PRESETS
+                        .iter()
+                        .map(|p| p.name)
+                        .collect::<Vec<_>>()
+                        .join(", "),
                 ),
             UnknownKey { key } => Message::new("scenario-unknown-key").text("key", q(key)),
             DuplicateKey { key } => Message::new("scenario-duplicate-key").text("key", q(key)),

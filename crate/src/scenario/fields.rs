@@ -447,7 +447,9 @@ impl Field {
             Access::Choice { options, .. } => {
                 Message::new("scenario-allowed-choice").text("options", options.join(" | "))
             }
-            Access::Formula { step } => Message::new("scenario-allowed-formula").count("step", step),
+            Access::Formula { step } => {
+                Message::new("scenario-allowed-formula").count("step", step)
+            }
             Access::Number { .. } => {
                 let Range {
                     min,
@@ -533,7 +535,8 @@ impl Field {
                     return Err(ScenarioError::BadValue {
                         key: self.key.to_string(),
                         value: value.to_string(),
-                        expected: Message::new("scenario-expected-one-of").text("options", options.join(", ")),
+                        expected: Message::new("scenario-expected-one-of")
+                            .text("options", options.join(", ")),
                     });
                 }
                 set(s, value);
