@@ -75,7 +75,6 @@ impl Refusal for crate::text::Message {
 said_as_text!(
     String,
     &str,
-    crate::challenge::ChallengeError,
     crate::sim::SimError,
     serde_wasm_bindgen::Error
 );
@@ -89,6 +88,12 @@ impl Refusal for crate::params::ParamError {
 impl Refusal for crate::scenario::ScenarioError {
     fn refusal(&self) -> JsValue {
         self.message().refusal()
+    }
+}
+
+impl Refusal for crate::challenge::ChallengeError {
+    fn refusal(&self) -> JsValue {
+        self.message.refusal()
     }
 }
 

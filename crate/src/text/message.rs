@@ -127,15 +127,22 @@ mod english {
     use std::sync::OnceLock;
 
     /// The English message files of the core, as the page has them.
-    const FILES: &[(&str, &str)] = &[(
-        "core-scenario.ftl",
-        include_str!("../../../web/locales/en/core-scenario.ftl"),
-    )];
+    const FILES: &[(&str, &str)] = &[
+        (
+            "core-scenario.ftl",
+            include_str!("../../../web/locales/en/core-scenario.ftl"),
+        ),
+        (
+            "core-challenge.ftl",
+            include_str!("../../../web/locales/en/core-challenge.ftl"),
+        ),
+    ];
 
     fn bundle() -> &'static FluentBundle<FluentResource> {
         static BUNDLE: OnceLock<FluentBundle<FluentResource>> = OnceLock::new();
         BUNDLE.get_or_init(|| {
-            let mut bundle = FluentBundle::new_concurrent(vec!["en".parse().expect("a language id")]);
+            let mut bundle =
+                FluentBundle::new_concurrent(vec!["en".parse().expect("a language id")]);
             bundle.set_use_isolating(false);
             for (name, text) in FILES {
                 let resource = FluentResource::try_new((*text).to_owned())
@@ -160,9 +167,13 @@ mod english {
                 Arg::Text(text) => FluentValue::from(text.as_str()),
                 Arg::Count(n) => FluentValue::from(*n),
                 Arg::Real { real } => FluentValue::from(real.to_string()),
-                Arg::Fixed { fixed, fraction } => FluentValue::from(format!("{fixed:.*}", *fraction as usize)),
+                Arg::Fixed { fixed, fraction } => {
+                    FluentValue::from(format!("{fixed:.*}", *fraction as usize))
+                }
                 Arg::Said(inner) => FluentValue::from(render(inner)),
-                Arg::List(items) => FluentValue::from(items.iter().map(render).collect::<Vec<_>>().join(", ")),
+                Arg::List(items) => {
+                    FluentValue::from(items.iter().map(render).collect::<Vec<_>>().join(", "))
+                }
             };
             args.set(*name, value);
         }
