@@ -7,13 +7,14 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { initSync } from '../dist/pkg/imlab.js';
 import { CHALLENGE_JOBS as jobs } from '../dist/.src/worker/challenge-jobs.js';
+import { english } from './core-english.mjs';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 
 /** The verdict on `submission` of challenge `text`, every run measured by the 'challenge-run' job. */
 function grade(text, submission) {
   const sub = jobs['challenge-submission']({ text, submission });
-  assert.equal(sub.kind, 'ok', sub.message);
+  assert.equal(sub.kind, 'ok', sub.message && english(sub.message));
   const runs = sub.scenarios.map((scenario) => jobs['challenge-run']({ scenario }));
   return jobs['challenge-judge']({ text, runs });
 }
@@ -40,9 +41,14 @@ test('a refused submission names the field; a bad challenge throws the message',
   const text = jobs.challenge({ text: 'step-tune' }).encoded;
   const sub = jobs['challenge-submission']({ text, submission: `${text}&try.ekf=rk4` });
   assert.equal(sub.kind, 'refused');
-  assert.match(sub.message, /field 'ekf' is not allowed/);
+  assert.equal(english(sub.message), "field 'ekf' is not allowed");
+  assert.equal(english(sub.status), "refused: field 'ekf' is not allowed");
   assert.deepEqual(sub.scenarios, []);
-  assert.throws(() => jobs.challenge({ text: 'c=1&title=x&base=v%3D1%26preset%3Dstep&need.nothing=max:1' }), /nothing/);
+  // The core's message, its id and arguments, for the page to say in its language.
+  assert.throws(
+    () => jobs.challenge({ text: 'c=1&title=x&base=v%3D1%26preset%3Dstep&need.nothing=max:1' }),
+    (e) => e.id === 'challenge-need-unknown-figure' && /'nothing' is not a figure/.test(english(e)),
+  );
 });
 
 test('a run that runs away fails every criterion, with the reason, however lenient the bound', () => {
@@ -53,7 +59,9 @@ test('a run that runs away fails every criterion, with the reason, however lenie
   const verdict = grade(text, text);
   assert.equal(verdict.pass, false);
   assert.equal(verdict.criteria[0].pass, false);
-  assert.match(verdict.criteria[0].reason, /ran away/);
+  assert.match(english(verdict.criteria[0].reason), /ran away/);
+  assert.equal(english(verdict.criteria[0].label), 'peak stator current |i_s|');
+  assert.equal(english(verdict.criteria[0].bound), '≤ 1000 A');
   const figures = jobs['challenge-figures']({});
   assert.ok(figures.some((f) => f.name === 'load_recovery_time'));
   // The bounds each figure may take, the first offered and the one a composer starts with.

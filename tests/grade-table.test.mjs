@@ -11,6 +11,7 @@ import { join } from 'node:path';
 import { browserSuite, settled } from './browser.mjs';
 import { initSync } from '../dist/pkg/imlab.js';
 import { CHALLENGE_JOBS as jobs } from '../dist/.src/worker/challenge-jobs.js';
+import { english } from './core-english.mjs';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 
@@ -203,9 +204,10 @@ test('the cause of a malformed or refused row is in the row, whole', () =>
     const none = row(unsettled.line).locator('td.value').first();
     assert.equal(await none.locator('summary').textContent(), 'not measured ✗');
     const { criteria } = jobs['grade-link']({ text: builtin.text, row: { line: 1, link: unsettled.link } }).verdict;
-    assert.ok(criteria[0].reason.length > 0);
+    const reason = english(criteria[0].reason);
+    assert.ok(reason.length > 0);
     const run = criteria[0].run === 'nominal' ? '' : ` (worst run: ${criteria[0].run})`;
-    assert.equal(await none.locator('summary').getAttribute('title'), `${criteria[0].reason}${run}`);
+    assert.equal(await none.locator('summary').getAttribute('title'), `${reason}${run}`);
   }));
 
 test('a grading kept in the browser shows its verdicts and values again after a reload', () =>

@@ -74,7 +74,6 @@ impl Refusal for crate::text::Message {
 said_as_text!(
     String,
     &str,
-    crate::challenge::ChallengeError,
     serde_wasm_bindgen::Error
 );
 
@@ -99,6 +98,12 @@ impl Refusal for crate::control::formula::FormulaError {
 impl Refusal for crate::sim::SimError {
     fn refusal(&self) -> JsValue {
         self.message().refusal()
+    }
+}
+
+impl Refusal for crate::challenge::ChallengeError {
+    fn refusal(&self) -> JsValue {
+        self.message.refusal()
     }
 }
 

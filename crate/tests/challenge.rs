@@ -6,8 +6,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{
-    builtin, figure_info, judge, measure, Challenge, ErrorKind, Measure, Measures, Submission,
-    Verdict, BUILTINS, LOAD_RECOVERY,
+    builtin, figure_info, figure_label, figures, judge, measure, Challenge, ErrorKind, Measure,
+    Measures, Submission, Verdict, BUILTINS, LOAD_RECOVERY,
 };
 use imlab::sim::Simulation;
 use std::process::{Command, Stdio};
@@ -128,7 +128,7 @@ fn a_refused_try_names_its_key_or_field() {
     for (tail, kind, needle) in cases {
         let e = refused(&format!("{SMALL}{tail}"));
         assert_eq!(e.kind, *kind, "{tail}: {e}");
-        assert!(e.message.contains(needle), "{tail}: {e}");
+        assert!(e.to_string().contains(needle), "{tail}: {e}");
     }
 }
 
@@ -228,7 +228,7 @@ fn a_refused_challenge_names_its_field() {
     for (text, needle) in challenge_cases {
         let e = Challenge::parse(text).expect_err(text);
         assert_eq!(e.kind, ErrorKind::Malformed, "{text}");
-        assert!(e.message.contains(needle), "{text}: {e}");
+        assert!(e.to_string().contains(needle), "{text}: {e}");
     }
 }
 
@@ -240,15 +240,18 @@ fn user_text_in_a_refusal_is_cut_and_escaped() {
         "x".repeat(60)
     ))
     .unwrap_err();
-    assert!(e.message.contains("… (61 characters)"), "{e}");
-    assert!(!e.message.contains('\u{202e}'));
+    assert!(e.to_string().contains("… (61 characters)"), "{e}");
+    assert!(!e.to_string().contains('\u{202e}'));
 }
 
 #[test]
 fn a_long_challenge_text_is_refused_at_once() {
     // Long texts are refused at once.
     let e = Challenge::parse(&format!("c=1&title={}", "x".repeat(20_000))).unwrap_err();
-    assert!(e.message.contains("16384 bytes (16 KiB) allowed"), "{e}");
+    assert!(
+        e.to_string().contains("16384 bytes (16 KiB) allowed"),
+        "{e}"
+    );
 }
 
 #[test]
@@ -268,7 +271,7 @@ fn a_submission_of_another_challenge_is_told_apart() {
     ] {
         let e = c.submission(&edited).unwrap_err();
         assert_eq!(e.kind, ErrorKind::Another, "{edited}");
-        assert_eq!(e.status(), "another challenge");
+        assert_eq!(e.status().to_string(), "another challenge");
     }
 }
 
@@ -290,6 +293,11 @@ fn the_figures_criteria_name_are_the_reports() {
             let info = figure_info(f.name).expect(f.name);
             assert_eq!((&info.label, info.unit), (&f.label, f.unit), "{}", f.name);
         }
+    }
+    // Each figure's label, said as a message, is its label in English.
+    for f in figures() {
+        let label = figure_label(f.name).expect(f.name);
+        assert_eq!(label.to_string(), f.label, "{}", f.name);
     }
 }
 
@@ -322,15 +330,21 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
         ..Measures::default()
     };
     let v = judge(&c, &[nominal.clone(), variant.clone()]).unwrap();
+    let reasons: Vec<String> = v
+        .criteria
+        .iter()
+        .map(|c| c.reason.as_ref().map_or(String::new(), |r| r.to_string()))
+        .collect();
     let rows: Vec<_> = v
         .criteria
         .iter()
-        .map(|c| {
+        .zip(&reasons)
+        .map(|(c, reason)| {
             (
                 c.figure.as_str(),
                 c.value,
                 c.pass,
-                c.reason.as_str(),
+                reason.as_str(),
                 c.run.as_str(),
             )
         })
@@ -365,7 +379,7 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
         ]
     );
     assert!(!v.pass);
-    assert_eq!(v.criteria[2].bound, "≤ 4 A");
+    assert_eq!(v.criteria[2].bound.to_string(), "≤ 4 A");
     // Settled, inside the band, every run within the bound, recovered.
     let mut good = nominal;
     good.figures[0].settled = Some(true);
@@ -382,11 +396,15 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
         ..Measures::default()
     };
     let v = judge(&c, &[good.clone(), failed]).unwrap();
-    assert_eq!(v.criteria[2].reason, "run failed: diverged");
+    let reason = |v: &Verdict, i: usize| v.criteria[i].reason.clone().unwrap();
+    assert_eq!(reason(&v, 2).to_string(), "run failed: diverged");
     assert!(!v.pass);
     good.figures.retain(|f| f.name != "current_peak");
     let v = judge(&c, &[good, ok_variant]).unwrap();
-    assert!(v.criteria[2].reason.starts_with("not measured"), "{v:?}");
+    assert!(
+        reason(&v, 2).to_string().starts_with("not measured"),
+        "{v:?}"
+    );
     // The count of runs must match.
     assert!(judge(&c, &[]).is_err());
 }
@@ -619,7 +637,7 @@ fn any_link_of_a_challenge_opens_it() {
     ] {
         assert_eq!(Challenge::from_link(link).unwrap(), step_tune, "{link}");
     }
-    let refused = |link: &str| Challenge::from_link(link).unwrap_err().message;
+    let refused = |link: &str| Challenge::from_link(link).unwrap_err().to_string();
     assert!(refused("challenge=nope").contains("'nope' is neither a challenge link nor a built-in"));
     assert!(refused("v=1&preset=step").contains("field 'c' is missing"));
     assert!(refused(&format!("{SMALL}&need.bogus=max:1")).contains("'need.bogus'"));
@@ -652,7 +670,8 @@ fn a_submission_written_from_values_is_the_canonical_link_and_reads_back() {
     let e = c.submit(&tries(&[("k1", "1&try.k2=5")])).unwrap_err();
     assert_eq!(e.kind, ErrorKind::Malformed);
     assert!(
-        e.message.contains("'try.k1' = '1&try.k2=5': not a number"),
+        e.to_string()
+            .contains("'try.k1' = '1&try.k2=5': not a number"),
         "{e}"
     );
     // Refusals as the codec words them.
@@ -680,7 +699,7 @@ fn a_submission_written_from_values_is_the_canonical_link_and_reads_back() {
     ] {
         let e = c.submit(&tries(pairs)).unwrap_err();
         assert_eq!(e.kind, kind, "{pairs:?}: {e}");
-        assert!(e.message.contains(needle), "{pairs:?}: {e}");
+        assert!(e.to_string().contains(needle), "{pairs:?}: {e}");
     }
     // Every built-in's solution, written from its values, is the link its solution reads as.
     for b in BUILTINS {
@@ -718,7 +737,7 @@ fn a_built_ins_name_may_carry_a_try_and_stray_characters_are_named() {
         other.submission(&short).unwrap_err().kind,
         ErrorKind::Another
     );
-    let refused = |link: &str| c.submission(link).unwrap_err().message;
+    let refused = |link: &str| c.submission(link).unwrap_err().to_string();
     assert_eq!(
         refused("challenge=step-tune&title=Easy&try.k1=2000"),
         "field 'title' cannot follow challenge=step-tune: a built-in challenge's link holds \
@@ -735,4 +754,63 @@ fn a_built_ins_name_may_carry_a_try_and_stray_characters_are_named() {
     );
     assert!(refused("v=1&preset=step").contains("field 'c' is missing"));
     assert!(refused("xc=1&title=a").contains("field 'c' is missing"));
+}
+
+/// Every message the challenges' and the grading's code names is an English message of
+/// web/locales/en/core-challenge.ftl, and every message there is named: none is said with an id
+/// the page cannot find, and none is left for translators that nothing says.
+#[test]
+fn every_challenge_message_named_is_in_the_english_file_and_every_one_there_is_named() {
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let ftl = std::fs::read_to_string(root.join("../web/locales/en/core-challenge.ftl")).unwrap();
+    let defined: std::collections::BTreeSet<&str> = ftl
+        .lines()
+        .filter_map(|l| l.split_once(" = ").map(|(id, _)| id))
+        .filter(|id| !id.starts_with(['#', ' ']))
+        .collect();
+    fn sources(dir: &std::path::Path, out: &mut Vec<String>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                sources(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                out.push(std::fs::read_to_string(path).unwrap());
+            }
+        }
+    }
+    let mut texts = Vec::new();
+    sources(&root.join("src/challenge"), &mut texts);
+    for file in [
+        "src/wasm/challenge.rs",
+        "src/wasm/grade.rs",
+        "src/bin/imlab/grade.rs",
+    ] {
+        texts.push(std::fs::read_to_string(root.join(file)).unwrap());
+    }
+    let mut named = std::collections::BTreeSet::new();
+    for text in &texts {
+        let starts = text
+            .match_indices("\"challenge-")
+            .chain(text.match_indices("\"grade-"));
+        for (at, _) in starts {
+            let rest = &text[at + 1..];
+            let id = &rest[..rest.find('"').unwrap()];
+            if id
+                .chars()
+                .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '-')
+            {
+                named.insert(id);
+            }
+        }
+    }
+    let missing: Vec<_> = named.difference(&defined).collect();
+    assert!(
+        missing.is_empty(),
+        "named, not in core-challenge.ftl: {missing:?}"
+    );
+    let unused: Vec<_> = defined.difference(&named).collect();
+    assert!(
+        unused.is_empty(),
+        "in core-challenge.ftl, never named: {unused:?}"
+    );
 }

@@ -111,7 +111,7 @@ fn assert_compose_errors(cases: &[(String, &str, &str)]) {
     for (json, key, needle) in cases {
         let e = Challenge::compose(&form_parts(json)).expect_err(json);
         assert_eq!(e.key, *key, "{json}: {e}");
-        assert!(e.message.contains(needle), "{json}: {e}");
+        assert!(e.to_string().contains(needle), "{json}: {e}");
     }
 }
 

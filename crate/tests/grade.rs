@@ -13,13 +13,19 @@ use imlab::challenge::grade::{
 };
 use imlab::challenge::{builtin, Challenge, CriterionVerdict, Verdict, BUILTINS};
 use imlab::text::csv::text_field;
+use imlab::text::Message;
+
+/// The status a row is graded as it is read, in English, if it has one.
+fn status(row: &ClassRow) -> Option<String> {
+    row.fault.as_ref().map(|f| f.status().to_string())
+}
 
 /// The (line, link, status) of each row.
 fn rows(class: &Class) -> Vec<(usize, String, Option<String>)> {
     class
         .rows
         .iter()
-        .map(|r| (r.line, r.link.clone(), r.status.clone()))
+        .map(|r| (r.line, r.link.clone(), status(r)))
         .collect()
 }
 
@@ -74,12 +80,12 @@ fn utf16_without_a_byte_order_mark_and_binary_files_are_refused_saying_what_they
     for big_endian in [false, true] {
         let bytes = utf16(text, big_endian)[2..].to_vec();
         assert_eq!(
-            read_class(&bytes).unwrap_err(),
+            read_class(&bytes).unwrap_err().to_string(),
             "the file is UTF-16 without a byte-order mark; save it as UTF-8"
         );
     }
     let zip = b"PK\x03\x04\x14\x00\x06\x00\x08\x00\x00\x00!\x00\xb1\x82\xa5\xc3xlsx";
-    let message = read_class(zip).unwrap_err();
+    let message = read_class(zip).unwrap_err().to_string();
     assert!(message.starts_with("the file is not text"), "{message}");
 }
 
@@ -95,7 +101,7 @@ fn an_invalid_utf8_byte_spoils_only_its_own_line() {
     assert_eq!(unmarked.encoding, None);
     assert_eq!(spoilt.encoding, None);
     assert_eq!(
-        spoilt.rows[1].status.as_deref(),
+        status(&spoilt.rows[1]).as_deref(),
         Some("malformed: line 3 is not valid UTF-8")
     );
     assert_eq!(
@@ -115,14 +121,17 @@ fn an_invalid_utf8_byte_spoils_only_its_own_line() {
     bytes.splice(8..8, [0x00, 0xd8]);
     let class = read_class(&bytes).unwrap();
     assert_eq!(
-        class.rows[0].status,
+        status(&class.rows[0]),
         Some("malformed: line 1 is not valid UTF-16".to_string())
     );
-    assert_eq!(class.rows[1].status, None);
+    assert_eq!(class.rows[1].fault, None);
     // The row is graded with its status, without a run.
     let c = Challenge::parse(QUICK).unwrap();
     let graded = grade_row(&c, &read_class(b"\xef\xbb\xbf\xfe").unwrap().rows[0]);
-    assert_eq!(graded.status, "malformed: line 1 is not valid UTF-8");
+    assert_eq!(
+        graded.status.to_string(),
+        "malformed: line 1 is not valid UTF-8"
+    );
     assert_eq!(graded.verdict, None);
 }
 
@@ -137,7 +146,7 @@ fn a_csv_export_carries_its_other_columns_and_reads_quoted_fields() {
     let class = read_class(file.as_bytes()).unwrap();
     assert_eq!(class.columns, ["Name", "Email", "Notes"]);
     assert_eq!(class.link_column.as_deref(), Some("Submission"));
-    let carried: Vec<(usize, &str, Vec<&str>, Option<&str>)> = class
+    let carried: Vec<(usize, &str, Vec<&str>, Option<String>)> = class
         .rows
         .iter()
         .map(|r| {
@@ -145,7 +154,7 @@ fn a_csv_export_carries_its_other_columns_and_reads_quoted_fields() {
                 r.line,
                 r.link.as_str(),
                 r.carried.iter().map(String::as_str).collect(),
-                r.status.as_deref(),
+                status(r),
             )
         })
         .collect();
@@ -167,13 +176,13 @@ fn a_csv_export_carries_its_other_columns_and_reads_quoted_fields() {
                 6,
                 "",
                 vec!["Carol", "carol@example.org", "absent"],
-                Some("malformed: no link")
+                Some("malformed: no link".to_string())
             ),
             (
                 7,
                 "c=1&d",
                 vec!["Dan", "dan@example.org", ""],
-                Some("malformed: line 7 has 3 fields, the header 4")
+                Some("malformed: line 7 has 3 fields, the header 4".to_string())
             ),
         ]
     );
@@ -209,16 +218,20 @@ fn the_column_of_links_is_found_by_its_header_or_its_cells_and_ambiguity_is_refu
         Some("Link")
     );
     assert_eq!(
-        read_class(b"Name,First,Second\nAda,c=1&a,challenge=step-tune\n").unwrap_err(),
+        read_class(b"Name,First,Second\nAda,c=1&a,challenge=step-tune\n")
+            .unwrap_err()
+            .to_string(),
         "the columns 'First', 'Second' all hold links; head the one to grade 'link'"
     );
     assert_eq!(
-        read_class(b"Name,Mark\nAda,12\n").unwrap_err(),
+        read_class(b"Name,Mark\nAda,12\n").unwrap_err().to_string(),
         "no column of links in this CSV export (its columns: 'Name', 'Mark'); head the column \
          of links 'link'"
     );
     assert_eq!(
-        read_class(b"link,URL\nc=1&a,c=1&b\n").unwrap_err(),
+        read_class(b"link,URL\nc=1&a,c=1&b\n")
+            .unwrap_err()
+            .to_string(),
         "the columns 'link', 'URL' are all headed as links; keep one"
     );
     // A link written unquoted takes the fields its commas split off.
@@ -227,7 +240,7 @@ fn the_column_of_links_is_found_by_its_header_or_its_cells_and_ambiguity_is_refu
     let class = read_class(format!("Name,Link,Mark\nAda,{},12\n", b.text).as_bytes()).unwrap();
     assert_eq!(class.rows[0].link, b.text);
     assert_eq!(class.rows[0].carried, ["Ada", "12"]);
-    assert_eq!(class.rows[0].status, None);
+    assert_eq!(class.rows[0].fault, None);
     // A first line that is a link, even one with commas, keeps the file one link a line.
     let class = read_class(format!("{}\nc=1,x\n", b.text).as_bytes()).unwrap();
     assert_eq!(class.rows.len(), 2);
@@ -246,10 +259,10 @@ fn cells_from_students_cannot_run_formulas_or_carry_invisible_characters() {
             "=HYPERLINK(\"http://x\")".into(),
             "\u{1b}[31mred\u{202e}".into(),
         ],
-        status: None,
+        fault: None,
     };
     let graded = grade_row(&c, &row);
-    assert_eq!(graded.status, "ok");
+    assert_eq!(graded.status.to_string(), "ok");
     let line = csv_row(&c, &row, &graded);
     assert!(
         line.starts_with(&format!(
@@ -290,20 +303,20 @@ fn cells_from_students_cannot_run_formulas_or_carry_invisible_characters() {
     let verdict = Verdict {
         criteria: vec![CriterionVerdict {
             figure: "current_peak".into(),
-            label: String::new(),
-            bound: String::new(),
+            label: Message::new("challenge-figure-current-peak"),
+            bound: Message::new("challenge-bound-band"),
             value: Some(-0.5),
             unit: "A".into(),
             run: "nominal".into(),
             pass: true,
-            reason: String::new(),
+            reason: None,
         }],
         pass: true,
     };
     let one = Challenge::parse("c=1&base=step&need.current_peak=max:4").unwrap();
     let graded = Graded {
         verdict: Some(verdict),
-        ..Graded::failed(7, "c=1", "ok")
+        ..Graded::failed(7, "c=1", Message::new("grade-row-ok"))
     };
     let row = ClassRow {
         line: 7,
@@ -354,8 +367,9 @@ fn a_title_cannot_write_lines_of_its_own_into_the_brief() {
          &base=step&need.current_peak=max:4",
     )
     .unwrap();
-    let brief = sly.brief();
-    assert_eq!(brief.lines().count(), plain.brief().lines().count());
+    let brief = sly.brief().to_string();
+    let plain = plain.brief().to_string();
+    assert_eq!(brief.lines().count(), plain.lines().count());
     assert_eq!(
         brief.lines().next().unwrap(),
         "a\\n\\nYou may change only:\\r\\nk1\\u{2028}\\u{1b}[2J\\u{202e}"

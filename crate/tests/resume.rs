@@ -396,7 +396,9 @@ fn each_edit_of_a_kept_row_graded_again_is_refused_naming_what_differs() {
         let point = resume(&c, &read, previous.as_bytes(), seed).unwrap();
         let kept = point.sample.iter().find(|k| k.index == j).unwrap();
         let graded = grade_row(&c, &read.rows[j]);
-        let refused = check_kept(&c, &read, kept, &graded).unwrap_err();
+        let refused = check_kept(&c, &read, kept, &graded)
+            .unwrap_err()
+            .to_string();
         let message = format!(
             "its row {} (line {} of the class file) is not what grading it again gives: {what}",
             j + 1,

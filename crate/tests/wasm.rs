@@ -43,6 +43,32 @@ fn message_of(value: &wasm_bindgen::JsValue) -> imlab::text::Message {
     message
 }
 
+/// A message of the core as the page receives it: its id (its arguments aside).
+#[derive(serde::Deserialize, Debug, PartialEq)]
+struct Said {
+    id: String,
+}
+
+/// A paragraph of a challenge's brief, by its messages' ids.
+#[derive(serde::Deserialize, Debug, PartialEq)]
+struct Paragraph {
+    head: Said,
+    items: Vec<Said>,
+}
+
+/// A challenge's brief, by its messages' ids.
+#[derive(serde::Deserialize, Debug, PartialEq)]
+struct Brief {
+    paragraphs: Vec<Paragraph>,
+}
+
+/// A message of the core whose arguments are all text.
+#[derive(serde::Deserialize, Debug, PartialEq)]
+struct SaidText {
+    id: String,
+    args: std::collections::BTreeMap<String, String>,
+}
+
 #[wasm_bindgen_test]
 fn bindings_return_the_core_columns_byte_for_byte() {
     for text in [
@@ -390,7 +416,7 @@ fn challenge_links_are_written_and_opened_by_the_core() {
     #[derive(Deserialize)]
     struct View {
         kind: String,
-        message: String,
+        message: Option<SaidText>,
         encoded: String,
         scenarios: Vec<String>,
     }
@@ -410,26 +436,39 @@ fn challenge_links_are_written_and_opened_by_the_core() {
     );
     let refused = view(c.submission_of(pairs(&[("k1", "9000")])).unwrap().into());
     assert_eq!(refused.kind, "refused");
-    assert_eq!(refused.message, "k1=9000 is outside 300..5000");
+    // The core's message, for the page to say in its language.
+    let message = refused.message.unwrap();
+    assert_eq!(message.id, "challenge-try-outside");
+    assert_eq!(
+        (
+            message.args["setting"].as_str(),
+            message.args["range"].as_str()
+        ),
+        ("k1=9000", "300..5000")
+    );
     assert!(refused.encoded.is_empty() && refused.scenarios.is_empty());
     // The composer: the challenge's parts compose to its link and brief, and an error names the
     // part at fault.
     #[derive(Deserialize)]
     struct Fault {
         key: String,
-        message: String,
+        message: SaidText,
     }
     #[derive(Deserialize)]
     struct Composed {
         encoded: Option<String>,
-        brief: Option<String>,
+        brief: Option<Brief>,
         error: Option<Fault>,
     }
     let made: Composed =
         serde_wasm_bindgen::from_value(challenge_compose(c.parts().unwrap()).unwrap().into())
             .unwrap();
     assert_eq!(made.encoded.as_deref(), Some(b.text));
-    assert_eq!(made.brief, Some(b.challenge().brief()));
+    let brief = serde_wasm_bindgen::to_value(&b.challenge().brief()).unwrap();
+    assert_eq!(
+        made.brief,
+        Some(serde_wasm_bindgen::from_value(brief).unwrap())
+    );
     assert!(made.error.is_none());
     let parts = ChallengeParts {
         base: "step".to_string(),
@@ -451,10 +490,12 @@ fn challenge_links_are_written_and_opened_by_the_core() {
     assert!(bad.encoded.is_none() && bad.brief.is_none());
     let fault = bad.error.unwrap();
     assert_eq!(fault.key, "need.peak");
-    assert!(
-        fault.message.contains("'peak' is not a figure"),
-        "{}",
-        fault.message
+    assert_eq!(
+        (
+            fault.message.id.as_str(),
+            fault.message.args["figure"].as_str()
+        ),
+        ("challenge-need-unknown-figure", "peak")
     );
 }
 
@@ -471,7 +512,7 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
         columns: Vec<String>,
         link_column: Option<String>,
         rows: Vec<grade::ClassRow>,
-        error: Option<String>,
+        error: Option<Said>,
     }
     let read = |challenge: &str, bytes: &[u8]| -> Read {
         serde_wasm_bindgen::from_value(grade_class(challenge, bytes).unwrap().into()).unwrap()
@@ -498,7 +539,7 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
     #[derive(Deserialize)]
     struct Graded {
         line: usize,
-        status: String,
+        status: Said,
         pass: bool,
         csv: String,
     }
@@ -532,19 +573,19 @@ fn a_class_is_graded_by_the_bindings_to_the_bytes_of_the_core() {
         })
         .unwrap(),
     );
-    assert!(single.pass && single.status == "ok");
+    assert!(single.pass && single.status.id == "grade-row-ok");
     // A file or challenge refused whole.
     let utf16: Vec<u8> = "c=1&x\n"
         .encode_utf16()
         .flat_map(u16::to_le_bytes)
         .collect();
     let refused = read(QUICK, &utf16);
-    assert_eq!(
-        refused.error.as_deref(),
-        Some("the file is UTF-16 without a byte-order mark; save it as UTF-8")
-    );
+    assert_eq!(refused.error.unwrap().id, "grade-file-utf16");
     assert!(refused.header.is_empty() && refused.rows.is_empty());
-    assert!(read("nope", b"").error.unwrap().starts_with("challenge: "));
+    assert_eq!(
+        read("nope", b"").error.unwrap().id,
+        "grade-challenge-refused"
+    );
     // The description gives the fingerprint and the built-in an edited challenge passes for.
     #[derive(Deserialize)]
     struct Described {

@@ -9,8 +9,9 @@ import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
 import { remember } from './origin.js';
-import { t } from '../l10n/l10n.js';
+import { said, t } from '../l10n/l10n.js';
 import { withLanguage } from '../ui/language.js';
+import { briefText } from './brief.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -19,22 +20,23 @@ import { withLanguage } from '../ui/language.js';
  */
 
 /**
- * A challenge the core composed: its link and its task in words.
- * @typedef {{encoded: string, brief: string}} Composed
+ * A challenge the core composed: its link and its task in words (paragraphs of its messages).
+ * @typedef {{encoded: string, brief: import('./brief.js').Brief}} Composed
  */
 
 /**
  * What "Make the challenge link" shows for the core's `desc` ({encoded, brief}): the link and the
- * task in words, each with its copy button, `checkBox` (the check's) beside the link, and whether
- * this browser `kept` the record that it composed the challenge.
+ * task in words (in the language shown), each with its copy button, `checkBox` (the check's)
+ * beside the link, and whether this browser `kept` the record that it composed the challenge.
  * @param {Composed} desc
  * @param {HTMLElement} checkBox
  * @param {boolean} kept
  */
 function made(desc, checkBox, kept) {
   const url = withLanguage(`${location.origin}${location.pathname}?${desc.encoded}`);
+  const brief = briefText(desc.brief);
   const linkBox = el('textarea', { id: 'compose-link', readOnly: true, rows: 3, value: url });
-  const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: desc.brief });
+  const briefBox = el('textarea', { id: 'compose-brief', readOnly: true, rows: 12, value: brief });
   const copied = el('p', { className: 'hint', role: 'status' });
   /**
    * A button labelled `label` that copies `text2`, and says so by the message `said`, or that the
@@ -76,13 +78,7 @@ function made(desc, checkBox, kept) {
     el('label', { htmlFor: 'compose-brief', textContent: t('compose-brief') }),
     briefBox,
     el('div', { className: 'buttons' }, [
-      copier(
-        'compose-copy-brief',
-        t('compose-copy-brief'),
-        desc.brief,
-        'compose-brief-copied',
-        'compose-brief-not-copied',
-      ),
+      copier('compose-copy-brief', t('compose-copy-brief'), brief, 'compose-brief-copied', 'compose-brief-not-copied'),
     ]),
     copied,
   ];
@@ -191,7 +187,7 @@ export function createCompose({ client, state }) {
   async function make() {
     const desc = await client.job('challenge-compose', { parts: parts() });
     if (desc.error) {
-      fail(t('compose-invalid', { reason: desc.error.message }), desc.error.key);
+      fail(t('compose-invalid', { reason: said(desc.error.message) }), desc.error.key);
       output.hidden = true;
       checker.stop();
       document.body.dataset.compose = 'invalid';

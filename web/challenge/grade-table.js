@@ -6,23 +6,26 @@
 // its column (again: the other way); the rows stay sorted as the results come in.
 import { el } from '../ui/dom.js';
 import { formatValue, withUnit } from './checklist.js';
-import { t } from '../l10n/l10n.js';
+import { said, t } from '../l10n/l10n.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
  */
 
 /**
- * A graded submission as the table and the CSV need it: the core's status, pass, CSV line and
- * verdict (null when its runs were not judged).
- * @typedef {{status: string, pass: boolean, csv: string, verdict: P.Jobs['grade-link']['result']['verdict']}} Result
+ * A graded submission as the table and the CSV need it: the core's status (its message), pass,
+ * CSV line (in English, as `imlab grade` writes it) and verdict (null when its runs were not
+ * judged).
+ * @typedef {{status: P.Jobs['grade-link']['result']['status'] | string, pass: boolean, csv: string,
+ *   verdict: P.Jobs['grade-link']['result']['verdict']}} Result
  */
 
 /**
  * What the table shows: the carried columns' headers, each submission's line and its text as
- * the core shows it, the challenge's criteria, and the results by submission.
+ * the core shows it, the challenge's criteria (their labels and bounds the core's messages), and
+ * the results by submission.
  * @typedef {{columns: string[], rows: {line: number}[], shown: {carried: string[], link: string}[],
- *   need: {figure: string, label: string, unit: string, bound_text: string}[], results: Record<number, Result>}} Shown
+ *   need: P.Jobs['challenge']['result']['need'], results: Record<number, Result>}} Shown
  */
 
 /**
@@ -59,7 +62,8 @@ function verdictCell(result) {
       className: result.pass ? 'pass' : 'fail',
       textContent: t(result.pass ? 'grade-pass' : 'grade-fail'),
     });
-  return el('td', { className: 'fail' }, [cause(`✗ ${result.status}`, result.status)]);
+  const status = said(result.status);
+  return el('td', { className: 'fail' }, [cause(`✗ ${status}`, status)]);
 }
 
 /**
@@ -73,9 +77,10 @@ function criterionCell(result, k) {
   if (!c) return el('td', { className: 'value' });
   const shown = `${formatValue(c.value)} ${c.pass ? '✓' : '✗'}`;
   // The value in full (the CSV's digits, but for an exponent on the tiniest), or why there is none.
-  const exact = c.value === null ? c.reason : withUnit(String(c.value), c.unit);
-  const said = c.pass || c.value === null ? exact : t('grade-value-reason', { value: exact, reason: c.reason });
-  const text = c.run === 'nominal' ? said : t('grade-worst-run', { text: said, run: c.run });
+  const reason = c.reason ? said(c.reason) : '';
+  const exact = c.value === null ? reason : withUnit(String(c.value), c.unit);
+  const words = c.pass || c.value === null ? exact : t('grade-value-reason', { value: exact, reason });
+  const text = c.run === 'nominal' ? words : t('grade-worst-run', { text: words, run: c.run });
   const td = c.pass ? el('td', { textContent: shown, title: text }) : el('td', {}, [cause(shown, text)]);
   td.className = `value ${c.pass ? 'pass' : 'fail'}`;
   return td;
@@ -89,9 +94,9 @@ function criterionCell(result, k) {
 function criterionHead(shown, k) {
   const need = shown.need[k];
   return [
-    el('span', { className: 'label', textContent: need.label }),
+    el('span', { className: 'label', textContent: said(need.label) }),
     ' ',
-    el('span', { className: 'bound', textContent: need.bound_text }),
+    el('span', { className: 'bound', textContent: said(need.bound_text) }),
   ];
 }
 

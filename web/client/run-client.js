@@ -170,15 +170,16 @@ export class RunClient {
   }
 
   /**
-   * Settles the request `key`: rejects it with `error` when there is one, else resolves it with `result`.
+   * Settles the request `key`: rejects it with `error` (a text, or the core's message, said in
+   * the language shown) when there is one, else resolves it with `result`.
    * @param {string} key
-   * @param {string | null | undefined} error
+   * @param {string | import('../../pkg/imlab.js').Message | null | undefined} error
    * @param {unknown} [result]
    */
   answer(key, error, result) {
     const p = this.pending.get(key);
     this.pending.delete(key);
-    if (error != null) p?.reject(new Error(error));
+    if (error != null) p?.reject(new Error(said(error)));
     else p?.resolve(result);
   }
 

@@ -19,7 +19,7 @@ export {};
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
  *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
  *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
- *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView} from '../../pkg/imlab.js'
+ *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView, Message} from '../../pkg/imlab.js'
  */
 
 /**

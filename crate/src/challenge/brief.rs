@@ -1,120 +1,172 @@
-//! A challenge as plain text for a slide, an LMS page or the terminal.
+//! A challenge as plain text for a slide, an LMS page or the terminal: its lines as messages,
+//! which the page says in the reader's language and the CLI in English.
 
 use super::codec::field_info;
-use super::judge::figure_info;
+use super::judge::{figure_info, figure_label, quantity};
 use super::{Allowed, Challenge, Op, Variants};
 use crate::record::{recovery_band, LOAD_RECOVERY};
-use crate::text::escape_invisible;
-use std::fmt::Write;
+use crate::text::{escape_invisible, Message};
+use serde::Serialize;
+use std::fmt;
+
+/// A challenge's task in words: paragraphs of lines. Its `Display` is the English text, each
+/// paragraph's head on a line, its items under it indented by two spaces, a blank line between
+/// paragraphs and a line end after the last line.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Brief {
+    /// The paragraphs, in order.
+    pub paragraphs: Vec<Paragraph>,
+}
+
+/// One paragraph of a [`Brief`]: a line, and the lines of a list under it (none for a plain
+/// sentence).
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Paragraph {
+    /// Its first line.
+    pub head: Message,
+    /// The list under it, one line each, shown indented.
+    pub items: Vec<Message>,
+}
+
+impl Paragraph {
+    fn line(head: Message) -> Paragraph {
+        Paragraph {
+            head,
+            items: Vec::new(),
+        }
+    }
+}
+
+impl fmt::Display for Brief {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        for (i, p) in self.paragraphs.iter().enumerate() {
+            if i > 0 {
+                f.write_str("\n")?;
+            }
+            writeln!(f, "{}", p.head)?;
+            for item in &p.items {
+                writeln!(f, "  {item}")?;
+            }
+        }
+        Ok(())
+    }
+}
 
 impl Challenge {
     /// The task in words: the title (its invisible characters, line breaks among them, escaped
     /// by [`escape_invisible`], so it stays one line and shows what it holds), the scenario to
     /// start from, what may change (with ranges, units and the base's values), each criterion
     /// with its bound and unit, and the variants.
-    pub fn brief(&self) -> String {
+    pub fn brief(&self) -> Brief {
         let title = if self.title.is_empty() {
-            "Design challenge".to_string()
+            Message::new("challenge-untitled")
         } else {
-            escape_invisible(&self.title)
+            Message::new("challenge-title").text("title", escape_invisible(&self.title))
         };
-        format!("{title}\n\n{}", self.task())
+        let mut paragraphs = vec![Paragraph::line(title)];
+        paragraphs.extend(self.task().paragraphs);
+        Brief { paragraphs }
     }
 
     /// The brief without its title: from the scenario to start from to the variants.
-    pub fn task(&self) -> String {
+    pub fn task(&self) -> Brief {
         let base = self.base_scenario();
-        let mut out = String::new();
-        let _ = writeln!(out, "Start from the scenario {}", self.base);
-        if self.allow.is_empty() {
-            let _ = writeln!(
-                out,
-                "\nNothing may be changed: the base is judged as it is."
-            );
+        let mut out = vec![Paragraph::line(
+            Message::new("challenge-brief-start").text("base", self.base.as_str()),
+        )];
+        let mut allowed = Paragraph::line(Message::new(if self.allow.is_empty() {
+            "challenge-brief-nothing-allowed"
         } else {
-            let _ = writeln!(out, "\nYou may change only:");
-        }
+            "challenge-brief-allowed"
+        }));
         for a in &self.allow {
             let info = field_info(&base, &a.field).expect("checked when parsed");
-            let unit = if info.unit.is_empty() {
-                String::new()
-            } else {
-                format!(" {}", info.unit)
-            };
             let range = match &a.allowed {
-                Allowed::Range { lo, hi } => format!("{lo} to {hi}{unit}"),
-                Allowed::Choice { options } => format!("one of {}", options.join(", ")),
-                Allowed::Formula => format!("a formula of your own, in{unit}"),
+                Allowed::Range { lo, hi } => quantity(
+                    Message::new("challenge-brief-range").real("lo", *lo),
+                    "hi",
+                    *hi,
+                    info.unit,
+                ),
+                Allowed::Choice { options } => {
+                    Message::new("challenge-brief-one-of").text("options", options.join(", "))
+                }
+                Allowed::Formula if info.unit.is_empty() => Message::new("challenge-brief-formula"),
+                Allowed::Formula => {
+                    Message::new("challenge-brief-formula-unit").text("unit", info.unit)
+                }
             };
             // A law's text may hold line breaks: shown as escapes, as a message quotes it.
             let now = info
                 .value
                 .map_or_else(|| "–".to_string(), |v| escape_invisible(&v));
-            let _ = writeln!(out, "  {:<14} {range} (now {now}) — {}", a.field, info.doc);
+            allowed.items.push(
+                Message::new("challenge-brief-allow")
+                    .text("field", format!("{:<14}", a.field))
+                    .said("range", range)
+                    .text("now", now)
+                    .text("doc", info.doc),
+            );
         }
-        let _ = writeln!(out, "\nYour design must meet:");
+        out.push(allowed);
+        let mut needs = Paragraph::line(Message::new("challenge-brief-needs"));
         for (i, c) in self.need.iter().enumerate() {
             let f = figure_info(&c.figure).expect("checked when parsed");
-            let u = if f.unit.is_empty() {
-                String::new()
-            } else {
-                format!(" {}", f.unit)
-            };
             let bound = match c.op {
-                Op::Max(b) => format!("at most {b}{u}"),
-                Op::Min(b) => format!("at least {b}{u}"),
-                Op::Abs(b) => format!("within ±{b}{u}"),
-                Op::Band => {
-                    "inside the 95 % band of a consistent filter (mean_nis_low to mean_nis_high)"
-                        .to_string()
+                Op::Max(b) => quantity(Message::new("challenge-brief-at-most"), "bound", b, f.unit),
+                Op::Min(b) => {
+                    quantity(Message::new("challenge-brief-at-least"), "bound", b, f.unit)
                 }
+                Op::Abs(b) => quantity(Message::new("challenge-brief-within"), "bound", b, f.unit),
+                Op::Band => Message::new("challenge-brief-band"),
             };
-            let settled = if c.figure.ends_with("_final") {
-                ", and settled by the end of the run"
-            } else {
-                ""
-            };
-            let robust = if self.is_robust(&c.figure) {
-                " — on the nominal run and on every variant"
-            } else {
-                ""
-            };
-            let _ = writeln!(
-                out,
-                "  {}. {} ({}): {bound}{settled}{robust}",
-                i + 1,
-                f.label,
-                c.figure
+            let yes = |on: bool| if on { "yes" } else { "no" };
+            needs.items.push(
+                Message::new("challenge-brief-need")
+                    .count("number", i + 1)
+                    .said(
+                        "label",
+                        figure_label(&c.figure).expect("checked when parsed"),
+                    )
+                    .text("figure", c.figure.as_str())
+                    .said("bound", bound)
+                    .text("settled", yes(c.figure.ends_with("_final")))
+                    .text("robust", yes(self.is_robust(&c.figure))),
             );
         }
+        out.push(needs);
         if let Some(v) = &self.vary {
-            let list = match v {
-                Variants::Seeds { first, last } => format!("noise seeds {first} to {last}"),
-                Variants::List { overrides } => overrides.join("; "),
-            };
-            let _ = writeln!(
-                out,
-                "\nVariants (applied on top of your settings; the worst run counts): {list}"
-            );
+            out.push(Paragraph::line(match v {
+                Variants::Seeds { first, last } => Message::new("challenge-brief-variants-seeds")
+                    .text("first", first.to_string())
+                    .text("last", last.to_string()),
+                Variants::List { overrides } => {
+                    Message::new("challenge-brief-variants").text("overrides", overrides.join("; "))
+                }
+            }));
         }
         if self.need.iter().any(|c| c.figure == LOAD_RECOVERY) {
-            let _ = writeln!(
-                out,
-                "\nLoad recovery time: the time from the load step (t = {} s) until |ω − ω_d| \
-                 stays within max(1 % of |ω_d| at the step, 0.5 rad/s) to the end of the run \
-                 (here {} rad/s at ω_d = {} rad/s); not recovered if it is still outside at the end.",
-                base.load_step.time,
-                recovery_band(base.reference.sample(base.load_step.time).value),
-                base.reference.sample(base.load_step.time).value
-            );
+            let at_step = base.reference.sample(base.load_step.time).value;
+            out.push(Paragraph::line(
+                Message::new("challenge-brief-load-recovery")
+                    .real("time", base.load_step.time)
+                    .real("band", recovery_band(at_step))
+                    .real("speed", at_step),
+            ));
         }
         if self.need.iter().any(|c| c.figure.ends_with("_final")) {
-            let _ = writeln!(
-                out,
-                "\nA final value counts only if it has settled: a value still changing over the \
-                 last tenth of the run fails."
-            );
+            out.push(Paragraph::line(Message::new("challenge-brief-settled")));
         }
-        out
+        Brief { paragraphs: out }
     }
 }

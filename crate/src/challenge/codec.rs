@@ -8,8 +8,8 @@ use super::{
 };
 use crate::record::LOAD_RECOVERY;
 use crate::scenario::{FieldInfo, Scenario, MAX_SEED};
-use crate::text::excerpt;
 use crate::text::percent::{self, Plus};
+use crate::text::{excerpt, Message};
 use std::collections::HashSet;
 
 /// The query of `text`: a bare query string, or the part of a URL after `?` without `#…`.
@@ -22,11 +22,11 @@ pub(super) fn query_of(text: &str) -> &str {
 /// Decodes `%XX` escapes and `+` (a space); `key` names the value in the error.
 pub(super) fn pct_decode(key: &str, value: &str) -> Result<String, ChallengeError> {
     percent::decode(value, Plus::Space).ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "field '{}' = '{}': not valid percent-encoded UTF-8",
-            excerpt(key),
-            excerpt(value)
-        ))
+        ChallengeError::malformed(
+            Message::new("challenge-not-percent-encoded")
+                .text("key", excerpt(key))
+                .text("value", excerpt(value)),
+        )
     })
 }
 
@@ -56,11 +56,12 @@ pub(super) fn field_order(base: &Scenario, key: &str) -> usize {
 /// Refuses a challenge or submission text longer than [`MAX_CHALLENGE_BYTES`].
 pub(super) fn check_length(text: &str) -> Result<(), ChallengeError> {
     if text.len() > MAX_CHALLENGE_BYTES {
-        return Err(ChallengeError::malformed(format!(
-            "the challenge is {} bytes long, more than the {MAX_CHALLENGE_BYTES} bytes ({} KiB) allowed",
-            text.len(),
-            MAX_CHALLENGE_BYTES / 1024
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-too-long")
+                .count("bytes", text.len())
+                .count("max", MAX_CHALLENGE_BYTES)
+                .count("kib", MAX_CHALLENGE_BYTES / 1024),
+        ));
     }
     Ok(())
 }
@@ -72,45 +73,49 @@ pub(super) fn pieces(text: &str) -> Result<Vec<(&str, &str)>, ChallengeError> {
     let mut seen = HashSet::new();
     let mut out = Vec::new();
     for piece in query_of(text).split('&').filter(|p| !p.is_empty()) {
-        let (k, v) = piece.split_once('=').ok_or_else(|| {
-            ChallengeError::malformed(format!("'{}' is not of the form key=value", excerpt(piece)))
-        })?;
+        let (k, v) = piece
+            .split_once('=')
+            .ok_or_else(|| ChallengeError::malformed(not_key_value(piece)))?;
         if !seen.insert(k) {
-            return Err(ChallengeError::malformed(format!(
-                "field '{}' is given more than once",
-                excerpt(k)
-            )));
+            return Err(ChallengeError::malformed(given_twice(k)));
         }
         out.push((k, v));
     }
     Ok(out)
 }
 
-/// The key and value of one `key=value` piece of an override string; `what` names the override
-/// in the error.
-pub(super) fn key_value<'a>(
-    piece: &'a str,
-    what: &str,
-) -> Result<(&'a str, &'a str), ChallengeError> {
-    piece.split_once('=').ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "{what}: '{}' is not of the form key=value",
-            excerpt(piece)
-        ))
-    })
+/// The refusal of a piece that is not `key=value`, as the scenario codec words it.
+fn not_key_value(piece: &str) -> Message {
+    Message::new("scenario-malformed").text("piece", excerpt(piece))
 }
 
-/// A scenario override string (`key=value&…`) applied to `s`, each field checked; `what`
-/// names the override in errors.
+/// The refusal of a key given twice, as the scenario codec words it.
+pub(super) fn given_twice(key: &str) -> Message {
+    Message::new("scenario-duplicate-key").text("key", excerpt(key))
+}
+
+/// The key and value of one `key=value` piece of an override string; `what` says an error of
+/// the override, naming it.
+pub(super) fn key_value<'a>(
+    piece: &'a str,
+    what: &dyn Fn(Message) -> Message,
+) -> Result<(&'a str, &'a str), ChallengeError> {
+    piece
+        .split_once('=')
+        .ok_or_else(|| ChallengeError::malformed(what(not_key_value(piece))))
+}
+
+/// A scenario override string (`key=value&…`) applied to `s`, each field checked; `what` says
+/// an error of the override, naming it.
 pub(super) fn apply_overrides(
     s: &mut Scenario,
     text: &str,
-    what: &str,
+    what: &dyn Fn(Message) -> Message,
 ) -> Result<(), ChallengeError> {
     for piece in text.split('&').filter(|p| !p.is_empty()) {
         let (k, v) = key_value(piece, what)?;
         s.set(k, v)
-            .map_err(|e| ChallengeError::malformed(format!("{what}: {e}")))?;
+            .map_err(|e| ChallengeError::malformed(what(e.message())))?;
     }
     Ok(())
 }
@@ -118,15 +123,18 @@ pub(super) fn apply_overrides(
 /// The built-in challenge named `name`, or the error naming the built-in ones.
 pub(super) fn builtin_named(name: &str) -> Result<Challenge, ChallengeError> {
     let b = builtin(name).ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "'{}' is neither a challenge link nor a built-in challenge ({})",
-            excerpt(name),
-            BUILTINS
-                .iter()
-                .map(|b| b.name)
-                .collect::<Vec<_>>()
-                .join(", ")
-        ))
+        ChallengeError::malformed(
+            Message::new("challenge-unknown")
+                .text("name", excerpt(name))
+                .text(
+                    "names",
+                    BUILTINS
+                        .iter()
+                        .map(|b| b.name)
+                        .collect::<Vec<_>>()
+                        .join(", "),
+                ),
+        )
     })?;
     Ok(b.challenge())
 }
@@ -147,10 +155,11 @@ pub(super) fn parse_parts(
     }
     let version = get("c").ok_or_else(|| missing_version(query_of(text)))?;
     if version != CHALLENGE_VERSION.to_string() {
-        return Err(ChallengeError::malformed(format!(
-            "field 'c' = '{}': unsupported challenge version, allowed: {CHALLENGE_VERSION}",
-            excerpt(version)
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-unsupported-version")
+                .text("value", excerpt(version))
+                .count("version", CHALLENGE_VERSION),
+        ));
     }
     // Unknown keys first, in the order written.
     for (k, _) in &pairs {
@@ -159,17 +168,23 @@ pub(super) fn parse_parts(
                 .iter()
                 .any(|p| k.strip_prefix(p).is_some_and(|rest| !rest.is_empty()));
         if !known {
-            return Err(ChallengeError::malformed(format!(
-                "field '{}' is not a challenge field (c, title, base, allow.FIELD, need.FIGURE, vary, robust, try.FIELD)",
-                excerpt(k)
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-unknown-key")
+                    .text("key", excerpt(k))
+                    .text(
+                        "fields",
+                        "c, title, base, allow.FIELD, need.FIGURE, vary, robust, try.FIELD",
+                    ),
+            ));
         }
     }
     let title = pct_decode("title", get("title").unwrap_or(""))?;
     check_title(&title)?;
     let base_text = pct_decode(
         "base",
-        get("base").ok_or_else(|| ChallengeError::malformed("field 'base' is missing"))?,
+        get("base").ok_or_else(|| {
+            ChallengeError::malformed(Message::new("challenge-missing").text("key", "base"))
+        })?,
     )?;
     let mut draft = Draft::new(title, &base_text)?;
     let mut tries = Vec::new();
@@ -200,12 +215,11 @@ fn builtin_with_tries(
         if let Some(field) = k.strip_prefix("try.").filter(|f| !f.is_empty()) {
             tries.push((field.to_string(), pct_decode(k, v)?));
         } else if *k != "challenge" {
-            return Err(ChallengeError::malformed(format!(
-                "field '{}' cannot follow challenge={}: a built-in challenge's link holds only \
-                 challenge=NAME and the student's try.FIELD parts",
-                excerpt(k),
-                excerpt(name)
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-builtin-extra")
+                    .text("key", excerpt(k))
+                    .text("name", excerpt(name)),
+            ));
         }
     }
     Ok((challenge, tries))
@@ -221,19 +235,11 @@ fn missing_version(query: &str) -> ChallengeError {
         .map(|at| &first[..at])
         .filter(|s| !s.chars().any(char::is_alphanumeric));
     ChallengeError::malformed(match stray {
-        Some(stray) => {
-            let (s, them) = if stray.chars().count() > 1 {
-                ("s", "them")
-            } else {
-                ("", "it")
-            };
-            format!(
-                "the link starts with the stray character{s} '{}' before its \
-                 c={CHALLENGE_VERSION}: remove {them}",
-                excerpt(stray)
-            )
-        }
-        None => format!("field 'c' is missing (a challenge starts with c={CHALLENGE_VERSION})"),
+        Some(stray) => Message::new("challenge-stray")
+            .text("stray", excerpt(stray))
+            .count("count", stray.chars().count())
+            .count("version", CHALLENGE_VERSION),
+        None => Message::new("challenge-version-missing").count("version", CHALLENGE_VERSION),
     })
 }
 
@@ -241,9 +247,11 @@ fn missing_version(query: &str) -> ChallengeError {
 pub(super) fn check_title(title: &str) -> Result<(), ChallengeError> {
     let chars = title.chars().count();
     if chars > MAX_TITLE_CHARS {
-        return Err(ChallengeError::malformed(format!(
-            "field 'title' is {chars} characters long, more than the {MAX_TITLE_CHARS} allowed"
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-title-too-long")
+                .count("chars", chars)
+                .count("max", MAX_TITLE_CHARS),
+        ));
     }
     Ok(())
 }
@@ -299,8 +307,9 @@ pub(super) struct Draft {
 impl Draft {
     /// A draft on the base scenario `base` (its text, decoded); `title` already checked.
     pub(super) fn new(title: String, base: &str) -> Result<Draft, ChallengeError> {
-        let base = Scenario::parse(base)
-            .map_err(|e| ChallengeError::malformed(format!("field 'base': {e}")))?;
+        let base = Scenario::parse(base).map_err(|e| {
+            ChallengeError::malformed(Message::new("challenge-bad-base").said("error", e.message()))
+        })?;
         Ok(Draft {
             title,
             base,
@@ -338,16 +347,17 @@ impl Draft {
         if need.is_empty() {
             return Err((
                 Part::Criteria,
-                ChallengeError::malformed("no criteria: add at least one need.FIGURE=OP"),
+                ChallengeError::malformed(Message::new("challenge-no-criteria")),
             ));
         }
         if need.len() > MAX_CRITERIA {
             return Err((
                 Part::Criteria,
-                ChallengeError::malformed(format!(
-                    "{} criteria, more than the {MAX_CRITERIA} allowed",
-                    need.len()
-                )),
+                ChallengeError::malformed(
+                    Message::new("challenge-too-many-criteria")
+                        .count("count", need.len())
+                        .count("max", MAX_CRITERIA),
+                ),
             ));
         }
         let vary = vary
@@ -362,15 +372,13 @@ impl Draft {
             (Some(_), true) => {
                 return Err((
                     Part::Vary,
-                    ChallengeError::malformed(
-                        "field 'vary': no criterion uses the variants (name them in robust=)",
-                    ),
+                    ChallengeError::malformed(Message::new("challenge-vary-unused")),
                 ))
             }
             (None, false) => {
                 return Err((
                     Part::Robust,
-                    ChallengeError::malformed("field 'robust': there are no variants (add vary=)"),
+                    ChallengeError::malformed(Message::new("challenge-robust-without-vary")),
                 ))
             }
             _ => {}
@@ -390,26 +398,29 @@ impl Draft {
 fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, ChallengeError> {
     let key = format!("allow.{field}");
     let info = field_info(base, field).ok_or_else(|| {
-        ChallengeError::malformed(format!(
-            "field '{}': '{}' is not a scenario field",
-            excerpt(&key),
-            excerpt(field)
-        ))
+        ChallengeError::malformed(
+            Message::new("challenge-allow-unknown-field")
+                .text("key", excerpt(&key))
+                .text("field", excerpt(field)),
+        )
     })?;
     let allowed = if info.formula.is_some() {
         if value != "formula" {
-            return Err(ChallengeError::malformed(format!(
-                "field '{key}' = '{}': a step's law is allowed as allow.{field}=formula",
-                excerpt(value)
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-allow-formula")
+                    .text("key", key.as_str())
+                    .text("value", excerpt(value))
+                    .text("field", field),
+            ));
         }
         Allowed::Formula
     } else if info.options.is_empty() {
         let bad = || {
-            ChallengeError::malformed(format!(
-                "field '{key}' = '{}': expected LO..HI, two numbers with LO ≤ HI",
-                excerpt(value)
-            ))
+            ChallengeError::malformed(
+                Message::new("challenge-allow-range")
+                    .text("key", key.as_str())
+                    .text("value", excerpt(value)),
+            )
         };
         let (lo, hi) = value.split_once("..").ok_or_else(bad)?;
         let (lo, hi) = (number(lo).ok_or_else(bad)?, number(hi).ok_or_else(bad)?);
@@ -419,7 +430,12 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
         // Both ends must be values of the field.
         for end in [lo, hi] {
             base.clone().set(field, &format!("{end}")).map_err(|e| {
-                ChallengeError::malformed(format!("field '{key}' = '{}': {e}", excerpt(value)))
+                ChallengeError::malformed(
+                    Message::new("challenge-allow-refused")
+                        .text("key", key.as_str())
+                        .text("value", excerpt(value))
+                        .said("error", e.message()),
+                )
             })?;
         }
         Allowed::Range { lo, hi }
@@ -427,11 +443,12 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
         let mut options: Vec<String> = Vec::new();
         for o in value.split('|') {
             if !info.options.contains(&o) || options.iter().any(|x| x == o) {
-                return Err(ChallengeError::malformed(format!(
-                    "field '{key}' = '{}': expected distinct names from {}, separated by |",
-                    excerpt(value),
-                    info.options.join("|")
-                )));
+                return Err(ChallengeError::malformed(
+                    Message::new("challenge-allow-choice")
+                        .text("key", key.as_str())
+                        .text("value", excerpt(value))
+                        .text("options", info.options.join("|")),
+                ));
             }
             options.push(o.to_string());
         }
@@ -449,26 +466,30 @@ fn parse_allow(base: &Scenario, field: &str, value: &str) -> Result<Allow, Chall
 fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, ChallengeError> {
     let key = format!("need.{figure}");
     if figure_info(figure).is_none() {
-        return Err(ChallengeError::malformed(format!(
-            "field '{}': '{}' is not a figure ({})",
-            excerpt(&key),
-            excerpt(figure),
-            figures().map(|f| f.name).collect::<Vec<_>>().join(", ")
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-need-unknown-figure")
+                .text("key", excerpt(&key))
+                .text("figure", excerpt(figure))
+                .text(
+                    "figures",
+                    figures().map(|f| f.name).collect::<Vec<_>>().join(", "),
+                ),
+        ));
     }
     let op = if value == "band" {
         if !criterion_ops(figure).0.contains(&"band") {
-            return Err(ChallengeError::malformed(format!(
-                "field '{key}' = 'band': only mean_nis has a band"
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-need-band").text("key", key.as_str()),
+            ));
         }
         Op::Band
     } else {
         let bad = || {
-            ChallengeError::malformed(format!(
-                "field '{key}' = '{}': expected max:B, min:B, abs:B or band",
-                excerpt(value)
-            ))
+            ChallengeError::malformed(
+                Message::new("challenge-need-op")
+                    .text("key", key.as_str())
+                    .text("value", excerpt(value)),
+            )
         };
         let (op, bound) = value.split_once(':').ok_or_else(bad)?;
         let b = number(bound).ok_or_else(bad)?;
@@ -480,9 +501,9 @@ fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, C
         }
     };
     if figure == LOAD_RECOVERY && base.load_step.torque == 0.0 {
-        return Err(ChallengeError::malformed(format!(
-            "field '{key}': the base has no load step (load.torque = 0)"
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-need-no-load-step").text("key", key.as_str()),
+        ));
     }
     Ok(Criterion {
         figure: figure.to_string(),
@@ -494,10 +515,12 @@ fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, C
 fn parse_vary(base: &Scenario, value: &str) -> Result<Variants, ChallengeError> {
     if let Some(range) = value.strip_prefix("seeds:") {
         let bad = || {
-            ChallengeError::malformed(format!(
-                "field 'vary' = '{}': expected seeds:A..B, whole numbers with A ≤ B ≤ {MAX_SEED} and at most {MAX_VARIANTS} seeds",
-                excerpt(value)
-            ))
+            ChallengeError::malformed(
+                Message::new("challenge-vary-seeds")
+                    .text("value", excerpt(value))
+                    .count("max_seed", MAX_SEED)
+                    .count("max", MAX_VARIANTS),
+            )
         };
         let (a, b) = range.split_once("..").ok_or_else(bad)?;
         let (first, last) = (
@@ -511,28 +534,32 @@ fn parse_vary(base: &Scenario, value: &str) -> Result<Variants, ChallengeError> 
     }
     let raw: Vec<&str> = value.split('|').collect();
     if raw.len() > MAX_VARIANTS {
-        return Err(ChallengeError::malformed(format!(
-            "field 'vary': {} variants, more than the {MAX_VARIANTS} allowed",
-            raw.len()
-        )));
+        return Err(ChallengeError::malformed(
+            Message::new("challenge-vary-too-many")
+                .count("count", raw.len())
+                .count("max", MAX_VARIANTS),
+        ));
     }
     let mut overrides = Vec::new();
     for (i, r) in raw.iter().enumerate() {
         let text = pct_decode("vary", r)?;
-        let what = format!("field 'vary', variant {}", i + 1);
+        let what = |error: Message| {
+            Message::new("challenge-vary-variant-refused")
+                .count("number", i + 1)
+                .said("error", error)
+        };
         let mut pairs: Vec<(String, String)> = Vec::new();
         for piece in text.split('&').filter(|p| !p.is_empty()) {
             let (k, v) = key_value(piece, &what)?;
             if pairs.iter().any(|(x, _)| x == k) {
-                return Err(ChallengeError::malformed(format!(
-                    "{what}: field '{}' is given more than once",
-                    excerpt(k)
-                )));
+                return Err(ChallengeError::malformed(what(given_twice(k))));
             }
             pairs.push((k.to_string(), v.to_string()));
         }
         if pairs.is_empty() {
-            return Err(ChallengeError::malformed(format!("{what} is empty")));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-vary-variant-empty").count("number", i + 1),
+            ));
         }
         sort_small(&mut pairs, |(k, _)| field_order(base, k));
         let canonical = pairs
@@ -551,11 +578,11 @@ fn parse_robust(need: &[Criterion], value: &str) -> Result<Vec<String>, Challeng
     let mut out: Vec<String> = Vec::new();
     for f in value.split(',') {
         if !need.iter().any(|c| c.figure == f) || out.iter().any(|x| x == f) {
-            return Err(ChallengeError::malformed(format!(
-                "field 'robust' = '{}': '{}' is not the figure of a criterion (or is named twice)",
-                excerpt(value),
-                excerpt(f)
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-robust-unknown")
+                    .text("value", excerpt(value))
+                    .text("figure", excerpt(f)),
+            ));
         }
         out.push(f.to_string());
     }
@@ -586,7 +613,7 @@ mod tests {
         assert_eq!(pct_decode("x", &pct_encode(text)).unwrap(), text);
         assert!(pct_decode("title", "%ZZ")
             .unwrap_err()
-            .message
+            .to_string()
             .contains("'title'"));
         assert!(pct_decode("title", "%FF").is_err());
         assert_eq!(pct_decode("t", "a+b").unwrap(), "a b");

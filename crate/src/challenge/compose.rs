@@ -2,9 +2,9 @@
 //! variants), checked part by part by the codec's own rules, and a challenge taken apart into
 //! those parts again. An error names the part it is about by its key, so that a form can mark it.
 
-use super::codec::{check_length, check_title, pct_encode, Draft, Part};
+use super::codec::{check_length, check_title, given_twice, pct_encode, Draft, Part};
 use super::{Allowed, Challenge, ChallengeError, Op, Variants};
-use crate::text::excerpt;
+use crate::text::{excerpt, Message};
 use serde::{Deserialize, Serialize};
 use std::collections::HashSet;
 use std::fmt;
@@ -137,12 +137,12 @@ pub struct ComposeError {
     /// The part's key.
     pub key: String,
     /// The message, naming the key or field as the codec does.
-    pub message: String,
+    pub message: Message,
 }
 
 impl fmt::Display for ComposeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
+        self.message.fmt(f)
     }
 }
 
@@ -160,7 +160,7 @@ fn at(part: &Part, error: ChallengeError) -> ComposeError {
 fn twice(part: &Part) -> ComposeError {
     let key = part.key();
     ComposeError {
-        message: format!("field '{}' is given more than once", excerpt(&key)),
+        message: given_twice(&key),
         key,
     }
 }
@@ -172,10 +172,8 @@ impl AllowPart {
         match &self.options {
             Some(_) if self.lo.is_some() || self.hi.is_some() => Err(ComposeError {
                 key: part.key(),
-                message: format!(
-                    "field '{}': give LO and HI (a range) or options (choices), not both",
-                    excerpt(&part.key())
-                ),
+                message: Message::new("challenge-compose-range-and-options")
+                    .text("key", excerpt(&part.key())),
             }),
             Some(options) => Ok(options.items().join("|")),
             None => Ok(format!("{}..{}", show(&self.lo), show(&self.hi))),

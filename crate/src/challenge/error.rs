@@ -1,5 +1,6 @@
 //! Why a challenge or submission was refused.
 
+use crate::text::Message;
 use serde::Serialize;
 use std::fmt;
 
@@ -15,43 +16,47 @@ pub enum ErrorKind {
     Another,
 }
 
-/// Why a challenge or submission was refused: a message naming the key or field, with user
-/// text quoted through [`excerpt`](crate::text::excerpt).
+/// Why a challenge or submission was refused: a message of `core-challenge.ftl` naming the key
+/// or field, with user text quoted through [`excerpt`](crate::text::excerpt).
 #[derive(Clone, Debug, PartialEq)]
 pub struct ChallengeError {
     /// The kind of refusal.
     pub kind: ErrorKind,
     /// The message.
-    pub message: String,
+    pub message: Message,
 }
 
 impl ChallengeError {
-    pub(super) fn malformed(message: impl Into<String>) -> Self {
+    pub(super) fn malformed(message: Message) -> Self {
         ChallengeError {
             kind: ErrorKind::Malformed,
-            message: message.into(),
+            message,
         }
     }
-    pub(super) fn refused(message: impl Into<String>) -> Self {
+    pub(super) fn refused(message: Message) -> Self {
         ChallengeError {
             kind: ErrorKind::Refused,
-            message: message.into(),
+            message,
         }
     }
 
     /// The status of a grading row: `malformed: …`, `refused: …` or `another challenge`.
-    pub fn status(&self) -> String {
+    pub fn status(&self) -> Message {
         match self.kind {
-            ErrorKind::Malformed => format!("malformed: {}", self.message),
-            ErrorKind::Refused => format!("refused: {}", self.message),
-            ErrorKind::Another => "another challenge".to_string(),
+            ErrorKind::Malformed => {
+                Message::new("grade-row-malformed").said("reason", self.message.clone())
+            }
+            ErrorKind::Refused => {
+                Message::new("grade-row-refused").said("reason", self.message.clone())
+            }
+            ErrorKind::Another => Message::new("grade-row-another"),
         }
     }
 }
 
 impl fmt::Display for ChallengeError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
+        self.message.fmt(f)
     }
 }
 

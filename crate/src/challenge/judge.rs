@@ -10,6 +10,7 @@ use crate::record::{
     load_recovery, FigureInfo, WarningKind, FIGURE_INFO, LOAD_RECOVERY, LOAD_RECOVERY_INFO,
 };
 use crate::sim::Simulation;
+use crate::text::Message;
 use serde::{Deserialize, Serialize};
 
 /// The report's figures a criterion may not name: the ends of the NIS band (a criterion asks
@@ -46,6 +47,43 @@ pub fn criterion_ops(name: &str) -> (&'static [&'static str], &'static str) {
 /// The figure named `name`, if criteria may name it.
 pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
     figures().find(|f| f.name == name)
+}
+
+/// The label of figure `name` (one of [`figures`]) as a message: its [`FigureInfo::label`], in
+/// the reader's language. None for a name criteria may not name.
+pub fn figure_label(name: &str) -> Option<Message> {
+    let id = match name {
+        "transient_end" => "challenge-figure-transient-end",
+        "tracking_rms" => "challenge-figure-tracking-rms",
+        "tracking_peak" => "challenge-figure-tracking-peak",
+        "settling_time" => "challenge-figure-settling-time",
+        "saturated_share" => "challenge-figure-saturated-share",
+        "mean_nis" => "challenge-figure-mean-nis",
+        "current_peak" => "challenge-figure-current-peak",
+        "current_rms" => "challenge-figure-current-rms",
+        "ripple_peak" => "challenge-figure-ripple-peak",
+        "ripple_rms" => "challenge-figure-ripple-rms",
+        "flux_error_final" => "challenge-figure-flux-error-final",
+        "speed_error_final" => "challenge-figure-speed-error-final",
+        "speed_estimate_error_final" => "challenge-figure-speed-estimate-error-final",
+        "law_residual" => "challenge-figure-law-residual",
+        LOAD_RECOVERY => "challenge-figure-load-recovery-time",
+        _ => return None,
+    };
+    Some(Message::new(id))
+}
+
+/// `message` with the number `value` in `unit` as its argument `name`: the number alone when
+/// the unit is empty (a ratio), else the number and its unit (`0.004 s`).
+pub(crate) fn quantity(message: Message, name: &'static str, value: f64, unit: &str) -> Message {
+    if unit.is_empty() {
+        message.real(name, value)
+    } else {
+        let q = Message::new("challenge-quantity")
+            .real("value", value)
+            .text("unit", unit);
+        message.said(name, q)
+    }
 }
 
 /// One measured value of a run.
@@ -169,9 +207,9 @@ pub struct CriterionVerdict {
     /// Figure name.
     pub figure: String,
     /// The figure in words.
-    pub label: String,
+    pub label: Message,
     /// The bound in words, e.g. "≤ 0.004 s" or "inside its 95 % band".
-    pub bound: String,
+    pub bound: Message,
     /// The value judged (the worst over the runs of a robust criterion); None when a run did
     /// not measure it.
     pub value: Option<f64>,
@@ -181,8 +219,8 @@ pub struct CriterionVerdict {
     pub run: String,
     /// Whether the criterion holds.
     pub pass: bool,
-    /// Why it fails ("" when it holds): "above the bound", "still changing", …
-    pub reason: String,
+    /// Why it fails (None when it holds): "above the bound", "still changing", …
+    pub reason: Option<Message>,
 }
 
 /// The verdict on a submission.
@@ -204,44 +242,44 @@ pub struct Verdict {
 struct Check {
     value: Option<f64>,
     pass: bool,
-    reason: String,
+    reason: Option<Message>,
     badness: f64,
 }
 
 fn check(op: &Op, figure: &str, m: &Measures) -> Check {
-    let fail = |reason: String| Check {
+    let fail = |reason: Message| Check {
         value: None,
         pass: false,
-        reason,
+        reason: Some(reason),
         badness: f64::INFINITY,
     };
     if let Some(f) = &m.failure {
-        return fail(format!("run failed: {f}"));
+        return fail(Message::new("challenge-reason-run-failed").text("failure", f.as_str()));
     }
     if let Some(n) = m.not_finite.iter().find(|n| n.name == figure) {
-        return fail(n.cause.clone());
+        return fail(Message::new("challenge-reason-not-finite").text("cause", n.cause.as_str()));
     }
     let Some(x) = m.get(figure) else {
-        return fail(if figure == LOAD_RECOVERY {
-            "not measured: the run ends before the load step".to_string()
+        return fail(Message::new(if figure == LOAD_RECOVERY {
+            "challenge-reason-before-load-step"
         } else {
-            "not measured on this run (e.g. a step that never settles within 2 %)".to_string()
-        });
+            "challenge-reason-not-measured"
+        }));
     };
     let v = x.value;
     let (pass, badness, side) = match *op {
-        Op::Max(b) => (v <= b, v - b, "above the bound"),
-        Op::Min(b) => (v >= b, b - v, "below the bound"),
-        Op::Abs(b) => (v.abs() <= b, v.abs() - b, "beyond the bound"),
+        Op::Max(b) => (v <= b, v - b, "challenge-reason-above-bound"),
+        Op::Min(b) => (v >= b, b - v, "challenge-reason-below-bound"),
+        Op::Abs(b) => (v.abs() <= b, v.abs() - b, "challenge-reason-beyond-bound"),
         Op::Band => {
             let (Some(lo), Some(hi)) = (m.get("mean_nis_low"), m.get("mean_nis_high")) else {
-                return fail("not measured: no NIS band on this run".to_string());
+                return fail(Message::new("challenge-reason-no-band"));
             };
             let (lo, hi) = (lo.value, hi.value);
             let side = if v < lo {
-                "below the band"
+                "challenge-reason-below-band"
             } else {
-                "above the band"
+                "challenge-reason-above-band"
             };
             ((lo..=hi).contains(&v), (lo - v).max(v - hi), side)
         }
@@ -249,51 +287,40 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
     let mut out = Check {
         value: Some(v),
         pass,
-        reason: if pass {
-            String::new()
-        } else {
-            side.to_string()
-        },
+        reason: (!pass).then(|| Message::new(side)),
         badness,
     };
     if v.is_infinite() && figure == LOAD_RECOVERY {
-        out.reason = "not recovered by the end of the run".to_string();
+        out.reason = Some(Message::new("challenge-reason-not-recovered"));
     }
     // A final value that is still moving is not a final value.
     if x.settled == Some(false) {
         out.pass = false;
-        out.reason = "still changing".to_string();
+        out.reason = Some(Message::new("challenge-reason-still-changing"));
         out.badness = f64::INFINITY;
     }
     out
 }
 
-/// The bound of `op` in words, with `unit`.
-pub(crate) fn bound_text(op: &Op, unit: &str) -> String {
-    let u = if unit.is_empty() {
-        String::new()
-    } else {
-        format!(" {unit}")
-    };
-    match op {
-        Op::Max(b) => format!("≤ {b}{u}"),
-        Op::Min(b) => format!("≥ {b}{u}"),
-        Op::Abs(b) => format!("|·| ≤ {b}{u}"),
-        Op::Band => "inside its 95 % band".to_string(),
+/// The bound of `op` in words, with `unit`: "≤ 0.004 s".
+pub(crate) fn bound_text(op: &Op, unit: &str) -> Message {
+    match *op {
+        Op::Max(b) => quantity(Message::new("challenge-bound-max"), "bound", b, unit),
+        Op::Min(b) => quantity(Message::new("challenge-bound-min"), "bound", b, unit),
+        Op::Abs(b) => quantity(Message::new("challenge-bound-abs"), "bound", b, unit),
+        Op::Band => Message::new("challenge-bound-band"),
     }
 }
 
 /// Judges `challenge` on the measures of its runs: `runs[0]` the nominal run, then one per
 /// variant in order. A robust criterion reports its worst run; the others the nominal run.
-pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, String> {
+pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, Message> {
     let labels = challenge.run_labels();
     if runs.len() != labels.len() {
-        return Err(format!(
-            "the challenge has {} runs (nominal and {} variants), {} measured",
-            labels.len(),
-            labels.len() - 1,
-            runs.len()
-        ));
+        return Err(Message::new("challenge-judge-runs")
+            .count("runs", labels.len())
+            .count("variants", labels.len() - 1)
+            .count("measured", runs.len()));
     }
     let mut criteria = Vec::new();
     for c in &challenge.need {
@@ -320,7 +347,7 @@ pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, String
             .map_or(info.unit.to_string(), |m| m.unit.clone());
         criteria.push(CriterionVerdict {
             figure: c.figure.clone(),
-            label: info.label.to_string(),
+            label: figure_label(&c.figure).expect("checked when parsed"),
             bound: bound_text(&c.op, info.unit),
             value: k.value,
             unit,

@@ -36,20 +36,21 @@ mod search;
 mod submission;
 
 pub use crate::record::LOAD_RECOVERY;
+pub use brief::{Brief, Paragraph};
 pub use builtin::{builtin, Builtin, BUILTINS};
 pub use compose::{AllowPart, ChallengeParts, ComposeError, FormList, FormNumber, NeedPart};
 pub use error::{ChallengeError, ErrorKind};
 #[cfg(all(target_arch = "wasm32", feature = "tools"))]
 pub(crate) use judge::bound_text;
 pub use judge::{
-    criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
-    NotFinite, Verdict,
+    criterion_ops, figure_info, figure_label, figures, judge, measure, CriterionVerdict, Measure,
+    Measures, NotFinite, Verdict,
 };
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;
 
 use crate::scenario::Scenario;
-use crate::text::excerpt;
+use crate::text::{excerpt, Message};
 use codec::{check_length, parse_parts, pct_encode, query_of};
 use serde::Serialize;
 
@@ -191,10 +192,9 @@ impl Challenge {
     pub fn parse(text: &str) -> Result<Challenge, ChallengeError> {
         let (challenge, tries) = parse_parts(text)?;
         if let Some((k, _)) = tries.first() {
-            return Err(ChallengeError::malformed(format!(
-                "field 'try.{}': this is a submission, not a challenge (grade it against its challenge)",
-                excerpt(k)
-            )));
+            return Err(ChallengeError::malformed(
+                Message::new("challenge-is-submission").text("key", excerpt(k)),
+            ));
         }
         Ok(challenge)
     }
@@ -253,8 +253,7 @@ impl Challenge {
         if challenge != *self {
             return Err(ChallengeError {
                 kind: ErrorKind::Another,
-                message: "the submission belongs to another challenge (its challenge text differs)"
-                    .to_string(),
+                message: Message::new("challenge-another"),
             });
         }
         Submission::check(challenge, &tries)

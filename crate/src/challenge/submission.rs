@@ -4,7 +4,7 @@
 use super::codec::{apply_overrides, number, parse_parts, pct_encode, sort_small};
 use super::{Allowed, Challenge, ChallengeError};
 use crate::scenario::Scenario;
-use crate::text::{excerpt, short};
+use crate::text::{excerpt, short, Message};
 use serde::Serialize;
 
 /// A challenge with the values a student set.
@@ -35,32 +35,32 @@ impl Submission {
                 .allow
                 .iter()
                 .find(|a| &a.field == field)
-                .ok_or_else(|| {
-                    ChallengeError::refused(format!("field '{}' is not allowed", excerpt(field)))
-                })?;
+                .ok_or_else(|| ChallengeError::refused(not_allowed(field)))?;
             let text = match &allow.allowed {
                 Allowed::Range { lo, hi } => {
                     let v = number(value).ok_or_else(|| {
-                        ChallengeError::malformed(format!(
-                            "field 'try.{field}' = '{}': not a number",
-                            excerpt(value)
-                        ))
+                        ChallengeError::malformed(
+                            Message::new("challenge-try-not-number")
+                                .text("field", field.as_str())
+                                .text("value", excerpt(value)),
+                        )
                     })?;
                     if v < *lo || v > *hi {
-                        return Err(ChallengeError::refused(format!(
-                            "{field}={} is outside {lo}..{hi}",
-                            short(v)
-                        )));
+                        return Err(ChallengeError::refused(
+                            Message::new("challenge-try-outside")
+                                .text("setting", format!("{field}={}", short(v)))
+                                .text("range", format!("{lo}..{hi}")),
+                        ));
                     }
                     format!("{v}")
                 }
                 Allowed::Choice { options } => {
                     if !options.iter().any(|o| o == value) {
-                        return Err(ChallengeError::refused(format!(
-                            "{field}={} is not one of {}",
-                            excerpt(value),
-                            options.join("|")
-                        )));
+                        return Err(ChallengeError::refused(
+                            Message::new("challenge-try-not-option")
+                                .text("setting", format!("{field}={}", excerpt(value)))
+                                .text("options", options.join("|")),
+                        ));
                     }
                     value.clone()
                 }
@@ -70,7 +70,7 @@ impl Submission {
             // The field's own rules (whole numbers, say) on the base.
             base.clone()
                 .set(field, &text)
-                .map_err(|e| ChallengeError::refused(e.to_string()))?;
+                .map_err(|e| ChallengeError::refused(e.message()))?;
             out.push((field.clone(), text));
         }
         let order = |f: &str| challenge.allow.iter().position(|a| a.field == f);
@@ -98,13 +98,18 @@ impl Submission {
         for (f, v) in &self.tries {
             nominal
                 .set(f, v)
-                .map_err(|e| ChallengeError::refused(e.to_string()))?;
+                .map_err(|e| ChallengeError::refused(e.message()))?;
         }
         let mut out = vec![nominal.clone()];
         if let Some(vary) = &self.challenge.vary {
             for o in vary.overrides() {
                 let mut s = nominal.clone();
-                apply_overrides(&mut s, &o, &format!("variant '{}'", excerpt(&o)))
+                let what = |error: Message| {
+                    Message::new("challenge-variant-refused")
+                        .text("overrides", excerpt(&o))
+                        .said("error", error)
+                };
+                apply_overrides(&mut s, &o, &what)
                     .map_err(|e| ChallengeError::refused(e.message))?;
                 out.push(s);
             }
@@ -124,13 +129,15 @@ impl Challenge {
             // Only an allowed field's name goes into the text as it is: the allowed fields are
             // scenario keys, which need no encoding.
             if !self.allow.iter().any(|a| &a.field == field) {
-                return Err(ChallengeError::refused(format!(
-                    "field '{}' is not allowed",
-                    excerpt(field)
-                )));
+                return Err(ChallengeError::refused(not_allowed(field)));
             }
             text.push_str(&format!("&try.{field}={}", pct_encode(value)));
         }
         self.submission(&text)
     }
+}
+
+/// The refusal of a field the challenge does not allow.
+fn not_allowed(field: &str) -> Message {
+    Message::new("challenge-try-not-allowed").text("field", excerpt(field))
 }

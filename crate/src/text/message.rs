@@ -166,6 +166,10 @@ mod english {
             "core-run.ftl",
             include_str!("../../../web/locales/en/core-run.ftl"),
         ),
+        (
+            "core-challenge.ftl",
+            include_str!("../../../web/locales/en/core-challenge.ftl"),
+        ),
     ];
 
     fn bundle() -> &'static FluentBundle<FluentResource> {

@@ -2,8 +2,9 @@
 //! a run and the verdict on them.
 
 use super::{from_js, js_error, read_js, to_js, to_js_list};
-use crate::challenge::ErrorKind;
+use crate::challenge::{Brief, ErrorKind};
 use crate::scenario::Scenario;
+use crate::text::Message;
 use serde::Serialize;
 use tsify::Ts;
 use wasm_bindgen::prelude::*;
@@ -86,7 +87,7 @@ pub struct NeedView {
     op: OpKind,
     bound: Option<f64>,
     /// The bound in words, as a verdict gives it ("≤ 0.004 s").
-    bound_text: String,
+    bound_text: Message,
     /// Whether it must hold on every variant too.
     robust: bool,
 }
@@ -106,9 +107,10 @@ pub struct ChallengeView {
     need: Vec<NeedView>,
     /// Each variant's override string (`seed=2`, `model.j=0.016`).
     variants: Vec<String>,
-    brief: String,
+    /// The task in words, with the title (see [`crate::challenge::Challenge::brief`]).
+    brief: Brief,
     /// The brief without its title (see [`crate::challenge::Challenge::task`]).
-    task: String,
+    task: Brief,
     /// [`crate::challenge::Challenge::fingerprint`]: `7KQ2-M9XD`.
     fingerprint: String,
     /// The built-in this challenge passes for while it differs from it
@@ -156,9 +158,9 @@ impl From<ErrorKind> for SubmissionKind {
 pub struct SubmissionView {
     kind: SubmissionKind,
     /// "ok", or the grading status: "malformed: …", "refused: …", "another challenge".
-    status: String,
-    /// The error's message ("" when ok).
-    message: String,
+    status: Message,
+    /// The error's message (null when ok).
+    message: Option<Message>,
     /// The canonical submission link ("" unless ok).
     encoded: String,
     /// The fields set, [field, value] in allow order.
@@ -199,18 +201,20 @@ impl Challenge {
         self.inner.encode()
     }
 
-    /// The task as plain text.
+    /// The task as plain text, in English.
     pub fn brief(&self) -> String {
-        self.inner.brief()
+        self.inner.brief().to_string()
     }
 
     /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
-    /// need: [{figure, label, unit, op, bound, robust}], variants: [string], brief, fingerprint,
-    /// edited_from}`: `fingerprint` a short code of the canonical link to compare at a glance
-    /// (`7KQ2-M9XD`), `edited_from` the name of the built-in whose title (or name) the challenge
-    /// carries while its link differs from the built-in's, else null.
+    /// need: [{figure, label, unit, op, bound, bound_text, robust}], variants: [string], brief,
+    /// task, fingerprint, edited_from}`: `label` and `bound_text` messages, `brief` and `task`
+    /// the task in words (paragraphs of messages), `fingerprint` a short code of the canonical
+    /// link to compare at a glance (`7KQ2-M9XD`), `edited_from` the name of the built-in whose
+    /// title (or name) the challenge carries while its link differs from the built-in's, else
+    /// null.
     pub fn describe(&self) -> Result<Ts<ChallengeView>, JsValue> {
-        use crate::challenge::{figure_info, Allowed, Op};
+        use crate::challenge::{figure_info, figure_label, Allowed, Op};
         let c = &self.inner;
         let fields = c.base_scenario().describe();
         let allow = c
@@ -267,7 +271,7 @@ impl Challenge {
             need,
             variants: c.run_labels().into_iter().skip(1).collect(),
             brief: c.brief(),
-            task: c.task().trim_end().to_string(),
+            task: c.task(),
             fingerprint: c.fingerprint(),
             edited_from: c.edited_builtin(),
         })
@@ -303,7 +307,8 @@ impl Challenge {
 
     /// Judges the measures of the runs (`runs[0]` the nominal run, then one per variant, each
     /// what [`challenge_measure`] returned): `{criteria: [{figure, label, bound, value, unit, run,
-    /// pass, reason}], pass}`; throws when the count of runs is wrong.
+    /// pass, reason}], pass}` (`label`, `bound` and `reason` messages, `reason` null when the
+    /// criterion holds); throws the message when the count of runs is wrong.
     pub fn judge(
         &self,
         #[wasm_bindgen(unchecked_param_type = "Measures[]")] runs: JsValue,
@@ -321,8 +326,8 @@ fn submission_view(
     match read.and_then(|s| s.scenarios().map(|runs| (s, runs))) {
         Ok((s, runs)) => SubmissionView {
             kind: SubmissionKind::Ok,
-            status: "ok".to_string(),
-            message: String::new(),
+            status: Message::new("grade-row-ok"),
+            message: None,
             encoded: s.encode(),
             tries: s.tries.clone(),
             scenarios: runs.iter().map(Scenario::encode).collect(),
@@ -330,7 +335,7 @@ fn submission_view(
         Err(e) => SubmissionView {
             kind: e.kind.into(),
             status: e.status(),
-            message: e.message.clone(),
+            message: Some(e.message.clone()),
             encoded: String::new(),
             tries: Vec::new(),
             scenarios: Vec::new(),
@@ -412,8 +417,8 @@ pub fn challenge_figures() -> Result<Vec<Ts<CriterionFigure>>, JsValue> {
 pub struct Composed {
     /// The canonical challenge link (query string), or null.
     encoded: Option<String>,
-    /// The task in words, or null.
-    brief: Option<String>,
+    /// The task in words (paragraphs of messages), or null.
+    brief: Option<Brief>,
     /// `{key, message}` when the parts make no challenge, else null.
     error: Option<crate::challenge::ComposeError>,
 }
@@ -433,7 +438,8 @@ pub struct Composed {
 /// (missing members are empty; text is trimmed). Never throws for parts of that shape: returns
 /// `{encoded, brief, error: null}`, or `{encoded: null, brief: null, error: {key, message}}`
 /// where `key` names the part at fault: `title`, `base`, `allow.FIELD`, `need.FIGURE`, `need`
-/// (no criterion, or too many), `vary`, `robust`, or `challenge` (the whole link too long).
+/// (no criterion, or too many), `vary`, `robust`, or `challenge` (the whole link too long), and
+/// `message` is the core's message.
 #[wasm_bindgen]
 pub fn challenge_compose(
     parts: Ts<crate::challenge::ChallengeParts>,

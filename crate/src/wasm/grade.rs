@@ -6,7 +6,7 @@
 use super::{from_js, js_error, to_js};
 use crate::challenge::grade::{self, ClassRow};
 use crate::challenge::{Challenge, Verdict};
-use crate::text::escape_invisible;
+use crate::text::{escape_invisible, Message};
 use serde::Serialize;
 use tsify::Ts;
 use wasm_bindgen::prelude::*;
@@ -33,7 +33,7 @@ pub struct ClassView {
     /// Each submission as the page's table shows it, in the same order.
     shown: Vec<ShownRow>,
     /// Why the challenge or the file is refused whole, or null.
-    error: Option<String>,
+    error: Option<Message>,
 }
 
 /// A submission's text as the page's table shows it: its invisible characters escaped, as in
@@ -59,18 +59,18 @@ pub struct ShownRow {
 /// ```text
 /// {header: string (the CSV header line, "\n" included; "" on error),
 ///  columns: [string] (the carried columns' headers, escaped), link_column: string | null,
-///  rows: [{line: number, link: string, carried: [string], status: string | null}],
+///  rows: [{line: number, link: string, carried: [string], fault: RowFault | null}],
 ///  encoding: string | null (the encoding read, when the file is not UTF-8),
 ///  shown: [{link: string, carried: [string]}] (each row as the table shows it, escaped),
-///  error: string | null (why the challenge or the file is refused whole)}
+///  error: Message | null (why the challenge or the file is refused whole)}
 /// ```
 ///
-/// where a row's `status` is set when it is graded as it is read ("malformed: line 4 is not
-/// valid UTF-8"). Each row goes as it is to [`grade_link`].
+/// where a row's `fault` is set when it is graded malformed as it is read (its line 4 is not
+/// valid UTF-8, say). Each row goes as it is to [`grade_link`].
 #[wasm_bindgen]
 pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsValue> {
     let read = Challenge::parse(challenge)
-        .map_err(|e| format!("challenge: {e}"))
+        .map_err(|e| Message::new("grade-challenge-refused").said("error", e.message))
         .and_then(|c| Ok((grade::read_class(bytes)?, c)));
     let view = match read {
         Ok((class, c)) => ClassView {
@@ -112,7 +112,8 @@ pub fn grade_class(challenge: &str, bytes: &[u8]) -> Result<Ts<ClassView>, JsVal
 pub struct GradedView {
     line: usize,
     link: String,
-    status: String,
+    /// "ok", "malformed: …", "refused: …", "another challenge" or "run failed: …".
+    status: Message,
     pass: bool,
     #[cfg_attr(target_arch = "wasm32", tsify(type = "ChallengeVerdict | null"))]
     verdict: Option<Verdict>,
@@ -122,11 +123,11 @@ pub struct GradedView {
 
 /// Grades one row completely in one call (it runs the nominal run and every variant, so the page
 /// calls it in a worker): `challenge` as for [`grade_class`], `row` one of its rows, `{line,
-/// link, carried?, status?}` (a single link: `{line: 1, link}`). Returns
+/// link, carried?, fault?}` (a single link: `{line: 1, link}`). Returns
 ///
 /// ```text
 /// {line: number, link: string,
-///  status: "ok" | "malformed: …" | "refused: …" | "another challenge" | "run failed: …",
+///  status: Message ("ok", "malformed: …", "refused: …", "another challenge", "run failed: …"),
 ///  pass: boolean (judged and every criterion met),
 ///  verdict: {criteria: [{figure, label, bound, value, unit, run, pass, reason}], pass} | null,
 ///  csv: string (the row's CSV line, "\n" included, as `imlab grade` writes it)}

@@ -25,5 +25,6 @@ pub(crate) fn show_challenge(text: &str, out: &mut impl Write) -> Result<(), Sto
             original.fingerprint()
         ));
     }
-    writeln!(out, "{head}\n{}", c.brief().trim_end()).map_err(stdout_stop)
+    let brief = c.brief().to_string();
+    writeln!(out, "{head}\n{}", brief.trim_end()).map_err(stdout_stop)
 }

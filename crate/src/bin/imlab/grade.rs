@@ -4,7 +4,7 @@ use crate::output::{stdout_stop, to_stderr, Stop};
 use fs4::{FileExt, TryLockError};
 use imlab::challenge::grade::{self, Class, ClassRow, Graded};
 use imlab::challenge::Challenge;
-use imlab::text::excerpt;
+use imlab::text::{excerpt, Message};
 use std::collections::hash_map::RandomState;
 use std::fs::OpenOptions;
 use std::hash::{BuildHasher, Hasher};
@@ -75,13 +75,15 @@ fn resume_into(c: &Challenge, class: &Class, header: &str, path: &str) -> Result
     file.read_to_end(&mut previous).map_err(failed)?;
     // A seed of the system's randomness (std's hash keys), drawn afresh each time.
     let seed = RandomState::new().build_hasher().finish();
-    let from = grade::resume(c, class, &previous, seed).map_err(named)?;
+    let from = grade::resume(c, class, &previous, seed).map_err(|e| named(e.to_string()))?;
     let sample: Vec<&ClassRow> = from.sample.iter().map(|k| &class.rows[k.index]).collect();
     grade_each(
         c,
         &sample,
         ("checking kept rows: graded", 0),
-        |i, graded| grade::check_kept(c, class, &from.sample[i], &graded).map_err(named),
+        |i, graded| {
+            grade::check_kept(c, class, &from.sample[i], &graded).map_err(|e| named(e.to_string()))
+        },
     )?;
     file.set_len(from.keep as u64)
         .and_then(|()| file.seek(SeekFrom::End(0)))
@@ -142,7 +144,8 @@ fn grade_each(
                 // A panic in one run is that row's failure, not the end of the grading.
                 let graded =
                     std::panic::catch_unwind(|| grade::grade_row(c, row)).unwrap_or_else(|_| {
-                        Graded::failed(row.line, &row.link, "run failed: internal error")
+                        let internal = Message::new("grade-internal-error");
+                        Graded::run_failed(row.line, &row.link, internal)
                     });
                 if send.send((i, graded)).is_err() {
                     break;

@@ -9,7 +9,7 @@
 //!   (Windows-1252 for a spreadsheet's export in Western Europe; guessed by chardetng, decoded by
 //!   encoding_rs), and [`Class::encoding`] names it. A line that does not decode spoils only
 //!   itself: its row is graded `malformed: line N is not valid UTF-8` (or UTF-16, or the legacy
-//!   encoding's name), its text shown with `�` for the bytes at fault.
+//!   encoding's name; see [`RowFault`]), its text shown with `�` for the bytes at fault.
 //! - **Lines** end with LF, CRLF or a lone CR.
 //! - **Shape.** The first line that is neither blank nor a `#` comment decides. It is the header
 //!   of a CSV export when it has two or more fields (separated by commas, semicolons or tabs,
@@ -24,7 +24,7 @@
 //!   the extra ones to its link, which was written unquoted and split at its own commas
 //!   (`robust=a,b`); one with fewer fields, or without a link, is a row graded `malformed: …`.
 
-use crate::text::excerpt;
+use crate::text::{excerpt, Message};
 use chardetng::{EncodingDetector, Iso2022JpDetection, Utf8Detection};
 use encoding_rs::Encoding;
 use serde::{Deserialize, Serialize};
@@ -60,10 +60,70 @@ pub struct ClassRow {
     /// The cells of the carried columns, in the order of [`Class::columns`].
     #[serde(default)]
     pub carried: Vec<String>,
-    /// The status of a row that is graded as it is read, without a run (`malformed: line 4 is
-    /// not valid UTF-8`); None for a row whose link is to be graded.
+    /// Why a row is graded `malformed` as it is read, without a run (its line 4 is not valid
+    /// UTF-8, say); None for a row whose link is to be graded.
     #[serde(default)]
-    pub status: Option<String>,
+    pub fault: Option<RowFault>,
+}
+
+/// Why a row of a class's file is malformed as it is read.
+#[cfg_attr(
+    target_arch = "wasm32",
+    derive(tsify::Tsify),
+    tsify(missing_as_null, hashmap_as_object)
+)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(tag = "kind", rename_all = "lowercase")]
+pub enum RowFault {
+    /// Its line `line` did not decode in `encoding`.
+    Undecoded {
+        /// The line.
+        line: usize,
+        /// The name of the encoding the file was read in.
+        encoding: String,
+    },
+    /// A quoted field starting on line `line` is still open at the end of the file.
+    Unclosed {
+        /// The line.
+        line: usize,
+    },
+    /// The record on line `line` has `fields` fields, the header `header`.
+    Fields {
+        /// The line.
+        line: usize,
+        /// Its fields.
+        fields: usize,
+        /// The header's.
+        header: usize,
+    },
+    /// The record has no link.
+    NoLink,
+}
+
+impl RowFault {
+    /// Why the row is malformed, in words: `line 4 is not valid UTF-8`.
+    pub fn message(&self) -> Message {
+        match self {
+            RowFault::Undecoded { line, encoding } => Message::new("grade-line-undecoded")
+                .count("line", *line)
+                .text("encoding", encoding.as_str()),
+            RowFault::Unclosed { line } => Message::new("grade-line-unclosed").count("line", *line),
+            RowFault::Fields {
+                line,
+                fields,
+                header,
+            } => Message::new("grade-line-fields")
+                .count("line", *line)
+                .count("fields", *fields)
+                .count("header", *header),
+            RowFault::NoLink => Message::new("grade-no-link"),
+        }
+    }
+
+    /// The row's status: `malformed: line 4 is not valid UTF-8`.
+    pub fn status(&self) -> Message {
+        Message::new("grade-row-malformed").said("reason", self.message())
+    }
 }
 
 /// One line of the file, decoded.
@@ -90,7 +150,7 @@ struct Decoded {
 /// Reads a class's file (see the module's documentation for the shapes it takes); refuses a
 /// file that is not text, or whose CSV header names no single column of links, with a message
 /// saying why.
-pub fn read_class(bytes: &[u8]) -> Result<Class, String> {
+pub fn read_class(bytes: &[u8]) -> Result<Class, Message> {
     let Decoded {
         lines,
         encoding,
@@ -115,14 +175,17 @@ fn skipped(text: &str) -> bool {
     text.is_empty() || text.starts_with('#')
 }
 
-/// The status of a row whose line `number` did not decode.
-fn undecoded(number: usize, encoding: &str) -> String {
-    format!("malformed: line {number} is not valid {encoding}")
+/// The fault of a row whose line `number` did not decode.
+fn undecoded(number: usize, encoding: &str) -> RowFault {
+    RowFault::Undecoded {
+        line: number,
+        encoding: encoding.to_string(),
+    }
 }
 
 /// The lines of the file, by its byte-order mark or, without one, as UTF-8 when it is, else in
 /// the encoding its bytes point to.
-fn decode(bytes: &[u8]) -> Result<Decoded, String> {
+fn decode(bytes: &[u8]) -> Result<Decoded, Message> {
     let decoded = |lines, encoding| Decoded {
         lines,
         encoding,
@@ -138,17 +201,17 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
         if let Some(rest) = bytes.strip_prefix(bom) {
             let lines = utf16_lines(rest, from_bytes);
             if lines.iter().any(|l| l.text.contains('\0')) {
-                return Err(NOT_TEXT.to_string());
+                return Err(Message::new(NOT_TEXT));
             }
             return Ok(decoded(lines, "UTF-16"));
         }
     }
     if bytes.contains(&0) {
-        return Err(if looks_like_utf16(bytes) {
-            "the file is UTF-16 without a byte-order mark; save it as UTF-8".to_string()
+        return Err(Message::new(if looks_like_utf16(bytes) {
+            "grade-file-utf16"
         } else {
-            NOT_TEXT.to_string()
-        });
+            NOT_TEXT
+        }));
     }
     // A file with a line of UTF-8 beyond ASCII is UTF-8 with a few bad bytes (a pasted name, a
     // cut-off copy): those spoil their own lines, and the others keep their names.
@@ -170,9 +233,8 @@ fn decode(bytes: &[u8]) -> Result<Decoded, String> {
     })
 }
 
-/// Why a file with NUL bytes is refused.
-const NOT_TEXT: &str = "the file is not text (it holds NUL bytes: a spreadsheet or a document?); \
-                        save it as a text file of links, one a line, or as CSV";
+/// Why a file with NUL bytes is refused, as the message's id.
+const NOT_TEXT: &str = "grade-file-not-text";
 
 /// Whether a file with NUL bytes is UTF-16 without a byte-order mark: in its first 4 KiB, a
 /// quarter or more of the bytes at even (or odd) offsets are NUL, and at most a sixteenth as many
@@ -266,7 +328,7 @@ fn one_a_line(lines: &[Line], encoding: &str) -> Class {
             line: l.number,
             link: l.text.trim().to_string(),
             carried: Vec::new(),
-            status: (!l.valid).then(|| undecoded(l.number, encoding)),
+            fault: (!l.valid).then(|| undecoded(l.number, encoding)),
         })
         .collect();
     Class {
@@ -383,9 +445,11 @@ fn csv_class(
     head: Record,
     delimiter: char,
     encoding: &str,
-) -> Result<Class, String> {
+) -> Result<Class, Message> {
     if let Some(n) = head.undecoded {
-        return Err(format!("line {n}, the CSV header, is not valid {encoding}"));
+        return Err(Message::new("grade-file-header-undecoded")
+            .count("line", n)
+            .text("encoding", encoding));
     }
     let header = head.fields;
     let mut records = Vec::new();
@@ -412,25 +476,18 @@ fn csv_class(
             match linked[..] {
                 [c] => c,
                 [] => {
-                    return Err(format!(
-                        "no column of links in this CSV export (its columns: {}); head the \
-                         column of links 'link'",
-                        names(&header, all())
-                    ))
+                    return Err(Message::new("grade-file-no-link-column")
+                        .text("columns", names(&header, all())))
                 }
                 _ => {
-                    return Err(format!(
-                        "the columns {} all hold links; head the one to grade 'link'",
-                        names(&header, linked.into_iter())
-                    ))
+                    return Err(Message::new("grade-file-links-everywhere")
+                        .text("columns", names(&header, linked.into_iter())))
                 }
             }
         }
         _ => {
-            return Err(format!(
-                "the columns {} are all headed as links; keep one",
-                names(&header, named.into_iter())
-            ))
+            return Err(Message::new("grade-file-link-headers")
+                .text("columns", names(&header, named.into_iter())))
         }
     };
     let rows = records
@@ -444,23 +501,21 @@ fn csv_class(
                 let parts: Vec<String> = r.fields.drain(column..=column + extra).collect();
                 r.fields.insert(column, parts.join(&delimiter.to_string()));
             }
-            let status = if let Some(n) = r.undecoded {
+            let fault = if let Some(n) = r.undecoded {
                 Some(undecoded(n, encoding))
             } else if r.open {
-                Some(format!(
-                    "malformed: line {number}: a quoted field is not closed by the end of the file"
-                ))
+                Some(RowFault::Unclosed { line: number })
             } else if r.fields.len() != header.len() {
-                Some(format!(
-                    "malformed: line {number} has {} fields, the header {}",
-                    r.fields.len(),
-                    header.len()
-                ))
+                Some(RowFault::Fields {
+                    line: number,
+                    fields: r.fields.len(),
+                    header: header.len(),
+                })
             } else {
                 None
             };
             let link = r.fields.get(column).map_or("", |f| f.trim()).to_string();
-            let status = status.or_else(|| link.is_empty().then(|| "malformed: no link".into()));
+            let fault = fault.or_else(|| link.is_empty().then_some(RowFault::NoLink));
             let carried = all()
                 .filter(|&c| c != column)
                 .map(|c| r.fields.get(c).cloned().unwrap_or_default())
@@ -469,7 +524,7 @@ fn csv_class(
                 line: number,
                 link,
                 carried,
-                status,
+                fault,
             }
         })
         .collect();

@@ -10,12 +10,12 @@
 
 mod class;
 
-pub use class::{read_class, Class, ClassRow};
+pub use class::{read_class, Class, ClassRow, RowFault};
 
 use super::{judge, measure, Challenge, Measures, Verdict};
 use crate::rng::Rng;
 use crate::sim::Simulation;
-use crate::text::{csv, excerpt};
+use crate::text::{csv, excerpt, Message};
 use serde::Serialize;
 
 /// One graded submission: its line, the link, and the status with the verdict (None unless the
@@ -27,20 +27,27 @@ pub struct Graded {
     /// The link.
     pub link: String,
     /// `ok`, `malformed: …`, `refused: …`, `another challenge` or `run failed: …`.
-    pub status: String,
+    pub status: Message,
     /// The verdict, when the runs were judged.
     pub verdict: Option<Verdict>,
 }
 
 impl Graded {
     /// A submission graded `status` without a verdict.
-    pub fn failed(line: usize, link: &str, status: &str) -> Graded {
+    pub fn failed(line: usize, link: &str, status: Message) -> Graded {
         Graded {
             line,
             link: link.to_string(),
-            status: status.to_string(),
+            status,
             verdict: None,
         }
+    }
+
+    /// A submission whose run failed for `reason` (why, in words: the core's message, or the
+    /// text of a run's failure), without a verdict.
+    pub fn run_failed(line: usize, link: &str, reason: Message) -> Graded {
+        let status = Message::new("grade-row-run-failed").said("reason", reason);
+        Graded::failed(line, link, status)
     }
 
     /// Whether the submission was judged and meets every criterion.
@@ -52,7 +59,7 @@ impl Graded {
 /// Reads, re-runs (nominal run and variants, one after the other) and judges one submission
 /// link of line `line`.
 pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
-    let mut graded = Graded::failed(line, link, "ok");
+    let mut graded = Graded::failed(line, link, Message::new("grade-row-ok"));
     let scenarios = match c.submission(link).and_then(|s| s.scenarios()) {
         Ok(s) => s,
         Err(e) => {
@@ -73,14 +80,14 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
             },
         };
         if let Some(f) = &m.failure {
-            graded.status = format!("run failed: {f}");
+            graded.status = Message::new("grade-row-run-failed").text("reason", f.as_str());
             return graded;
         }
         runs.push(m);
     }
     match judge(c, &runs) {
         Ok(v) => graded.verdict = Some(v),
-        Err(e) => graded.status = format!("run failed: {e}"),
+        Err(e) => graded.status = Message::new("grade-row-run-failed").said("reason", e),
     }
     graded
 }
@@ -88,8 +95,8 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
 /// Grades one row of a class's file: its status when it was graded as it was read (a line that
 /// did not decode, say), else its link by [`grade_one`].
 pub fn grade_row(c: &Challenge, row: &ClassRow) -> Graded {
-    match &row.status {
-        Some(status) => Graded::failed(row.line, &row.link, status),
+    match &row.fault {
+        Some(fault) => Graded::failed(row.line, &row.link, fault.status()),
         None => grade_one(c, row.line, &row.link),
     }
 }
@@ -125,7 +132,7 @@ fn row_start(row: &ClassRow) -> String {
 /// status, each criterion's value (empty when not measured) and pass (1 or 0), and pass.
 pub fn csv_row(c: &Challenge, row: &ClassRow, graded: &Graded) -> String {
     let mut out = row_start(row);
-    out.push_str(&csv::text_field(&graded.status));
+    out.push_str(&csv::text_field(&graded.status.to_string()));
     match &graded.verdict {
         Some(v) => {
             for cv in &v.criteria {
@@ -189,7 +196,7 @@ pub fn resume_sample(seed: u64, done: usize) -> Vec<usize> {
 /// cells, line and link as they would be written); anything else is refused with what differs,
 /// as the output of another grading. The rows of [`Resume::sample`] (drawn by `seed`, see
 /// [`resume_sample`]) are then to be graded again and checked by [`check_kept`].
-pub fn resume(c: &Challenge, class: &Class, previous: &[u8], seed: u64) -> Result<Resume, String> {
+pub fn resume(c: &Challenge, class: &Class, previous: &[u8], seed: u64) -> Result<Resume, Message> {
     let keep = previous
         .iter()
         .rposition(|&b| b == b'\n')
@@ -202,33 +209,23 @@ pub fn resume(c: &Challenge, class: &Class, previous: &[u8], seed: u64) -> Resul
         });
     }
     let text = std::str::from_utf8(&previous[..keep])
-        .map_err(|_| "it is not UTF-8 text, so not the grades of this class".to_string())?;
+        .map_err(|_| Message::new("grade-resume-not-utf8"))?;
     let mut lines = text.split_inclusive('\n');
     let header = csv_header(c, class);
     let found = lines.next().unwrap_or_default();
     if found != header {
-        return Err(format!(
-            "its first line is not this grading's header '{}': it holds the grades of another \
-             challenge or class file",
-            header.trim_end()
-        ));
+        return Err(Message::new("grade-resume-header").text("header", header.trim_end()));
     }
     let rows: Vec<&str> = lines.collect();
     for (done, found) in rows.iter().enumerate() {
         let Some(row) = class.rows.get(done) else {
-            return Err(format!(
-                "it holds more rows than the class file's {} submissions",
-                class.rows.len()
-            ));
+            return Err(Message::new("grade-resume-too-many-rows").count("rows", class.rows.len()));
         };
         if !found.starts_with(&row_start(row)) {
-            return Err(format!(
-                "its row {} is not that of line {} ('{}') of the class file: it holds the \
-                 grades of another class file",
-                done + 1,
-                row.line,
-                excerpt(&row.link)
-            ));
+            return Err(Message::new("grade-resume-row")
+                .count("row", done + 1)
+                .count("line", row.line)
+                .text("link", excerpt(&row.link)));
         }
     }
     let sample = resume_sample(seed, rows.len())
@@ -271,7 +268,7 @@ pub fn check_kept(
     class: &Class,
     kept: &KeptRow,
     graded: &Graded,
-) -> Result<(), String> {
+) -> Result<(), Message> {
     let row = &class.rows[kept.index];
     let expected = csv_row(c, row, graded);
     if kept.found == expected {
@@ -287,22 +284,16 @@ pub fn check_kept(
     }
     names.push("pass".to_string());
     let what = match found.iter().zip(&expected).position(|(f, e)| f != e) {
-        Some(i) => format!(
-            "its {} is '{}', not '{}'",
-            names[i],
-            excerpt(found[i]),
-            excerpt(expected[i])
-        ),
-        None if found.len() > expected.len() => format!(
-            "it has '{}' after its last column",
-            excerpt(&found[expected.len()..].join(","))
-        ),
-        None => format!("it lacks its columns from {} on", names[found.len()]),
+        Some(i) => Message::new("grade-kept-cell")
+            .text("column", names[i].as_str())
+            .text("found", excerpt(found[i]))
+            .text("expected", excerpt(expected[i])),
+        None if found.len() > expected.len() => Message::new("grade-kept-extra")
+            .text("extra", excerpt(&found[expected.len()..].join(","))),
+        None => Message::new("grade-kept-short").text("column", names[found.len()].as_str()),
     };
-    Err(format!(
-        "its row {} (line {} of the class file) is not what grading it again gives: {what}; it \
-         was edited after its grading, or graded by another version of imlab",
-        kept.index + 1,
-        row.line
-    ))
+    Err(Message::new("grade-kept-differs")
+        .count("row", kept.index + 1)
+        .count("line", row.line)
+        .said("what", what))
 }
