@@ -71,11 +71,7 @@ impl Refusal for crate::text::Message {
     }
 }
 
-said_as_text!(
-    String,
-    &str,
-    serde_wasm_bindgen::Error
-);
+said_as_text!(String, &str, serde_wasm_bindgen::Error);
 
 impl Refusal for crate::params::ParamError {
     fn refusal(&self) -> JsValue {

@@ -303,7 +303,7 @@ fn cells_from_students_cannot_run_formulas_or_carry_invisible_characters() {
     let verdict = Verdict {
         criteria: vec![CriterionVerdict {
             figure: "current_peak".into(),
-            label: Message::new("challenge-figure-current-peak"),
+            label: Message::new("figure-current_peak"),
             bound: Message::new("challenge-bound-band"),
             value: Some(-0.5),
             unit: "A".into(),

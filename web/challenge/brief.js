@@ -1,6 +1,5 @@
 // A challenge's task in words as the core gives it, paragraphs of its messages, said in the
 // language shown and laid out as `imlab challenge` writes it.
-import { said } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -15,4 +14,4 @@ import { said } from '../l10n/l10n.js';
  * @param {Brief} brief
  */
 export const briefText = (brief) =>
-  brief.paragraphs.map((p) => `${said(p.head)}\n${p.items.map((item) => `  ${said(item)}\n`).join('')}`).join('\n');
+  brief.paragraphs.map((p) => `${p.head}\n${p.items.map((item) => `  ${item}\n`).join('')}`).join('\n');

@@ -9,7 +9,7 @@ import { el } from '../ui/dom.js';
 import { allowSet, button, needSet, varySet } from './compose-rows.js';
 import { createCheck } from './compose-check.js';
 import { remember } from './origin.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { withLanguage } from '../ui/language.js';
 import { briefText } from './brief.js';
 
@@ -187,7 +187,7 @@ export function createCompose({ client, state }) {
   async function make() {
     const desc = await client.job('challenge-compose', { parts: parts() });
     if (desc.error) {
-      fail(t('compose-invalid', { reason: said(desc.error.message) }), desc.error.key);
+      fail(t('compose-invalid', { reason: desc.error.message }), desc.error.key);
       output.hidden = true;
       checker.stop();
       document.body.dataset.compose = 'invalid';

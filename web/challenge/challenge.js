@@ -11,7 +11,7 @@ import { el } from '../ui/dom.js';
 import { panelParts, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 import { header, originOf } from './origin.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { integer } from '../analysis/digits.js';
 import { briefText } from './brief.js';
 
@@ -120,7 +120,7 @@ export class ChallengePanel {
         sub.kind === 'another'
           ? t('challenge-submission-another')
           : t(sub.kind === 'refused' ? 'challenge-submission-refused' : 'challenge-submission-rejected', {
-              reason: said(sub.message ?? ''),
+              reason: sub.message ?? '',
             });
       sub = await client.job('challenge-submission', { text, submission: text });
     }
@@ -173,7 +173,7 @@ export class ChallengePanel {
     parts.verdict.textContent = t('challenge-verdict-pending');
     parts.checklist.replaceChildren(
       ...desc.need.map((/** @type {Need} */ n) =>
-        el('li', { textContent: t('challenge-need-pending', { label: said(n.label), figure: n.figure }) }),
+        el('li', { textContent: t('challenge-need-pending', { label: n.label, figure: n.figure }) }),
       ),
     );
   }
@@ -364,7 +364,7 @@ export class ChallengePanel {
    * @param {boolean} ran
    */
   showRefusal(sub, ran) {
-    const args = { reason: said(sub.message ?? '') };
+    const args = { reason: sub.message ?? '' };
     this.fail(t(ran ? 'challenge-refusal-not-graded' : 'challenge-refusal-not-run', args));
     this.parts.verdict.textContent = t(ran ? 'challenge-verdict-not-graded' : 'challenge-verdict-not-run', args);
     this.parts.checklist.replaceChildren();

@@ -2,7 +2,7 @@
 // of criteria, each with its value, its bound and its mark; and the panel's parts that hold it.
 import { excerpt } from '../ui/quote.js';
 import { el } from '../ui/dom.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { integer, sig } from '../analysis/digits.js';
 
 /** @import * as P from '../worker/protocol.js' */
@@ -82,9 +82,9 @@ export function showVerdict({ verdict, checklist }, result, sub) {
       const li = el('li', { className: c.pass ? 'pass' : 'fail' }, [
         el('strong', { className: 'mark', textContent: t(c.pass ? 'checklist-pass' : 'checklist-fail') }),
         ' ',
-        ...around(id, { label: said(c.label), bound: said(c.bound), run }, 'value', value),
+        ...around(id, { label: c.label, bound: c.bound, run }, 'value', value),
         ...(c.reason
-          ? [el('span', { className: 'reason', textContent: ` ${t('checklist-reason', { reason: said(c.reason) })}` })]
+          ? [el('span', { className: 'reason', textContent: ` ${t('checklist-reason', { reason: c.reason })}` })]
           : []),
       ]);
       li.dataset.figure = c.figure;

@@ -6,7 +6,7 @@
 import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { formatValue } from './checklist.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { integer } from '../analysis/digits.js';
 
 /**
@@ -43,11 +43,11 @@ function failures(verdict) {
   return verdict.criteria
     .filter((/** @type {Criterion} */ c) => !c.pass)
     .map((/** @type {Criterion} */ c) => {
-      const reason = c.reason ? said(c.reason) : '';
+      const reason = c.reason ? c.reason : '';
       if (c.value === null) return t('compose-check-unmeasured', { figure: c.figure, reason });
-      // The core's reason for a value that had not settled by the end of the run.
-      const still = c.reason?.id === 'challenge-reason-still-changing';
-      const args = { figure: c.figure, value: formatValue(c.value, c.unit), bound: said(c.bound) };
+      // The core's reason for a value that had not settled by the end of the run, as said here.
+      const still = reason === t('challenge-reason-still-changing');
+      const args = { figure: c.figure, value: formatValue(c.value, c.unit), bound: c.bound };
       return t(still ? 'compose-check-failure-changing' : 'compose-check-failure', args);
     })
     .join('; ');

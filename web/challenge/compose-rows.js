@@ -3,7 +3,7 @@
 // starting point for the lecturer; the core checks and writes the challenge they describe.
 import { fieldValue } from '../ui/scenario.js';
 import { el } from '../ui/dom.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { sig } from '../analysis/digits.js';
 
 /** @import * as P from '../worker/protocol.js' */
@@ -164,7 +164,7 @@ function needRow(fig, m) {
   row.dataset.figure = fig.name;
   // The figure's value in this run, if measured.
   const now = m ? (m.value === Infinity ? '∞' : sig(m.value, 4)) : null;
-  const args = { label: said(fig.label), figure: fig.name, value: now ?? '', unit: fig.unit };
+  const args = { label: fig.label, figure: fig.name, value: now ?? '', unit: fig.unit };
   const named = now === null ? 'compose-need' : fig.unit ? 'compose-need-now-unit' : 'compose-need-now';
   // The bounds the core lets this figure take, and the one it starts with.
   const op = /** @type {HTMLSelectElement} */ (

@@ -6,7 +6,7 @@
 // its column (again: the other way); the rows stay sorted as the results come in.
 import { el } from '../ui/dom.js';
 import { formatValue, withUnit } from './checklist.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 
 /**
  * @import * as P from '../worker/protocol.js'
@@ -62,7 +62,7 @@ function verdictCell(result) {
       className: result.pass ? 'pass' : 'fail',
       textContent: t(result.pass ? 'grade-pass' : 'grade-fail'),
     });
-  const status = said(result.status);
+  const status = result.status;
   return el('td', { className: 'fail' }, [cause(`✗ ${status}`, status)]);
 }
 
@@ -77,7 +77,7 @@ function criterionCell(result, k) {
   if (!c) return el('td', { className: 'value' });
   const shown = `${formatValue(c.value)} ${c.pass ? '✓' : '✗'}`;
   // The value in full (the CSV's digits, but for an exponent on the tiniest), or why there is none.
-  const reason = c.reason ? said(c.reason) : '';
+  const reason = c.reason ? c.reason : '';
   const exact = c.value === null ? reason : withUnit(String(c.value), c.unit);
   const words = c.pass || c.value === null ? exact : t('grade-value-reason', { value: exact, reason });
   const text = c.run === 'nominal' ? words : t('grade-worst-run', { text: words, run: c.run });
@@ -94,9 +94,9 @@ function criterionCell(result, k) {
 function criterionHead(shown, k) {
   const need = shown.need[k];
   return [
-    el('span', { className: 'label', textContent: said(need.label) }),
+    el('span', { className: 'label', textContent: need.label }),
     ' ',
-    el('span', { className: 'bound', textContent: said(need.bound_text) }),
+    el('span', { className: 'bound', textContent: need.bound_text }),
   ];
 }
 

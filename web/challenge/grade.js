@@ -9,7 +9,7 @@ import { el } from '../ui/dom.js';
 import { Pool } from '../client/pool.js';
 import { download } from '../ui/dom.js';
 import { GradeTable } from './grade-table.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { integer } from '../analysis/digits.js';
 
 /**
@@ -159,7 +159,7 @@ export function createGrading({ client }) {
     // The challenge by its canonical link, whichever way it was named.
     const { encoded, need } = await client.job('challenge', { text });
     const plan = await client.job('grade-class', { text: encoded, bytes });
-    if (plan.error) throw new Error(said(plan.error));
+    if (plan.error) throw new Error(plan.error);
     if (plan.rows.length === 0) throw new Error(t('grade-no-submission'));
     // A grading is kept for the same challenge and the same submissions, however they were given.
     const key = JSON.stringify([encoded, plan.header, plan.rows]);

@@ -3,7 +3,7 @@
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { crashReason, errorReason, jobError, unreadable, watch } from './watch.js';
-import { said, spoken } from '../l10n/l10n.js';
+import { spoken } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -20,7 +20,7 @@ export class WorkerFailed extends Error {}
 export class ScenarioRefused extends Error {
   /** @param {P.Checked['rejected'][number]} rejected */
   constructor({ key, message }) {
-    super(said(message));
+    super(message);
     this.key = key;
   }
 }
@@ -173,13 +173,13 @@ export class RunClient {
    * Settles the request `key`: rejects it with `error` (a text, or the core's message, said in
    * the language shown) when there is one, else resolves it with `result`.
    * @param {string} key
-   * @param {string | import('../../pkg/imlab.js').Message | null | undefined} error
+   * @param {string | null | undefined} error
    * @param {unknown} [result]
    */
   answer(key, error, result) {
     const p = this.pending.get(key);
     this.pending.delete(key);
-    if (error != null) p?.reject(new Error(said(error)));
+    if (error != null) p?.reject(new Error(error));
     else p?.resolve(result);
   }
 

@@ -146,7 +146,7 @@ export function num(value, fraction) {
  * @param {string | CoreMessage} text
  * @returns {string}
  */
-export function said(text) {
+function said(text) {
   if (!isCoreMessage(text)) return String(text);
   /** @type {Record<string, string | number | import('@fluent/bundle').FluentNumber>} */
   const args = {};

@@ -6,7 +6,7 @@ import { formScenario, forwardKnob, markInvalid, renderFields, syncFields } from
 import { ScenarioRefused, WorkerFailed } from '../client/run-client.js';
 import { DEFAULT_PRESET, DEFAULT_SCENARIO, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listed } from '../ui/quote.js';
-import { said, t } from '../l10n/l10n.js';
+import { t } from '../l10n/l10n.js';
 import { listPresets, pickPresets } from './preset-picker.js';
 import { followKnobs, knobMaker } from './knobs.js';
 
@@ -50,7 +50,7 @@ async function describeLoaded(client, state, text) {
       say(
         t('settings-link-rejected', {
           list: listed(
-            rejected.map((r) => said(r.message)),
+            rejected.map((r) => r.message),
             '; ',
           ),
         }),

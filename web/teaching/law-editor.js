@@ -4,9 +4,9 @@
 // designed dynamics. The names the law may use come from the core too. Its words are the page's
 // messages (teaching-page.ftl): a verdict shows in the settings before the walkthrough is built.
 // The core's words (why a formula is refused, the verdict, what each name means) come as its
-// messages (core-law.ftl), rendered with said().
+// messages (core-law.ftl), rendered with .
 import { el } from '../ui/dom.js';
-import { num, said, t } from '../l10n/l10n.js';
+import { num, t } from '../l10n/l10n.js';
 import { paperLaw, verdictLine } from '../ui/verdict-line.js';
 import { tex } from './tex.js';
 
@@ -57,7 +57,7 @@ export function showPreview(box, preview, text) {
   }
   // The core gives the TeX or the error.
   const { at, len, reason: why } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
-  const reason = said(why);
+  const reason = why;
   const chars = [...text];
   const parts =
     at === 0
@@ -103,7 +103,7 @@ export function showVerdicts(root, verdicts) {
       return typed !== null && typed !== law.trim();
     };
     const stale = !!verdict && (edited(step, verdict.law) || (verdict.on !== null && edited(step - 1, verdict.on)));
-    const text = !verdict ? paperLaw(step) : stale ? staleText(step, verdict) : said(verdict.text);
+    const text = !verdict ? paperLaw(step) : stale ? staleText(step, verdict) : verdict.text;
     if (line.textContent !== text) line.textContent = text;
     line.classList.toggle('stale', stale);
     line.classList.toggle('good', !stale && verdict?.designed === true);
@@ -117,7 +117,7 @@ export function showVerdicts(root, verdicts) {
  * @param {Jobs['law-verdicts']['result'][number]} verdict
  */
 function staleText(step, verdict) {
-  const args = { output: `v${step}`, law: verdict.law, verdict: said(verdict.text) };
+  const args = { output: `v${step}`, law: verdict.law, verdict: verdict.text };
   return verdict.on === null
     ? t('law-stale', args)
     : t('law-stale-after', { ...args, previous: `v${step - 1}`, previousLaw: verdict.on });
@@ -155,7 +155,7 @@ export function fillNames(container, language) {
           el('td', {}, [el('code', { textContent: n.name })]),
           el('td', {}, [tex(n.tex, false, n.name)]),
           el('td', { textContent: n.unit }),
-          el('td', { textContent: said(n.doc) }),
+          el('td', { textContent: n.doc }),
         ]),
       );
     const head = el('tr', {}, [
@@ -164,7 +164,7 @@ export function fillNames(container, language) {
       el('th', { scope: 'col', textContent: t('law-names-unit') }),
       el('th', { scope: 'col', textContent: t('law-names-meaning') }),
     ]);
-    const functions = language.functions.map((f) => said(f.doc)).join('; ');
+    const functions = language.functions.map((f) => f.doc).join('; ');
     details.replaceChildren(
       /** @type {HTMLElement} */ (details.querySelector('summary')),
       el('div', { className: 'table-scroll' }, [el('table', {}, [head, ...rows])]),

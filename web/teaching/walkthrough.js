@@ -3,7 +3,7 @@
 // Every number shown here comes from the core (through the worker); the page only formats it. Its
 // words are the teaching part's messages (walkthrough.ftl), fetched before the sections are built.
 import { Plots } from '../plots/plots.js';
-import { isCoreMessage, loadTeaching, said, t, teachingLoaded } from '../l10n/l10n.js';
+import { loadTeaching, t, teachingLoaded } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
@@ -184,16 +184,11 @@ export class Walkthrough {
 
   /**
    * Says in each step with its own law that the verdicts could not be computed, and why: `failure`
-   * is what the job was refused with, the core's message (why a law or the scenario was refused)
-   * or an error.
+   * is what the job was refused with (why a law or the scenario was refused, said already).
    * @param {unknown} failure
    */
   verdictsFailed(failure) {
-    const reason = isCoreMessage(failure)
-      ? said(failure)
-      : failure instanceof Error
-        ? failure.message
-        : String(failure);
+    const reason = failure instanceof Error ? failure.message : String(failure);
     for (const root of this.lawRoots()) sayOfTypedLaws(root, t('law-verdict-failed', { reason }));
   }
 

@@ -95,17 +95,6 @@ async function job(request) {
   }
 }
 
-/**
- * What a job that threw says: the core's message as it is (its id and arguments, which the page
- * says in its language), or the text of any other error.
- * @param {unknown} e
- * @returns {string | import('../../pkg/imlab.js').Message}
- */
-function refusal(e) {
-  const core = typeof e === 'object' && e !== null && 'id' in e && 'args' in e;
-  return core ? /** @type {import('../../pkg/imlab.js').Message} */ (e) : String(e);
-}
-
 /** @param {MessageEvent<P.ToWorker>} event */
 self.onmessage = async ({ data }) => {
   await ready;

@@ -2,7 +2,7 @@
 //! which the page says in the reader's language and the CLI in English.
 
 use super::codec::field_info;
-use super::judge::{figure_info, figure_label, quantity};
+use super::judge::{figure_info, quantity};
 use super::{Allowed, Challenge, Op, Variants};
 use crate::record::{recovery_band, LOAD_RECOVERY};
 use crate::text::{escape_invisible, Message};
@@ -115,7 +115,7 @@ impl Challenge {
                     .text("field", format!("{:<14}", a.field))
                     .said("range", range)
                     .text("now", now)
-                    .text("doc", info.doc),
+                    .said("doc", info.doc),
             );
         }
         out.push(allowed);
@@ -134,10 +134,7 @@ impl Challenge {
             needs.items.push(
                 Message::new("challenge-brief-need")
                     .count("number", i + 1)
-                    .said(
-                        "label",
-                        figure_label(&c.figure).expect("checked when parsed"),
-                    )
+                    .said("label", f.label.clone())
                     .text("figure", c.figure.as_str())
                     .said("bound", bound)
                     .text("settled", yes(c.figure.ends_with("_final")))

@@ -49,30 +49,6 @@ pub fn figure_info(name: &str) -> Option<&'static FigureInfo> {
     figures().find(|f| f.name == name)
 }
 
-/// The label of figure `name` (one of [`figures`]) as a message: its [`FigureInfo::label`], in
-/// the reader's language. None for a name criteria may not name.
-pub fn figure_label(name: &str) -> Option<Message> {
-    let id = match name {
-        "transient_end" => "challenge-figure-transient-end",
-        "tracking_rms" => "challenge-figure-tracking-rms",
-        "tracking_peak" => "challenge-figure-tracking-peak",
-        "settling_time" => "challenge-figure-settling-time",
-        "saturated_share" => "challenge-figure-saturated-share",
-        "mean_nis" => "challenge-figure-mean-nis",
-        "current_peak" => "challenge-figure-current-peak",
-        "current_rms" => "challenge-figure-current-rms",
-        "ripple_peak" => "challenge-figure-ripple-peak",
-        "ripple_rms" => "challenge-figure-ripple-rms",
-        "flux_error_final" => "challenge-figure-flux-error-final",
-        "speed_error_final" => "challenge-figure-speed-error-final",
-        "speed_estimate_error_final" => "challenge-figure-speed-estimate-error-final",
-        "law_residual" => "challenge-figure-law-residual",
-        LOAD_RECOVERY => "challenge-figure-load-recovery-time",
-        _ => return None,
-    };
-    Some(Message::new(id))
-}
-
 /// `message` with the number `value` in `unit` as its argument `name`: the number alone when
 /// the unit is empty (a ratio), else the number and its unit (`0.004 s`).
 pub(crate) fn quantity(message: Message, name: &'static str, value: f64, unit: &str) -> Message {
@@ -347,7 +323,10 @@ pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, Messag
             .map_or(info.unit.to_string(), |m| m.unit.clone());
         criteria.push(CriterionVerdict {
             figure: c.figure.clone(),
-            label: figure_label(&c.figure).expect("checked when parsed"),
+            label: figure_info(&c.figure)
+                .expect("checked when parsed")
+                .label
+                .clone(),
             bound: bound_text(&c.op, info.unit),
             value: k.value,
             unit,

@@ -43,8 +43,8 @@ pub use error::{ChallengeError, ErrorKind};
 #[cfg(all(target_arch = "wasm32", feature = "tools"))]
 pub(crate) use judge::bound_text;
 pub use judge::{
-    criterion_ops, figure_info, figure_label, figures, judge, measure, CriterionVerdict, Measure,
-    Measures, NotFinite, Verdict,
+    criterion_ops, figure_info, figures, judge, measure, CriterionVerdict, Measure, Measures,
+    NotFinite, Verdict,
 };
 pub use search::{Design, MAX_SEARCH_DESIGNS, MOST_SEARCH_POINTS, SEARCH_POINTS};
 pub use submission::Submission;

@@ -214,7 +214,7 @@ impl Challenge {
     /// title (or name) the challenge carries while its link differs from the built-in's, else
     /// null.
     pub fn describe(&self) -> Result<Ts<ChallengeView>, JsValue> {
-        use crate::challenge::{figure_info, figure_label, Allowed, Op};
+        use crate::challenge::{figure_info, Allowed, Op};
         let c = &self.inner;
         let fields = c.base_scenario().describe();
         let allow = c

@@ -111,24 +111,6 @@ challenge-brief-settled = A final value counts only if it has settled: a value s
 # A number and its unit: "0.004 s".
 challenge-quantity = { $value } { $unit }
 
-## The figures a criterion may name
-
-challenge-figure-transient-end = start-up transient ends
-challenge-figure-tracking-rms = RMS of ω − ω_d
-challenge-figure-tracking-peak = peak |ω − ω_d|
-challenge-figure-settling-time = 2 % settling time of ω after the step
-challenge-figure-saturated-share = share of samples at the voltage limit
-challenge-figure-mean-nis = mean NIS
-challenge-figure-current-peak = peak stator current |i_s|
-challenge-figure-current-rms = RMS stator current |i_s|
-challenge-figure-ripple-peak = peak PWM current ripple
-challenge-figure-ripple-rms = RMS over the periods of the peak PWM current ripple
-challenge-figure-flux-error-final = final flux error |φ_r| − √ψ_d
-challenge-figure-speed-error-final = final speed error ω − ω_d
-challenge-figure-speed-estimate-error-final = final speed-estimate error ω − ω̂
-challenge-figure-law-residual = largest residual of your laws' designed dynamics, over the run and at the verdict's drawn states, relative to the paper's law
-challenge-figure-load-recovery-time = load recovery time after the load step
-
 ## A criterion's bound and why it fails
 
 # $bound has its unit, if any: "≤ 0.004 s".
