@@ -74,14 +74,15 @@ export function glossary(lang) {
 }
 
 /**
- * The words of a message's text: without its variables, its code and its settings (`k1=600`,
- * `model.j`).
+ * The words of a message's text: without its variables, its code, its settings (`k1=600`,
+ * `model.j`) and the field names it quotes ('preset').
  * @param {string} text
  */
 const prose = (text) =>
   text
     .replace(VARIABLE, ' ')
     .replace(/`[^`]*`/g, ' ')
+    .replace(/'[\w.]+'/g, ' ')
     .replace(/[\w.-]*[=.:][\w.-]*[a-z0-9]/gi, ' ');
 
 /**

@@ -32,7 +32,7 @@ challenge-title-too-long = field 'title' is { $chars } characters long, more tha
 challenge-bad-base = field 'base': { $error }
 challenge-no-criteria = no criteria: add at least one need.FIGURE=OP
 challenge-too-many-criteria = { $count } criteria, more than the { $max } allowed
-challenge-vary-unused = field 'vary': no criterion uses the variants (name them in robust=)
+challenge-vary-unused = field 'vary': no criterion uses the variants (name the criteria's figures in robust=)
 challenge-robust-without-vary = field 'robust': there are no variants (add vary=)
 # $key is allow.FIELD; $field the scenario field it names.
 challenge-allow-unknown-field = field '{ $key }': '{ $field }' is not a scenario field
@@ -65,7 +65,13 @@ challenge-try-outside = { $setting } is outside { $range }
 # $options lists the allowed names, separated by |.
 challenge-try-not-option = { $setting } is not one of { $options }
 challenge-compose-range-and-options = field '{ $key }': give LO and HI (a range) or options (choices), not both
-challenge-judge-runs = the challenge has { $runs } runs (nominal and { $variants } variants), { $measured } measured
+challenge-judge-runs = the challenge has { $runs ->
+        [one] { $runs } run
+       *[other] { $runs } runs
+    } (nominal and { $variants ->
+        [one] { $variants } variant
+       *[other] { $variants } variants
+    }), { $measured } measured
 
 ## The task in words
 
@@ -84,7 +90,7 @@ challenge-brief-allow = { $field } { $range } (now { $now }) — { $doc }
 challenge-brief-range = { $lo } to { $hi }
 # $options lists the names.
 challenge-brief-one-of = one of { $options }
-challenge-brief-formula = a formula of your own, in
+challenge-brief-formula = a formula of your own
 challenge-brief-formula-unit = a formula of your own, in { $unit }
 challenge-brief-needs = Your design must meet:
 # One criterion: $number counts them from 1, $label is the figure in words, $figure its name,
@@ -147,7 +153,10 @@ grade-internal-error = internal error
 # $encoding is the name of the encoding the file was read in (UTF-8, windows-1252…).
 grade-line-undecoded = line { $line } is not valid { $encoding }
 grade-line-unclosed = line { $line }: a quoted field is not closed by the end of the file
-grade-line-fields = line { $line } has { $fields } fields, the header { $header }
+grade-line-fields = line { $line } has { $fields ->
+        [one] { $fields } field
+       *[other] { $fields } fields
+    }, the header { $header }
 grade-no-link = no link
 # $error says why the challenge was refused.
 grade-challenge-refused = challenge: { $error }
@@ -164,7 +173,7 @@ grade-file-link-headers = the columns { $columns } are all headed as links; keep
 grade-resume-not-utf8 = it is not UTF-8 text, so not the grades of this class
 # $header is the CSV header line this grading writes.
 grade-resume-header = its first line is not this grading's header '{ $header }': it holds the grades of another challenge or class file
-grade-resume-too-many-rows = it holds more rows than the class file's { $rows } submissions
+grade-resume-too-many-rows = it holds more rows than the class file has submissions ({ $rows })
 grade-resume-row = its row { $row } is not that of line { $line } ('{ $link }') of the class file: it holds the grades of another class file
 # $what is one of the grade-kept-* messages.
 grade-kept-differs = its row { $row } (line { $line } of the class file) is not what grading it again gives: { $what }; it was edited after its grading, or graded by another version of imlab

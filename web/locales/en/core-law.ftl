@@ -56,7 +56,10 @@ law-none = the scenario has no law of its own: give law.v1, law.v2, law.v3 or la
 law-no-own-law = the step has no law of its own
 law-not-designed-one = the law does not give its designed dynamics
 # $failed of the scenario's $laws own laws.
-law-not-designed-some = { $failed } of { $laws } laws do not give their designed dynamics
+law-not-designed-some = { $failed ->
+        [one] { $failed } of { $laws } laws does not give its designed dynamics
+       *[other] { $failed } of { $laws } laws do not give their designed dynamics
+    }
 
 ## The verdict on a step's own law
 
@@ -222,7 +225,7 @@ formula-function-cos = cos(x): cosine, x in rad
 formula-function-tanh = tanh(x): hyperbolic tangent
 formula-function-abs = abs(x): absolute value
 formula-function-sign = sign(x): −1, 0 or 1
-formula-function-atan2 = atan2(y, x), the angle of (x, y) (rad)
+formula-function-atan2 = atan2(y, x): the angle of (x, y) (rad)
 formula-function-min = min(a, b): the smaller
 formula-function-max = max(a, b): the larger
 formula-function-sat = sat(x, m): x limited to [−m, m]
