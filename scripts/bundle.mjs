@@ -11,7 +11,7 @@
 //   (index.html)            the script that starts the worker early (web/boot.js), minified and
 //                           written into the page's head, with its hash in the page's
 //                           Content-Security-Policy: it starts the worker one round trip sooner
-//   locales/LANG/PART-HASH.ftl  each language's messages: the page's and the teaching texts'
+//   locales/LANG/PART-HASH.ftl  each language's messages: the page part, and the rest
 //                           (the English page messages are in web/main-HASH.js)
 //   style-HASH.css          uPlot's stylesheet and the page's (style.css, present.css), one file
 //   index.html              static/index.html, pointing at the above
@@ -136,17 +136,18 @@ const tables = readdirSync(TABLES_DIR)
     return rows.map((cells) => kept.map((i) => cells[i]).join(',')).join('\n');
   });
 
-// The page's messages (web/locales/LANG/*.ftl): of each language a page part (the labels, the
-// tools' words, the core's messages) and a teaching part (the lessons and the walkthrough), each one
-// file named by its hash in locales/LANG/. The English page part is carried in the page's bundle
-// (the page needs it before its first plot); every other file is fetched when its language is
-// shown, and the teaching part when a lesson or the walkthrough is first opened.
+// The page's messages (web/locales/LANG/*.ftl): of each language a page part (what the page says
+// before its first plot: its frame, the settings' meanings, the run's figures and warnings, the
+// scenario's refusals) and the rest (the tools, the law editor, challenges, the lessons and the
+// walkthrough), each one file named by its hash in locales/LANG/. The English page part is carried
+// in the page's bundle; every other file is fetched when its language is shown, the rest once the
+// first plot is drawn or when a part of the page that says it is first used.
 const LOCALES = join('web', 'locales');
-const TEACHING = ['lessons.ftl', 'lesson-panel.ftl', 'walkthrough.ftl'];
-/** The files of `lang`'s `part`: the teaching texts, or every other file (the page's and the core's). */
+const PAGE = ['page.ftl', 'core-scenario.ftl', 'core-run.ftl'];
+/** The files of `lang`'s `part`: the page part's, or every other. */
 const partOf = (/** @type {string} */ lang, /** @type {string} */ part) =>
   readdirSync(join(LOCALES, lang))
-    .filter((n) => n.endsWith('.ftl') && TEACHING.includes(n) === (part === 'teaching'))
+    .filter((n) => n.endsWith('.ftl') && PAGE.includes(n) === (part === 'page'))
     .sort();
 /** @type {Record<string, Record<string, string>>} */
 const localeFiles = {};
@@ -154,7 +155,7 @@ let enPage = '';
 rmSync(join(dist, 'locales'), { recursive: true, force: true });
 for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
-  for (const part of ['page', 'teaching']) {
+  for (const part of ['page', 'rest']) {
     const text = partOf(lang, part)
       .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
       .join('\n');

@@ -27,7 +27,7 @@ import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
 import { createStale } from './ui/stale.js';
-import { chooseLanguage, languageFiles, t, useLanguage } from './l10n/l10n.js';
+import { chooseLanguage, languageFiles, loadRest, t, useLanguage } from './l10n/l10n.js';
 import { wireLanguageMenu } from './ui/language.js';
 
 /** @import * as P from './worker/protocol.js' */
@@ -238,7 +238,11 @@ const challenge = new ChallengePanel({
  */
 let challengeTools = null;
 function loadChallengeTools() {
-  challengeTools ??= Promise.all([import('./challenge/challenge-compose.js'), import('./challenge/grade.js')]).then(
+  challengeTools ??= Promise.all([
+    import('./challenge/challenge-compose.js'),
+    import('./challenge/grade.js'),
+    loadRest(),
+  ]).then(
     ([compose, grading]) => {
       compose.createCompose({ client, state });
       grading.createGrading({ client });
@@ -262,8 +266,10 @@ const run = createRun({
   exporter,
   fitEmbed: presentation.fitEmbed,
   afterRun: () => {
-    // What no one sees yet is built once the page is idle, unless it is shown first.
+    // What no one sees yet is built once the page is idle, unless it is shown first, with the rest
+    // of the page's messages.
     whenIdle(() => {
+      loadRest().catch((e) => say(t('page-messages-failed', { reason: e.message })));
       loadChallengeTools();
       walkthrough.build();
       buildGroups(ui.form);

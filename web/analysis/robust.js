@@ -104,11 +104,8 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
   // The map's CSV stays on while the map is of an earlier scenario: it names that scenario.
   const shown = stale.add({
     name: 'map',
-    what: t('map-stale'),
-    press: t('map-stale.press'),
     before: $('map-plot'),
     shows: [$('map-plot')],
-    exportNote: t('map-stale.export'),
     back: true,
   });
 

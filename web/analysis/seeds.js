@@ -25,12 +25,9 @@ export function createSeeds({ state, analysis, framing, current, stale }) {
   // The seeds' CSV does not name its scenario: it is off while the bands are of an earlier one.
   const shown = stale.add({
     name: 'seeds',
-    what: t('seeds-stale'),
-    press: t('seeds-stale.press'),
     before: $('seeds-plots'),
     shows: [$('seeds-plots')],
     exports: [$('seeds-csv', HTMLButtonElement)],
-    exportNote: t('seeds-stale.export'),
     back: true,
   });
 

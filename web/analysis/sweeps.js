@@ -29,12 +29,9 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
   // The sweep's CSV does not name its scenario: it is off while the sweep is of an earlier one.
   const shown = stale.add({
     name: 'sweep',
-    what: t('sweep-stale'),
-    press: t('sweep-stale.press'),
     before: $('sweep-table'),
     shows: [$('sweep-table'), $('bode')],
     exports: [csvButton],
-    exportNote: t('sweep-stale.export'),
     back: true,
   });
 

@@ -11,7 +11,7 @@ import { el } from '../ui/dom.js';
 import { panelParts, showVerdict } from './checklist.js';
 import { copyToForm, knob } from './knobs.js';
 import { header, originOf } from './origin.js';
-import { t } from '../l10n/l10n.js';
+import { loadRest, t } from '../l10n/l10n.js';
 import { integer } from '../analysis/digits.js';
 import { briefText } from './brief.js';
 
@@ -62,11 +62,8 @@ export class ChallengePanel {
     // The submission link a stale verdict's panel copies is the checked one's, which it names.
     this.shown = stale.add({
       name: 'challenge',
-      what: t('challenge-stale'),
-      press: t('challenge-stale.press'),
       before: this.parts.verdict,
       shows: [this.parts.verdict, this.parts.checklist],
-      exportNote: t('challenge-stale.export'),
     });
   }
 
@@ -99,6 +96,8 @@ export class ChallengePanel {
   }
 
   async openLink() {
+    // The panel says the rest of the page's messages.
+    await loadRest();
     const { client } = this;
     const link = /** @type {Link} */ (this.link);
     document.body.classList.add('with-challenge');

@@ -2,7 +2,7 @@
 // worker at a time, results in job order, Cancel that stops at once, a crashed worker replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { jobError, watch } from './watch.js';
-import { t } from '../l10n/l10n.js';
+import { loadRest, t } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -111,7 +111,8 @@ export class Pool {
    * @returns {Promise<P.Jobs[K]['result'][]>}
    */
   async run(jobs, onDone = () => {}) {
-    await this.start();
+    // The messages the replies may hold are loaded first (see RunClient.job).
+    await Promise.all([this.start(), loadRest()]);
     const generation = ++this.generation;
     /** @type {P.Jobs[K]['result'][]} */
     const results = new Array(jobs.length);

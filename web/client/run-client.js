@@ -3,7 +3,7 @@
 // goes to the page's handler of its type. A worker that fails is replaced.
 import { WORKER_URL } from '../worker-url.js';
 import { crashReason, errorReason, jobError, unreadable, watch } from './watch.js';
-import { spoken } from '../l10n/l10n.js';
+import { loadRest, spoken } from '../l10n/l10n.js';
 
 /** @import * as P from '../worker/protocol.js' */
 
@@ -149,13 +149,15 @@ export class RunClient {
   }
 
   /**
-   * Runs a stateless job of the worker (protocol.js's Jobs); resolves with its result.
+   * Runs a stateless job of the worker (protocol.js's Jobs); resolves with its result. The
+   * messages its reply may hold (the tools', the laws', the challenges') are loaded first.
    * @template {keyof P.Jobs} K
    * @param {K} kind
    * @param {P.Jobs[K]['req']} [data]
    * @returns {Promise<P.Jobs[K]['result']>}
    */
-  job(kind, data = /** @type {P.Jobs[K]['req']} */ ({})) {
+  async job(kind, data = /** @type {P.Jobs[K]['req']} */ ({})) {
+    await loadRest();
     const job = ++this.req;
     return this.ask(`job ${job}`, /** @type {P.JobMessage} */ ({ type: 'job', job, kind, ...data }));
   }

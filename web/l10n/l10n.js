@@ -48,7 +48,7 @@ export async function useLanguage(lang) {
   language = lang;
   bundle = new FluentBundle(lang, { useIsolating: false });
   loading.clear();
-  teaching = false;
+  rest = false;
   document.documentElement.lang = lang;
   if (lang === 'en') {
     add(EN_PAGE, 'en/page');
@@ -65,7 +65,7 @@ function* generateBundles() {
   yield bundle;
 }
 
-/** @param {'page' | 'teaching'} part */
+/** @param {'page' | 'rest'} part */
 async function fetchPart(part) {
   const url = FILES[language]?.[part];
   if (!url) throw new Error(`no ${part} messages for ${language}`);
@@ -75,28 +75,29 @@ async function fetchPart(part) {
 }
 
 /**
- * Loads the teaching texts (lessons, walkthrough) of the language shown, once.
+ * Loads the rest of the messages of the language shown (the tools', the law editor's, the
+ * challenges', the lessons' and the walkthrough's), once; a failed load is tried again when next
+ * asked for.
  * @returns {Promise<void>}
  */
-export function loadTeaching() {
-  let promise = loading.get('teaching');
+export function loadRest() {
+  let promise = loading.get('rest');
   if (!promise) {
-    promise = fetchPart('teaching').then(
-      () => void (teaching = true),
+    promise = fetchPart('rest').then(
+      () => void (rest = true),
       (e) => {
-        // Asked again, it is fetched again.
-        loading.delete('teaching');
+        loading.delete('rest');
         throw e;
       },
     );
-    loading.set('teaching', promise);
+    loading.set('rest', promise);
   }
   return promise;
 }
 
-let teaching = false;
-/** Whether the teaching texts are loaded. */
-export const teachingLoaded = () => teaching;
+let rest = false;
+/** Whether the rest of the messages is loaded. */
+export const restLoaded = () => rest;
 
 /** The message files of the language shown that the page fetches (the service worker keeps them). */
 export const languageFiles = () => Object.values(FILES[language] ?? {});

@@ -4,7 +4,7 @@ import { el } from '../ui/dom.js';
 import { keepWhole } from './layout.js';
 import { fragment, setFragment } from '../ui/url.js';
 import { withLanguage } from '../ui/language.js';
-import { language, loadTeaching, t } from '../l10n/l10n.js';
+import { language, loadRest, t } from '../l10n/l10n.js';
 import { LESSON_TEXTS, measuredArgs } from './measured.js';
 import { TABLE } from './table.js';
 
@@ -82,7 +82,7 @@ export class LessonPanel {
 
   /** Loads the lessons' texts (once) and lists the lessons; resolves when they are listed. */
   texts() {
-    this.loaded ??= loadTeaching().then(
+    this.loaded ??= loadRest().then(
       () => {
         this.lessons.forEach((lesson, i) => {
           const text = lessonText(lesson);

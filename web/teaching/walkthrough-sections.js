@@ -1,9 +1,9 @@
 // The walkthrough's sections as the page shows them: each one's prose (its numbers filled in from
 // the measurements table), equations, knobs and plots, the lumped-parameter table, and the note
-// that the IFOC baseline drives the motor. Their words are messages of the teaching part
+// that the IFOC baseline drives the motor. Their words are messages of the rest
 // (walkthrough.ftl), loaded before the sections are built.
 import { el } from '../ui/dom.js';
-import { language, t, teachingLoaded } from '../l10n/l10n.js';
+import { language, t, restLoaded } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
@@ -43,12 +43,11 @@ export function decimal(text) {
 
 /**
  * A plot's label as shown: its message, or its symbols. A plot's columns are read before the
- * teaching texts are in (a run asks for them), its words only once its section is built: until
+ * rest of the messages is in (a run asks for them), its words only once its section is built: until
  * then a message is its id.
  * @param {Label} label
  */
-const shownLabel = (label) =>
-  typeof label === 'string' ? label : teachingLoaded() ? t(label.id, label.args) : label.id;
+const shownLabel = (label) => (typeof label === 'string' ? label : restLoaded() ? t(label.id, label.args) : label.id);
 
 // Sections whose signals are backstepping terms: with the IFOC baseline they do not drive the motor.
 const BACKSTEPPING = new Set(['step1', 'step2', 'step3', 'step4', 'stability']);

@@ -1,9 +1,9 @@
 // The design walkthrough: for each of the eight sections its prose, its equations (KaTeX), its
 // live signals from the current run and its design knobs; plus the inspect panel and the lessons.
 // Every number shown here comes from the core (through the worker); the page only formats it. Its
-// words are the teaching part's messages (walkthrough.ftl), fetched before the sections are built.
+// words are messages of the rest (walkthrough.ftl, l10n.js), fetched before the sections are built.
 import { Plots } from '../plots/plots.js';
-import { loadTeaching, t, teachingLoaded } from '../l10n/l10n.js';
+import { loadRest, t, restLoaded } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
@@ -127,7 +127,7 @@ export class Walkthrough {
    * @returns {Promise<boolean>}
    */
   build() {
-    this.building ??= loadTeaching().then(
+    this.building ??= loadRest().then(
       () => {
         this.buildSections();
         return true;
@@ -269,7 +269,7 @@ export class Walkthrough {
    * (the first time) and learn whether they scroll, and a waiting view is drawn. Should its texts
    * fail to load (the network gone), the page says so. */
   shown() {
-    if (teachingLoaded()) this.buildSections();
+    if (restLoaded()) this.buildSections();
     this.build().then((built) => (built ? this.opening() : say(t('walkthrough-load-failed'))));
   }
 

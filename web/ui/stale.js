@@ -16,10 +16,9 @@ import { t } from '../l10n/l10n.js';
  * `data-NAME-stale` is set while it is marked, its mark's id is `NAME-stale`, and the mark says the
  * message `stale-NAME`: what the result is, the button that runs it again, what it means for its
  * export), the element the mark goes before, the elements that show it (outlined while marked) and
- * the buttons that export it without naming its scenario (off while marked). `what`, `press` and
- * `exportNote` are not shown: the message holds the mark's words.
- * @typedef {{name: string, what?: string, press?: string, before: HTMLElement, shows: HTMLElement[],
- *   exports?: HTMLButtonElement[], exportNote?: string, back?: boolean}} Result
+ * the buttons that export it without naming its scenario (off while marked).
+ * @typedef {{name: string, before: HTMLElement, shows: HTMLElement[], exports?: HTMLButtonElement[],
+ *   back?: boolean}} Result
  */
 
 /** How many characters of a result's scenario its mark quotes. */

@@ -2,6 +2,7 @@
 //! ([`crate::record`]), read back (`replay.rs`) for windows, figures, CSV and the inspect panel.
 
 mod closed_loop;
+mod error;
 mod replay;
 
 use crate::control::LyapunovBound;
@@ -12,7 +13,7 @@ use crate::record::{
 use crate::scenario::{Scenario, ScenarioError};
 use crate::text::Message;
 use closed_loop::{with_filter, Loop, LoopState, Observer};
-pub use closed_loop::{LawFailure, SimError};
+pub use error::{LawFailure, SimError};
 use serde::Serialize;
 
 /// Largest trace a run may record (bytes); beyond it the run is refused before it starts.

@@ -143,6 +143,7 @@ run-worker-failed = Der Simulations-Worker ist ausgefallen ({ $reason }). Er wur
 run-worker-failed-pins = Der Simulations-Worker ist ausgefallen ({ $reason }). Er wurde neu gestartet; drücken Sie „Starten“, um es erneut zu versuchen. Die angehefteten Läufe wurden verworfen: { $pins }.
 # $language is the code of the language asked for (de).
 page-language-failed = Die Seite konnte ihre Texte für { $language } nicht laden ({ $reason }): Sie wird auf Englisch angezeigt.
+page-messages-failed = Die übrigen Texte der Seite konnten nicht geladen werden ({ $reason }): Werkzeuge, Lektionen und Entwurfsdurchgang zeigen Meldungsnamen, bis die Seite neu geladen wird.
 page-challenge-tools-failed = Aufgabeneditor und Bewertung der Registerkarte „Aufgabe“ konnten nicht geladen werden: { $reason }. Öffnen Sie die Registerkarte erneut, um es noch einmal zu versuchen.
 page-lesson-map-failed = Die Karte der Lektion wurde nicht gelesen: { $reason }.
 # $lesson is the name the address asked for; $lessons lists the lessons' names.
@@ -394,3 +395,11 @@ grade-progress =
     .aria-label = Bewertete Abgaben
 grade-table =
     .aria-label = Bewertungen des Kurses
+
+## The challenge panel's controls, built with the page
+
+challenge-progress =
+    .aria-label = Erledigte Läufe der Aufgabe
+challenge-cancel = Prüfung abbrechen
+challenge-copy = Abgabelink kopieren
+challenge-open-failed = Die Aufgabe konnte nicht geöffnet werden: { $reason }. Die Seite zeigt stattdessen das Standardszenario.

@@ -41,9 +41,6 @@ seeds-series-max = Max.
 
 ## Frequency-response sweep: the form's run, status line and link (web/analysis/sweeps.js)
 
-sweep-stale = Diese Bode-Diagramme und diese Tabelle gehören
-    .press = „Frequenzgang berechnen“
-    .export = Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
 sweep-workers-invalid = workers = { $value }: Erwartet wird eine ganze Zahl von 1 bis 8.
 sweep-status-checking = Die Einstellungen des Frequenzgangs werden geprüft…
 sweep-refused = { $reason }.
@@ -60,9 +57,6 @@ sweep-link-refused = Der Frequenzgang in der Adresse ({ $link }) wurde nicht ber
 
 ## Seed runs: the form's run and status line (web/analysis/seeds.js)
 
-seeds-stale = Diese Startwert-Bänder gehören
-    .press = „Startwerte durchrechnen“
-    .export = Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
 seeds-count-invalid = Startwerte = { $value }: Erwartet wird eine ganze Zahl von 1 bis 1000.
 seeds-not-run = Die Startwerte wurden nicht durchgerechnet: Die Einstellungen sind ungültig oder hier nicht zulässig; die Meldung oben nennt den Grund.
 seeds-status-starting = Startwerte werden durchgerechnet…
@@ -73,9 +67,6 @@ seeds-status-failed = Startwert-Durchlauf fehlgeschlagen: { $reason }
 
 ## Model-error map: its run and status line (web/analysis/robust.js)
 
-map-stale = Diese Karte gehört
-    .press = „Karte berechnen“
-    .export = Ihr CSV-Export nennt das Szenario, für das sie berechnet wurde.
 map-status-starting = { $cells } Zellen × { $seeds } Startwerte werden berechnet…
 map-status-running = Karte wird berechnet: { $done } von { $total } Läufen.
 map-refused = Die Karte wurde nicht berechnet: { $reason }.
@@ -112,11 +103,7 @@ map-scale-none = keine
 
 ## Challenge panel: what a student sees of a challenge link (web/challenge/challenge.js)
 
-challenge-stale = Dieser Befund gehört
-    .press = „Starten und prüfen“
-    .export = „Abgabelink kopieren“ kopiert den Link der Einstellungen, die er geprüft hat.
 challenge-heading = Aufgabe
-challenge-open-failed = Die Aufgabe konnte nicht geöffnet werden: { $reason }. Die Seite zeigt stattdessen das Standardszenario.
 challenge-link-rejected = Dieser Aufgabenlink wurde abgelehnt: { $reason }. Die Seite zeigt stattdessen das Standardszenario.
 challenge-submission-another = Dieser Abgabelink gehört zu einer anderen Aufgabe (sein Aufgabenteil wurde bearbeitet): Er wurde nicht bewertet.
 challenge-submission-refused = Dieser Abgabelink wurde zurückgewiesen: { $reason }. Er wurde nicht bewertet; die Aufgabe beginnt mit ihren Grundeinstellungen.
@@ -150,10 +137,6 @@ challenge-copy-by-hand = Kopieren Sie diesen Abgabelink: { $url }
 
 ## Challenge panel: the checklist and its controls (web/challenge/checklist.js)
 
-challenge-progress =
-    .aria-label = Erledigte Läufe der Aufgabe
-challenge-cancel = Prüfung abbrechen
-challenge-copy = Abgabelink kopieren
 checklist-not-measured = nicht gemessen
 checklist-never = nie (∞)
 checklist-value-unit = { $value } { $unit }

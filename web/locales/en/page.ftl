@@ -143,6 +143,7 @@ run-worker-failed = The simulation worker failed ({ $reason }). It was restarted
 run-worker-failed-pins = The simulation worker failed ({ $reason }). It was restarted; press Run to try again. The pinned runs were dropped: { $pins }.
 # $language is the code of the language asked for (de).
 page-language-failed = The page could not load its { $language } messages ({ $reason }): it is in English.
+page-messages-failed = The rest of the page’s messages could not be loaded ({ $reason }): the tools, lessons and walkthrough show message names until the page is reloaded.
 page-challenge-tools-failed = The Challenge tab’s composer and grading could not be loaded: { $reason }. Open the tab again to retry.
 page-lesson-map-failed = The lesson’s map could not be loaded: { $reason }.
 # $lesson is the name the address asked for; $lessons lists the lessons' names.
@@ -394,3 +395,12 @@ grade-progress =
     .aria-label = Submissions graded
 grade-table =
     .aria-label = Grades of the class
+
+## The challenge panel's controls, built with the page
+
+challenge-progress =
+    .aria-label = Challenge runs done
+challenge-cancel = Cancel check
+challenge-copy = Copy submission link
+# $reason, here and in the messages below: the core's message, in English for now.
+challenge-open-failed = The challenge could not be opened: { $reason }. The page shows the default scenario instead.

@@ -55,13 +55,6 @@ seeds-series-max = max
 
 ## Frequency-response sweep: the form's run, status line and link (web/analysis/sweeps.js)
 
-# The mark on a sweep shown for an earlier scenario. web/ui/stale.js writes its sentence from these
-# parts: “{ sweep-stale } of an earlier scenario (SCENARIO), not of the settings now. Press
-# { sweep-stale.press } to bring it up to date. { sweep-stale.export }”. The value is the
-# sentence's subject and verb; .press names the Run sweep button as the page labels it.
-sweep-stale = These Bode plots and this table are
-    .press = “Run sweep”
-    .export = Their CSV, which does not name its scenario, is off until then.
 # $value is what the workers field holds, as typed.
 sweep-workers-invalid = workers = { $value }: expected a whole number from 1 to 8.
 sweep-status-checking = Checking the sweep…
@@ -84,10 +77,6 @@ sweep-link-refused = The sweep in the address ({ $link }) was not run: { $reason
 
 ## Seed runs: the form's run and status line (web/analysis/seeds.js)
 
-# The mark on seed bands shown for an earlier scenario (see sweep-stale).
-seeds-stale = These seed bands are
-    .press = “Run seeds”
-    .export = Their CSV, which does not name its scenario, is off until then.
 # $value is what the seeds field holds, as typed.
 seeds-count-invalid = seeds = { $value }: expected a whole number from 1 to 1000.
 seeds-not-run = The seeds were not run: the settings are not valid or not allowed here; the message at the top says why.
@@ -103,10 +92,6 @@ seeds-status-failed = Seed sweep failed: { $reason }
 
 ## Model-error map: its run and status line (web/analysis/robust.js)
 
-# The mark on a map shown for an earlier scenario (see sweep-stale).
-map-stale = This map is
-    .press = “Run map”
-    .export = Its CSV names the scenario it was run for.
 map-status-starting = Running { $cells } cells × { $seeds } seeds…
 map-status-running = Running the map: { $done } of { $total } runs.
 # $reason: the core's message on why it refuses the map, in English for now.
@@ -165,14 +150,8 @@ map-scale-none = none
 
 ## Challenge panel: what a student sees of a challenge link (web/challenge/challenge.js)
 
-# The mark on a verdict shown for earlier settings (see sweep-stale).
-challenge-stale = This verdict is
-    .press = “Run and check”
-    .export = “Copy submission link” copies the link of the settings it checked.
 # The panel's heading while the challenge loads.
 challenge-heading = Challenge
-# $reason, here and in the messages below: the core's message, in English for now.
-challenge-open-failed = The challenge could not be opened: { $reason }. The page shows the default scenario instead.
 challenge-link-rejected = This challenge link was rejected: { $reason }. The page shows the default scenario instead.
 challenge-submission-another = This submission link belongs to another challenge (its challenge part was edited): it was not graded.
 challenge-submission-refused = This submission link was refused: { $reason }. It was not graded; the task starts from its base settings.
@@ -216,10 +195,6 @@ challenge-copy-by-hand = Copy this submission link: { $url }
 
 ## Challenge panel: the checklist and its controls (web/challenge/checklist.js)
 
-challenge-progress =
-    .aria-label = Challenge runs done
-challenge-cancel = Cancel check
-challenge-copy = Copy submission link
 checklist-not-measured = not measured
 # A settling time never reached.
 checklist-never = never (∞)

@@ -42,9 +42,6 @@ seeds-series-max = máx.
 
 ## Frequency-response sweep: the form's run, status line and link (web/analysis/sweeps.js)
 
-sweep-stale = Estos diagramas de Bode y esta tabla son
-    .press = «Ejecutar barrido»
-    .export = Su CSV, que no indica su escenario, queda desactivado hasta entonces.
 sweep-workers-invalid = workers = { $value }: se esperaba un número entero de 1 a 8.
 sweep-status-checking = Comprobando el barrido…
 sweep-refused = { $reason }.
@@ -61,9 +58,6 @@ sweep-link-refused = El barrido de la dirección ({ $link }) no se ejecutó: { $
 
 ## Seed runs: the form's run and status line (web/analysis/seeds.js)
 
-seeds-stale = Estas bandas de semillas son
-    .press = «Ejecutar semillas»
-    .export = Su CSV, que no indica su escenario, queda desactivado hasta entonces.
 seeds-count-invalid = seeds = { $value }: se esperaba un número entero de semillas de 1 a 1000.
 seeds-not-run = Las semillas no se ejecutaron: los ajustes no son válidos o no se admiten aquí; el mensaje de arriba indica por qué.
 seeds-status-starting = Ejecutando las semillas…
@@ -74,9 +68,6 @@ seeds-status-failed = El barrido de semillas falló: { $reason }
 
 ## Model-error map: its run and status line (web/analysis/robust.js)
 
-map-stale = Este mapa es
-    .press = «Ejecutar mapa»
-    .export = Su CSV indica el escenario para el que se ejecutó.
 map-status-starting = Ejecutando { $cells } celdas × { $seeds } semillas…
 map-status-running = Ejecutando el mapa: { $done } de { $total } ejecuciones.
 map-refused = El mapa no se ejecutó: { $reason }.
@@ -113,11 +104,7 @@ map-scale-none = ninguna
 
 ## Challenge panel: what a student sees of a challenge link (web/challenge/challenge.js)
 
-challenge-stale = Este veredicto es
-    .press = «Ejecutar y comprobar»
-    .export = «Copiar enlace de entrega» copia el enlace de los ajustes que comprobó.
 challenge-heading = Reto
-challenge-open-failed = No se pudo abrir el reto: { $reason }. La página muestra en su lugar el escenario por defecto.
 challenge-link-rejected = Este enlace de reto se ha rechazado: { $reason }. La página muestra en su lugar el escenario por defecto.
 challenge-submission-another = Este enlace de entrega pertenece a otro reto (se editó su parte del reto): no se ha calificado.
 challenge-submission-refused = Este enlace de entrega no se ha admitido: { $reason }. No se ha calificado; la tarea parte de sus ajustes base.
@@ -151,10 +138,6 @@ challenge-copy-by-hand = Copia este enlace de entrega: { $url }
 
 ## Challenge panel: the checklist and its controls (web/challenge/checklist.js)
 
-challenge-progress =
-    .aria-label = Ejecuciones del reto completadas
-challenge-cancel = Cancelar comprobación
-challenge-copy = Copiar enlace de entrega
 checklist-not-measured = sin medir
 checklist-never = nunca (∞)
 checklist-value-unit = { $value } { $unit }

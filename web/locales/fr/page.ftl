@@ -113,6 +113,7 @@ run-worker-not-started = Le worker de simulation n’a pas pu démarrer ({ $reas
 run-worker-failed = Le worker de simulation a échoué ({ $reason }). Il a été redémarré ; appuyez sur Lancer pour réessayer.
 run-worker-failed-pins = Le worker de simulation a échoué ({ $reason }). Il a été redémarré ; appuyez sur Lancer pour réessayer. Les simulations épinglées ont été abandonnées : { $pins }.
 page-language-failed = La page n’a pas pu charger ses messages « { $language } » ({ $reason }) : elle s’affiche en anglais.
+page-messages-failed = Le reste des textes de la page n’a pas pu être chargé ({ $reason }) : les outils, les leçons et le parcours affichent des noms de messages jusqu’au rechargement de la page.
 page-challenge-tools-failed = L’éditeur et la notation de l’onglet Défi n’ont pas pu être chargés : { $reason }. Rouvrez l’onglet pour réessayer.
 page-lesson-map-failed = La carte de la leçon n’a pas été lue : { $reason }.
 page-no-lesson = Aucune leçon nommée « { $lesson } ». Leçons : { $lessons }.
@@ -318,3 +319,11 @@ grade-progress =
     .aria-label = Soumissions notées
 grade-table =
     .aria-label = Notes de la classe
+
+## The challenge panel's controls, built with the page
+
+challenge-progress =
+    .aria-label = Simulations du défi effectuées
+challenge-cancel = Annuler la vérification
+challenge-copy = Copier le lien de soumission
+challenge-open-failed = Le défi n’a pas pu être ouvert : { $reason }. La page affiche à la place le scénario par défaut.

@@ -42,9 +42,6 @@ seeds-series-max = max
 
 ## Balayage en fréquence : lancement, ligne d’état et lien (web/analysis/sweeps.js)
 
-sweep-stale = Ces diagrammes de Bode et ce tableau sont
-    .press = « Lancer le balayage »
-    .export = Leur CSV, qui ne nomme pas son scénario, est désactivé d’ici là.
 sweep-workers-invalid = workers = { $value } : un nombre entier de 1 à 8 est attendu.
 sweep-status-checking = Vérification du balayage…
 sweep-refused = { $reason }.
@@ -61,9 +58,6 @@ sweep-link-refused = Le balayage de l’adresse ({ $link }) n’a pas été lanc
 
 ## Graines : lancement et ligne d’état (web/analysis/seeds.js)
 
-seeds-stale = Ces bandes sur les graines sont
-    .press = « Lancer les graines »
-    .export = Leur CSV, qui ne nomme pas son scénario, est désactivé d’ici là.
 seeds-count-invalid = seeds = { $value } : le nombre de graines doit être un entier de 1 à 1000.
 seeds-not-run = Les graines n’ont pas été lancées : les réglages ne sont pas valides ou pas autorisés ici ; le message en haut de la page en donne la raison.
 seeds-status-starting = Lancement des graines…
@@ -74,9 +68,6 @@ seeds-status-failed = Échec du balayage des graines : { $reason }
 
 ## Carte d’erreur de modèle : lancement et ligne d’état (web/analysis/robust.js)
 
-map-stale = Cette carte est
-    .press = « Lancer la carte »
-    .export = Son CSV nomme le scénario pour lequel elle a été calculée.
 map-status-starting = Calcul de { $cells } cases × { $seeds } graines…
 map-status-running = Calcul de la carte : { $done } simulations sur { $total }.
 map-refused = La carte n’a pas été calculée : { $reason }.
@@ -113,11 +104,7 @@ map-scale-none = aucune
 
 ## Panneau de défi : ce que voit l’étudiant d’un lien de défi (web/challenge/challenge.js)
 
-challenge-stale = Ce verdict est
-    .press = « Lancer et vérifier »
-    .export = « Copier le lien de soumission » copie le lien des réglages vérifiés.
 challenge-heading = Défi
-challenge-open-failed = Le défi n’a pas pu être ouvert : { $reason }. La page affiche à la place le scénario par défaut.
 challenge-link-rejected = Ce lien de défi a été rejeté : { $reason }. La page affiche à la place le scénario par défaut.
 challenge-submission-another = Ce lien de soumission appartient à un autre défi (sa partie défi a été modifiée) : il n’a pas été noté.
 challenge-submission-refused = Ce lien de soumission a été refusé : { $reason }. Il n’a pas été noté ; l’exercice part de ses réglages de base.
@@ -151,10 +138,6 @@ challenge-copy-by-hand = Copiez ce lien de soumission : { $url }
 
 ## Panneau de défi : la liste de contrôle et ses commandes (web/challenge/checklist.js)
 
-challenge-progress =
-    .aria-label = Simulations du défi effectuées
-challenge-cancel = Annuler la vérification
-challenge-copy = Copier le lien de soumission
 checklist-not-measured = non mesuré
 checklist-never = jamais (∞)
 checklist-value-unit = { $value } { $unit }

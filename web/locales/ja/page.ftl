@@ -112,6 +112,7 @@ run-worker-not-started = シミュレーションのワーカーを起動でき�
 run-worker-failed = シミュレーションのワーカーが失敗しました（{ $reason }）。ワーカーは再起動しました。「実行」を押して、もう一度お試しください。
 run-worker-failed-pins = シミュレーションのワーカーが失敗しました（{ $reason }）。ワーカーは再起動しました。「実行」を押して、もう一度お試しください。ピン留めした実行は破棄されました：{ $pins }。
 page-language-failed = ページの{ $language }のメッセージを読み込めませんでした（{ $reason }）。英語で表示しています。
+page-messages-failed = ページの残りのテキストを読み込めませんでした（{ $reason }）。ページを再読み込みするまで、ツール、レッスン、設計解説にはメッセージ名が表示されます。
 page-challenge-tools-failed = 「課題」タブの作成と採点の機能を読み込めませんでした：{ $reason }。タブをもう一度開くと再試行します。
 page-lesson-map-failed = レッスンのマップを読み込めませんでした：{ $reason }。
 page-no-lesson = 「{ $lesson }」という名前のレッスンはありません。レッスン：{ $lessons }。
@@ -315,3 +316,11 @@ grade-progress =
     .aria-label = 採点済みの提出
 grade-table =
     .aria-label = クラスの採点結果
+
+## The challenge panel's controls, built with the page
+
+challenge-progress =
+    .aria-label = 完了した課題の実行
+challenge-cancel = 確認を中止
+challenge-copy = 提出リンクをコピー
+challenge-open-failed = 課題を開けませんでした：{ $reason }。代わりに既定のシナリオを表示しています。

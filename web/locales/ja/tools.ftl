@@ -40,9 +40,6 @@ seeds-series-max = 最大
 
 ## 周波数応答スイープ：フォームの実行、状態表示、リンク（web/analysis/sweeps.js）
 
-sweep-stale = このボード線図とこの表は
-    .press = 「スイープを実行」
-    .export = これらのCSVにはシナリオが記録されないため、それまで書き出しできません。
 sweep-workers-invalid = workers = { $value }：1～8の整数を指定してください。
 sweep-status-checking = スイープを確認しています…
 sweep-refused = { $reason }。
@@ -58,9 +55,6 @@ sweep-link-refused = アドレス内のスイープ（{ $link }）は実行さ�
 
 ## シードごとの実行：フォームの実行と状態表示（web/analysis/seeds.js）
 
-seeds-stale = このシード帯は
-    .press = 「複数シードで実行」
-    .export = これらのCSVにはシナリオが記録されないため、それまで書き出しできません。
 seeds-count-invalid = seeds = { $value }：1～1000の整数を指定してください。
 seeds-not-run = シードの実行は行われませんでした。設定が無効か、ここでは許可されていません。理由は上部のメッセージに表示されています。
 seeds-status-starting = 複数シードで実行しています…
@@ -71,9 +65,6 @@ seeds-status-failed = シードの実行に失敗しました：{ $reason }
 
 ## モデル誤差マップ：実行と状態表示（web/analysis/robust.js）
 
-map-stale = このマップは
-    .press = 「マップを実行」
-    .export = このマップのCSVには、実行したときのシナリオが記録されています。
 map-status-starting = { $cells }セル × { $seeds }シードを実行しています…
 map-status-running = マップを実行しています：{ $total }回中{ $done }回
 map-refused = マップは実行されませんでした：{ $reason }。
@@ -110,11 +101,7 @@ map-scale-none = なし
 
 ## 課題パネル：課題リンクを開いた学生に表示される内容（web/challenge/challenge.js）
 
-challenge-stale = この判定は
-    .press = 「実行して確認」
-    .export = 「提出リンクをコピー」は、判定したときの設定のリンクをコピーします。
 challenge-heading = 課題
-challenge-open-failed = 課題を開けませんでした：{ $reason }。代わりに既定のシナリオを表示しています。
 challenge-link-rejected = この課題リンクは却下されました：{ $reason }。代わりに既定のシナリオを表示しています。
 challenge-submission-another = この提出リンクは別の課題のものです（課題の部分が編集されています）。採点していません。
 challenge-submission-refused = この提出リンクは受け付けられませんでした：{ $reason }。採点していません。課題は基本設定から始まります。
@@ -146,10 +133,6 @@ challenge-copy-by-hand = この提出リンクをコピーしてください：{
 
 ## 課題パネル：チェックリストとその操作（web/challenge/checklist.js）
 
-challenge-progress =
-    .aria-label = 完了した課題の実行
-challenge-cancel = 確認を中止
-challenge-copy = 提出リンクをコピー
 checklist-not-measured = 未測定
 checklist-never = 到達せず（∞）
 checklist-value-unit = { $value } { $unit }

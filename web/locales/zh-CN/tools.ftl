@@ -40,9 +40,6 @@ seeds-series-max = 最大值
 
 ## 频率响应扫描：表单的运行、状态行和链接（web/analysis/sweeps.js）
 
-sweep-stale = 这些伯德图和这张表属于
-    .press = “运行扫描”
-    .export = 其 CSV 不注明所属场景，在此之前不可导出。
 sweep-workers-invalid = workers = { $value }：应为 1 至 8 的整数。
 sweep-status-checking = 正在检查扫描…
 sweep-refused = { $reason }。
@@ -58,9 +55,6 @@ sweep-link-refused = 地址中的扫描（{ $link }）未运行：{ $reason }。
 
 ## 多种子运行：表单的运行和状态行（web/analysis/seeds.js）
 
-seeds-stale = 这些多种子区间带属于
-    .press = “运行多种子”
-    .export = 其 CSV 不注明所属场景，在此之前不可导出。
 seeds-count-invalid = seeds = { $value }：种子数应为 1 至 1000 的整数。
 seeds-not-run = 多种子运行未进行：设置无效或在此处不允许；原因见页面顶部的信息。
 seeds-status-starting = 正在运行多种子…
@@ -71,9 +65,6 @@ seeds-status-failed = 多种子运行失败：{ $reason }
 
 ## 模型误差图：运行和状态行（web/analysis/robust.js）
 
-map-stale = 这张误差图属于
-    .press = “运行误差图”
-    .export = 其 CSV 注明了它所对应的场景。
 map-status-starting = 正在运行 { $cells } 个格子 × { $seeds } 个种子…
 map-status-running = 正在运行误差图：{ $total } 次运行中已完成 { $done } 次。
 map-refused = 误差图未运行：{ $reason }。
@@ -110,11 +101,7 @@ map-scale-none = 无
 
 ## 挑战面板：学生看到的挑战链接（web/challenge/challenge.js）
 
-challenge-stale = 此判定属于
-    .press = “运行并检查”
-    .export = “复制提交链接”复制的是它所检查的那组设置的链接。
 challenge-heading = 挑战
-challenge-open-failed = 无法打开此挑战：{ $reason }。页面改为显示默认场景。
 challenge-link-rejected = 此挑战链接被拒绝：{ $reason }。页面改为显示默认场景。
 challenge-submission-another = 此提交链接属于另一个挑战（其挑战部分被改动过）：未评分。
 challenge-submission-refused = 此提交链接未被接受：{ $reason }。未评分；任务从其基础设置开始。
@@ -146,10 +133,6 @@ challenge-copy-by-hand = 请复制此提交链接：{ $url }
 
 ## 挑战面板：检查清单及其控件（web/challenge/checklist.js）
 
-challenge-progress =
-    .aria-label = 已完成的挑战运行
-challenge-cancel = 取消检查
-challenge-copy = 复制提交链接
 checklist-not-measured = 未测得
 checklist-never = 从未（∞）
 checklist-value-unit = { $value } { $unit }
