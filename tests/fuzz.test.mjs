@@ -23,6 +23,7 @@ import {
   sweep_summary,
   variant,
 } from '../dist/pkg/imlab.js';
+import { english } from './core-english.mjs';
 
 initSync({ module: readFileSync(new URL('../dist/pkg/imlab_bg.wasm', import.meta.url)) });
 
@@ -292,7 +293,10 @@ function attempt(name, fn, ...args) {
     counts.successes++;
     return value;
   } catch (e) {
-    const text = e instanceof Error ? e.message : String(e);
+    // A refusal of the core is its message (its id and arguments), said here in English: an id
+    // with no English message fails the test.
+    const message = typeof e === 'object' && e !== null && 'id' in e && 'args' in e;
+    const text = e instanceof Error ? e.message : message ? english(e) : String(e);
     if (e instanceof WebAssembly.RuntimeError || POISONED.test(text)) {
       counts.traps++;
       const shown = args.map((a) =>
@@ -304,7 +308,7 @@ function attempt(name, fn, ...args) {
       assert.fail(`${name} trapped (${e.name}: ${text}) on ${shown.join(', ')}`);
     }
     assert.ok(
-      (typeof e === 'string' || e instanceof Error) && text.length > 0,
+      (typeof e === 'string' || e instanceof Error || message) && text.length > 0,
       `${name} threw ${String(e)} without a message`,
     );
     counts.cleanErrors++;

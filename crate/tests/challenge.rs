@@ -6,8 +6,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::challenge::{
-    builtin, figure_info, figures, judge, measure, Challenge, ErrorKind, Measure, Measures,
-    Submission, Verdict, BUILTINS, LOAD_RECOVERY,
+    builtin, figure_info, judge, measure, Challenge, ErrorKind, Measure, Measures, Submission,
+    Verdict, BUILTINS, LOAD_RECOVERY,
 };
 use imlab::sim::Simulation;
 use std::process::{Command, Stdio};

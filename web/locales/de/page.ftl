@@ -403,3 +403,4 @@ challenge-progress =
 challenge-cancel = Prüfung abbrechen
 challenge-copy = Abgabelink kopieren
 challenge-open-failed = Die Aufgabe konnte nicht geöffnet werden: { $reason }. Die Seite zeigt stattdessen das Standardszenario.
+law-checking = Ihr Regelgesetz wird an der Entwurfsdynamik geprüft…

@@ -404,3 +404,4 @@ challenge-cancel = Cancel check
 challenge-copy = Copy submission link
 # $reason, here and in the messages below: the core's message, in English for now.
 challenge-open-failed = The challenge could not be opened: { $reason }. The page shows the default scenario instead.
+law-checking = Checking your law against the designed dynamics…

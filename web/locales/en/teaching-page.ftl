@@ -43,7 +43,6 @@ law-names-functions = With + − * / ^ (or · and −), parentheses, numbers and
 # An error in a law as typed: $at is the place of the character it concerns, counted from 1;
 # $reason is the core's (“unknown name 'foo' (see the list of names)”).
 law-error-at = At character { $at }: { $reason }
-law-checking = Checking your law against the designed dynamics…
 # $reason is why, as the page's worker or the core says it.
 law-verdict-failed = The verdict on your law could not be computed: { $reason }
 # A verdict on a law other than the one typed now: $output is the law's output (v2), $law the

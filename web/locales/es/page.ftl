@@ -403,3 +403,4 @@ challenge-progress =
 challenge-cancel = Cancelar comprobación
 challenge-copy = Copiar enlace de entrega
 challenge-open-failed = No se pudo abrir el reto: { $reason }. La página muestra en su lugar el escenario por defecto.
+law-checking = Comprobando tu ley frente a la dinámica diseñada…

@@ -327,3 +327,4 @@ challenge-progress =
 challenge-cancel = Annuler la vérification
 challenge-copy = Copier le lien de soumission
 challenge-open-failed = Le défi n’a pas pu être ouvert : { $reason }. La page affiche à la place le scénario par défaut.
+law-checking = Vérification de votre loi par rapport à la dynamique voulue…

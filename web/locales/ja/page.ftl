@@ -324,3 +324,4 @@ challenge-progress =
 challenge-cancel = 確認を中止
 challenge-copy = 提出リンクをコピー
 challenge-open-failed = 課題を開けませんでした：{ $reason }。代わりに既定のシナリオを表示しています。
+law-checking = 制御則を設計した動特性と照合しています…

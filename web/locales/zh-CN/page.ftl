@@ -400,3 +400,4 @@ challenge-progress =
 challenge-cancel = 取消检查
 challenge-copy = 复制提交链接
 challenge-open-failed = 无法打开此挑战：{ $reason }。页面改为显示默认场景。
+law-checking = 正在按设计的动态检查你的控制律…
