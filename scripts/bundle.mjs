@@ -12,7 +12,7 @@
 //                           written into the page's head, with its hash in the page's
 //                           Content-Security-Policy: it starts the worker one round trip sooner
 //   locales/LANG/PART-HASH.ftl  each language's messages: the page part, and the rest
-//                           (the English page messages are in web/main-HASH.js)
+//                           (the English page part's words are written into index.html too)
 //   style-HASH.css          uPlot's stylesheet and the page's (style.css, present.css), one file
 //   index.html              static/index.html, pointing at the above
 //   sw.js                   static/sw.js, with the list of files it fetches when it installs
@@ -139,9 +139,10 @@ const tables = readdirSync(TABLES_DIR)
 // The page's messages (web/locales/LANG/*.ftl): of each language a page part (what the page says
 // before its first plot: its frame, the settings' meanings, the run's figures and warnings, the
 // scenario's refusals) and the rest (the tools, the law editor, challenges, the lessons and the
-// walkthrough), each one file named by its hash in locales/LANG/. The English page part is carried
-// in the page's bundle; every other file is fetched when its language is shown, the rest once the
-// first plot is drawn or when a part of the page that says it is first used.
+// walkthrough), each one file named by its hash in locales/LANG/. The page part of the language
+// shown is fetched as the page starts, beside the core; the rest once the first plot is drawn or
+// when a part of the page that says it is first used. The English page part's words are also
+// written into index.html (below).
 const LOCALES = join('web', 'locales');
 const PAGE = ['page.ftl', 'core-scenario.ftl', 'core-run.ftl'];
 /** The files of `lang`'s `part`: the page part's, or every other. */
@@ -156,14 +157,15 @@ rmSync(join(dist, 'locales'), { recursive: true, force: true });
 for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
   for (const part of ['page', 'rest']) {
+    // Comments are for translators: a line that starts with `#` is one, and is not sent.
     const text = partOf(lang, part)
       .map((n) => readFileSync(join(LOCALES, lang, n), 'utf8'))
+      .join('\n')
+      .split('\n')
+      .filter((line) => !line.startsWith('#'))
       .join('\n');
     if (text === '') continue;
-    if (lang === 'en' && part === 'page') {
-      enPage = text;
-      continue;
-    }
+    if (lang === 'en' && part === 'page') enPage = text;
     const name = `locales/${lang}/${part}-${hashOf(Buffer.from(text))}.ftl`;
     mkdirSync(join(dist, 'locales', lang), { recursive: true });
     writeFileSync(join(dist, name), text);
@@ -179,10 +181,7 @@ const main = (
       replaced('/worker-url.js', `export const WORKER_URL = new URL('./${worker.name}', import.meta.url);`),
       replaced('/vendor/uPlot.esm.js', uplot),
       replaced('/teaching/measurements.js', `export const TABLES = ${JSON.stringify(tables)};`),
-      replaced(
-        '/l10n/catalog.js',
-        `export const EN_PAGE = ${JSON.stringify(enPage)};\nexport const FILES = ${JSON.stringify(localeFiles)};`,
-      ),
+      replaced('/l10n/catalog.js', `export const FILES = ${JSON.stringify(localeFiles)};`),
     ],
   })
 )['main.js'];

@@ -1,7 +1,4 @@
-// The page's message files. The build (scripts/bundle.mjs) writes here the English page messages'
-// text, which the page needs before its first plot and so carries in its bundle, and the address
-// of every other file: each language's page messages (`page`) and the rest (`rest`).
-/** @type {string} */
-export const EN_PAGE = '';
-/** @type {Record<string, {page?: string, rest: string}>} */
+// The page's message files. The build (scripts/bundle.mjs) writes here the address of each
+// language's page messages (`page`, fetched as the page starts) and of the rest (`rest`).
+/** @type {Record<string, {page: string, rest: string}>} */
 export const FILES = {};

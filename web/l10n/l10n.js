@@ -3,7 +3,7 @@
 // language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
 import { FluentBundle, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
-import { EN_PAGE, FILES } from './catalog.js';
+import { FILES } from './catalog.js';
 import { LANGUAGES } from './languages.js';
 import { isCoreMessage } from './core-message.js';
 
@@ -40,8 +40,7 @@ function add(text, name) {
 }
 
 /**
- * Speaks `lang` from now on: loads its page messages (carried in the bundle for English,
- * fetched otherwise).
+ * Speaks `lang` from now on: fetches its page messages.
  * @param {string} lang
  */
 export async function useLanguage(lang) {
@@ -50,10 +49,7 @@ export async function useLanguage(lang) {
   loading.clear();
   rest = false;
   document.documentElement.lang = lang;
-  if (lang === 'en') {
-    add(EN_PAGE, 'en/page');
-    return;
-  }
+  if (lang === 'en') return fetchPart('page');
   // The build wrote the page's English words into it: another language replaces them, with
   // @fluent/dom fetched beside its messages (an English page carries neither).
   const [{ DOMLocalization }] = await Promise.all([import('@fluent/dom'), fetchPart('page')]);

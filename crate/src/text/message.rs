@@ -3,8 +3,7 @@
 //! writes for a file, such as a CSV's causes) in English from the same English messages, so the two
 //! say the same thing.
 
-use serde::Serialize;
-use std::collections::BTreeMap;
+use serde::{Serialize, Serializer};
 use std::fmt;
 
 /// A message: its id in the message files and its arguments by name. Its `Display` is its
@@ -18,8 +17,16 @@ use std::fmt;
 pub struct Message {
     /// The message's id (`scenario-unknown-key`).
     pub id: &'static str,
-    /// Its arguments, by the names the message files use.
-    pub args: BTreeMap<&'static str, Arg>,
+    /// Its arguments, by the names the message files use, in the order of their names (a map,
+    /// kept as a sorted list: the run's module then carries no map's code).
+    #[serde(serialize_with = "as_map")]
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "Record<string, Arg>"))]
+    pub args: Vec<(&'static str, Arg)>,
+}
+
+/// `args` as the object the page reads: each name a key.
+fn as_map<S: Serializer>(args: &[(&'static str, Arg)], serializer: S) -> Result<S::Ok, S::Error> {
+    serializer.collect_map(args.iter().map(|(name, arg)| (name, arg)))
 }
 
 /// An argument of a [`Message`]: words the reader gave or a name (shown as they are), a count (a
@@ -60,39 +67,44 @@ impl Message {
     pub const fn new(id: &'static str) -> Message {
         Message {
             id,
-            args: BTreeMap::new(),
+            args: Vec::new(),
         }
     }
 
-    /// With text `value` as `name`.
-    pub fn text(mut self, name: &'static str, value: impl Into<String>) -> Message {
-        self.args.insert(name, Arg::Text(value.into()));
+    /// With `arg` as `name`, in place of any argument of that name.
+    fn with(mut self, name: &'static str, arg: Arg) -> Message {
+        match self.args.binary_search_by(|(n, _)| n.cmp(&name)) {
+            Ok(i) => self.args[i].1 = arg,
+            Err(i) => self.args.insert(i, (name, arg)),
+        }
         self
+    }
+
+    /// With text `value` as `name`.
+    pub fn text(self, name: &'static str, value: impl Into<String>) -> Message {
+        self.with(name, Arg::Text(value.into()))
     }
 
     /// With the whole number `value` as `name`.
-    pub fn count(mut self, name: &'static str, value: impl TryInto<i64>) -> Message {
+    pub fn count(self, name: &'static str, value: impl TryInto<i64>) -> Message {
         let value = value.try_into().unwrap_or(i64::MAX);
-        self.args.insert(name, Arg::Count(value));
-        self
+        self.with(name, Arg::Count(value))
     }
 
     /// With `value` as `name`, in its shortest digits.
-    pub fn real(mut self, name: &'static str, value: f64) -> Message {
-        self.args.insert(name, Arg::Real { real: value });
-        self
+    pub fn real(self, name: &'static str, value: f64) -> Message {
+        self.with(name, Arg::Real { real: value })
     }
 
     /// With `value` as `name`, with `fraction` decimals.
-    pub fn fixed(mut self, name: &'static str, value: f64, fraction: u8) -> Message {
-        self.args.insert(
+    pub fn fixed(self, name: &'static str, value: f64, fraction: u8) -> Message {
+        self.with(
             name,
             Arg::Fixed {
                 fixed: value,
                 fraction,
             },
-        );
-        self
+        )
     }
 
     /// With `value` as `name`, as [`short`](super::short) writes it: its shortest digits, in
@@ -133,15 +145,13 @@ impl Message {
     }
 
     /// With the messages `items` as `name`, a list (joined by ", " in English).
-    pub fn list(mut self, name: &'static str, items: Vec<Message>) -> Message {
-        self.args.insert(name, Arg::List(items));
-        self
+    pub fn list(self, name: &'static str, items: Vec<Message>) -> Message {
+        self.with(name, Arg::List(items))
     }
 
     /// With the message `said` as `name`.
-    pub fn said(mut self, name: &'static str, said: Message) -> Message {
-        self.args.insert(name, Arg::Said(Box::new(said)));
-        self
+    pub fn said(self, name: &'static str, said: Message) -> Message {
+        self.with(name, Arg::Said(Box::new(said)))
     }
 }
 
