@@ -573,9 +573,9 @@ mod tests {
         });
         let (t, _) = transient(&s, &rows);
         assert!(
-            t.reason
-                .to_string()
-                .contains("speed estimate within twice its later RMS error from never"),
+            t.reason.to_string().contains(
+                "twice its later RMS error (5 ms windows, for 5 ms): never in the first half"
+            ),
             "{}",
             t.reason
         );

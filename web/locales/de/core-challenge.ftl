@@ -32,7 +32,7 @@ challenge-title-too-long = Feld 'title' ist { $chars } Zeichen lang, mehr als di
 challenge-bad-base = Feld 'base': { $error }
 challenge-no-criteria = keine Kriterien: Fügen Sie mindestens ein need.FIGURE=OP hinzu
 challenge-too-many-criteria = { $count } Kriterien, mehr als die zulässigen { $max }
-challenge-vary-unused = Feld 'vary': Kein Kriterium verwendet die Varianten (nennen Sie die Kriterien in robust=)
+challenge-vary-unused = Feld 'vary': Kein Kriterium verwendet die Varianten (nennen Sie die Kennwerte der Kriterien in robust=)
 challenge-robust-without-vary = Feld 'robust': Es gibt keine Varianten (fügen Sie vary= hinzu)
 # $key is allow.FIELD; $field the scenario field it names.
 challenge-allow-unknown-field = Feld '{ $key }': '{ $field }' ist kein Feld eines Szenarios

@@ -88,7 +88,7 @@ law-difference-unnamed = Der Unterschied ist kein einzelner Term des Regelgesetz
 
 law-caveat-none = {""}
 # $names lists the names the student's law of the step before reads whose rates are not known.
-law-caveat-unchained = {" "}Ihr { $before } liest { $names }; dafür kennt der Regelkreis keine Änderungsrate (gemeint ist die Spannung, die ein späterer Schritt wählt, oder eine Ableitung, die dem Regelkreis fehlt). Dieser Schritt wird daher mit dem { $before } des Artikels geprüft.
+law-caveat-unchained = {" "}Ihr { $before } liest { $names }; dafür kennt der Regelkreis keine Änderungsrate (sie enthält die Spannung, die ein späterer Schritt wählt, oder eine Ableitung, die dem Regelkreis fehlt). Dieser Schritt wird daher mit dem { $before } des Artikels geprüft.
 law-caveat-failed = {" "}Ihr { $before } ergibt an { $failed } der { $draws } gezogenen Zustände keinen endlichen Wert; an diesen wird dieser Schritt nicht geprüft.
 # Both caveats: $unread is law-caveat-unchained, $failing law-caveat-failed.
 law-caveat-both = { $unread }{ $failing }

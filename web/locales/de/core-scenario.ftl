@@ -20,7 +20,10 @@ scenario-out-of-range = Feld '{ $key }' = { $value }: außerhalb des Bereichs, z
 # $reference is the kind of reference the scenario has (step, sine, ramp…).
 scenario-not-applicable = Feld '{ $key }' gilt nicht für die Sollwertform '{ $reference }' (zuerst ref= setzen)
 # $which is "plant" or "model", the prefix of the fields; $error is a param-* message.
-scenario-physics = Parameter von { $which }: { $error }
+scenario-physics = { $which ->
+        [plant] Parameter der Strecke ({ $which })
+       *[model] Parameter des Modells ({ $which })
+    }: { $error }
 # $error says where and why the formula was refused.
 scenario-bad-formula = Feld '{ $key }': { $error }
 scenario-too-long = Das Szenario ist { $bytes } Bytes lang, mehr als die zulässigen { $max } Bytes ({ $kib } KiB)

@@ -170,7 +170,7 @@ warning-not-finite = { $figure } is not a finite number: { $cause }.
 
 transient-nothing-recorded = nothing recorded yet
 # In place of a time: the criterion was never met in the first half of the run.
-transient-never = never in the first half: not used
+transient-never = never in the first half (not used)
 # $k is the smallest of the gains k1..k4 (1/s); $time the controller's start-up.
 transient-backstepping = 5 time constants of the slowest designed error rate (1/{ $k } s) = { $time }
 # $bw is the IFOC current-loop bandwidth ifoc.bw_i (Hz); $time the controller's start-up.
@@ -179,7 +179,7 @@ transient-ifoc = 5 time constants of the IFOC current loops (1/(2π·{ $bw } Hz)
 # are times, or transient-never; $end is event when the transient was cut at the scenario's first
 # event (the step or the load step), half when it was clamped to half the run, else none; $at is
 # the time of that event or of half the run.
-transient-reason = { $controller }, counted from the observer's start-up: EKF innovation covariance settled at { $observer } (2σ band within 10 % of its final value); EKF estimates converged at { $estimates } (2 ms mean NIS within twice its level in the second half, for 5 ms); flux estimate within 1.5 times its later RMS error from { $flux } (for 5 ms); speed estimate within twice its later RMS error from { $speed } (5 ms windows, for 5 ms){ $end ->
+transient-reason = { $controller }, counted from the observer's start-up. EKF innovation covariance settled (2σ band within 10 % of its final value): { $observer }; EKF estimates converged (2 ms mean NIS within twice its level in the second half, for 5 ms): { $estimates }; flux estimate within 1.5 times its later RMS error (for 5 ms): { $flux }; speed estimate within twice its later RMS error (5 ms windows, for 5 ms): { $speed }{ $end ->
         [event] ; cut at the scenario's first event, at { $at }
         [half] ; clamped to half the recorded run ({ $at })
        *[none] {""}

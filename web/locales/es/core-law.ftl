@@ -88,7 +88,7 @@ law-difference-unnamed = La diferencia no es un término de la ley del artículo
 
 law-caveat-none = {""}
 # $names enumera los nombres que lee la ley propia del paso anterior cuyas derivadas no se conocen.
-law-caveat-unchained = {" "}Tu { $before } lee { $names }, y el lazo no tiene su derivada (la tensión que elige un paso posterior, o una derivada que el lazo no tiene), así que este paso se juzga sobre el { $before } del artículo.
+law-caveat-unchained = {" "}Tu { $before } lee { $names }, y el lazo no tiene su derivada (contiene la tensión que elige un paso posterior, o una derivada que el lazo no tiene), así que este paso se juzga sobre el { $before } del artículo.
 law-caveat-failed = {" "}Tu { $before } no da un valor finito en { $failed } de los { $draws } estados sorteados, en los que este paso no se juzga.
 # Ambas advertencias: $unread es law-caveat-unchained; $failing, law-caveat-failed.
 law-caveat-both = { $unread }{ $failing }
@@ -121,7 +121,7 @@ law-term-part = la parte { $part } del término { $term }
 law-term-missing = falta { $label } de la ley del artículo
 law-term-wrong-sign = { $label } tiene el signo cambiado
 law-term-twice = { $label } aparece dos veces
-# $factor es cuántas veces el término del artículo contiene la ley.
+# $factor es cuántas veces contiene la ley el término del artículo.
 law-term-scaled = { $label } vale { $factor } veces lo que debería
 law-scenario-values-only = coincide con la ley del artículo solo con los valores de parámetros y ganancias de este escenario: un parámetro o una ganancia está escrito como su número donde la ley necesita su nombre
 # La ley es la del artículo menos (o más) $gain por el error $z del paso (z1): $now es la tasa a la

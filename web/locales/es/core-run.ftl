@@ -181,7 +181,7 @@ transient-ifoc = 5 constantes de tiempo de los lazos de corriente del IFOC (1/(2
 # tiempos, o transient-never; $end es event cuando el transitorio se cortó en el primer evento del
 # escenario (el escalón o el escalón de carga), half cuando se limitó a la mitad de la ejecución, y
 # si no, none; $at es el instante de ese evento o de la mitad de la ejecución.
-transient-reason = { $controller }, contadas desde el arranque del observador: covarianza de la innovación del EKF establecida (banda de 2σ a menos del 10 % de su valor final): { $observer }; estimaciones del EKF convergidas (NIS medio sobre 2 ms como mucho el doble de su nivel en la segunda mitad, durante 5 ms): { $estimates }; estimación de flujo con un error de como mucho 1,5 veces su RMS posterior (durante 5 ms): { $flux }; estimación de velocidad con un error de como mucho el doble de su RMS posterior (ventanas de 5 ms, durante 5 ms): { $speed }{ $end ->
+transient-reason = { $controller }, contadas desde el arranque del observador. Covarianza de la innovación del EKF establecida (banda de 2σ a menos del 10 % de su valor final): { $observer }; estimaciones del EKF convergidas (NIS medio sobre 2 ms como mucho el doble de su nivel en la segunda mitad, durante 5 ms): { $estimates }; estimación de flujo con un error de como mucho 1,5 veces su RMS posterior (durante 5 ms): { $flux }; estimación de velocidad con un error de como mucho el doble de su RMS posterior (ventanas de 5 ms, durante 5 ms): { $speed }{ $end ->
         [event] ; cortado en el primer evento del escenario, a los { $at }
         [half] ; limitado a la mitad de la ejecución registrada ({ $at })
        *[none] {""}

@@ -20,7 +20,10 @@ scenario-out-of-range = campo '{ $key }' = { $value }: fuera de rango; se admite
 # $reference es el tipo de referencia del escenario (step, sine, ramp…).
 scenario-not-applicable = el campo '{ $key }' no se aplica a la referencia '{ $reference }' (fija antes ref=)
 # $which es "plant" o "model", el prefijo de los campos; $error es un mensaje param-*.
-scenario-physics = parámetros de { $which }: { $error }
+scenario-physics = { $which ->
+        [plant] parámetros de la planta ({ $which })
+       *[model] parámetros del modelo ({ $which })
+    }: { $error }
 # $error dice dónde y por qué se rechazó la fórmula.
 scenario-bad-formula = campo '{ $key }': { $error }
 scenario-too-long = el escenario ocupa { $bytes } bytes, más de los { $max } bytes ({ $kib } KiB) permitidos

@@ -178,7 +178,7 @@ grade-file-link-headers = les colonnes { $columns } sont toutes intitulées comm
 grade-resume-not-utf8 = le fichier n’est pas du texte UTF-8 : ce ne sont donc pas les notes de cette classe
 # $header : la ligne d’en-tête CSV qu’écrit cette notation.
 grade-resume-header = sa première ligne n’est pas l’en-tête de cette notation '{ $header }' : le fichier contient les notes d’un autre défi ou d’un autre fichier de classe
-grade-resume-too-many-rows = le fichier contient plus de lignes que les { $rows } soumissions du fichier de classe
+grade-resume-too-many-rows = le fichier contient plus de lignes que le fichier de classe n’a de soumissions ({ $rows })
 grade-resume-row = sa ligne { $row } ne correspond pas à la ligne { $line } ('{ $link }') du fichier de classe : le fichier contient les notes d’un autre fichier de classe
 # $what : un des messages grade-kept-*.
 grade-kept-differs = sa ligne { $row } (ligne { $line } du fichier de classe) diffère de ce que donne une nouvelle notation : { $what } ; elle a été modifiée après sa notation, ou notée par une autre version d’imlab

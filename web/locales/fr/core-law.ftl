@@ -88,7 +88,7 @@ law-difference-unnamed = La différence n’est pas un seul terme de la loi de l
 
 law-caveat-none = {""}
 # $names : les noms lus par la loi de l’étape précédente dont la dérivée est inconnue.
-law-caveat-unchained = {" "}Votre { $before } lit { $names }, dont la boucle ne connaît pas la dérivée (la tension que choisit une étape ultérieure, ou une dérivée qui manque à la boucle) : cette étape est donc jugée sur la { $before } de l’article.
+law-caveat-unchained = {" "}Votre { $before } lit { $names }, dont la boucle ne connaît pas la dérivée (elle contient la tension que choisit une étape ultérieure, ou une dérivée qui manque à la boucle) : cette étape est donc jugée sur la { $before } de l’article.
 law-caveat-failed = {" "}Votre { $before } ne donne aucune valeur finie en { $failed } des { $draws } états tirés ; cette étape n’y est pas jugée.
 # Les deux réserves : $unread est law-caveat-unchained, $failing law-caveat-failed.
 law-caveat-both = { $unread }{ $failing }

@@ -48,7 +48,7 @@ field-controller = backstepping (article) ou ifoc (FOC classique sans capteur, p
 field-ifoc-bw_i = bande passante de la boucle de courant de l’IFOC
 field-ifoc-bw_w = bande passante de la boucle de vitesse de l’IFOC
 field-ifoc-bw_mras = bande passante de l’estimateur de vitesse MRAS de l’IFOC
-field-ifoc-i_max = limite du courant q de l’IFOC
+field-ifoc-i_max = limite du courant d’axe q de l’IFOC
 field-ifoc-ff = anticipation de couple de l’IFOC J·ω̇_d + T0 + Cf·ω_d (0/1)
 # euler et rk4 sont les valeurs du champ : elles restent telles quelles.
 field-ekf = prédicteur de l’EKF : euler (article) ou rk4
@@ -109,7 +109,7 @@ preset-step = Fig 3 de l’article : échelon de 0 → 0,5 rad/s à 50 ms, à t
 preset-ramp = Fig 4 de l’article : trapèze jusqu’à 100 rad/s à ±400 rad/s², palier, puis retour
 preset-sine200-1rad = 1 rad/s à 200 Hz : sature la limite de 400 V, et son erreur de poursuite dépasse le triple de celle de sine200
 preset-sine200-rk4 = Fig 2 avec un prédicteur RK4 dans l’EKF au lieu de l’Euler de l’article
-preset-rr-mismatch = Maintien à 50 rad/s avec la résistance rotorique du moteur 10 % au-dessus de celle du modèle : la vitesse réelle se remet du démarrage en quelques secondes et s’établit au-dessus de la consigne (simulez 6 s pour en voir la fin)
+preset-rr-mismatch = Maintien à 50 rad/s avec la résistance rotorique du moteur 10 % au-dessus de celle du modèle : la vitesse réelle se remet du démarrage sur plusieurs secondes et s’établit au-dessus de la consigne (simulez 6 s pour en voir la fin)
 preset-load-step = Maintien à 50 rad/s ; un échelon de charge inconnu de 2 N m à 0,15 s, que l’EKF à 5 états ne peut pas voir
 preset-decay = Observateur parfait, sans bruit, ω_d ≡ 0 : les erreurs décroissent au taux voulu de 1200/s, puis s’arrêtent à un plancher qui diminue avec la période d’échantillonnage
 preset-ifoc-step = Base de comparaison classique : IFOC sans capteur avec un MRAS, échelon jusqu’à 40 rad/s (le MRAS est aveugle près de la vitesse nulle)

@@ -15,7 +15,10 @@ scenario-malformed = '{ $piece }' n’est pas de la forme clé=valeur
 scenario-bad-value = champ '{ $key }' = '{ $value }' : non valide, attendu : { $expected }
 scenario-out-of-range = champ '{ $key }' = { $value } : hors plage, autorisé : { $allowed }
 scenario-not-applicable = le champ '{ $key }' ne s’applique pas à la consigne '{ $reference }' (réglez d’abord ref=)
-scenario-physics = paramètres { $which } : { $error }
+scenario-physics = { $which ->
+        [plant] paramètres du moteur ({ $which })
+       *[model] paramètres du modèle ({ $which })
+    } : { $error }
 scenario-bad-formula = champ '{ $key }' : { $error }
 scenario-too-long = le scénario fait { $bytes } octets, plus que les { $max } octets ({ $kib } Kio) autorisés
 

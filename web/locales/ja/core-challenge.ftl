@@ -23,7 +23,7 @@ challenge-title-too-long = フィールド 'title' は{ $chars }文字あり、�
 challenge-bad-base = フィールド 'base'：{ $error }
 challenge-no-criteria = 基準がありません：need.FIGURE=OP を一つ以上加えてください
 challenge-too-many-criteria = 基準が{ $count }個あり、許容される{ $max }個を超えています
-challenge-vary-unused = フィールド 'vary'：バリアントを使う基準がありません（robust= で指定してください）
+challenge-vary-unused = フィールド 'vary'：バリアントを使う基準がありません（robust= に基準の指標を挙げてください）
 challenge-robust-without-vary = フィールド 'robust'：バリアントがありません（vary= を加えてください）
 challenge-allow-unknown-field = フィールド '{ $key }'：'{ $field }' はシナリオのフィールドではありません
 challenge-allow-formula = フィールド '{ $key }' = '{ $value }'：ステップの制御則は allow.{ $field }=formula で許可します

@@ -157,7 +157,7 @@ transient-never = 前半では成立せず、不使用
 transient-backstepping = 最も遅い設計誤差減衰率の時定数（1/{ $k } s）の5倍 = { $time }
 transient-ifoc = IFOCの電流ループの時定数（1/(2π·{ $bw } Hz)）の5倍 = { $time }
 transient-reason =
-    { $controller }（オブザーバの起動から数える）。EKFのイノベーション共分散の整定：{ $observer }（2σ帯が最終値の10 %以内）。EKFの推定値の収束：{ $estimates }（2 ms区間の平均NISが後半の水準の二倍以内、5 ms間）。磁束推定値が以後のRMS誤差の1.5倍以内に入った時刻：{ $flux }（5 ms間）。速度推定値が以後のRMS誤差の二倍以内に入った時刻：{ $speed }（5 msの窓、5 ms間）{ $end ->
+    { $controller }（オブザーバの起動から数える）。EKFのイノベーション共分散の整定（2σ帯が最終値の10 %以内）：{ $observer }。EKFの推定値の収束（2 ms区間の平均NISが後半の水準の二倍以内、5 ms間）：{ $estimates }。磁束推定値が以後のRMS誤差の1.5倍以内（5 ms間）：{ $flux }。速度推定値が以後のRMS誤差の二倍以内（5 msの窓、5 ms間）：{ $speed }{ $end ->
         [event] 。シナリオの最初のイベント（{ $at }）で打ち切り
         [half] 。記録した実行の半分（{ $at }）までに制限
        *[none] {""}

@@ -13,7 +13,10 @@ scenario-malformed = '{ $piece }' は key=value の形式ではありません
 scenario-bad-value = フィールド '{ $key }' = '{ $value }'：無効な値です。期待される値：{ $expected }
 scenario-out-of-range = フィールド '{ $key }' = { $value }：範囲外です。許容範囲：{ $allowed }
 scenario-not-applicable = フィールド '{ $key }' は指令値 '{ $reference }' には適用されません（先に ref= を設定してください）
-scenario-physics = { $which } のパラメータ：{ $error }
+scenario-physics = { $which ->
+        [plant] プラント（{ $which }）
+       *[model] モデル（{ $which }）
+    }のパラメータ：{ $error }
 scenario-bad-formula = フィールド '{ $key }'：{ $error }
 scenario-too-long = シナリオの長さは{ $bytes }バイトで、許容される{ $max }バイト（{ $kib } KiB）を超えています
 

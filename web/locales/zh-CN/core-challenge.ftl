@@ -28,7 +28,7 @@ challenge-title-too-long = 字段 'title' 长 { $chars } 个字符，超过允�
 challenge-bad-base = 字段 'base'：{ $error }
 challenge-no-criteria = 没有判据：请至少添加一个 need.FIGURE=OP
 challenge-too-many-criteria = 共 { $count } 项判据，超过允许的 { $max } 项
-challenge-vary-unused = 字段 'vary'：没有判据用到这些变体（请在 robust= 中列出须在各变体上成立的鲁棒性判据）
+challenge-vary-unused = 字段 'vary'：没有判据用到这些变体（请在鲁棒列表 robust= 中写出判据的指标名称）
 challenge-robust-without-vary = 字段 'robust'：没有变体可供检验鲁棒性（请添加 vary=）
 # $key 是 allow.FIELD；$field 是它所指的场景字段。
 challenge-allow-unknown-field = 字段 '{ $key }'：'{ $field }' 不是场景字段
@@ -51,7 +51,7 @@ challenge-vary-variant-empty = 字段 'vary'，第 { $number } 个变体为空
 # $overrides 是该变体的设置（seed=2）；$error 说明其为何无法应用。
 challenge-variant-refused = 变体 '{ $overrides }'：{ $error }
 # $value 是 robust= 列表，$figure 是其中不属于任何判据的名称。
-challenge-robust-unknown = 字段 'robust' = '{ $value }'：'{ $figure }' 不是任何判据的指标（或被列出了两次），无法作为鲁棒性判据
+challenge-robust-unknown = 字段 'robust' = '{ $value }'：'{ $figure }' 不是任何判据的指标（或被列出了两次）
 challenge-is-submission = 字段 'try.{ $key }'：这是提交链接，而不是挑战（请按其挑战为它评分）
 challenge-another = 该提交属于另一个挑战（其挑战部分不同）
 challenge-try-not-allowed = 不允许修改字段 '{ $field }'

@@ -141,7 +141,7 @@ figure-load_recovery_time = 负载阶跃后的负载恢复时间
 window-after-transient = t ≥ { $time }
 window-start-up = 启动阶段，t < { $time }
 # $time 是参考值阶跃的时刻。
-window-from-step = 从 { $time } 的阶跃起
+window-from-step = 从 { $time } 时刻的阶跃起
 window-rating = 电机的额定值
 # $time 是运行最后一个采样点的时刻。
 window-last-sample = 最后一个采样点，t = { $time }
@@ -155,7 +155,7 @@ unreached-not-settled = 运行结束时仍未稳定（t = { $time }）
 ## 解读运行指标时必须同时看到的警告
 
 # $speed 是运行结束时的 ω − ω_d，$estimate 是 ω̂ − ω，$flux 是磁链幅值，$target 是其目标值 √ψ_d。
-warning-runaway = 此次运行失控：结束时真实转速与参考值相差 { $speed } rad/s，转速估计与真实转速相差 { $estimate } rad/s，磁链为 { $flux } Wb，而目标值为 { $target } Wb。控制器调节的是 EKF 的估计值；定理 4.6 只在估计误差保持有界时才给闭环以界，而当估计误差无界时（启动误差仅靠电压限幅维持，或低速下模型有误），电机就不受任何约束。
+warning-runaway = 此次运行失控：结束时真实转速与参考值相差 { $speed } rad/s，转速估计与真实转速相差 { $estimate } rad/s，磁链为 { $flux } Wb，而目标值为 { $target } Wb。控制器调节的是 EKF 的估计值；定理 4.6 只在估计误差保持有界时才给闭环以界，而当估计误差无界时（启动误差仅靠电压限幅才被约束住，或低速下模型有误），电机就不受任何约束。
 # $low 和 $high 是区间的两端。
 warning-inconsistent-above = 此次运行中 EKF 不一致：其平均 NIS 为 { $nis }，远高于模型相符的滤波器的 95% 区间 { $low }–{ $high }。无论其区间带看起来多窄，其估计值以及控制器所依据的转速都可能远离真实值。
 warning-inconsistent-below = 此次运行中 EKF 不一致：其平均 NIS 为 { $nis }，远低于模型相符的滤波器的 95% 区间 { $low }–{ $high }。它假设的噪声多于实际，因此跟随测量值的速度慢于其应有的速度。

@@ -14,11 +14,14 @@ scenario-malformed = '{ $piece }' 不是 key=value 形式
 # $expected 是 scenario-expected-* 消息之一。
 scenario-bad-value = 字段 '{ $key }' = '{ $value }'：无效，应为{ $expected }
 # $allowed 是 scenario-allowed-* 消息之一。
-scenario-out-of-range = 字段 '{ $key }' = { $value }：超出范围，允许 { $allowed }
+scenario-out-of-range = 字段 '{ $key }' = { $value }：超出范围，允许：{ $allowed }
 # $reference 是场景的参考值类型（step、sine、ramp…）。
 scenario-not-applicable = 字段 '{ $key }' 不适用于参考值类型 '{ $reference }'（请先设置 ref=）
 # $which 是 "plant" 或 "model"，即字段的前缀；$error 是 param-* 消息之一。
-scenario-physics = { $which } 参数：{ $error }
+scenario-physics = { $which ->
+        [plant] 被控对象（{ $which }）
+       *[model] 模型（{ $which }）
+    }参数：{ $error }
 # $error 说明公式在何处、因何被拒绝。
 scenario-bad-formula = 字段 '{ $key }'：{ $error }
 scenario-too-long = 场景长 { $bytes } 字节，超过允许的 { $max } 字节（{ $kib } KiB）
