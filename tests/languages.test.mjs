@@ -101,3 +101,37 @@ test('the menu switches the language and keeps the run; Copy link names the lang
     assert.equal(copied.search, '?v=1&preset=step&k1=600');
     assert.match(copied.hash, /(^#|&)lang=fr(&|$)/);
   }));
+
+test('before the rest of its messages arrives the page says nothing it lacks: first run, tabs, settings', async () => {
+  const errors = [];
+  const context = await suite.browser.newContext();
+  const page = await context.newPage();
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page: ${e.message}`));
+  // The rest is held back until the first run is drawn and every tab and settings group opened.
+  let release = () => {};
+  const held = new Promise((resolve) => (release = resolve));
+  await page.route('**/locales/*/rest-*.ftl', async (route) => {
+    await held;
+    await route.continue();
+  });
+  try {
+    await page.goto(
+      `${suite.server.url}?v=1&preset=step&law.v1=-si1%20%2B%20dwd%20%2B%20a3*wd%20%2B%20a2%20-%20k1*z1#lang=de`,
+    );
+    assert.equal(await settled(page), 'done');
+    for (const tab of ['walkthrough', 'lessons', 'analysis', 'challenge', 'plots']) await page.click(`#tab-${tab}`);
+    const groups = await page.$$('#settings details summary');
+    assert.ok(groups.length > 5);
+    for (const summary of groups) await summary.click();
+    assert.deepEqual(errors, [], 'the rest held back');
+    release();
+    // Then the lessons and the law's verdict are said.
+    await page.waitForSelector('#lessons [data-lesson]', { state: 'attached' });
+    await page.waitForSelector('#settings .law-field .law-verdict.bad', { state: 'attached' });
+  } finally {
+    release();
+    await context.close();
+  }
+  assert.deepEqual(errors, []);
+});
