@@ -47,7 +47,7 @@ test: dist
 	cargo build --release
 	cargo test --release
 	wasm-pack test --node crate --no-default-features --features tools
-	node --test --test-concurrency=1 tests/*.test.mjs
+	node --test --test-concurrency=2 tests/*.test.mjs
 
 # Criterion benchmarks (about 2 minutes after the build), the speed against the floor
 # (../shared/bench/rustfloor, built by the bench), the five-state path against the build
