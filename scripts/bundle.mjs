@@ -138,13 +138,13 @@ const tables = readdirSync(TABLES_DIR)
 
 // The page's messages (web/locales/LANG/*.ftl): of each language a page part (what the page says
 // before its first plot: its frame, the settings' meanings, the run's figures and warnings, the
-// scenario's refusals) and the rest (the tools, the law editor, challenges, the lessons and the
-// walkthrough), each one file named by its hash in locales/LANG/. The page part of the language
-// shown is fetched as the page starts, beside the core; the rest once the first plot is drawn or
-// when a part of the page that says it is first used. The English page part's words are also
-// written into index.html (below).
+// refusals of a scenario and of its formulas) and the rest (the tools, the law editor, challenges,
+// the lessons and the walkthrough), each one file named by its hash in locales/LANG/. The page part
+// of the language shown is fetched as the page starts, beside the core; the rest once the first
+// plot is drawn or when a part of the page that says it is first used. The English page part's
+// words are also written into index.html (below).
 const LOCALES = join('web', 'locales');
-const PAGE = ['page.ftl', 'core-scenario.ftl', 'core-run.ftl'];
+const PAGE = ['page.ftl', 'core-scenario.ftl', 'core-formula.ftl', 'core-run.ftl'];
 /** The files of `lang`'s `part`: the page part's, or every other. */
 const partOf = (/** @type {string} */ lang, /** @type {string} */ part) =>
   readdirSync(join(LOCALES, lang))

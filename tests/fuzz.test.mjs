@@ -384,7 +384,7 @@ function exercise(s) {
       );
       attempt('column', (name) => sim.column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
       attempt('keep_column', (name) => sim.keep_column(name), rng.chance(0.7) ? rng.pick(COLUMNS) : s);
-      attempt('getters', () => [sim.done, sim.total, sim.rows, sim.finished, sim.failure, sim.scenario]);
+      attempt('getters', () => [sim.done, sim.total, sim.rows, sim.finished, sim.scenario]);
     }
     const column = () => (rng.chance(0.8) ? rng.pick(COLUMNS) : randomBytes().slice(0, 10));
     if (short) attempt('pin', (text, c) => comparison.pin(text, c), s, column());

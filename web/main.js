@@ -131,12 +131,14 @@ function handlersOf(...parts) {
 }
 
 // The page speaks the link's language (`#lang=`), else the first of the browser's it speaks. A
-// language whose messages cannot be fetched (offline, before they were kept) leaves it in English.
+// language whose messages cannot be fetched (offline, before they were kept) leaves it in English,
+// whose page messages are kept offline with any language's. Should those fail too, the page still
+// works, with the English written into it and its other messages' names.
 const asked = chooseLanguage(fragment('lang'), navigator.languages);
 try {
   await useLanguage(asked);
 } catch (e) {
-  await useLanguage('en');
+  await useLanguage('en').catch((again) => console.error(`no page messages: ${again.message}`));
   state.notice = t('page-language-failed', { language: asked, reason: /** @type {Error} */ (e).message });
   say(state.notice, 'info');
 }

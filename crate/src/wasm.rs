@@ -187,15 +187,6 @@ impl Simulation {
         self.inner.is_finished()
     }
 
-    /// The failure that stopped the run, if any: the core's message.
-    #[wasm_bindgen(getter)]
-    pub fn failure(&self) -> Result<Option<Ts<crate::text::Message>>, JsValue> {
-        self.inner
-            .failure()
-            .map(|e| to_js(&e.message()))
-            .transpose()
-    }
-
     /// The scenario in its compact form.
     #[wasm_bindgen(getter)]
     pub fn scenario(&self) -> String {

@@ -387,12 +387,15 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
     assert_eq!(v.criteria[2].value, Some(3.9));
     // A failed run fails every criterion it enters; a missing figure is not a pass.
     let failed = Measures {
-        failure: Some("diverged".into()),
+        failure: Some(imlab::text::Message::new("challenge-run-unfinished")),
         ..Measures::default()
     };
     let v = judge(&c, &[good.clone(), failed]).unwrap();
     let reason = |v: &Verdict, i: usize| v.criteria[i].reason.clone().unwrap();
-    assert_eq!(reason(&v, 2).to_string(), "run failed: diverged");
+    assert_eq!(
+        reason(&v, 2).to_string(),
+        "run failed: the run did not finish"
+    );
     assert!(!v.pass);
     good.figures.retain(|f| f.name != "current_peak");
     let v = judge(&c, &[good, ok_variant]).unwrap();

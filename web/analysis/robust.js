@@ -10,7 +10,7 @@ import { setFragment } from '../ui/url.js';
 import { fillMapForm, mapFormParts } from './map-form.js';
 import { chosenFigure, drawMap } from './map-view.js';
 import { runFromLink } from './from-link.js';
-import { num, t } from '../l10n/l10n.js';
+import { num, restReady, t } from '../l10n/l10n.js';
 import { integer } from './digits.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
@@ -132,6 +132,9 @@ export function createRobust({ state, analysis, open, showTab, current, stale, s
   }
 
   async function runMap() {
+    // Its words are of the rest of the page's messages.
+    const unready = await restReady();
+    if (unready) return void (status.textContent = unready);
     if (!(await current())) {
       status.textContent = t('map-not-run');
       document.body.dataset.map = 'refused';

@@ -3,7 +3,7 @@
 import { $ } from '../ui/page.js';
 import { fieldValue } from '../ui/scenario.js';
 import { download } from '../ui/dom.js';
-import { num, t } from '../l10n/l10n.js';
+import { num, restReady, t } from '../l10n/l10n.js';
 import { integer } from './digits.js';
 
 /** @typedef {import('../worker/protocol.js').Info} Info */
@@ -34,6 +34,9 @@ export function createSeeds({ state, analysis, framing, current, stale }) {
   async function runSeeds() {
     const n = Number(seedCount().value);
     const status = $('seeds-status');
+    // Its words are of the rest of the page's messages.
+    const unready = await restReady();
+    if (unready) return void (status.textContent = unready);
     if (!(Number.isInteger(n) && n >= 1 && n <= 1000)) {
       status.textContent = t('seeds-count-invalid', { value: seedCount().value });
       return;

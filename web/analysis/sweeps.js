@@ -5,7 +5,7 @@ import { download } from '../ui/dom.js';
 import { setFragment } from '../ui/url.js';
 import { runFromLink } from './from-link.js';
 import { createSeeds } from './seeds.js';
-import { t } from '../l10n/l10n.js';
+import { restReady, t } from '../l10n/l10n.js';
 import { integer } from './digits.js';
 
 /**
@@ -52,6 +52,9 @@ export function createSweeps({ state, analysis, framing, showTab, current, stale
   }
 
   async function runSweep() {
+    // Its words are of the rest of the page's messages.
+    const unready = await restReady();
+    if (unready) return void (status.textContent = unready);
     const workers = Number(input('workers').value);
     if (!(Number.isInteger(workers) && workers >= 1 && workers <= 8)) {
       status.textContent = t('sweep-workers-invalid', { value: input('workers').value });

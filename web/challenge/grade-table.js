@@ -62,8 +62,7 @@ function verdictCell(result) {
       className: result.pass ? 'pass' : 'fail',
       textContent: t(result.pass ? 'grade-pass' : 'grade-fail'),
     });
-  const status = result.status;
-  return el('td', { className: 'fail' }, [cause(`✗ ${status}`, status)]);
+  return el('td', { className: 'fail' }, [cause(`✗ ${result.status}`, result.status)]);
 }
 
 /**

@@ -111,9 +111,11 @@ export class Pool {
    * @returns {Promise<P.Jobs[K]['result'][]>}
    */
   async run(jobs, onDone = () => {}) {
-    // The messages the replies may hold are loaded first (see RunClient.job).
-    await Promise.all([this.start(), loadRest()]);
+    // The messages the replies may hold are loaded first (see RunClient.job); a Cancel meanwhile
+    // cancels this run.
     const generation = ++this.generation;
+    await Promise.all([this.start(), loadRest()]);
+    if (this.generation !== generation) throw new Error('cancelled');
     /** @type {P.Jobs[K]['result'][]} */
     const results = new Array(jobs.length);
     let next = 0;

@@ -1,7 +1,7 @@
 // The page's words in the reader's language: Fluent messages (web/locales/LANG/*.ftl), the language
 // negotiated from the link's `lang=` and the browser's preferences, numbers formatted for the
 // language. Links, CSV and scenario keys stay language-neutral: only what is shown is translated.
-import { FluentBundle, FluentResource } from '@fluent/bundle';
+import { FluentBundle, FluentNumber, FluentResource } from '@fluent/bundle';
 import { negotiateLanguages } from '@fluent/langneg';
 import { FILES } from './catalog.js';
 import { LANGUAGES } from './languages.js';
@@ -30,12 +30,13 @@ let bundle = new FluentBundle('en', { useIsolating: false });
 const loading = new Map();
 
 /**
- * Adds an FTL text to the messages; a message file that does not parse is the page's mistake.
+ * Adds an FTL text to `target`'s messages; a message file that does not parse is the page's mistake.
+ * @param {FluentBundle} target
  * @param {string} text
  * @param {string} name
  */
-function add(text, name) {
-  const errors = bundle.addResource(new FluentResource(text));
+function add(target, text, name) {
+  const errors = target.addResource(new FluentResource(text));
   if (errors.length) throw new Error(`${name}: ${errors.map(String).join('; ')}`);
 }
 
@@ -61,13 +62,18 @@ function* generateBundles() {
   yield bundle;
 }
 
-/** @param {'page' | 'rest'} part */
+/**
+ * Fetches `part` of the language shown into its messages (those of the language shown when it was
+ * asked for, should another be chosen meanwhile).
+ * @param {'page' | 'rest'} part
+ */
 async function fetchPart(part) {
-  const url = FILES[language]?.[part];
-  if (!url) throw new Error(`no ${part} messages for ${language}`);
+  const [lang, target] = [language, bundle];
+  const url = FILES[lang]?.[part];
+  if (!url) throw new Error(`no ${part} messages for ${lang}`);
   const response = await fetch(new URL(url, document.baseURI));
-  if (!response.ok) throw new Error(`the ${language} ${part} messages could not be loaded (${response.status})`);
-  add(await response.text(), `${language}/${part}`);
+  if (!response.ok) throw new Error(`the ${lang} ${part} messages could not be loaded (${response.status})`);
+  add(target, await response.text(), `${lang}/${part}`);
 }
 
 /**
@@ -91,12 +97,26 @@ export function loadRest() {
   return promise;
 }
 
+/**
+ * Loads the rest of the messages, if not yet; resolves with null once they are, or with why they
+ * could not be (page-messages-failed, a page message), for the part of the page that needed them.
+ * @returns {Promise<string | null>}
+ */
+export const restReady = () =>
+  loadRest().then(
+    () => null,
+    (e) => t('page-messages-failed', { reason: e.message }),
+  );
+
 let rest = false;
 /** Whether the rest of the messages is loaded. */
 export const restLoaded = () => rest;
 
-/** The message files of the language shown that the page fetches (the service worker keeps them). */
-export const languageFiles = () => Object.values(FILES[language] ?? {});
+/**
+ * The message files the service worker keeps for offline use: the language shown's, and the
+ * English page messages the page falls back to.
+ */
+export const languageFiles = () => [...new Set([...Object.values(FILES[language] ?? {}), FILES.en.page])];
 
 /**
  * The message `id` (or its attribute, `id.attr`) with `args`, in the language shown. A message the
@@ -145,10 +165,12 @@ export function num(value, fraction) {
  */
 function said(text) {
   if (!isCoreMessage(text)) return String(text);
-  /** @type {Record<string, string | number | import('@fluent/bundle').FluentNumber>} */
+  /** @type {Record<string, string | FluentNumber>} */
   const args = {};
   for (const [name, arg] of Object.entries(text.args)) {
-    if (typeof arg === 'string' || typeof arg === 'number') args[name] = arg;
+    if (typeof arg === 'string') args[name] = arg;
+    // A count as the core writes it, ungrouped: it may be a bound the reader types (B ≤ 9007199254740991).
+    else if (typeof arg === 'number') args[name] = new FluentNumber(arg, { useGrouping: false });
     else if (Array.isArray(arg)) args[name] = arg.map(said).join(t('core-list-separator'));
     else if (isCoreMessage(arg)) args[name] = said(arg);
     else if ('real' in arg) args[name] = shortest(arg.real);

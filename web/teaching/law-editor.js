@@ -1,10 +1,9 @@
 // "Write this step": a step's own law in the walkthrough. Its editor is the settings form's field
 // (law.v1..law.v4) as a knob; the formula is typeset by the core's TeX as it is typed, an error is
 // marked at its place, and after a run the core's verdict says whether the law gives the step's
-// designed dynamics. The names the law may use come from the core too. Its words are the page's
-// messages (teaching-page.ftl): a verdict shows in the settings before the walkthrough is built.
-// The core's words (why a formula is refused, the verdict, what each name means) come as its
-// messages (core-law.ftl), rendered with .
+// designed dynamics. The names the law may use come from the core too. Its words are messages of
+// the rest (teaching-page.ftl); the core's (why a formula is refused, the verdict, what each name
+// means) come as its messages (core-formula.ftl, core-law.ftl), said as the worker's reply arrives.
 import { el } from '../ui/dom.js';
 import { num, t } from '../l10n/l10n.js';
 import { paperLaw, verdictLine } from '../ui/verdict-line.js';
@@ -56,8 +55,7 @@ export function showPreview(box, preview, text) {
     return;
   }
   // The core gives the TeX or the error.
-  const { at, len, reason: why } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
-  const reason = why;
+  const { at, len, reason } = /** @type {NonNullable<typeof preview.error>} */ (preview.error);
   const chars = [...text];
   const parts =
     at === 0

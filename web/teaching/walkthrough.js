@@ -3,7 +3,7 @@
 // Every number shown here comes from the core (through the worker); the page only formats it. Its
 // words are messages of the rest (walkthrough.ftl, l10n.js), fetched before the sections are built.
 import { Plots } from '../plots/plots.js';
-import { loadRest, t, restLoaded } from '../l10n/l10n.js';
+import { loadRest, restLoaded, restReady, t } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
@@ -328,11 +328,24 @@ export class Walkthrough {
 
   /** Shows every term at one sample: 6 significant digits with units; the exact value in a
    * tooltip and in the copied text. `ts` is the sampling period (s), for rounding t to its sample.
+   * The panel's words are of the rest of the messages, loaded first.
+   * @param {import('../worker/protocol.js').Inspected['snapshot']} snap
+   * @param {number} time
+   * @param {number} ts
+   */
+  async inspect(snap, time, ts) {
+    const unready = await restReady();
+    if (unready) say(unready);
+    else this.showInspect(snap, time, ts);
+  }
+
+  /**
+   * The inspect panel for `snap`, once the rest of the messages is loaded.
    * @param {import('../worker/protocol.js').Inspected['snapshot']} snap
    * @param {number} t
    * @param {number} ts
    */
-  inspect(snap, t, ts) {
+  showInspect(snap, t, ts) {
     const box = this.inspectBox;
     const time = fillInspect(box, snap, ts, () => {
       this.closeInspect();

@@ -97,7 +97,7 @@ pub struct Measures {
     #[serde(default)]
     pub not_finite: Vec<NotFinite>,
     /// Why the run does not count, if it does not: the simulation failed, or it ran away.
-    pub failure: Option<String>,
+    pub failure: Option<Message>,
 }
 
 /// A figure a run gives no number for, because it is not finite, and why.
@@ -110,8 +110,8 @@ pub struct Measures {
 pub struct NotFinite {
     /// Figure name.
     pub name: String,
-    /// Why it is not a number, in words.
-    pub cause: String,
+    /// Why it is not a number.
+    pub cause: Message,
 }
 
 impl Measures {
@@ -146,14 +146,14 @@ pub fn measure(sim: &Simulation) -> Measures {
         });
     }
     let failure = if let Some(e) = sim.failure() {
-        Some(format!("{e}"))
+        Some(e.message())
     } else if !sim.is_finished() {
-        Some("the run did not finish".to_string())
+        Some(Message::new("challenge-run-unfinished"))
     } else {
         r.warnings
             .iter()
             .find(|w| w.kind == WarningKind::Runaway)
-            .map(|w| w.text.to_string())
+            .map(|w| w.text.clone())
     };
     let not_finite = r
         .warnings
@@ -161,7 +161,7 @@ pub fn measure(sim: &Simulation) -> Measures {
         .filter_map(|w| {
             w.figure.map(|name| NotFinite {
                 name: name.to_string(),
-                cause: w.text.to_string(),
+                cause: w.text.clone(),
             })
         })
         .collect();
@@ -230,10 +230,10 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
         badness: f64::INFINITY,
     };
     if let Some(f) = &m.failure {
-        return fail(Message::new("challenge-reason-run-failed").text("failure", f.as_str()));
+        return fail(Message::new("challenge-reason-run-failed").said("failure", f.clone()));
     }
     if let Some(n) = m.not_finite.iter().find(|n| n.name == figure) {
-        return fail(Message::new("challenge-reason-not-finite").text("cause", n.cause.as_str()));
+        return fail(Message::new("challenge-reason-not-finite").said("cause", n.cause.clone()));
     }
     let Some(x) = m.get(figure) else {
         return fail(Message::new(if figure == LOAD_RECOVERY {

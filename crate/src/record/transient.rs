@@ -476,7 +476,7 @@ mod tests {
             t.reason
         );
         assert!(
-            t.reason.to_string().contains("settled at 2 ms"),
+            t.reason.to_string().contains("of its final value): 2 ms"),
             "{}",
             t.reason
         );
@@ -520,7 +520,7 @@ mod tests {
         });
         let (t, i) = transient(&s, &rows);
         assert!((39..=40).contains(&i), "{}", t.reason);
-        let converged = format!("EKF estimates converged at {} ms", i - 8);
+        let converged = format!("level in the second half, for 5 ms): {} ms", i - 8);
         assert!(t.reason.to_string().contains(&converged), "{}", t.reason);
         // A noise-free run whose NIS decays to zero: the estimates' part is not used.
         let rows = trace(100, |k, r| {
@@ -551,7 +551,7 @@ mod tests {
         assert!(t
             .reason
             .to_string()
-            .contains("speed estimate within twice its later RMS error from 24 ms"));
+            .contains("(5 ms windows, for 5 ms): 24 ms"));
         // A load step in the second half raises the error there; the second quarter's level
         // still ends the start-up at the same time.
         let rows = trace(200, |k, r| {

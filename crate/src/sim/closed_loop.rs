@@ -16,6 +16,7 @@ use crate::params::Lumped;
 use crate::record::{Row, Sink};
 use crate::rng::Rng;
 use crate::scenario::{ControllerKind, Scenario, ScenarioError};
+use crate::text::Message;
 use std::cell::{Cell, OnceCell};
 
 /// Bounds past which the plant or the estimate is declared diverged.
@@ -258,7 +259,7 @@ impl Loop {
     /// the samples run, max over the steps with an own law of max|v_i − v_i,ref| / max|v_i,paper|,
     /// and at the verdict's drawn states and parameter values, whichever is larger; or why it is
     /// not a number (None without own laws, or before a sample).
-    pub(super) fn law_residual(&self) -> Option<Result<f64, String>> {
+    pub(super) fn law_residual(&self) -> Option<Result<f64, Message>> {
         let laws = self.laws.as_ref().filter(|_| self.has_laws())?;
         let peaks = self.law_peaks.get();
         let run = (1..=4u8)
@@ -270,9 +271,7 @@ impl Loop {
             .reduce(f64::max)
             .filter(|v| !v.is_nan())?;
         if run.is_infinite() {
-            return Some(Err(
-                "the paper's law stayed at zero over the run while yours did not".to_string(),
-            ));
+            return Some(Err(Message::new("law-paper-zero")));
         }
         // Checked once, when first asked for: most runs never report it.
         let drawn = self
@@ -280,7 +279,7 @@ impl Loop {
             .get_or_init(|| law::worst(&self.scenario.law, &self.model, &self.scenario.gains));
         Some(match drawn {
             Some(Ok(drawn)) => Ok(run.max(*drawn)),
-            Some(Err(cause)) => Err(cause.to_string()),
+            Some(Err(cause)) => Err(cause.message()),
             None => Ok(run),
         })
     }

@@ -291,7 +291,7 @@ impl Simulation {
                 figure: Some(info.name),
                 text: Message::new("warning-not-finite")
                     .text("figure", info.name)
-                    .text("cause", cause),
+                    .said("cause", cause),
             }),
             None => {}
         }

@@ -3,30 +3,57 @@
 //! writes for a file, such as a CSV's causes) in English from the same English messages, so the two
 //! say the same thing.
 
-use serde::{Serialize, Serializer};
+use serde::de::{MapAccess, Visitor};
+use serde::{Deserialize, Deserializer, Serialize, Serializer};
+use std::borrow::Cow;
 use std::fmt;
 
 /// A message: its id in the message files and its arguments by name. Its `Display` is its
-/// English text.
+/// English text. It reads back from the object it is written as, so that a message the run's
+/// module gives (why a challenge's run failed) can be said inside the tools' verdict.
 #[cfg_attr(
     target_arch = "wasm32",
     derive(tsify::Tsify),
     tsify(missing_as_null, hashmap_as_object)
 )]
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Message {
     /// The message's id (`scenario-unknown-key`).
-    pub id: &'static str,
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "string"))]
+    pub id: Cow<'static, str>,
     /// Its arguments, by the names the message files use, in the order of their names (a map,
     /// kept as a sorted list: the run's module then carries no map's code).
-    #[serde(serialize_with = "as_map")]
+    #[serde(serialize_with = "as_map", deserialize_with = "from_map")]
     #[cfg_attr(target_arch = "wasm32", tsify(type = "Record<string, Arg>"))]
-    pub args: Vec<(&'static str, Arg)>,
+    pub args: Vec<(Cow<'static, str>, Arg)>,
 }
 
+/// A message's arguments.
+type Args = Vec<(Cow<'static, str>, Arg)>;
+
 /// `args` as the object the page reads: each name a key.
-fn as_map<S: Serializer>(args: &[(&'static str, Arg)], serializer: S) -> Result<S::Ok, S::Error> {
+fn as_map<S: Serializer>(args: &Args, serializer: S) -> Result<S::Ok, S::Error> {
     serializer.collect_map(args.iter().map(|(name, arg)| (name, arg)))
+}
+
+/// The arguments from that object, in the order of their names.
+fn from_map<'de, D: Deserializer<'de>>(deserializer: D) -> Result<Args, D::Error> {
+    struct Names;
+    impl<'de> Visitor<'de> for Names {
+        type Value = Args;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("a message's arguments by name")
+        }
+        fn visit_map<M: MapAccess<'de>>(self, mut map: M) -> Result<Args, M::Error> {
+            let mut args = Args::new();
+            while let Some((name, arg)) = map.next_entry::<String, Arg>()? {
+                args.push((Cow::Owned(name), arg));
+            }
+            args.sort_by(|a, b| a.0.cmp(&b.0));
+            Ok(args)
+        }
+    }
+    deserializer.deserialize_map(Names)
 }
 
 /// An argument of a [`Message`]: words the reader gave or a name (shown as they are), a count (a
@@ -37,7 +64,7 @@ fn as_map<S: Serializer>(args: &[(&'static str, Arg)], serializer: S) -> Result<
     derive(tsify::Tsify),
     tsify(missing_as_null, hashmap_as_object)
 )]
-#[derive(Clone, Debug, PartialEq, Serialize)]
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(untagged)]
 pub enum Arg {
     /// Text shown as it is: a name, a key, quoted input.
@@ -66,16 +93,16 @@ impl Message {
     /// The message `id`, with no arguments yet (a constant's, too: a table's words).
     pub const fn new(id: &'static str) -> Message {
         Message {
-            id,
+            id: Cow::Borrowed(id),
             args: Vec::new(),
         }
     }
 
     /// With `arg` as `name`, in place of any argument of that name.
     fn with(mut self, name: &'static str, arg: Arg) -> Message {
-        match self.args.binary_search_by(|(n, _)| n.cmp(&name)) {
+        match self.args.binary_search_by(|(n, _)| n.as_ref().cmp(name)) {
             Ok(i) => self.args[i].1 = arg,
-            Err(i) => self.args.insert(i, (name, arg)),
+            Err(i) => self.args.insert(i, (Cow::Borrowed(name), arg)),
         }
         self
     }
@@ -110,12 +137,7 @@ impl Message {
     /// With `value` as `name`, as [`short`](super::short) writes it: its shortest digits, in
     /// scientific notation past twelve characters.
     pub fn short(self, name: &'static str, value: f64) -> Message {
-        let plain = format!("{value}");
-        if plain.len() > 12 {
-            self.text(name, format!("{value:e}"))
-        } else {
-            self.real(name, value)
-        }
+        self.digits(name, super::short(value))
     }
 
     /// With `value` as `name`, as [`rounded`](super::rounded) writes it to `digits` significant
@@ -124,15 +146,10 @@ impl Message {
         self.digits(name, super::rounded(value, digits))
     }
 
-    /// With the time `t` (s) as `name`, as [`time_text`](super::time_text) writes it: a message
-    /// of its own (`time-ms` or `time-s`), with up to 4 significant digits.
+    /// With the time `t` (s) as `name`: a message of its own (`time-ms` below 1 s, else
+    /// `time-s`), with up to 4 significant digits.
     pub fn time(self, name: &'static str, t: f64) -> Message {
-        let time = if t.abs() < 1.0 {
-            Message::new("time-ms").digits("ms", super::significant(t * 1e3, 4))
-        } else {
-            Message::new("time-s").digits("s", super::significant(t, 4))
-        };
-        self.said(name, time)
+        self.said(name, time_of(t))
     }
 
     /// With the number written `text` as `name`: as a number when `text` is its shortest digits
@@ -155,6 +172,15 @@ impl Message {
     }
 }
 
+/// The time `t` (s) as a message: in ms below 1 s, in s from 1 s on, to 4 significant digits.
+fn time_of(t: f64) -> Message {
+    if t.abs() < 1.0 {
+        Message::new("time-ms").digits("ms", super::significant(t * 1e3, 4))
+    } else {
+        Message::new("time-s").digits("s", super::significant(t, 4))
+    }
+}
+
 #[cfg(feature = "english")]
 mod english {
     use super::{Arg, Message};
@@ -171,6 +197,10 @@ mod english {
         (
             "core-law.ftl",
             include_str!("../../../web/locales/en/core-law.ftl"),
+        ),
+        (
+            "core-formula.ftl",
+            include_str!("../../../web/locales/en/core-formula.ftl"),
         ),
         (
             "core-run.ftl",
@@ -202,7 +232,7 @@ mod english {
     /// `message` in English.
     pub(super) fn render(message: &Message) -> String {
         let bundle = bundle();
-        let Some(pattern) = bundle.get_message(message.id).and_then(|m| m.value()) else {
+        let Some(pattern) = bundle.get_message(&message.id).and_then(|m| m.value()) else {
             panic!("no English message {}", message.id);
         };
         let mut args = FluentArgs::new();
@@ -219,7 +249,7 @@ mod english {
                     FluentValue::from(items.iter().map(render).collect::<Vec<_>>().join(", "))
                 }
             };
-            args.set(*name, value);
+            args.set(name.as_ref(), value);
         }
         let mut errors = vec![];
         let text = bundle.format_pattern(pattern, Some(&args), &mut errors);
@@ -241,5 +271,27 @@ impl fmt::Display for Message {
     /// page to render; a message written as text there names its id and arguments.
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "{}{:?}", self.id, self.args)
+    }
+}
+
+#[cfg(all(test, feature = "english"))]
+mod tests {
+    use super::time_of;
+
+    #[test]
+    fn times_read_with_up_to_4_significant_digits() {
+        for (t, text) in [
+            (0.0, "0 ms"),
+            (5.0 / 1200.0, "4.167 ms"),
+            (84.0 * 50e-6, "4.2 ms"),
+            (0.00045, "0.45 ms"),
+            (0.09995, "99.95 ms"),
+            (0.05, "50 ms"),
+            (0.6, "600 ms"),
+            (1.0, "1 s"),
+            (12.34567, "12.35 s"),
+        ] {
+            assert_eq!(time_of(t).to_string(), text);
+        }
     }
 }

@@ -9,5 +9,5 @@ pub mod percent;
 mod quote;
 
 pub use message::{Arg, Message};
-pub use numbers::{rounded, short, significant, time_text};
+pub use numbers::{rounded, short, significant};
 pub use quote::{escape_invisible, excerpt, is_invisible, EXCERPT_CHARS};

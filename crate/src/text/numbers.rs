@@ -24,15 +24,6 @@ pub fn rounded(v: f64, digits: i32) -> String {
     }
 }
 
-/// `t` (s) with up to 4 significant digits: in ms below 1 s, in s from 1 s on.
-pub fn time_text(t: f64) -> String {
-    if t.abs() < 1.0 {
-        format!("{} ms", significant(t * 1e3, 4))
-    } else {
-        format!("{} s", significant(t, 4))
-    }
-}
-
 /// `v` rounded to `digits` significant digits (all digits before the point are kept), without
 /// trailing zeros.
 pub fn significant(v: f64, digits: i32) -> String {
@@ -54,27 +45,5 @@ pub fn significant(v: f64, digits: i32) -> String {
         text.trim_end_matches('0').trim_end_matches('.').to_string()
     } else {
         text
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn times_read_with_up_to_4_significant_digits() {
-        for (t, text) in [
-            (0.0, "0 ms"),
-            (5.0 / 1200.0, "4.167 ms"),
-            (84.0 * 50e-6, "4.2 ms"),
-            (0.00045, "0.45 ms"),
-            (0.09995, "99.95 ms"),
-            (0.05, "50 ms"),
-            (0.6, "600 ms"),
-            (1.0, "1 s"),
-            (12.34567, "12.35 s"),
-        ] {
-            assert_eq!(time_text(t), text);
-        }
     }
 }

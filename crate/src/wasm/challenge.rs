@@ -201,11 +201,6 @@ impl Challenge {
         self.inner.encode()
     }
 
-    /// The task as plain text, in English.
-    pub fn brief(&self) -> String {
-        self.inner.brief().to_string()
-    }
-
     /// `{title, base, encoded, allow: [{field, kind, lo, hi, options, unit, doc, value}],
     /// need: [{figure, label, unit, op, bound, bound_text, robust}], variants: [string], brief,
     /// task, fingerprint, edited_from}`: `label` and `bound_text` messages, `brief` and `task`

@@ -125,6 +125,7 @@ challenge-bound-min = ≥ { $bound }
 challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = innerhalb seines 95-%-Bands
 # $failure says why the run failed (in English until the simulation's messages are translated).
+challenge-run-unfinished = der Lauf wurde nicht zu Ende gerechnet
 challenge-reason-run-failed = Lauf fehlgeschlagen: { $failure }
 # $cause says why the figure is not a number (in English until the run's report is translated).
 challenge-reason-not-finite = { $cause }

@@ -143,7 +143,7 @@ run-worker-failed = Der Simulations-Worker ist ausgefallen ({ $reason }). Er wur
 run-worker-failed-pins = Der Simulations-Worker ist ausgefallen ({ $reason }). Er wurde neu gestartet; drücken Sie „Starten“, um es erneut zu versuchen. Die angehefteten Läufe wurden verworfen: { $pins }.
 # $language is the code of the language asked for (de).
 page-language-failed = Die Seite konnte ihre Texte für { $language } nicht laden ({ $reason }): Sie wird auf Englisch angezeigt.
-page-messages-failed = Die übrigen Texte der Seite konnten nicht geladen werden ({ $reason }): Werkzeuge, Lektionen und Entwurfsdurchgang zeigen Meldungsnamen, bis die Seite neu geladen wird.
+page-messages-failed = Die übrigen Texte der Seite konnten nicht geladen werden ({ $reason }). Werkzeuge, Lektionen und Entwurfsdurchgang brauchen sie: Beim nächsten Aufruf wird es erneut versucht.
 page-challenge-tools-failed = Aufgabeneditor und Bewertung der Registerkarte „Aufgabe“ konnten nicht geladen werden: { $reason }. Öffnen Sie die Registerkarte erneut, um es noch einmal zu versuchen.
 page-lesson-map-failed = Die Karte der Lektion wurde nicht gelesen: { $reason }.
 # $lesson is the name the address asked for; $lessons lists the lessons' names.
@@ -404,3 +404,5 @@ challenge-cancel = Prüfung abbrechen
 challenge-copy = Abgabelink kopieren
 challenge-open-failed = Die Aufgabe konnte nicht geöffnet werden: { $reason }. Die Seite zeigt stattdessen das Standardszenario.
 law-checking = Ihr Regelgesetz wird an der Entwurfsdynamik geprüft…
+law-verdict-failed = Der Befund zu Ihrem Regelgesetz konnte nicht berechnet werden: { $reason }
+walkthrough-load-failed = Der Entwurfsdurchgang konnte nicht geladen werden: Prüfen Sie die Verbindung und laden Sie die Seite neu.

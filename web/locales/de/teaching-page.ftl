@@ -29,10 +29,8 @@ law-names-unit = Einheit
 law-names-meaning = Bedeutung
 law-names-functions = Mit + − * / ^ (oder · und −), Klammern, Zahlen und den Funktionen { $functions }.
 law-error-at = Bei Zeichen { $at }: { $reason }
-law-verdict-failed = Der Befund zu Ihrem Regelgesetz konnte nicht berechnet werden: { $reason }
 law-stale = Nicht das eingegebene Regelgesetz: Der gezeigte Lauf, dieser Befund und das Residuendiagramm gehören zu { $output } = { $law }. { $verdict }
 law-stale-after = Nicht das eingegebene Regelgesetz: Der gezeigte Lauf, dieser Befund und das Residuendiagramm gehören zu { $output } = { $law } nach { $previous } = { $previousLaw }. { $verdict }
 
 ## Der Entwurfsdurchgang (walkthrough.js)
 
-walkthrough-load-failed = Der Entwurfsdurchgang konnte nicht geladen werden: Prüfen Sie die Verbindung und laden Sie die Seite neu.

@@ -125,8 +125,9 @@ challenge-bound-min = ≥ { $bound }
 challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = inside its 95 % band
 # $failure says why the run failed (in English until the simulation's messages are translated).
+challenge-run-unfinished = the run did not finish
 challenge-reason-run-failed = run failed: { $failure }
-# $cause says why the figure is not a number (in English until the run's report is translated).
+# $cause says why the figure is not a number (a warning's cause of core-run.ftl or core-formula.ftl).
 challenge-reason-not-finite = { $cause }
 challenge-reason-before-load-step = not measured: the run ends before the load step
 challenge-reason-not-measured = not measured on this run (e.g. a step that never settles within 2 %)

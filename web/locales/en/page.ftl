@@ -1,6 +1,6 @@
 # The page's labels, buttons, notes and messages, by the part of the page that shows them.
 # Numbers come in variables, already written in the language's way. A variable named $reason,
-# $warning, $description or $label holds the simulation core's own words, in English for now;
+# $warning, $description or $label holds the simulation core's own words;
 # a scenario ($scenario), a field's key ($key), a preset's name ($preset) or a command is written as
 # it is and never translated.
 
@@ -143,7 +143,7 @@ run-worker-failed = The simulation worker failed ({ $reason }). It was restarted
 run-worker-failed-pins = The simulation worker failed ({ $reason }). It was restarted; press Run to try again. The pinned runs were dropped: { $pins }.
 # $language is the code of the language asked for (de).
 page-language-failed = The page could not load its { $language } messages ({ $reason }): it is in English.
-page-messages-failed = The rest of the page’s messages could not be loaded ({ $reason }): the tools, lessons and walkthrough show message names until the page is reloaded.
+page-messages-failed = The rest of the page’s messages could not be loaded ({ $reason }). The tools, lessons and walkthrough need them: using one tries again.
 page-challenge-tools-failed = The Challenge tab’s composer and grading could not be loaded: { $reason }. Open the tab again to retry.
 page-lesson-map-failed = The lesson’s map could not be loaded: { $reason }.
 # $lesson is the name the address asked for; $lessons lists the lessons' names.
@@ -402,6 +402,10 @@ challenge-progress =
     .aria-label = Challenge runs done
 challenge-cancel = Cancel check
 challenge-copy = Copy submission link
-# $reason, here and in the messages below: the core's message, in English for now.
+# $reason, here and in the messages below: the core's message.
 challenge-open-failed = The challenge could not be opened: { $reason }. The page shows the default scenario instead.
 law-checking = Checking your law against the designed dynamics…
+# $reason is why, as the page's worker or the core says it.
+law-verdict-failed = The verdict on your law could not be computed: { $reason }
+# Said when the walkthrough is opened and its texts cannot be fetched.
+walkthrough-load-failed = The walkthrough could not be loaded: check the connection and reload the page.

@@ -1,7 +1,6 @@
-# The teaching tools' words that show before the lessons and the walkthrough are loaded: the
-# inspect panel, the editor of a step's own law (in the walkthrough and in the settings), and the
-# walkthrough's own notes. The core's words (its units, its terms' meanings, its verdicts and
-# errors) come in variables, in English for now.
+# The teaching tools' words: the inspect panel, the editor of a step's own law (in the walkthrough
+# and in the settings), and the walkthrough's own notes. The core's words (its units, its terms'
+# meanings, its verdicts and errors) come in variables, said in the page's language.
 
 ## The inspect panel (inspect-panel.js): every term of the design at one sample
 
@@ -43,8 +42,6 @@ law-names-functions = With + − * / ^ (or · and −), parentheses, numbers and
 # An error in a law as typed: $at is the place of the character it concerns, counted from 1;
 # $reason is the core's (“unknown name 'foo' (see the list of names)”).
 law-error-at = At character { $at }: { $reason }
-# $reason is why, as the page's worker or the core says it.
-law-verdict-failed = The verdict on your law could not be computed: { $reason }
 # A verdict on a law other than the one typed now: $output is the law's output (v2), $law the
 # formula that ran (“-si1 + dwd - k1s1*z1”), $verdict the core's verdict on it.
 law-stale = Not the law typed: the run shown, and this verdict and the residual plot, are of { $output } = { $law }. { $verdict }
@@ -54,5 +51,3 @@ law-stale-after = Not the law typed: the run shown, and this verdict and the res
 
 ## The walkthrough (walkthrough.js)
 
-# Said when the walkthrough is opened and its texts cannot be fetched.
-walkthrough-load-failed = The walkthrough could not be loaded: check the connection and reload the page.

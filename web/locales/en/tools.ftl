@@ -2,7 +2,7 @@
 # map), the challenge panel a student sees, and the Challenge tab a lecturer uses (the composer,
 # its check, the grading of a class). Numbers come in variables, already written in the language's
 # way. Names the core gives (a variant's or a figure's label, a field's name, a scenario, the core's
-# messages) also come in variables, in English for now.
+# messages) also come in variables.
 
 ## Frequency-response sweep: the Bode plots and the table (web/analysis/analysis.js)
 
@@ -58,7 +58,7 @@ seeds-series-max = max
 # $value is what the workers field holds, as typed.
 sweep-workers-invalid = workers = { $value }: expected a whole number from 1 to 8.
 sweep-status-checking = Checking the sweep…
-# The core's message on why the sweep's form is not acceptable, in English for now.
+# The core's message on why the sweep's form is not acceptable.
 sweep-refused = { $reason }.
 sweep-not-run = The sweep was not run: the settings are not valid or not allowed here; the message at the top says why.
 sweep-status-running = Sweeping…
@@ -69,7 +69,7 @@ sweep-status-done =
        *[other] { $variants } × { $points } runs in { $ms } ms on { $workers } workers.
     }
 sweep-status-cancelled = Sweep cancelled.
-# $reason: the error's message, in English for now.
+# $reason: the error's message.
 sweep-status-failed = Sweep failed: { $reason }
 # A sweep in the address of a shared link that could not be run. $link is that part of the
 # address ("#sweep=" and the sweep's text), $reason the core's message on why.
@@ -87,17 +87,17 @@ seeds-status-running = Running seeds: { $percent } %
 # the last seed.
 seeds-status-done = { $runs } of { $seeds } seeds ({ $first } to { $last }) completed.
 seeds-status-cancelled = Seed runs cancelled.
-# $reason: the error's message, in English for now.
+# $reason: the error's message.
 seeds-status-failed = Seed sweep failed: { $reason }
 
 ## Model-error map: its run and status line (web/analysis/robust.js)
 
 map-status-starting = Running { $cells } cells × { $seeds } seeds…
 map-status-running = Running the map: { $done } of { $total } runs.
-# $reason: the core's message on why it refuses the map, in English for now.
+# $reason: the core's message on why it refuses the map.
 map-refused = The map was not run: { $reason }.
 map-not-run = The map was not run: the settings are not valid or not allowed here; the message at the top says why.
-# $reason: the error's message, in English for now.
+# $reason: the error's message.
 map-failed = The map failed: { $reason }
 # $finished: the cells whose every seed ran; $cells: the cells of the map.
 map-status-cancelled = Map cancelled: { $finished } of { $cells } cells finished and are shown; the others were not run.
@@ -237,7 +237,7 @@ checklist-reason = — { $reason }
 
 ## Challenge panel: the knobs of the allowed settings (web/challenge/knobs.js)
 
-# A setting's description (the core's, in English for now) and its unit, e.g.
+# A setting's description (the core's) and its unit, e.g.
 # "speed-error rate k1 (1/s)".
 challenge-knob-doc = { $doc } ({ $unit })
 # What a setting may be: $options are its choices, joined by commas, e.g. "euler, rk4".
@@ -279,7 +279,7 @@ compose-title-default = Challenge: { $preset }
 compose-make = Make the challenge link
 # “Fill from the current scenario” is the button's label.
 compose-no-run = No finished run of this scenario to take the figures from: run it, then press “Fill from the current scenario” again.
-# $reason: the core's message naming the part at fault, in English for now.
+# $reason: the core's message naming the part at fault.
 compose-invalid = The challenge is not valid: { $reason }
 compose-link = Challenge link
 # “Set by you in this browser” is what challenge-origin-mine says.
@@ -357,7 +357,7 @@ compose-check-running =
        *[other] { $designs } designs
     })…
 compose-check-cancelled = Check cancelled: whether a design within the allowed ranges passes is not known. Make the link again to check.
-# $reason: the error's message, in English for now.
+# $reason: the error's message.
 compose-check-failed = The check failed: { $reason }.
 # The design that changes no field.
 compose-check-base-design = the base, with no field changed
@@ -388,7 +388,7 @@ compose-check-unsolved = ✗ No design of the { $tried } tried passes: the bound
 
 ## Challenge tab: grading a class (web/challenge/grade.js)
 
-# Why a class was not graded; the reasons below (grade-no-…) or the core's, in English for now.
+# Why a class was not graded; the reasons below (grade-no-…) or the core's.
 grade-refused = Not graded: { $reason }.
 grade-no-challenge = name a challenge: a built-in’s name or a challenge link
 grade-no-file = choose a class file, or paste the links, one a line
@@ -406,7 +406,7 @@ grade-not-stored = The browser’s storage did not take this grading: download i
 # “Grade” is the button that grades. $graded of $total submissions were graded.
 grade-status-cancelled-kept = Cancelled: { $graded } of { $total } graded, kept in this browser; Grade goes on from there.
 grade-status-cancelled-lost = Cancelled: { $graded } of { $total } graded, not kept (the browser’s storage refused them).
-# $reason: the error's message, in English for now.
+# $reason: the error's message.
 grade-status-stopped-kept = The grading stopped: { $reason }. { $graded } of { $total } graded, kept in this browser; Grade goes on from there.
 grade-status-stopped-lost = The grading stopped: { $reason }. { $graded } of { $total } graded, not kept (the browser’s storage refused them).
 grade-status-cancelled-reading = Cancelled while the class file was read: nothing was graded.

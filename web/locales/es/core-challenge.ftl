@@ -130,6 +130,7 @@ challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = dentro de su banda del 95 %
 # $failure dice por qué falló la ejecución (en inglés hasta que se traduzcan los mensajes de la
 # simulación).
+challenge-run-unfinished = la ejecución no terminó
 challenge-reason-run-failed = la ejecución falló: { $failure }
 # $cause dice por qué la cifra no es un número (en inglés hasta que se traduzca el informe de la
 # ejecución).

@@ -143,7 +143,7 @@ run-worker-failed = El hilo de simulación falló ({ $reason }). Se ha reiniciad
 run-worker-failed-pins = El hilo de simulación falló ({ $reason }). Se ha reiniciado; pulsa «Ejecutar» para reintentarlo. Se descartaron las ejecuciones fijadas: { $pins }.
 # $language es el código del idioma solicitado (de).
 page-language-failed = La página no pudo cargar sus mensajes para el idioma { $language } ({ $reason }): se muestra en inglés.
-page-messages-failed = No se pudo cargar el resto de los textos de la página ({ $reason }): las herramientas, las lecciones y el recorrido muestran nombres de mensajes hasta que se recargue la página.
+page-messages-failed = No se pudo cargar el resto de los textos de la página ({ $reason }). Las herramientas, las lecciones y el recorrido los necesitan: al usar una se vuelve a intentar.
 page-challenge-tools-failed = No se pudieron cargar el editor y la calificación de la pestaña «Reto»: { $reason }. Vuelve a abrir la pestaña para reintentarlo.
 page-lesson-map-failed = No se leyó el mapa de la lección: { $reason }.
 # $lesson es el nombre que pedía la dirección; $lessons enumera los nombres de las lecciones.
@@ -404,3 +404,5 @@ challenge-cancel = Cancelar comprobación
 challenge-copy = Copiar enlace de entrega
 challenge-open-failed = No se pudo abrir el reto: { $reason }. La página muestra en su lugar el escenario por defecto.
 law-checking = Comprobando tu ley frente a la dinámica diseñada…
+law-verdict-failed = No se pudo calcular el veredicto sobre tu ley: { $reason }
+walkthrough-load-failed = No se pudo cargar el recorrido por el diseño: comprueba la conexión y vuelve a cargar la página.

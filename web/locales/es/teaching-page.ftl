@@ -31,10 +31,8 @@ law-names-unit = unidad
 law-names-meaning = significado
 law-names-functions = Con + − * / ^ (o · y −), paréntesis, números y las funciones { $functions }.
 law-error-at = En el carácter { $at }: { $reason }
-law-verdict-failed = No se pudo calcular el veredicto sobre tu ley: { $reason }
 law-stale = No es la ley escrita: la ejecución mostrada, este veredicto y la gráfica del residuo corresponden a { $output } = { $law }. { $verdict }
 law-stale-after = No es la ley escrita: la ejecución mostrada, este veredicto y la gráfica del residuo corresponden a { $output } = { $law } tras { $previous } = { $previousLaw }. { $verdict }
 
 ## The walkthrough (walkthrough.js)
 
-walkthrough-load-failed = No se pudo cargar el recorrido por el diseño: comprueba la conexión y vuelve a cargar la página.

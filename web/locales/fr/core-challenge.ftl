@@ -130,6 +130,7 @@ challenge-bound-min = ≥ { $bound }
 challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = dans sa bande à 95 %
 # $failure : pourquoi la simulation a échoué.
+challenge-run-unfinished = la simulation n’est pas allée à son terme
 challenge-reason-run-failed = échec de la simulation : { $failure }
 # $cause : pourquoi l’indicateur n’est pas un nombre.
 challenge-reason-not-finite = { $cause }

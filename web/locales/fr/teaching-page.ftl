@@ -31,10 +31,8 @@ law-names-unit = unité
 law-names-meaning = signification
 law-names-functions = Avec + − * / ^ (ou · et −), des parenthèses, des nombres et les fonctions { $functions }.
 law-error-at = Au caractère { $at } : { $reason }
-law-verdict-failed = Le verdict sur votre loi n’a pas pu être calculé : { $reason }
 law-stale = Ce n’est pas la loi saisie : la simulation affichée, ce verdict et le tracé du résidu portent sur { $output } = { $law }. { $verdict }
 law-stale-after = Ce n’est pas la loi saisie : la simulation affichée, ce verdict et le tracé du résidu portent sur { $output } = { $law } après { $previous } = { $previousLaw }. { $verdict }
 
 ## Le parcours (walkthrough.js)
 
-walkthrough-load-failed = Le parcours n’a pas pu être chargé : vérifiez la connexion et rechargez la page.

@@ -86,6 +86,7 @@ challenge-bound-max = ≤ { $bound }
 challenge-bound-min = ≥ { $bound }
 challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = 95 %区間の内側
+challenge-run-unfinished = 実行が最後まで終わりませんでした
 challenge-reason-run-failed = 実行に失敗：{ $failure }
 challenge-reason-not-finite = { $cause }
 challenge-reason-before-load-step = 未測定：負荷ステップの前に実行が終わります

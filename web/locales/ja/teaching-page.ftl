@@ -30,10 +30,8 @@ law-names-unit = 単位
 law-names-meaning = 意味
 law-names-functions = + − * / ^（または · と −）、括弧、数値、および関数 { $functions } が使えます。
 law-error-at = { $at }文字目：{ $reason }
-law-verdict-failed = 制御則の判定を計算できませんでした：{ $reason }
 law-stale = 入力中の制御則ではありません。表示中の実行、この判定、残差のプロットは { $output } = { $law } によるものです。{ $verdict }
 law-stale-after = 入力中の制御則ではありません。表示中の実行、この判定、残差のプロットは、{ $previous } = { $previousLaw } のもとでの { $output } = { $law } によるものです。{ $verdict }
 
 ## 設計解説（walkthrough.js）
 
-walkthrough-load-failed = 設計解説を読み込めませんでした。接続を確認して、ページを再読み込みしてください。

@@ -114,6 +114,7 @@ challenge-bound-min = ≥ { $bound }
 challenge-bound-abs = |·| ≤ { $bound }
 challenge-bound-band = 在其 95% 区间内
 # $failure 说明运行失败的原因（在仿真的消息翻译之前为英文）。
+challenge-run-unfinished = 运行未完成
 challenge-reason-run-failed = 运行失败：{ $failure }
 # $cause 说明该指标为何不是数值（在运行报告翻译之前为英文）。
 challenge-reason-not-finite = { $cause }

@@ -142,7 +142,7 @@ run-worker-failed = 仿真工作线程失败（{ $reason }），已重新启动�
 run-worker-failed-pins = 仿真工作线程失败（{ $reason }），已重新启动；请按“运行”重试。固定的运行已被丢弃：{ $pins }。
 # $language 是所请求语言的代码（de）。
 page-language-failed = 页面无法载入 { $language } 语言的文字（{ $reason }）：现以英文显示。
-page-messages-failed = 页面其余的文本无法加载（{ $reason }）：在重新加载页面之前，工具、课程和详解将显示消息名称。
+page-messages-failed = 页面其余的文本无法加载（{ $reason }）。工具、课程和详解需要这些文本：使用其中任何一项时会重新尝试加载。
 page-challenge-tools-failed = 无法载入“挑战”选项卡的出题与评分功能：{ $reason }。请重新打开该选项卡以重试。
 page-lesson-map-failed = 未能读取本课的误差图：{ $reason }。
 # $lesson 是地址所请求的课名；$lessons 列出各课的名称。
@@ -401,3 +401,5 @@ challenge-cancel = 取消检查
 challenge-copy = 复制提交链接
 challenge-open-failed = 无法打开此挑战：{ $reason }。页面改为显示默认场景。
 law-checking = 正在按设计的动态检查你的控制律…
+law-verdict-failed = 无法计算对你的控制律的判定：{ $reason }
+walkthrough-load-failed = 无法载入设计详解：请检查网络连接并重新加载页面。

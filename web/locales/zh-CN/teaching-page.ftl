@@ -30,10 +30,8 @@ law-names-unit = 单位
 law-names-meaning = 含义
 law-names-functions = 可使用 + − * / ^（或 · 和 −）、括号、数字以及函数 { $functions }。
 law-error-at = 第 { $at } 个字符处：{ $reason }
-law-verdict-failed = 无法计算对你的控制律的判定：{ $reason }
 law-stale = 并非当前输入的控制律：所显示的运行、此判定及残差图针对的是 { $output } = { $law }。{ $verdict }
 law-stale-after = 并非当前输入的控制律：所显示的运行、此判定及残差图针对的是 { $previous } = { $previousLaw } 之后的 { $output } = { $law }。{ $verdict }
 
 ## 设计详解（walkthrough.js）
 
-walkthrough-load-failed = 无法载入设计详解：请检查网络连接并重新加载页面。

@@ -75,12 +75,12 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
                 measure(&sim)
             }
             Err(e) => Measures {
-                failure: Some(e.to_string()),
+                failure: Some(e.message()),
                 ..Measures::default()
             },
         };
         if let Some(f) = &m.failure {
-            graded.status = Message::new("grade-row-run-failed").text("reason", f.as_str());
+            graded.status = Message::new("grade-row-run-failed").said("reason", f.clone());
             return graded;
         }
         runs.push(m);

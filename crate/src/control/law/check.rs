@@ -10,7 +10,6 @@ use crate::control::RefSample;
 use crate::params::Lumped;
 use crate::rng::Rng;
 use crate::text::Message;
-use std::fmt;
 
 /// How a step's law compares with its designed dynamics.
 #[cfg_attr(
@@ -285,69 +284,6 @@ impl Unjudged {
                     .text("value", value.to_string())
                     .text("reads", if names.is_empty() { "none" } else { "some" })
                     .list("names", super::named_messages(names))
-            }
-        }
-    }
-}
-
-impl fmt::Display for Unjudged {
-    /// Its message in English.
-    #[cfg(feature = "english")]
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        self.message().fmt(f)
-    }
-
-    /// The run's module carries no message files, and a run's warnings are still text: there the
-    /// cause is written in English as `core-law.ftl` says it.
-    #[cfg(not(feature = "english"))]
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.english())
-    }
-}
-
-impl Unjudged {
-    /// Its English, written here for the run's module, which has no message files (a test holds
-    /// it to `core-law.ftl`'s).
-    #[cfg(any(test, not(feature = "english")))]
-    fn english(&self) -> String {
-        let at = |names: &[(&str, f64)], before: &str| {
-            if names.is_empty() {
-                ", reading no signal".to_string()
-            } else {
-                let names: Vec<String> = names
-                    .iter()
-                    .map(|(name, v)| format!("{name} = {}", crate::text::short(*v)))
-                    .collect();
-                format!("{before}at {}", names.join(", "))
-            }
-        };
-        match self {
-            Unjudged::NeverRuns { step } => format!(
-                "your {} gives no finite value at any of the {DRAWS} drawn states, so step {step} never runs",
-                OUTPUTS[*step as usize - 2].0
-            ),
-            Unjudged::NoShare { step } => {
-                let (symbol, unit) = OUTPUTS[*step as usize - 1];
-                format!("your {symbol} ({unit}) differs from the {symbol} that gives the designed dynamics where the paper's law is all but zero, by no finite share of its size")
-            }
-            Unjudged::Infinite { step, count, names } => {
-                let (symbol, unit) = OUTPUTS[*step as usize - 1];
-                format!(
-                    "your {symbol} ({unit}) differs infinitely from the {symbol} that gives the designed dynamics at {count} of the {DRAWS} drawn states{}",
-                    at(names, ", e.g. ")
-                )
-            }
-            Unjudged::NotFinite {
-                step,
-                count,
-                value,
-                names,
-            } => {
-                let (symbol, unit) = OUTPUTS[*step as usize - 1];
-                format!(
-                    "your {symbol} ({unit}) is not a finite number at {count} of the {DRAWS} drawn states: it gives {value}{}",
-                    at(names, " ")
-                )
             }
         }
     }
@@ -745,42 +681,4 @@ fn three(v: f64) -> String {
     }
     let factor = 10f64.powi(2 - e);
     format!("{}", (v * factor).round() / factor)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_run_modules_english_of_a_cause_is_the_message_files() {
-        let names = vec![("x1h", 3.25), ("z1", -1e-300)];
-        for cause in [
-            Unjudged::NeverRuns { step: 2 },
-            Unjudged::NoShare { step: 3 },
-            Unjudged::Infinite {
-                step: 1,
-                count: 7,
-                names: names.clone(),
-            },
-            Unjudged::Infinite {
-                step: 4,
-                count: 200,
-                names: vec![],
-            },
-            Unjudged::NotFinite {
-                step: 1,
-                count: 3,
-                value: f64::INFINITY,
-                names,
-            },
-            Unjudged::NotFinite {
-                step: 2,
-                count: 200,
-                value: f64::NAN,
-                names: vec![],
-            },
-        ] {
-            assert_eq!(cause.message().to_string(), cause.english());
-        }
-    }
 }
