@@ -288,6 +288,17 @@ test('a value outside the allowed range is refused before it runs: the address k
     assert.equal(await tryValues(page, { k1: '1200' }), 'fail');
   }));
 
+test('a run that runs away is failed in words of the page’s language, the run module’s reason said', () => {
+  // The low-speed lesson's run: a wrong R_r at low speed, which runs away.
+  const base = encodeURIComponent('v=1&preset=rr-mismatch&ref.value=1&ekf=rk4&init_err=0&duration=3');
+  return withPage(`?c=1&title=x&base=${base}&allow.k1=1..2000&need.tracking_rms=max:1#lang=de`, async (page) => {
+    await page.waitForSelector('#challenge-checklist li .reason');
+    const reason = await page.textContent('#challenge-checklist li .reason');
+    assert.match(reason, /Lauf fehlgeschlagen: (Der Lauf ist divergiert|divergiert bei)/);
+    assert.doesNotMatch(reason, /[[{]|warning-|sim-|Real/);
+  });
+});
+
 test('a malformed challenge link says so and the page falls back to the default scenario', () =>
   withPage('?c=1&title=x&base=v%3D1%26preset%3Dstep&allow.k1=1..2&need.nothing=max:1', async (page) => {
     await page.waitForFunction(() => document.body.dataset.challenge === 'malformed');

@@ -387,7 +387,7 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
     assert_eq!(v.criteria[2].value, Some(3.9));
     // A failed run fails every criterion it enters; a missing figure is not a pass.
     let failed = Measures {
-        failure: Some(imlab::text::Message::new("challenge-run-unfinished")),
+        failure: Some(imlab::text::Message::new("challenge-run-unfinished").into()),
         ..Measures::default()
     };
     let v = judge(&c, &[good.clone(), failed]).unwrap();

@@ -163,9 +163,9 @@ export class RunClient {
   }
 
   /**
-   * The challenge measures of run `id`, if the worker still holds it (else null).
+   * The challenge measures of run `id`, if the worker still holds it (else null), said.
    * @param {number} id
-   * @returns {Promise<P.Measured['measures']>}
+   * @returns {Promise<Extract<P.ToPage, {type: 'challenge-measured'}>['measures']>}
    */
   measure(id) {
     return this.ask(`measure ${id}`, { type: 'challenge-measure', id });

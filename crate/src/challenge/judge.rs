@@ -10,7 +10,7 @@ use crate::record::{
     load_recovery, FigureInfo, WarningKind, FIGURE_INFO, LOAD_RECOVERY, LOAD_RECOVERY_INFO,
 };
 use crate::sim::Simulation;
-use crate::text::Message;
+use crate::text::{Arg, Message};
 use serde::{Deserialize, Serialize};
 
 /// The report's figures a criterion may not name: the ends of the NIS band (a criterion asks
@@ -96,8 +96,11 @@ pub struct Measures {
     /// The figures the run gives no number for, each with why.
     #[serde(default)]
     pub not_finite: Vec<NotFinite>,
-    /// Why the run does not count, if it does not: the simulation failed, or it ran away.
-    pub failure: Option<Message>,
+    /// Why the run does not count, if it does not: the simulation failed, or it ran away. The
+    /// core's message; or, for measures that crossed the page on their way to the judge, the
+    /// text the page said it as.
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "Message | string | null"))]
+    pub failure: Option<Arg>,
 }
 
 /// A figure a run gives no number for, because it is not finite, and why.
@@ -110,8 +113,9 @@ pub struct Measures {
 pub struct NotFinite {
     /// Figure name.
     pub name: String,
-    /// Why it is not a number.
-    pub cause: Message,
+    /// Why it is not a number (a message, or the page's text of it, as `failure`).
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "Message | string"))]
+    pub cause: Arg,
 }
 
 impl Measures {
@@ -146,14 +150,14 @@ pub fn measure(sim: &Simulation) -> Measures {
         });
     }
     let failure = if let Some(e) = sim.failure() {
-        Some(e.message())
+        Some(e.message().into())
     } else if !sim.is_finished() {
-        Some(Message::new("challenge-run-unfinished"))
+        Some(Message::new("challenge-run-unfinished").into())
     } else {
         r.warnings
             .iter()
             .find(|w| w.kind == WarningKind::Runaway)
-            .map(|w| w.text.clone())
+            .map(|w| w.text.clone().into())
     };
     let not_finite = r
         .warnings
@@ -161,7 +165,7 @@ pub fn measure(sim: &Simulation) -> Measures {
         .filter_map(|w| {
             w.figure.map(|name| NotFinite {
                 name: name.to_string(),
-                cause: w.text.clone(),
+                cause: w.text.clone().into(),
             })
         })
         .collect();
@@ -230,10 +234,10 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
         badness: f64::INFINITY,
     };
     if let Some(f) = &m.failure {
-        return fail(Message::new("challenge-reason-run-failed").said("failure", f.clone()));
+        return fail(Message::new("challenge-reason-run-failed").arg("failure", f.clone()));
     }
     if let Some(n) = m.not_finite.iter().find(|n| n.name == figure) {
-        return fail(Message::new("challenge-reason-not-finite").said("cause", n.cause.clone()));
+        return fail(Message::new("challenge-reason-not-finite").arg("cause", n.cause.clone()));
     }
     let Some(x) = m.get(figure) else {
         return fail(Message::new(if figure == LOAD_RECOVERY {

@@ -170,6 +170,17 @@ impl Message {
     pub fn said(self, name: &'static str, said: Message) -> Message {
         self.with(name, Arg::Said(Box::new(said)))
     }
+
+    /// With `arg` as `name`, as it came: a message, or the text the page already said it as.
+    pub fn arg(self, name: &'static str, arg: Arg) -> Message {
+        self.with(name, arg)
+    }
+}
+
+impl From<Message> for Arg {
+    fn from(message: Message) -> Arg {
+        Arg::Said(Box::new(message))
+    }
 }
 
 /// The time `t` (s) as a message: in ms below 1 s, in s from 1 s on, to 4 significant digits.

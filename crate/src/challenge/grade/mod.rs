@@ -75,12 +75,12 @@ pub fn grade_one(c: &Challenge, line: usize, link: &str) -> Graded {
                 measure(&sim)
             }
             Err(e) => Measures {
-                failure: Some(e.message()),
+                failure: Some(e.message().into()),
                 ..Measures::default()
             },
         };
         if let Some(f) = &m.failure {
-            graded.status = Message::new("grade-row-run-failed").said("reason", f.clone());
+            graded.status = Message::new("grade-row-run-failed").arg("reason", f.clone());
             return graded;
         }
         runs.push(m);
