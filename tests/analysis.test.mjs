@@ -94,6 +94,19 @@ test('input quoted in a message has its invisible and reordering characters esca
     assert.doesNotMatch(message, /[\p{Cc}\p{Cf}\p{Zl}\p{Zp}]/u);
   }));
 
+test("the core's words about pins are said in the page's language: a full set, and a pin the same as the run", () => {
+  // Five pins, one more than the core keeps: the first is the run itself, the fifth is refused.
+  const pin = (k1) => encodeURIComponent(`v=1&preset=step&duration=0.02${k1 ? `&k1=${k1}` : ''}`);
+  const pins = ['', 600, 700, 800, 900].map(pin).join('|');
+  return withPage(`?v=1&preset=step&duration=0.02#lang=de&pins=${pins}`, async (page) => {
+    await page.waitForFunction(() => document.querySelectorAll('#pins li').length === 4);
+    await page.waitForFunction(() => document.getElementById('message').textContent.includes('angeheftet'));
+    assert.match(await page.textContent('#message'), /höchstens 4 Läufe können angeheftet werden/);
+    const first = await page.textContent('#pins li');
+    assert.match(first, /gleiches Szenario/);
+  });
+});
+
 test('the browser sweep equals the CLI sweep, and parallel equals serial', () =>
   withPage('?v=1&preset=step#sweep=10,1000,12,0.02,0,0.2,euler.ifocpi', async (page) => {
     assert.equal(await sweepDone(page), 'done');
@@ -179,7 +192,7 @@ test('points that had not settled are drawn hollow, listed with the reason, and 
     for (const r of reasons)
       assert.match(
         r,
-        /^Classical IFOC \+ MRAS, torque feedforward, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed [-+]\d+\.\d+ dB .* [-+]\d+\.\d+°/,
+        /^Classical IFOC \+ MRAS, torque feedforward, \d+\.0 Hz: not settled: over the last \d+ periods, .* changed by −?\d+\.\d\d dB and its phase by −?\d+\.\d°/,
       );
     // Each Bode plot has a series of hollow markers for them.
     assert.equal(

@@ -573,9 +573,9 @@ impl Comparison {
     /// Whether another run can be pinned; throws, naming the limit, when not.
     pub fn check_room(&self) -> Result<(), JsValue> {
         if self.pins.len() >= MAX_PINS {
-            return Err(js_error(format!(
-                "at most {MAX_PINS} runs can be pinned; unpin one first"
-            )));
+            return Err(js_error(
+                crate::text::Message::new("pin-room-full").count("max", MAX_PINS),
+            ));
         }
         Ok(())
     }
@@ -616,20 +616,24 @@ impl Comparison {
         self.pins.iter().map(|p| p.scenario().encode()).collect()
     }
 
-    /// For each pin, what differs between it and `current` ("key: pin → current").
-    pub fn legends(&self, current: &Simulation) -> Vec<String> {
+    /// For each pin, what differs between it and `current` ("key: pin → current; …"), or the
+    /// message that nothing does.
+    #[wasm_bindgen(unchecked_return_type = "(Message | string)[]")]
+    pub fn legends(&self, current: &Simulation) -> Result<JsValue, JsValue> {
         let now = current.inner.scenario();
-        self.pins
+        let legends: Vec<crate::text::Arg> = self
+            .pins
             .iter()
             .map(|p| {
                 let d = now.differences(p.scenario());
                 if d.is_empty() {
-                    "same scenario".to_string()
+                    crate::text::Message::new("pin-legend-same").into()
                 } else {
-                    d.join("; ")
+                    crate::text::Arg::Text(d.join("; "))
                 }
             })
-            .collect()
+            .collect();
+        raw_js(&legends)
     }
 
     /// Column `name` of `current` and of each pin, then current − pin for each, as min/max
@@ -647,7 +651,12 @@ impl Comparison {
     ) -> Result<Array, JsValue> {
         let ts = current.inner.scenario().ts;
         if let Some(p) = self.pins.iter().find(|p| p.scenario().ts != ts) {
-            return Err(js_error(format!("pinned run {} samples at Ts = {} s, the current one at {ts} s: overlays need the same Ts", p.scenario().encode(), p.scenario().ts)));
+            return Err(js_error(
+                crate::text::Message::new("overlay-ts-differs")
+                    .text("scenario", p.scenario().encode())
+                    .real("pinned", p.scenario().ts)
+                    .real("current", ts),
+            ));
         }
         for s in std::iter::once(&mut current.inner).chain(&mut self.pins) {
             s.keep_column(name).map_err(js_error)?;

@@ -330,6 +330,9 @@ fn criteria_judge_values_bounds_settling_and_the_worst_variant() {
         .iter()
         .map(|c| c.reason.as_ref().map_or(String::new(), |r| r.to_string()))
         .collect();
+    // The verdict says which value was still changing, apart from its words.
+    let settled: Vec<bool> = v.criteria.iter().map(|c| c.settled).collect();
+    assert_eq!(settled[..2], [false, true]);
     let rows: Vec<_> = v
         .criteria
         .iter()

@@ -310,6 +310,7 @@ fn cells_from_students_cannot_run_formulas_or_carry_invisible_characters() {
             run: "nominal".into(),
             pass: true,
             reason: None,
+            settled: true,
         }],
         pass: true,
     };

@@ -45,10 +45,8 @@ function failures(verdict) {
     .map((/** @type {Criterion} */ c) => {
       const reason = c.reason ? c.reason : '';
       if (c.value === null) return t('compose-check-unmeasured', { figure: c.figure, reason });
-      // The core's reason for a value that had not settled by the end of the run, as said here.
-      const still = reason === t('challenge-reason-still-changing');
       const args = { figure: c.figure, value: formatValue(c.value, c.unit), bound: c.bound };
-      return t(still ? 'compose-check-failure-changing' : 'compose-check-failure', args);
+      return t(c.settled ? 'compose-check-failure' : 'compose-check-failure-changing', args);
     })
     .join('; ');
 }

@@ -251,11 +251,12 @@ export {};
  * @typedef {{type: 'compared', id: number, results: {predictor: string, scenario: string, metrics: Metrics | null}[]}} Compared
  */
 /**
- * The pins, and each scenario not pinned: the core's message why, or, when pinning was
+ * The pins, each with its legend (what differs from the current run, or the core's message that
+ * nothing does), and each scenario not pinned: the core's message why, or, when pinning was
  * cancelled, whether it was cancelled before the scenario ran ('unrun') or while it ran.
  * @typedef {{type: 'pin-progress', index: number, count: number, done: number, total: number}} PinProgress
  * @typedef {{scenario: string, message: string} | {scenario: string, cancelled: 'unrun' | 'running'}} PinRejected
- * @typedef {{type: 'pins', scenarios: string[], legends: string[], rejected: PinRejected[], cancelled: boolean}} Pins
+ * @typedef {{type: 'pins', scenarios: string[], legends: (Message | string)[], rejected: PinRejected[], cancelled: boolean}} Pins
  */
 /**
  * The overlay's samples: times, the current run, each pin, then each pin's difference to the run.

@@ -5,7 +5,7 @@ use crate::control::Reference;
 use crate::record::Row;
 use crate::scenario::{Scenario, ScenarioError};
 use crate::sim::{mib, trace_bytes, Simulation, MAX_TRACE_BYTES};
-use crate::text::{csv, short, Message};
+use crate::text::{csv, short, Arg, Message};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -66,8 +66,11 @@ pub struct SweepPoint {
     /// Change of the phase of ω over the same halves (degrees, in [−180, 180]).
     pub phase_change: f64,
     /// Why the run is not taken to have reached a periodic steady state, if it is not; such a
-    /// point is never used for the bandwidth or the phase at 200 Hz.
-    pub unsettled: Option<String>,
+    /// point is never used for the bandwidth or the phase at 200 Hz. The core's message; or, for
+    /// a point that crossed the page on its way to the summary or the CSV, the text the page
+    /// said it as.
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "Message | string | null"))]
+    pub unsettled: Option<Arg>,
 }
 
 /// Largest half-to-half change of the gain of ω (dB) and of its phase (degrees) of a settled
@@ -377,13 +380,13 @@ impl SineRun {
             gain_change_db,
             phase_change,
             unsettled: (!settled).then(|| {
-                format!(
-                    "not settled: over the last {} periods, from the first half to the second, \
-                     the gain of ω changed {gain_change_db:+.2} dB and its phase \
-                     {phase_change:+.1}° (settled: within ±{SETTLED_GAIN_DB} dB and \
-                     ±{SETTLED_PHASE_DEG}°)",
-                    2.0 * k
-                )
+                Message::new("sweep-not-settled")
+                    .count("periods", (2.0 * k) as i64)
+                    .fixed("gain", gain_change_db, 2)
+                    .fixed("phase", phase_change, 1)
+                    .real("gain-bound", SETTLED_GAIN_DB)
+                    .real("phase-bound", SETTLED_PHASE_DEG)
+                    .into()
             }),
         })
     }
@@ -674,7 +677,7 @@ mod tests {
 
     fn unsettled(freq: f64, gain: f64, phase: f64) -> SweepPoint {
         SweepPoint {
-            unsettled: Some("not settled".to_string()),
+            unsettled: Some(Arg::Text("not settled".to_string())),
             ..point(freq, gain, phase)
         }
     }

@@ -201,6 +201,8 @@ pub struct CriterionVerdict {
     pub pass: bool,
     /// Why it fails (None when it holds): "above the bound", "still changing", …
     pub reason: Option<Message>,
+    /// False when the value judged was still changing at the end of its run.
+    pub settled: bool,
 }
 
 /// The verdict on a submission.
@@ -224,6 +226,7 @@ struct Check {
     pass: bool,
     reason: Option<Message>,
     badness: f64,
+    settled: bool,
 }
 
 fn check(op: &Op, figure: &str, m: &Measures) -> Check {
@@ -232,6 +235,7 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
         pass: false,
         reason: Some(reason),
         badness: f64::INFINITY,
+        settled: true,
     };
     if let Some(f) = &m.failure {
         return fail(Message::new("challenge-reason-run-failed").arg("failure", f.clone()));
@@ -269,6 +273,7 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
         pass,
         reason: (!pass).then(|| Message::new(side)),
         badness,
+        settled: true,
     };
     if v.is_infinite() && figure == LOAD_RECOVERY {
         out.reason = Some(Message::new("challenge-reason-not-recovered"));
@@ -278,6 +283,7 @@ fn check(op: &Op, figure: &str, m: &Measures) -> Check {
         out.pass = false;
         out.reason = Some(Message::new("challenge-reason-still-changing"));
         out.badness = f64::INFINITY;
+        out.settled = false;
     }
     out
 }
@@ -337,6 +343,7 @@ pub fn judge(challenge: &Challenge, runs: &[Measures]) -> Result<Verdict, Messag
             run: labels[i].clone(),
             pass: k.pass,
             reason: k.reason,
+            settled: k.settled,
         });
     }
     let pass = criteria.iter().all(|c| c.pass);

@@ -221,6 +221,10 @@ mod english {
             "core-challenge.ftl",
             include_str!("../../../web/locales/en/core-challenge.ftl"),
         ),
+        (
+            "core-analysis.ftl",
+            include_str!("../../../web/locales/en/core-analysis.ftl"),
+        ),
     ];
 
     fn bundle() -> &'static FluentBundle<FluentResource> {

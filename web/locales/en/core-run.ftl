@@ -203,3 +203,9 @@ sim-law-reads = from { $signals }
 # $flux and $min in scientific notation (Wb²).
 control-singular = decoupling matrix (55) is singular: estimated flux x̂4² + x̂5² = { $flux } Wb² is below { $min } Wb²
 control-law = the law of step { $step } gave { $value }, not a finite number
+# The most runs that can be pinned at once ($max).
+pin-room-full = at most { $max } runs can be pinned; unpin one first
+# A pin's legend when its scenario is the current run's.
+pin-legend-same = same scenario
+# $scenario: the pinned run's link; $pinned and $current: the two sampling periods (s).
+overlay-ts-differs = the pinned run { $scenario } samples at Ts = { $pinned } s, the current one at { $current } s: overlays need the same Ts

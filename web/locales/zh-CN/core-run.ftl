@@ -198,3 +198,6 @@ sim-law-reads = 此时 { $signals }
 # $flux 和 $min 以科学计数法表示（Wb²）。
 control-singular = 解耦矩阵 (55) 奇异：估计磁链 x̂4² + x̂5² = { $flux } Wb² 低于 { $min } Wb²
 control-law = 第 { $step } 步的控制律给出 { $value }，不是有限数
+pin-room-full = 最多只能固定 { $max } 个运行；请先取消固定一个
+pin-legend-same = 相同场景
+overlay-ts-differs = 固定的运行 { $scenario } 的采样周期为 Ts = { $pinned } s，当前运行为 { $current } s：叠加需要相同的 Ts

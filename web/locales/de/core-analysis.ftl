@@ -1,0 +1,1 @@
+sweep-not-settled = nicht eingeschwungen: über die letzten { $periods } Perioden änderte sich die Verstärkung von ω von der ersten zur zweiten Hälfte um { $gain } dB und ihre Phase um { $phase }° (eingeschwungen: innerhalb ±{ $gain-bound } dB und ±{ $phase-bound }°)

@@ -1,0 +1,1 @@
+sweep-not-settled = no establecido: en los últimos { $periods } periodos, de la primera mitad a la segunda, la ganancia de ω cambió { $gain } dB y su fase { $phase }° (establecido: dentro de ±{ $gain-bound } dB y ±{ $phase-bound }°)

@@ -1,0 +1,1 @@
+sweep-not-settled = non établi : sur les { $periods } dernières périodes, de la première moitié à la seconde, le gain de ω a varié de { $gain } dB et sa phase de { $phase }° (établi : à ±{ $gain-bound } dB et ±{ $phase-bound }° près)
