@@ -1,7 +1,7 @@
 // End-to-end tests of the page in headless Debian Chromium. Every test fails on a console error.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { readFileSync } from 'node:fs';
 import { browserSuite, newPage, runAgain, settled, startRun } from './browser.mjs';
 
@@ -35,6 +35,19 @@ test('the page loads and the default preset draws its plots', () =>
     assert.equal(await page.evaluate(() => document.body.dataset.rows), '5000');
     assert.match(await page.textContent('#preset-doc'), /Fig 2/);
     assert.equal(await page.textContent('#message'), '');
+  }));
+
+test('a setting the run does not read is said under the preset, as the CLI warns of it', () =>
+  withPage('v=1&preset=ifoc-step&duration=0.02&perfect=1&k1=600', async (page) => {
+    assert.equal(await settled(page), 'done');
+    const said = await page.textContent('#preset-doc');
+    const warned = spawnSync(cli, ['describe', scenarioInUrl(page)])
+      .stderr.toString()
+      .split('\n')
+      .filter(Boolean)
+      .map((l) => l.replace('imlab: warning: ', ''));
+    assert.deepEqual(warned, ['k1 has no effect with controller=ifoc', 'perfect has no effect with controller=ifoc']);
+    assert.ok(said.endsWith(`Ignored: ${warned.join('; ')}.`), said);
   }));
 
 test('each preset runs from the picker', () =>

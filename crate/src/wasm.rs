@@ -396,6 +396,8 @@ pub struct Description {
     component_limit: f64,
     /// The keys of the fields that differ from the preset, in the codec's order.
     changed: Vec<&'static str>,
+    /// Those of them that have no effect in this scenario, each said with why.
+    idle: Vec<crate::text::Message>,
     fields: Vec<crate::scenario::FieldInfo>,
     plant: Lumped,
     model: Lumped,
@@ -410,6 +412,7 @@ impl Description {
             steps: s.steps(),
             component_limit: s.limit().component_max(),
             changed: s.changed_keys(),
+            idle: s.idle_settings(),
             fields: s.describe(),
             plant: lumped(&s.plant)?,
             model: lumped(&s.model)?,

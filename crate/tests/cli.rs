@@ -562,3 +562,28 @@ fn a_formula_with_an_invisible_character_is_quoted_as_escapes_everywhere() {
         }
     }
 }
+
+#[test]
+fn a_setting_the_run_does_not_read_is_warned_about_and_marked_by_describe() {
+    // The perfect observer and the backstepping gains under IFOC: each command that reads the
+    // scenario says so on stderr, and the figures are those of the run without them.
+    let idle = "v=1&preset=ifoc-step&duration=0.02&perfect=1&k1=600";
+    let plain = "v=1&preset=ifoc-step&duration=0.02";
+    let out = output(["metrics", idle]);
+    assert!(out.status.success());
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    for key in ["perfect", "k1"] {
+        let line = format!("imlab: warning: {key} has no effect with controller=ifoc");
+        assert!(stderr.contains(&line), "{stderr}");
+    }
+    assert_eq!(out.stdout, stdout_of(["metrics", plain]));
+    let clean = output(["metrics", plain]);
+    assert!(!String::from_utf8_lossy(&clean.stderr).contains("no effect"));
+    let described = String::from_utf8(stdout_of(["describe", idle])).unwrap();
+    assert!(
+        described.contains("\n# perfect has no effect with controller=ifoc\n"),
+        "{described}"
+    );
+    let k1 = described.lines().find(|l| l.starts_with("k1 ")).unwrap();
+    assert!(k1.ends_with("(no effect with controller=ifoc)"), "{k1}");
+}

@@ -158,9 +158,13 @@ export function createSettings({
     const description = presets.find((p) => p.name === ui.preset.value)?.description ?? '';
     // A changed run is not the preset's: what the description says of the preset's run (its
     // speed, its outcome) need not hold for it, and the page says so.
-    ui.presetDoc.textContent = info.changed.length
+    const changed = info.changed.length
       ? t('settings-preset-changed', { preset: ui.preset.value, description, fields: info.changed.join(', ') })
       : description;
+    // A setting the run ignores is said, never left to look as if it acted.
+    ui.presetDoc.textContent = info.idle.length
+      ? t('settings-idle', { changed, idle: info.idle.join(t('settings-idle-separator')) })
+      : changed;
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
     described(info);

@@ -122,26 +122,42 @@ pub struct FieldInfo {
     pub acts: bool,
 }
 
-/// Whether field `key` changes anything in scenario `s`.
-fn acts(key: &str, s: &Scenario) -> bool {
+/// Why field `key` changes nothing in scenario `s`: the settings that leave it idle, as the codec
+/// writes them (`controller=ifoc`); None when it acts. The IFOC tuning acts only with the IFOC
+/// controller; the backstepping gains, its robust terms, its own laws and the perfect observer (which
+/// only the backstepping controller reads) only with the backstepping controller; ε and h only
+/// with the robust terms on; the EKF's load and R_r tuning only with those states on; `vmax` only
+/// with the box limit; `vdc` only with the circle or hex limit or PWM; `delay.comp` only with the
+/// delay and the backstepping controller.
+pub(super) fn idle_because(key: &str, s: &Scenario) -> Option<String> {
+    let ifoc = s.controller == ControllerKind::Ifoc;
+    let backstepping_only =
+        matches!(key, "k1" | "k2" | "k3" | "k4" | "robust" | "perfect") || key.starts_with("law.");
+    let reason = |idle: bool, why: &str| idle.then(|| why.to_string());
     if key.starts_with("ifoc.") {
-        s.controller == ControllerKind::Ifoc
+        reason(!ifoc, "controller=backstepping")
+    } else if backstepping_only {
+        reason(ifoc, "controller=ifoc")
     } else if matches!(key, "eps2" | "h2" | "eps4" | "h4") {
-        s.gains.robust
+        reason(ifoc, "controller=ifoc").or(reason(!s.gains.robust, "robust=0"))
     } else if matches!(key, "ekf.q_load" | "ekf.load_std") {
-        s.ekf.load
+        reason(!s.ekf.load, "ekf.load=0")
     } else if matches!(key, "ekf.q_rr" | "ekf.rr_std") {
-        s.ekf.rr
+        reason(!s.ekf.rr, "ekf.rr=0")
     } else if key == "vmax" {
-        s.drive.vlimit == Shape::Box
+        (s.drive.vlimit != Shape::Box).then(|| {
+            let vlimit = field("vlimit").and_then(|f| f.get(s)).unwrap_or_default();
+            format!("vlimit={vlimit}")
+        })
     } else if key == "vdc" {
-        s.drive.vlimit != Shape::Box || s.drive.pwm
-    } else if key.starts_with("law.") {
-        s.controller == ControllerKind::Backstepping
+        reason(
+            s.drive.vlimit == Shape::Box && !s.drive.pwm,
+            "vlimit=box, pwm=0",
+        )
     } else if key == "delay.comp" {
-        s.drive.delay && s.controller == ControllerKind::Backstepping
+        reason(ifoc, "controller=ifoc").or(reason(!s.drive.delay, "delay=0"))
     } else {
-        true
+        None
     }
 }
 
@@ -581,7 +597,7 @@ impl Field {
                 }
                 _ => self.get(s),
             },
-            acts: acts(self.key, s),
+            acts: idle_because(self.key, s).is_none(),
         }
     }
 }

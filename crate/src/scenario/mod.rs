@@ -21,7 +21,7 @@ use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::{Limit, Shape};
 use crate::observer::EkfConfig;
 use crate::params::MotorParams;
-use fields::{field, fields};
+use fields::{field, fields, idle_because};
 use presets::default_reference;
 use serde::{Deserialize, Serialize};
 use std::collections::HashMap;
@@ -235,6 +235,28 @@ impl Scenario {
         self.changes().into_iter().map(|(key, _)| key).collect()
     }
 
+    /// Why field `key` has no effect in this scenario: the settings that leave it idle, as the
+    /// codec writes them (`controller=ifoc`); None when it acts.
+    pub fn idle_because(&self, key: &str) -> Option<String> {
+        idle_because(key, self)
+    }
+
+    /// The fields this scenario changes of its preset that have no effect in it, each said with
+    /// the settings that leave it idle (`field-idle`: "perfect has no effect with
+    /// controller=ifoc"): a setting the run would silently ignore.
+    pub fn idle_settings(&self) -> Vec<crate::text::Message> {
+        self.changed_keys()
+            .into_iter()
+            .filter_map(|key| {
+                idle_because(key, self).map(|because| {
+                    crate::text::Message::new("field-idle")
+                        .text("key", key)
+                        .text("because", because)
+                })
+            })
+            .collect()
+    }
+
     /// The fields that differ from the preset, with their codec text, in the codec's order.
     fn changes(&self) -> Vec<(&'static str, String)> {
         let original = preset(&self.preset).expect("a scenario's preset exists");
@@ -367,6 +389,18 @@ mod tests {
             s.describe().iter().find(|f| f.key == key).unwrap().acts
         };
         assert!(!acting("v=1&preset=step", "ifoc.bw_i"));
+        for key in [
+            "k1",
+            "k4",
+            "robust",
+            "perfect",
+            "eps2",
+            "law.v1",
+            "delay.comp",
+        ] {
+            assert!(!acting("v=1&preset=ifoc-step", key), "{key}");
+            assert!(acting("v=1&preset=step&robust=1&delay=1", key), "{key}");
+        }
         assert!(acting("v=1&preset=ifoc-step", "ifoc.bw_i"));
         assert!(!acting("v=1&preset=step&robust=0", "eps2"));
         assert!(acting("v=1&preset=step&robust=1", "h4"));

@@ -1,1 +1,29 @@
-sweep-not-settled = nicht eingeschwungen: über die letzten { $periods } Perioden änderte sich die Verstärkung von ω von der ersten zur zweiten Hälfte um { $gain } dB und ihre Phase um { $phase }° (eingeschwungen: innerhalb ±{ $gain-bound } dB und ±{ $phase-bound }°)
+sweep-not-settled = nicht eingeschwungen: In den letzten { $periods } Perioden änderten sich Verstärkung und Phase von ω von der ersten zur zweiten Hälfte um { $gain } dB bzw. { $phase }° (eingeschwungen: innerhalb von ±{ $gain-bound } dB und ±{ $phase-bound }°)
+
+## Die Achsen und Startwerte einer Modellfehlerkarte: warum sie zurückgewiesen werden, und der Name einer Achse.
+map-axis-form = Achse '{ $axis }': Erwartet wird KEY=LO..HI:N, z. B. plant.rr=-10%..+10%:11 oder k1=-20%..+20%:5
+map-axis-unknown = Achse '{ $axis }': { $key } ist kein Feld eines Szenarios
+map-axis-not-numeric = Achse '{ $axis }': { $key } ist keine Zahl; eine Karte variiert numerische Felder
+map-axis-whole = Achse '{ $axis }': { $key } nimmt nur ganze Zahlen an; wählen Sie für die Karte ein kontinuierliches Feld
+map-axis-inactive = Achse '{ $axis }': { $key } hat in diesem Szenario keine Wirkung, jede Zelle würde also gleich laufen
+map-axis-end = Achse { $key }: { $end } '{ $text }': Erwartet wird eine Zahl oder ein Prozentwert wie -10%
+map-axis-mixed = Achse '{ $axis }': LO und HI müssen beide Werte oder beide Prozentwerte sein
+map-axis-count = Achse { $key }: N '{ $text }': Erwartet wird eine ganze Zahl von 1 bis { $max }
+map-axis-zero = Achse '{ $axis }': { $other } ist 0, ein relativer Fehler dazu ist also ebenfalls 0; geben Sie { $key } in Werten an
+map-axis-order = Achse { $key }: LO ({ $lo }) liegt über HI ({ $hi })
+map-axis-against-model = { $key } gegenüber dem Modell (%)
+map-axis-against-motor = { $key } gegenüber dem Motor (%)
+map-axis-against-base = { $key } gegenüber dem Basiswert (%)
+map-axis-unit = { $key } ({ $unit })
+map-seeds-form = Startwerte '{ $seeds }': Erwartet wird A..B, ganze Zahlen von 0 bis { $max }
+map-seeds-order = Startwerte '{ $seeds }': Der erste Startwert liegt über dem letzten
+map-seeds-many = Startwerte '{ $seeds }': { $count } Startwerte, mehr als die { $max }, die eine Karte rechnet
+map-seeds-twice = Die Startwerte sind zweimal angegeben: Geben Sie sie nur einmal an
+map-axes-count = { $count } Achsen: Eine Karte hat eine oder zwei
+map-axes-repeated = Beide Achsen variieren { $key }: Variieren Sie zwei verschiedene Felder
+map-axes-sides = Die Achsen variieren { $first } und { $second }, beide Seiten desselben Parameters: Variieren Sie nur eine Seite, angegeben in Werten oder als relativer Fehler gegenüber der anderen
+map-no-seeds = Keine Startwerte: Eine Karte rechnet mindestens einen
+map-runs-many = Die Karte braucht { $runs } Läufe ({ $cells } Zellen × { $seeds } Startwerte), mehr als die zulässigen { $max }; verwenden Sie weniger Punkte oder Startwerte
+map-cell-refused = { $key }={ $value }: { $reason }
+map-work = Die Karte braucht { $work } Schritte der Strecke ({ $cells } Zellen × { $seeds } Startwerte × die Schritte eines Laufs), mehr als die zulässigen { $max }; verwenden Sie weniger Punkte oder Startwerte oder eine kürzere 'duration'
+map-law-work = Die eigenen Regelgesetze der Karte brauchen { $work } Operationen ({ $cells } Zellen × { $seeds } Startwerte × bis zu { $per-run } je Lauf), mehr als die zulässigen { $max }; verwenden Sie höchstens { $runs } Läufe (Zellen × Startwerte), eine kürzere 'duration' oder Regelgesetze mit weniger Operationen

@@ -202,6 +202,6 @@ sim-law-reads = mit { $signals }
 # $flux and $min in scientific notation (Wb²).
 control-singular = Entkopplungsmatrix (55) ist singulär: Der geschätzte Fluss x̂4² + x̂5² = { $flux } Wb² liegt unter { $min } Wb²
 control-law = Das Regelgesetz von Schritt { $step } ergab { $value }, keine endliche Zahl
-pin-room-full = höchstens { $max } Läufe können angeheftet werden; lösen Sie zuerst einen
+pin-room-full = es können höchstens { $max } Läufe angeheftet werden; lösen Sie zuerst einen
 pin-legend-same = gleiches Szenario
 overlay-ts-differs = der angeheftete Lauf { $scenario } tastet mit Ts = { $pinned } s ab, der aktuelle mit { $current } s: Überlagerungen brauchen dasselbe Ts

@@ -87,3 +87,4 @@ sweep-too-small = Bei { $freq } Hz ergibt die Systemantwort { $name } = { $value
 
 # What separates the items of a list the core gives ("law.v1 12, law.v2 40").
 core-list-separator = {", "}
+field-idle = { $key } hat bei { $because } keine Wirkung

@@ -251,6 +251,8 @@ settings-link-rejected = Einige Einstellungen in der Adresse wurden zurückgewie
 settings-link-refused = Das Szenario in der Adresse wurde zurückgewiesen: { $reason }. Stattdessen wird { $preset } gezeigt.
 # $description is the core's description of the preset; $fields lists the keys of the settings changed (k1, duration).
 settings-preset-changed = Vorlage { $preset }: { $description }. Dieser Lauf ändert { $fields }; was die Beschreibung der Vorlage über ihren Lauf sagt, muss für diesen also nicht gelten.
+settings-idle = { $changed } Ignoriert: { $idle }.
+settings-idle-separator = {"; "}
 
 ## Die Kennwertleiste und die wichtigsten Kennwerte
 

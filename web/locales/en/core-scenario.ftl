@@ -84,3 +84,6 @@ sweep-too-small = at { $freq } Hz the response reads as { $name } = { $value }, 
 
 # What separates the items of a list the core gives ("law.v1 12, law.v2 40").
 core-list-separator = {", "}
+# A field the link changes that the run does not read; $because: the settings that leave it idle,
+# as the link writes them (controller=ifoc, robust=0).
+field-idle = { $key } has no effect with { $because }

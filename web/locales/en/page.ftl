@@ -251,6 +251,10 @@ settings-link-rejected = Some settings in the address were rejected and left at 
 settings-link-refused = The scenario in the address was rejected: { $reason }. Showing { $preset } instead.
 # $description is the core's description of the preset; $fields lists the keys of the settings changed (k1, duration).
 settings-preset-changed = Preset { $preset }: { $description }. This run changes { $fields }, so what the preset's description says of its run need not hold for this one.
+# The preset's description ($changed: settings-preset-changed or the description alone), then the
+# settings the run ignores ($idle: each a field-idle of the core, joined by settings-idle-separator).
+settings-idle = { $changed } Ignored: { $idle }.
+settings-idle-separator = {"; "}
 
 ## The figures strip and the key figures
 

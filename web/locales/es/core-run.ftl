@@ -205,6 +205,6 @@ sim-law-reads = con { $signals }
 # $flux y $min en notación científica (Wb²).
 control-singular = la matriz de desacoplo (55) es singular: el flujo estimado x̂4² + x̂5² = { $flux } Wb² está por debajo de { $min } Wb²
 control-law = la ley del paso { $step } dio { $value }, que no es un número finito
-pin-room-full = se pueden fijar como máximo { $max } ejecuciones; quite una primero
+pin-room-full = se pueden fijar como máximo { $max } ejecuciones; quita una primero
 pin-legend-same = mismo escenario
 overlay-ts-differs = la ejecución fijada { $scenario } muestrea con Ts = { $pinned } s y la actual con { $current } s: las superposiciones necesitan el mismo Ts

@@ -87,3 +87,4 @@ sweep-too-small = a { $freq } Hz la respuesta da { $name } = { $value }, demasia
 
 # Lo que separa los elementos de una lista que da el núcleo ("law.v1 12, law.v2 40").
 core-list-separator = {", "}
+field-idle = { $key } no tiene efecto con { $because }

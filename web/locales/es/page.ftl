@@ -251,6 +251,8 @@ settings-link-rejected = Se rechazaron algunos ajustes de la dirección y se dej
 settings-link-refused = Se rechazó el escenario de la dirección: { $reason }. Se muestra { $preset } en su lugar.
 # $description es la descripción del preajuste que da el núcleo; $fields enumera las claves de los ajustes cambiados (k1, duration).
 settings-preset-changed = Preajuste { $preset }: { $description }. Esta ejecución cambia { $fields }, así que lo que la descripción del preajuste dice de su ejecución no tiene por qué cumplirse en esta.
+settings-idle = { $changed } Ajustes ignorados: { $idle }.
+settings-idle-separator = {"; "}
 
 ## The figures strip and the key figures
 

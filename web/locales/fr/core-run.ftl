@@ -204,6 +204,6 @@ sim-law-reads = en lisant { $signals }
 # $flux et $min en notation scientifique (Wb²).
 control-singular = la matrice de découplage (55) est singulière : le flux estimé x̂4² + x̂5² = { $flux } Wb² est inférieur à { $min } Wb²
 control-law = la loi de l’étape { $step } a donné { $value }, qui n’est pas un nombre fini
-pin-room-full = au plus { $max } simulations peuvent être épinglées ; désépinglez-en une d’abord
+pin-room-full = au plus { $max } simulations peuvent être épinglées ; désépinglez-en une d’abord
 pin-legend-same = même scénario
-overlay-ts-differs = la simulation épinglée { $scenario } échantillonne à Ts = { $pinned } s, l’actuelle à { $current } s : les superpositions demandent le même Ts
+overlay-ts-differs = la simulation épinglée { $scenario } échantillonne à Ts = { $pinned } s, l’actuelle à { $current } s : les superpositions demandent le même Ts

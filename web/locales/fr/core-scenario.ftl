@@ -73,3 +73,4 @@ sweep-too-small = à { $freq } Hz, la réponse se lit { $name } = { $value }, tr
 ## Les listes
 
 core-list-separator = {", "}
+field-idle = { $key } n’a pas d’effet avec { $because }

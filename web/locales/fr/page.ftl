@@ -196,6 +196,8 @@ settings-allowed = autorisé : { $values }
 settings-link-rejected = Certains réglages de l’adresse ont été rejetés et laissés aux valeurs du préréglage : { $list }.
 settings-link-refused = Le scénario de l’adresse a été rejeté : { $reason }. Affichage de { $preset } à la place.
 settings-preset-changed = Préréglage { $preset } : { $description }. Cette simulation modifie { $fields } ; ce que la description du préréglage dit de sa simulation ne vaut donc pas forcément pour celle-ci.
+settings-idle = { $changed } Réglages ignorés : { $idle }.
+settings-idle-separator = {" ; "}
 
 ## Le bandeau des indicateurs et les indicateurs clés
 

@@ -175,4 +175,4 @@ control-singular = 非干渉化行列 (55) が特異です：推定磁束 x̂4²
 control-law = ステップ{ $step }の制御則が有限の数ではない { $value } を返しました
 pin-room-full = ピン留めできる実行は最大 { $max } 件です。先にどれかのピンを外してください
 pin-legend-same = 同じシナリオ
-overlay-ts-differs = ピン留めした実行 { $scenario } のサンプリング周期は Ts = { $pinned } s、現在の実行は { $current } s です：重ね描きには同じ Ts が必要です
+overlay-ts-differs = ピン留めした実行 { $scenario } のサンプリング周期は Ts = { $pinned } s、現在の実行は { $current } s です。重ね描きには同じ Ts が必要です

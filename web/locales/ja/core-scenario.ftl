@@ -73,3 +73,4 @@ sweep-too-small = { $freq } Hzでは応答が { $name } = { $value } と読ま�
 ## 一覧
 
 core-list-separator = {"、"}
+field-idle = { $because } では { $key } は効果がありません

@@ -193,6 +193,8 @@ settings-allowed = 許容値：{ $values }
 settings-link-rejected = アドレス内の一部の設定は却下され、プリセットの値のままです：{ $list }。
 settings-link-refused = アドレス内のシナリオは却下されました：{ $reason }。代わりに{ $preset }を表示しています。
 settings-preset-changed = プリセット{ $preset }：{ $description }。この実行は{ $fields }を変更しているため、プリセットの説明がその実行について述べていることは、この実行では成り立つとは限りません。
+settings-idle = { $changed } 無視される設定：{ $idle }。
+settings-idle-separator = {"。"}
 
 ## 指標欄と主な指標
 

@@ -85,3 +85,4 @@ sweep-too-small = 在 { $freq } Hz 处，响应读数为 { $name } = { $value }�
 
 # 核心给出的列表中各项之间的分隔符（“law.v1 12、law.v2 40”）。
 core-list-separator = {"、"}
+field-idle = 在 { $because } 时，{ $key } 不起作用

@@ -248,6 +248,8 @@ settings-link-rejected = 地址中的部分设置被拒绝，已保留为预设�
 settings-link-refused = 地址中的场景被拒绝：{ $reason }。改为显示 { $preset }。
 # $description 是核心对该预设的描述；$fields 列出被修改的设置的键（k1, duration）。
 settings-preset-changed = 预设 { $preset }：{ $description }。此次运行修改了 { $fields }，因此预设描述中关于其运行的说法不一定适用于此次运行。
+settings-idle = { $changed } 被忽略的设置：{ $idle }。
+settings-idle-separator = {"；"}
 
 ## 指标栏与关键指标
 

@@ -1,13 +1,14 @@
-//! Model-error maps: a scenario run over a grid of one or two motor or model parameters, times
-//! the noise seeds, to show how far a result holds when the model the EKF and controller use is
-//! not the motor. The CLI (`imlab robust`), the page's workers and the tests share these
+//! Model-error maps: a scenario run over a grid of one or two numeric fields, times the noise
+//! seeds, to show how far a result holds when the model the EKF and controller use is not the
+//! motor (a motor or model parameter), or how a design depends on its own choices (a gain, the
+//! EKF's tuning, the flux target). The CLI (`imlab robust`), the page's workers and the tests share these
 //! functions: [`Map::plan`] checks and bounds the grid before any run, [`map_run`] is one run of
 //! one cell, [`summarise`] turns a cell's runs into its row and [`map_csv`] writes the rows.
 
 use crate::record::WarningKind;
 use crate::scenario::{Scenario, MAX_LAW_WORK, MAX_SEED};
 use crate::sim::Simulation;
-use crate::text::{excerpt, short};
+use crate::text::{excerpt, Arg, Message};
 use serde::{Deserialize, Serialize};
 
 mod table;
@@ -43,7 +44,8 @@ pub const MAX_MAP_WORK: u64 = 400_000_000;
 /// may take: 40 of the costliest laws a single run accepts ([`MAX_LAW_WORK`]), as for the plant.
 pub const MAX_MAP_LAW_WORK: u64 = 40 * MAX_LAW_WORK;
 
-/// One axis of a map: a motor (`plant.*`) or model (`model.*`) parameter and its values.
+/// One axis of a map: a numeric field (a motor's `plant.*` or the model's `model.*` parameter, a
+/// gain, the EKF's tuning…) and its values.
 #[cfg_attr(
     target_arch = "wasm32",
     derive(tsify::Tsify),
@@ -57,12 +59,16 @@ pub struct Axis {
     pub text: String,
     /// Whether LO and HI were relative errors (the axis is read in per cent of the other side).
     pub relative: bool,
-    /// The axis in words for a plot, e.g. "plant.rr against the model (%)" or "model.j (kg m²)".
-    pub label: String,
+    /// The axis in words for a plot, e.g. "plant.rr against the model (%)" or "model.j (kg m²)":
+    /// the core's message; or, for a map that crossed the page on its way back to the core, the
+    /// text the page said it as.
+    #[cfg_attr(target_arch = "wasm32", tsify(type = "Message | string"))]
+    pub label: Arg,
     /// The key's values, in order.
     pub values: Vec<f64>,
-    /// Each value's relative error against the other side's value in the base scenario (the
-    /// model's for a `plant.*` key, the motor's for a `model.*` key): value / theirs − 1.
+    /// Each value's relative error against its reference in the base scenario (for a `plant.*`
+    /// key the model's value, for a `model.*` key the motor's, for any other key its own):
+    /// value / reference − 1.
     pub errors: Vec<f64>,
 }
 
@@ -182,8 +188,9 @@ fn value_of(s: &Scenario, key: &str) -> Option<(f64, &'static str)> {
     Some((f.value?.parse().ok()?, f.unit))
 }
 
-/// One end of an axis: a number, or a relative error in per cent (`-10%`, `+5%`).
-fn end(text: &str, what: &str) -> Result<(f64, bool), String> {
+/// One end of an axis (`end`, LO or HI, of the axis of `key`): a number, or a relative error in
+/// per cent (`-10%`, `+5%`).
+fn end(text: &str, key: &str, end: &'static str) -> Result<(f64, bool), Message> {
     let t = text.trim();
     let (number, relative) = match t.strip_suffix('%') {
         Some(n) => (n, true),
@@ -198,54 +205,61 @@ fn end(text: &str, what: &str) -> Result<(f64, bool), String> {
         .ok()
         .filter(|v: &f64| v.is_finite())
         .ok_or_else(|| {
-            format!(
-                "{what} '{}': expected a number or a percentage such as -10%",
-                excerpt(text)
-            )
+            Message::new("map-axis-end")
+                .text("key", excerpt(key))
+                .text("end", end)
+                .text("text", excerpt(text))
         })?;
     Ok((if relative { v / 100.0 } else { v }, relative))
 }
 
 impl Axis {
     /// Parses `KEY=LO..HI:N` against the base scenario `base`: N values evenly spaced from LO to
-    /// HI. LO and HI are both values of KEY or both relative errors in per cent against the
-    /// other side's value in `base` (`plant.rr=-10%..+10%:11`: the motor's R_r from 10 % below
-    /// to 10 % above the model's). N = 1 takes LO alone.
-    pub fn parse(base: &Scenario, text: &str) -> Result<Axis, String> {
-        let form = "expected KEY=LO..HI:N, e.g. plant.rr=-10%..+10%:11";
-        let (key, rest) = text
-            .split_once('=')
-            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
+    /// HI of the numeric field KEY. LO and HI are both values of KEY or both relative errors in
+    /// per cent against a reference in `base`: the other side's value for a motor or model
+    /// parameter (`plant.rr=-10%..+10%:11`: the motor's R_r from 10 % below to 10 % above the
+    /// model's), else KEY's own (`k1=-20%..+20%:5`). N = 1 takes LO alone. A field that takes
+    /// whole numbers, a choice or a formula, or one that has no effect in `base` (a gain of the
+    /// controller not chosen), is refused.
+    pub fn parse(base: &Scenario, text: &str) -> Result<Axis, Message> {
+        let axis = || excerpt(text);
+        let form = || Message::new("map-axis-form").text("axis", axis());
+        let (key, rest) = text.split_once('=').ok_or_else(form)?;
         let key = key.trim();
-        let other = counterpart(key).ok_or_else(|| {
-            format!(
-                "axis '{}': {} is not a motor or model parameter (plant.* or model.*)",
-                excerpt(text),
-                excerpt(key)
-            )
-        })?;
-        let (theirs, unit) = value_of(base, &other)
-            .ok_or_else(|| format!("axis '{}': no parameter {}", excerpt(text), excerpt(key)))?;
-        if key.ends_with(".np") {
-            return Err(format!(
-                "axis '{}': the pole pairs are whole numbers; map a continuous parameter",
-                excerpt(text)
-            ));
+        let info = base
+            .describe()
+            .into_iter()
+            .find(|f| f.key == key)
+            .ok_or_else(|| {
+                Message::new("map-axis-unknown")
+                    .text("axis", axis())
+                    .text("key", excerpt(key))
+            })?;
+        let refused = |id: &'static str| {
+            Message::new(id)
+                .text("axis", axis())
+                .text("key", key.to_string())
+        };
+        if !info.options.is_empty() || info.formula.is_some() {
+            return Err(refused("map-axis-not-numeric"));
         }
-        let (range, count) = rest
-            .rsplit_once(':')
-            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
-        let (lo, hi) = range
-            .split_once("..")
-            .ok_or_else(|| format!("axis '{}': {form}", excerpt(text)))?;
+        if info.integer {
+            return Err(refused("map-axis-whole"));
+        }
+        if !info.acts || info.value.is_none() {
+            return Err(refused("map-axis-inactive"));
+        }
+        let other = counterpart(key);
+        let reference_key = other.as_deref().unwrap_or(key);
+        let (theirs, unit) =
+            value_of(base, reference_key).ok_or_else(|| refused("map-axis-not-numeric"))?;
+        let (range, count) = rest.rsplit_once(':').ok_or_else(form)?;
+        let (lo, hi) = range.split_once("..").ok_or_else(form)?;
         let (lo_text, hi_text) = (lo.trim(), hi.trim());
-        let (lo, lo_rel) = end(lo_text, &format!("axis {key}: LO"))?;
-        let (hi, hi_rel) = end(hi_text, &format!("axis {key}: HI"))?;
+        let (lo, lo_rel) = end(lo_text, key, "LO")?;
+        let (hi, hi_rel) = end(hi_text, key, "HI")?;
         if lo_rel != hi_rel {
-            return Err(format!(
-                "axis '{}': LO and HI must both be values or both percentages",
-                excerpt(text)
-            ));
+            return Err(refused("map-axis-mixed"));
         }
         let n: usize = count
             .trim()
@@ -253,24 +267,19 @@ impl Axis {
             .ok()
             .filter(|n| (1..=MAX_POINTS).contains(n))
             .ok_or_else(|| {
-                format!(
-                    "axis {key}: N '{}': expected a whole number from 1 to {MAX_POINTS}",
-                    excerpt(count)
-                )
+                Message::new("map-axis-count")
+                    .text("key", key.to_string())
+                    .text("text", excerpt(count))
+                    .count("max", MAX_POINTS)
             })?;
         if lo_rel && theirs == 0.0 {
-            return Err(format!(
-                "axis '{}': {other} is 0, so a relative error of it is 0 too; give {key} in \
-                 values",
-                excerpt(text)
-            ));
+            return Err(refused("map-axis-zero").text("other", reference_key.to_string()));
         }
         if lo > hi {
-            return Err(format!(
-                "axis {key}: LO ({}) is above HI ({})",
-                excerpt(lo_text),
-                excerpt(hi_text)
-            ));
+            return Err(Message::new("map-axis-order")
+                .text("key", key.to_string())
+                .text("lo", excerpt(lo_text))
+                .text("hi", excerpt(hi_text)));
         }
         let at = |i: usize| {
             if n == 1 {
@@ -290,7 +299,7 @@ impl Axis {
                 })
             })
             .collect();
-        // Against a zero other side no relative error exists (NaN, an empty CSV field).
+        // Against a zero reference no relative error exists (NaN, an empty CSV field).
         let errors = values
             .iter()
             .map(|v| {
@@ -301,22 +310,28 @@ impl Axis {
                 }
             })
             .collect();
-        let side = if key.starts_with("plant.") {
-            "model"
+        let against = if key.starts_with("plant.") {
+            "map-axis-against-model"
+        } else if key.starts_with("model.") {
+            "map-axis-against-motor"
         } else {
-            "motor"
+            "map-axis-against-base"
+        };
+        let label = if lo_rel {
+            Message::new(against).text("key", key.to_string()).into()
+        } else if unit.is_empty() {
+            Arg::Text(key.to_string())
+        } else {
+            Message::new("map-axis-unit")
+                .text("key", key.to_string())
+                .text("unit", unit)
+                .into()
         };
         Ok(Axis {
             key: key.to_string(),
             text: format!("{key}={lo_text}..{hi_text}:{n}"),
             relative: lo_rel,
-            label: if lo_rel {
-                format!("{key} against the {side} (%)")
-            } else if unit.is_empty() {
-                key.to_string()
-            } else {
-                format!("{key} ({unit})")
-            },
+            label,
             values,
             errors,
         })
@@ -329,17 +344,16 @@ pub(super) fn rounded(v: f64) -> f64 {
 }
 
 /// Parses `A..B` (seeds A to B) or a single seed.
-pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
+pub fn parse_seeds(text: &str) -> Result<Vec<u64>, Message> {
     let whole = |t: &str| {
         t.trim()
             .parse::<u64>()
             .ok()
             .filter(|s| *s <= MAX_SEED)
             .ok_or_else(|| {
-                format!(
-                    "seeds '{}': expected A..B, whole numbers from 0 to 2^53 − 1",
-                    excerpt(text)
-                )
+                Message::new("map-seeds-form")
+                    .text("seeds", excerpt(text))
+                    .count("max", MAX_SEED)
             })
     };
     let (a, b) = match text.split_once("..") {
@@ -350,17 +364,13 @@ pub fn parse_seeds(text: &str) -> Result<Vec<u64>, String> {
         }
     };
     if a > b {
-        return Err(format!(
-            "seeds '{}': the first seed is above the last",
-            excerpt(text)
-        ));
+        return Err(Message::new("map-seeds-order").text("seeds", excerpt(text)));
     }
     if b - a + 1 > MAX_MAP_SEEDS {
-        return Err(format!(
-            "seeds '{}': {} seeds, more than the {MAX_MAP_SEEDS} a map runs",
-            excerpt(text),
-            b - a + 1
-        ));
+        return Err(Message::new("map-seeds-many")
+            .text("seeds", excerpt(text))
+            .count("count", b - a + 1)
+            .count("max", MAX_MAP_SEEDS));
     }
     Ok((a..=b).collect())
 }
@@ -370,32 +380,32 @@ impl Map {
     /// cell's scenario must be valid, and the whole map's work within [`MAX_MAP_WORK`] and
     /// [`MAX_MAP_LAW_WORK`]; refused
     /// before any run, with the number it would need.
-    pub fn plan(base: &Scenario, axes: Vec<Axis>, seeds: Vec<u64>) -> Result<Map, String> {
+    pub fn plan(base: &Scenario, axes: Vec<Axis>, seeds: Vec<u64>) -> Result<Map, Message> {
         if axes.is_empty() || axes.len() > 2 {
-            return Err(format!("{} axes: a map has one or two", axes.len()));
+            return Err(Message::new("map-axes-count").count("count", axes.len()));
         }
-        if axes.len() == 2 && axes[0].key[6..] == axes[1].key[6..] {
-            return Err(format!(
-                "the axes vary {} and {}, both sides of one parameter: vary one side, in values \
-                 or as a relative error against the other",
-                axes[0].key, axes[1].key
-            ));
+        if axes.len() == 2 && axes[0].key == axes[1].key {
+            return Err(Message::new("map-axes-repeated").text("key", axes[0].key.clone()));
+        }
+        if axes.len() == 2 && counterpart(&axes[0].key).as_ref() == Some(&axes[1].key) {
+            return Err(Message::new("map-axes-sides")
+                .text("first", axes[0].key.clone())
+                .text("second", axes[1].key.clone()));
         }
         if seeds.is_empty() {
-            return Err("no seeds: a map runs at least one".to_string());
+            return Err(Message::new("map-no-seeds"));
         }
         let shape: Vec<usize> = axes.iter().map(|a| a.values.len()).collect();
         let count: usize = shape.iter().product();
         if count * seeds.len() > MAX_MAP_RUNS {
-            return Err(format!(
-                "the map needs {} runs ({count} cells × {} seeds), more than the {MAX_MAP_RUNS} \
-                 allowed; use fewer points or seeds",
-                count * seeds.len(),
-                seeds.len()
-            ));
+            return Err(Message::new("map-runs-many")
+                .count("runs", count * seeds.len())
+                .count("cells", count)
+                .count("seeds", seeds.len())
+                .count("max", MAX_MAP_RUNS));
         }
         let mut cells = Vec::with_capacity(count);
-        let mut work: u64 = 0;
+        let (mut work, mut law_work, mut most_per_run) = (0u64, 0u64, 0u64);
         for index in 0..count {
             let mut s = base.clone();
             s.seed = seeds[0];
@@ -407,14 +417,23 @@ impl Map {
                 rest /= shape[k];
                 values[k] = axis.values[i];
                 place[k] = i;
-                s.set(&axis.key, &axis.values[i].to_string())
-                    .map_err(|e| format!("{}={}: {e}", axis.key, short(axis.values[i])))?;
+                s.set(&axis.key, &axis.values[i].to_string()).map_err(|e| {
+                    Message::new("map-cell-refused")
+                        .text("key", axis.key.clone())
+                        .short("value", axis.values[i])
+                        .said("reason", e.message())
+                })?;
             }
+            let runs = seeds.len() as u64;
             work = work.saturating_add(
                 (s.steps() as u64)
                     .saturating_mul(s.plant_steps_per_sample())
-                    .saturating_mul(seeds.len() as u64),
+                    .saturating_mul(runs),
             );
+            // An axis may change the run's length, so each cell's laws are counted apart.
+            let per_run = s.law_work().map_err(|e| e.message())?;
+            most_per_run = most_per_run.max(per_run);
+            law_work = law_work.saturating_add(per_run.saturating_mul(runs));
             cells.push(CellPlan {
                 index: place,
                 values,
@@ -422,25 +441,20 @@ impl Map {
             });
         }
         if work > MAX_MAP_WORK {
-            return Err(format!(
-                "the map needs {work} plant steps ({count} cells × {} seeds × the steps of a run), \
-                 more than the {MAX_MAP_WORK} allowed; use fewer points or seeds, or a shorter \
-                 'duration'",
-                seeds.len()
-            ));
+            return Err(Message::new("map-work")
+                .count("work", work)
+                .count("cells", count)
+                .count("seeds", seeds.len())
+                .count("max", MAX_MAP_WORK));
         }
-        // The axes vary motor and model parameters only: every run's laws take the same work.
-        let per_run = base.law_work().map_err(|e| e.to_string())?;
-        let runs = (count * seeds.len()) as u64;
-        let law_work = per_run.saturating_mul(runs);
         if law_work > MAX_MAP_LAW_WORK {
-            return Err(format!(
-                "the map's own laws take {law_work} operations ({count} cells × {} seeds × \
-                 {per_run} a run), more than the {MAX_MAP_LAW_WORK} allowed; use at most {} \
-                 runs (cells × seeds), a shorter 'duration', or cheaper laws",
-                seeds.len(),
-                MAX_MAP_LAW_WORK / per_run
-            ));
+            return Err(Message::new("map-law-work")
+                .count("work", law_work)
+                .count("cells", count)
+                .count("seeds", seeds.len())
+                .count("per-run", most_per_run)
+                .count("max", MAX_MAP_LAW_WORK)
+                .count("runs", MAX_MAP_LAW_WORK / most_per_run));
         }
         let mut parts: Vec<String> = axes.iter().map(|a| a.text.clone()).collect();
         parts.push(format!("seeds={}..{}", seeds[0], seeds[seeds.len() - 1]));
@@ -457,7 +471,7 @@ impl Map {
 
     /// Parses the map's text `AXIS[;AXIS][;seeds=A..B]` (AXIS as in [`Axis::parse`]; seeds 1..10
     /// when not given) against `base`, then checks it (see [`Map::plan`]).
-    pub fn parse(base: &Scenario, text: &str) -> Result<Map, String> {
+    pub fn parse(base: &Scenario, text: &str) -> Result<Map, Message> {
         let parts = MapParts::split(text)?;
         Map::from_parts(base, &parts.axes, parts.seeds.as_deref())
     }
@@ -469,7 +483,7 @@ impl Map {
         base: &Scenario,
         axes: &[String],
         seeds: Option<&str>,
-    ) -> Result<Map, String> {
+    ) -> Result<Map, Message> {
         let axes = axes
             .iter()
             .filter(|a| !a.trim().is_empty())
@@ -500,16 +514,14 @@ pub struct MapParts {
 impl MapParts {
     /// Splits a map's text `AXIS[;AXIS…][;seeds=A..B]` at its `;`, reading no part but for
     /// seeds given twice.
-    pub fn split(text: &str) -> Result<MapParts, String> {
+    pub fn split(text: &str) -> Result<MapParts, Message> {
         let mut parts = MapParts {
             axes: Vec::new(),
             seeds: None,
         };
         for part in text.split(';').filter(|p| !p.trim().is_empty()) {
             match part.trim().strip_prefix("seeds=") {
-                Some(_) if parts.seeds.is_some() => {
-                    return Err("seeds are given twice: give them once".to_string())
-                }
+                Some(_) if parts.seeds.is_some() => return Err(Message::new("map-seeds-twice")),
                 Some(range) => parts.seeds = Some(range.to_string()),
                 None => parts.axes.push(part.to_string()),
             }

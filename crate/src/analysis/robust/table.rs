@@ -10,8 +10,10 @@ fn csv_header(map: &Map) -> String {
     for a in &map.axes {
         let other = if a.key.starts_with("plant.") {
             "model"
-        } else {
+        } else if a.key.starts_with("model.") {
             "plant"
+        } else {
+            "base"
         };
         cols.push(a.key.clone());
         cols.push(format!("{}_vs_{other}_pct", a.key));

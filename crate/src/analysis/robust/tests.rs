@@ -19,19 +19,22 @@ fn a_relative_axis_is_read_against_the_other_side() {
 #[test]
 fn bad_axes_are_refused_naming_the_input() {
     for (text, says) in [
-        ("k1=1..2:3", "not a motor or model parameter"),
+        ("kx=1..2:3", "kx is not a scenario field"),
+        ("controller=1..2:3", "is not a number"),
+        ("ifoc.bw_w=1..2:3", "no effect in this scenario"),
         ("plant.rr=-10%..5:3", "both be values or both percentages"),
         ("plant.rr=1..2:0", "N '0'"),
         ("plant.rr=2..1:3", "above HI"),
         ("plant.rr=x..1:3", "LO 'x'"),
         ("plant.np=1..3:3", "whole numbers"),
+        ("seed=1..3:3", "whole numbers"),
         ("plant.rr", "expected KEY=LO..HI:N"),
     ] {
         let e = Axis::parse(&step(), text).unwrap_err();
-        assert!(e.contains(says), "{text}: {e}");
+        assert!(e.to_string().contains(says), "{text}: {e}");
     }
     let e = Map::parse(&step(), "plant.rr=-1000%..0%:3").unwrap_err();
-    assert!(e.contains("plant.rr="), "{e}");
+    assert!(e.to_string().contains("plant.rr="), "{e}");
 }
 
 #[test]
@@ -46,19 +49,19 @@ fn every_figure_a_map_keeps_is_a_figure_of_the_report() {
 fn maps_that_would_be_silently_wrong_are_refused() {
     let no_load = Scenario::parse("v=1&preset=step&plant.t0=0&model.t0=0").unwrap();
     let e = Axis::parse(&no_load, "plant.t0=-10%..10%:3").unwrap_err();
-    assert!(e.contains("model.t0 is 0"), "{e}");
+    assert!(e.to_string().contains("model.t0 is 0"), "{e}");
     let e = Map::parse(&step(), "plant.rr=-10%..10%:3;model.rr=4..5:2").unwrap_err();
-    assert!(e.contains("both sides of one parameter"), "{e}");
+    assert!(e.to_string().contains("both sides of one parameter"), "{e}");
     let e = Map::parse(&step(), "plant.rr=-10%..10%:3;seeds=1..2;seeds=3..4").unwrap_err();
-    assert!(e.contains("twice"), "{e}");
+    assert!(e.to_string().contains("twice"), "{e}");
     let e = Axis::parse(&step(), "plant.rr=+-5%..5%:3").unwrap_err();
-    assert!(e.contains("LO '+-5%'"), "{e}");
+    assert!(e.to_string().contains("LO '+-5%'"), "{e}");
     let e = Map::parse(
         &step(),
         "plant.rr=-10%..10%:101;model.j=-20%..20%:101;seeds=1..11",
     )
     .unwrap_err();
-    assert!(e.contains("112211 runs"), "{e}");
+    assert!(e.to_string().contains("112211 runs"), "{e}");
     // Values and their errors are written as a user would type them.
     let m = Map::parse(&step(), "model.j=0.016..0.024:5;seeds=1").unwrap();
     assert!(
@@ -66,7 +69,14 @@ fn maps_that_would_be_silently_wrong_are_refused() {
         "{}",
         m.cells[1].scenario
     );
-    assert_eq!(m.axes[0].label, "model.j (kg m²)");
+    assert_eq!(
+        m.axes[0].label,
+        Arg::from(
+            Message::new("map-axis-unit")
+                .text("key", "model.j")
+                .text("unit", "kg m²")
+        )
+    );
     let m = Map::parse(&step(), "plant.rr=-10%..10%:21;seeds=1").unwrap();
     let cell = summarise(&m.cells[3], &[]);
     assert!(
@@ -98,7 +108,9 @@ fn a_stopped_map_says_how_many_cells_its_csv_holds() {
 #[test]
 fn a_map_past_the_work_bound_is_refused_with_what_it_needs() {
     let long = Scenario::parse("v=1&preset=rr-mismatch&duration=20").unwrap();
-    let e = Map::parse(&long, "plant.rr=-10%..10%:101;seeds=1..100").unwrap_err();
+    let e = Map::parse(&long, "plant.rr=-10%..10%:101;seeds=1..100")
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("plant steps") && e.contains("400000000"), "{e}");
 }
 
@@ -123,7 +135,9 @@ fn a_map_counts_the_work_of_its_laws() {
     );
     let m = Map::parse(&base, "plant.rr=-10%..10%:20;seeds=1..2").unwrap();
     assert_eq!(m.law_work, 40 * per_run);
-    let e = Map::parse(&base, "plant.rr=-10%..10%:41;seeds=1").unwrap_err();
+    let e = Map::parse(&base, "plant.rr=-10%..10%:41;seeds=1")
+        .unwrap_err()
+        .to_string();
     assert!(
         e.starts_with("the map's own laws take") && e.contains("use at most 40 runs"),
         "{e}"
@@ -203,4 +217,37 @@ fn the_paper_step_runs_away_with_the_motor_r_r_ten_percent_high_and_not_when_exa
     let csv = map_csv(&m, &rows);
     assert!(csv.starts_with("# v=1&preset=step over plant.rr=0%..10%:2;seeds=1..2\nplant.rr,plant.rr_vs_model_pct,runs,"));
     assert_eq!(csv.lines().count(), 4);
+}
+
+#[test]
+fn a_gain_or_the_filters_tuning_is_an_axis_read_against_the_base() {
+    let base = step();
+    let k1 = value_of(&base, "k1").unwrap().0;
+    let m = Map::parse(&base, "k1=1100..1500:3;seeds=1").unwrap();
+    let ends: Vec<&str> = m.cells.iter().map(|c| c.scenario.as_str()).collect();
+    assert!(ends[1].ends_with("k1=1300"), "{ends:?}");
+    assert!((m.axes[0].errors[2] - (1500.0 / k1 - 1.0)).abs() < 1e-9);
+    assert_eq!(
+        m.axes[0].label,
+        Arg::from(
+            Message::new("map-axis-unit")
+                .text("key", "k1")
+                .text("unit", "1/s")
+        )
+    );
+    let r = Axis::parse(&base, "ekf.r_std=-50%..+50%:3").unwrap();
+    let q = value_of(&base, "ekf.r_std").unwrap().0;
+    assert_eq!(r.values, vec![rounded(q * 0.5), q, rounded(q * 1.5)]);
+    assert_eq!(r.errors[0], -0.5);
+    assert_eq!(
+        r.label,
+        Arg::from(Message::new("map-axis-against-base").text("key", "ekf.r_std"))
+    );
+    // Under IFOC the backstepping gains act on nothing: a map of one would run the same cells.
+    let ifoc = Scenario::parse("v=1&preset=ifoc-step").unwrap();
+    let e = Axis::parse(&ifoc, "k1=1000..1400:3").unwrap_err();
+    assert_eq!(e.id, "map-axis-inactive");
+    // Two axes of one field are refused, as two sides of one parameter are.
+    let e = Map::parse(&base, "k1=1..2:2;k1=3..4:2").unwrap_err();
+    assert_eq!(e.id, "map-axes-repeated");
 }

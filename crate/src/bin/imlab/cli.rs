@@ -227,8 +227,13 @@ pub(crate) enum Command {
 
 impl ScenarioArg {
     /// The scenario the argument names.
+    /// A setting the scenario changes that has no effect in it is warned about on stderr.
     pub(crate) fn parse(&self) -> Result<Scenario, String> {
-        Scenario::parse(&self.scenario).map_err(|e| e.to_string())
+        let s = Scenario::parse(&self.scenario).map_err(|e| e.to_string())?;
+        for idle in s.idle_settings() {
+            crate::output::to_stderr(format_args!("imlab: warning: {idle}\n"));
+        }
+        Ok(s)
     }
 }
 

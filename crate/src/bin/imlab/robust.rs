@@ -12,7 +12,7 @@ pub(crate) fn plan(s: &Scenario, vary: &[String], seeds: &str) -> Result<Map, St
         .map(|a| Axis::parse(s, a).map_err(|e| format!("--vary: {e}")))
         .collect::<Result<Vec<_>, _>>()?;
     let seeds = robust::parse_seeds(seeds).map_err(|e| format!("--seeds: {e}"))?;
-    Map::plan(s, axes, seeds)
+    Map::plan(s, axes, seeds).map_err(|e| e.to_string())
 }
 
 /// Runs every cell of `map` once per seed on all cores, with progress on stderr, and writes each

@@ -22,6 +22,9 @@ pub(crate) fn list(out: &mut impl Write) -> io::Result<()> {
 pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "# {}", s.encode())?;
     writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;
+    for idle in s.idle_settings() {
+        writeln!(out, "# {idle}")?;
+    }
     for f in s.describe() {
         let value = match f.value {
             Some(v) if f.formula.is_some() && v.is_empty() => "paper's".to_string(),
@@ -34,9 +37,12 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
         } else {
             format!(" {}", f.unit)
         };
+        let idle = s
+            .idle_because(f.key)
+            .map_or(String::new(), |b| format!(" (no effect with {b})"));
         writeln!(
             out,
-            "{:12} = {:>22}{:8}  [{}] {}",
+            "{:12} = {:>22}{:8}  [{}] {}{idle}",
             f.key, value, unit, f.group, f.doc
         )?;
     }
