@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import { LESSONS } from '../web/teaching/teaching.js';
 import assert from 'node:assert/strict';
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { browserSuite, cliRows, inspectAt, openWalkthrough, settled } from './browser.mjs';
 
 const cli = new URL('../target/release/imlab', import.meta.url).pathname;
@@ -335,6 +335,14 @@ test('final values say whether they settled, and an inconsistent EKF is named in
       assert.equal(f.settled, '0', preset);
       assert.ok(f.flagged, preset);
       assert.match(f.text, /still changing: -?[\d.]+ rad\/s per s at the end; run longer/, preset);
+      // Both end off their reference: the strip says by how much and from when, as imlab metrics does.
+      const stderr = spawnSync(cli, ['metrics', `v=1&preset=${preset}`]).stderr.toString();
+      const off = stderr
+        .split('\n')
+        .map((l) => l.replace('imlab metrics: warning: ', ''))
+        .filter((l) => l.startsWith('The speed does not follow its reference'));
+      assert.equal(off.length, 1, stderr);
+      assert.ok((await warning(page)).includes(off[0]), preset);
     });
   }
   await withPage('v=1&preset=step', async (page) => {

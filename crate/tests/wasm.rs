@@ -367,9 +367,9 @@ fn a_model_error_map_through_the_bindings_is_the_cores_csv_byte_for_byte() {
         robust_csv(plan, cells.into()).unwrap(),
         robust::map_csv(&map, &core_cells)
     );
-    let axes = serde_wasm_bindgen::to_value(&["k1=1..2:2"]).unwrap();
+    let axes = serde_wasm_bindgen::to_value(&["kx=1..2:2"]).unwrap();
     let e = error_text(robust_plan(scenario, axes, None).unwrap_err());
-    assert!(e.contains("not a motor or model parameter"), "{e}");
+    assert!(e.contains("kx is not a scenario field"), "{e}");
 }
 
 #[wasm_bindgen_test]

@@ -7,7 +7,7 @@
 use super::row::Row;
 use super::samples::Samples;
 use super::transient::{transient, Transient};
-use super::warnings::{mean_nis_band, warnings_of, Warning, WarningKind};
+use super::warnings::{mean_nis_band, warnings_of, Astray, Warning, WarningKind};
 use super::window::{Settling, Summand, Tenths, Window, TREND_TENTHS};
 #[cfg(test)]
 use crate::control::Reference;
@@ -282,7 +282,12 @@ pub fn report(s: &Scenario, rows: &dyn Samples) -> Report {
     let (w, tenths) = window_of(s, rows, start, len, &mut settling);
     let n = w.n as f64;
     let band = mean_nis_band(w.n);
-    let warnings = warnings_of(&last, w.reference_peak, w.nis / n, band);
+    let astray = w.astray_from.map(|k| Astray {
+        since: rows.time(start + k),
+        from_window_start: k == 0,
+        share: (w.n - k) as f64 / n,
+    });
+    let warnings = warnings_of(&last, w.reference_peak, w.nis / n, band, astray);
     let judge = TrendJudge {
         tenths: &tenths,
         over: last.t - tenths.line().t0,

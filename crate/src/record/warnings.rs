@@ -27,6 +27,10 @@ pub enum WarningKind {
     /// A figure is not a finite number, so the run gives none in its place: the text says why.
     #[serde(rename = "not-finite")]
     NotFinite,
+    /// The speed ends the run away from its reference, and has been away from it since a time
+    /// the text gives: the run does not do what it was asked.
+    #[serde(rename = "not-following")]
+    NotFollowing,
 }
 
 /// A finding about the whole run that its figures alone would hide.
@@ -56,13 +60,29 @@ const RUNAWAY_SPEED: f64 = 100.0;
 /// ... or its true flux modulus ends above this multiple of the flux target √ψ_d.
 const RUNAWAY_FLUX: f64 = 4.0;
 
+/// A run ends not following its reference when ω has stayed off it (see
+/// [`following`](super::window::following)) over at least this share of the window, to its end.
+const ASTRAY_SHARE: f64 = 0.1;
+
+/// Where a run's speed has stayed off its reference, to its last sample.
+pub(super) struct Astray {
+    /// Time of the first sample of that stretch (s).
+    pub(super) since: f64,
+    /// Whether the stretch starts with the window (it may have started earlier).
+    pub(super) from_window_start: bool,
+    /// Its share of the window's samples.
+    pub(super) share: f64,
+}
+
 /// The warnings of a run whose last row is `last`, whose reference stayed within
-/// ±`reference_peak` over the window, and whose mean NIS over it is `nis` against `band`.
+/// ±`reference_peak` over the window, whose mean NIS over it is `nis` against `band`, and whose
+/// speed has stayed off its reference as `astray` says, if it has.
 pub(super) fn warnings_of(
     last: &Row,
     reference_peak: f64,
     nis: f64,
     band: (f64, f64),
+    astray: Option<Astray>,
 ) -> Vec<Warning> {
     let mut out = Vec::new();
     let target = last.flux_ref;
@@ -77,6 +97,25 @@ pub(super) fn warnings_of(
                 .rounded("estimate", -last.omega_est_err, 3)
                 .rounded("flux", last.flux, 3)
                 .rounded("target", target, 3),
+        });
+    }
+    // A run that ran away is said to, not also to stray.
+    let ran_away = !out.is_empty();
+    if let Some(a) = astray.filter(|a| !ran_away && a.share >= ASTRAY_SHARE) {
+        let id = if a.from_window_start {
+            "warning-not-following-window"
+        } else {
+            "warning-not-following"
+        };
+        out.push(Warning {
+            kind: WarningKind::NotFollowing,
+            figure: None,
+            text: Message::new(id)
+                .time("since", a.since)
+                .rounded("error", last.omega_err, 3)
+                .rounded("reference", last.omega_ref, 4)
+                .real("share", 100.0 * super::window::FOLLOW_SHARE)
+                .real("margin", super::window::FOLLOW_MARGIN),
         });
     }
     let (low, high) = band;

@@ -166,6 +166,22 @@ pub(super) struct Window {
     pub(super) ripple_peak: f64,
     pub(super) ripple_sq: f64,
     pub(super) reference_peak: f64,
+    /// The first row (counted in the window) of the last stretch of rows where ω did not follow
+    /// ω_d ([`following`]), when the window ends in one.
+    pub(super) astray_from: Option<usize>,
+}
+
+/// Share of |ω_d| that ω may differ from it by and still be following it ...
+pub(super) const FOLLOW_SHARE: f64 = 0.05;
+
+/// ... plus this margin (rad/s), so that a reference near zero is not held to noise.
+pub(super) const FOLLOW_MARGIN: f64 = 1.0;
+
+/// Whether a speed error `omega_err` follows the reference `reference`: within
+/// [`FOLLOW_SHARE`]·|ω_d| + [`FOLLOW_MARGIN`].
+#[inline]
+pub(super) fn following(omega_err: f64, reference: f64) -> bool {
+    omega_err.abs() <= FOLLOW_SHARE * reference.abs() + FOLLOW_MARGIN
 }
 
 impl Window {
@@ -181,6 +197,7 @@ impl Window {
             ripple_peak: f64::NEG_INFINITY,
             ripple_sq: -0.0,
             reference_peak: 0.0,
+            astray_from: None,
         }
     }
 
@@ -197,6 +214,11 @@ impl Window {
         self.ripple_peak = self.ripple_peak.max(x.ripple);
         self.reference_peak = self.reference_peak.max(x.reference.abs());
         self.ripple_sq += x.ripple * x.ripple;
+        if following(x.omega_err, x.reference) {
+            self.astray_from = None;
+        } else if self.astray_from.is_none() {
+            self.astray_from = Some(self.n - 1);
+        }
     }
 }
 

@@ -163,6 +163,8 @@ warning-runaway = Der Lauf ist divergiert: An seinem Ende liegt die wahre Drehza
 warning-inconsistent-above = Das EKF ist in diesem Lauf inkonsistent: Sein mittlerer NIS beträgt { $nis }, weit über dem 95-%-Band { $low }–{ $high } eines Filters, dessen Modell passt. Seine Schätzwerte und die Drehzahl, mit der der Regler arbeitet, können weit von der Wahrheit entfernt sein, so schmal ihre Bänder auch aussehen.
 warning-inconsistent-below = Das EKF ist in diesem Lauf inkonsistent: Sein mittlerer NIS beträgt { $nis }, weit unter dem 95-%-Band { $low }–{ $high } eines Filters, dessen Modell passt. Es nimmt mehr Rauschen an, als vorhanden ist, und folgt den Messungen daher langsamer, als es könnte.
 # $figure is the figure's name (law_residual); $cause says why it is not a number.
+warning-not-following = Die Drehzahl folgt ihrem Sollwert nicht: von t = { $since } bis zum Ende des Laufs bleibt ω − ω_d außerhalb von ±({ $share } % von |ω_d| + { $margin } rad/s) und endet bei { $error } rad/s mit ω_d = { $reference } rad/s.
+warning-not-following-window = Die Drehzahl folgt ihrem Sollwert nicht: über das ganze Fenster der Kennwerte, von t = { $since } bis zum Ende des Laufs, bleibt ω − ω_d außerhalb von ±({ $share } % von |ω_d| + { $margin } rad/s) und endet bei { $error } rad/s mit ω_d = { $reference } rad/s.
 warning-not-finite = { $figure } ist keine endliche Zahl: { $cause }.
 
 ## Wo der Anlaufvorgang endet, und warum dort

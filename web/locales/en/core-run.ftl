@@ -163,6 +163,12 @@ warning-runaway = The run ran away: at its end the true speed is { $speed } rad/
 # $low and $high are the ends of the band.
 warning-inconsistent-above = The EKF is inconsistent on this run: its mean NIS is { $nis }, far above the 95 % band { $low }–{ $high } of a filter whose model fits. Its estimates, and the speed the controller acts on, may be far from the truth however narrow their bands look.
 warning-inconsistent-below = The EKF is inconsistent on this run: its mean NIS is { $nis }, far below the 95 % band { $low }–{ $high } of a filter whose model fits. It assumes more noise than there is, so it follows the measurements more slowly than it could.
+# The speed off its reference to the end of the run: $since the time it has been off since (a
+# time-ms or time-s), $error ω − ω_d at the end and $reference ω_d there (rad/s); off means
+# beyond $share % of |ω_d| plus $margin rad/s.
+warning-not-following = The speed does not follow its reference: from t = { $since } to the end of the run, ω − ω_d stays beyond ±({ $share } % of |ω_d| + { $margin } rad/s), and it ends at { $error } rad/s with ω_d = { $reference } rad/s.
+# As warning-not-following, off over the whole window of the figures, which starts at $since.
+warning-not-following-window = The speed does not follow its reference: over the whole window of the figures, from t = { $since } to the end of the run, ω − ω_d stays beyond ±({ $share } % of |ω_d| + { $margin } rad/s), and it ends at { $error } rad/s with ω_d = { $reference } rad/s.
 # $figure is the figure's name (law_residual); $cause says why it is not a number.
 warning-not-finite = { $figure } is not a finite number: { $cause }.
 

@@ -165,6 +165,8 @@ warning-runaway = La ejecución se desbocó: al final, la velocidad real está a
 warning-inconsistent-above = El EKF es inconsistente en esta ejecución: su NIS medio es { $nis }, muy por encima de la banda del 95 % { $low }–{ $high } de un filtro con un modelo correcto. Sus estimaciones, y la velocidad sobre la que actúa el controlador, pueden estar lejos de la realidad por estrechas que parezcan sus bandas.
 warning-inconsistent-below = El EKF es inconsistente en esta ejecución: su NIS medio es { $nis }, muy por debajo de la banda del 95 % { $low }–{ $high } de un filtro con un modelo correcto. Supone más ruido del que hay, así que sigue las mediciones más despacio de lo que podría.
 # $figure es el nombre de la cifra (law_residual); $cause dice por qué no es un número.
+warning-not-following = La velocidad no sigue a su referencia: desde t = { $since } hasta el final de la ejecución, ω − ω_d queda fuera de ±({ $share } % de |ω_d| + { $margin } rad/s), y termina en { $error } rad/s con ω_d = { $reference } rad/s.
+warning-not-following-window = La velocidad no sigue a su referencia: en toda la ventana de las cifras, desde t = { $since } hasta el final de la ejecución, ω − ω_d queda fuera de ±({ $share } % de |ω_d| + { $margin } rad/s), y termina en { $error } rad/s con ω_d = { $reference } rad/s.
 warning-not-finite = { $figure } no es un número finito: { $cause }.
 
 ## Where the start-up transient ends, and why there

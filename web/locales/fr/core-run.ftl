@@ -165,6 +165,8 @@ warning-runaway = La simulation a divergé : à sa fin, la vitesse réelle est 
 warning-inconsistent-above = L’EKF est incohérent sur cette simulation : son NIS moyen vaut { $nis }, très au-dessus de la bande à 95 % { $low }–{ $high } d’un filtre dont le modèle est juste. Ses estimées, et la vitesse sur laquelle agit le correcteur, peuvent être loin de la vérité, si étroites que paraissent leurs bandes.
 warning-inconsistent-below = L’EKF est incohérent sur cette simulation : son NIS moyen vaut { $nis }, très en dessous de la bande à 95 % { $low }–{ $high } d’un filtre dont le modèle est juste. Il suppose plus de bruit qu’il n’y en a : il suit donc les mesures plus lentement qu’il ne le pourrait.
 # $figure : le nom de l’indicateur (law_residual) ; $cause : pourquoi ce n’est pas un nombre.
+warning-not-following = La vitesse ne suit pas sa consigne : de t = { $since } à la fin de la simulation, ω − ω_d reste hors de ±({ $share } % de |ω_d| + { $margin } rad/s), et finit à { $error } rad/s pour ω_d = { $reference } rad/s.
+warning-not-following-window = La vitesse ne suit pas sa consigne : sur toute la fenêtre des indicateurs, de t = { $since } à la fin de la simulation, ω − ω_d reste hors de ±({ $share } % de |ω_d| + { $margin } rad/s), et finit à { $error } rad/s pour ω_d = { $reference } rad/s.
 warning-not-finite = { $figure } n’est pas un nombre fini : { $cause }.
 
 ## Où finit le transitoire de démarrage, et pourquoi à cet endroit

@@ -148,6 +148,8 @@ unreached-not-settled = 実行終了までに整定せず（t = { $time }）
 warning-runaway = 実行が暴走しました：終了時、真の速度は指令値から{ $speed } rad/s、速度推定値は真の速度から{ $estimate } rad/s離れ、磁束は目標値{ $target } Wbに対して{ $flux } Wbです。制御器が調節するのはEKFの推定値です。定理4.6が閉ループを有界とするのは推定誤差が有界にとどまる間だけで、そうでないとき（電圧制限だけで抑えられている起動時の誤差、低速でのモデルの誤り）は、電動機を有界に保つものは何もありません。
 warning-inconsistent-above = この実行ではEKFが非整合です：平均NISは{ $nis }で、モデルが合っているフィルタの95 %区間 { $low }–{ $high } を大きく上回っています。その推定値と、制御器が用いる速度は、帯がどれほど狭く見えても真値から大きく離れているおそれがあります。
 warning-inconsistent-below = この実行ではEKFが非整合です：平均NISは{ $nis }で、モデルが合っているフィルタの95 %区間 { $low }–{ $high } を大きく下回っています。実際より大きなノイズを想定しているため、可能な速さよりもゆっくり測定値に追従します。
+warning-not-following = 速度が指令値に追従していません：t = { $since } から実行の終わりまで、ω − ω_d は ±(|ω_d| の { $share } % + { $margin } rad/s) の外にあり、終了時は ω_d = { $reference } rad/s に対して { $error } rad/s です。
+warning-not-following-window = 速度が指令値に追従していません：指標の窓全体、すなわち t = { $since } から実行の終わりまで、ω − ω_d は ±(|ω_d| の { $share } % + { $margin } rad/s) の外にあり、終了時は ω_d = { $reference } rad/s に対して { $error } rad/s です。
 warning-not-finite = { $figure } は有限の数ではありません：{ $cause }。
 
 ## 起動過渡が終わる時刻と、その理由

@@ -160,6 +160,8 @@ warning-runaway = 此次运行失控：结束时真实转速与参考值相差 {
 warning-inconsistent-above = 此次运行中 EKF 不一致：其平均 NIS 为 { $nis }，远高于模型相符的滤波器的 95% 区间 { $low }–{ $high }。无论其区间带看起来多窄，其估计值以及控制器所依据的转速都可能远离真实值。
 warning-inconsistent-below = 此次运行中 EKF 不一致：其平均 NIS 为 { $nis }，远低于模型相符的滤波器的 95% 区间 { $low }–{ $high }。它假设的噪声多于实际，因此跟随测量值的速度慢于其应有的速度。
 # $figure 是指标的名称（law_residual）；$cause 说明它为何不是数值。
+warning-not-following = 转速没有跟随其参考值：从 t = { $since } 到运行结束，ω − ω_d 始终超出 ±({ $share } % × |ω_d| + { $margin } rad/s)，结束时为 { $error } rad/s，此时 ω_d = { $reference } rad/s。
+warning-not-following-window = 转速没有跟随其参考值：在指标的整个窗口内，即从 t = { $since } 到运行结束，ω − ω_d 始终超出 ±({ $share } % × |ω_d| + { $margin } rad/s)，结束时为 { $error } rad/s，此时 ω_d = { $reference } rad/s。
 warning-not-finite = { $figure } 不是有限数：{ $cause }。
 
 ## 启动暂态结束于何处，以及为何在此
