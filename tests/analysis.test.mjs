@@ -318,6 +318,29 @@ test("a model-error map link replays the map, its CSV is imlab robust's byte for
   });
 });
 
+test("a gain is a map's axis in the page as in imlab robust, named in the page's language", async () => {
+  const text = 'k1=-20%..+20%:3;seeds=1..2';
+  const scenario = 'v=1&preset=step&duration=0.02';
+  await withPage(`?${scenario}#lang=de&robust=${encodeURIComponent(text)}`, async (page) => {
+    assert.equal(await mapDone(page), 'done');
+    const csv = await download(page, '#map-csv');
+    const native = execFileSync(cli, ['robust', scenario, '--vary', 'k1=-20%..+20%:3', '--seeds', '1..2'], {
+      stdio: ['ignore', 'pipe', 'ignore'],
+    }).toString();
+    assert.equal(csv, native);
+    assert.match(native.split('\n')[1], /^k1,k1_vs_base_pct,/);
+    assert.match(await page.textContent('#map-plot'), /k1 gegenüber dem Basiswert \(%\)/);
+  });
+  // Under IFOC the backstepping gains act on nothing: the map is refused before any run.
+  await withPage('?v=1&preset=ifoc-step&duration=0.02', async (page) => {
+    await page.click('#tab-analysis');
+    await page.fill('[name=axis1]', 'k1=-20%..+20%:3');
+    await page.click('#map-run');
+    assert.equal(await mapDone(page), 'refused');
+    assert.match(await page.textContent('#map-status'), /k1 has no effect in this scenario/);
+  });
+});
+
 test('a map past the work bound is refused before any run, naming what it needs; a cancelled map keeps its finished cells at once', async () => {
   await withPage('?v=1&preset=rr-mismatch&duration=20', async (page) => {
     await page.click('#tab-analysis');

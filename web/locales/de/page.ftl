@@ -336,7 +336,7 @@ map-heading = Modellfehlerkarte
 map-intro-start = Wie weit trägt ein Ergebnis, wenn der Motor nicht dem entspricht, was EKF und Regler annehmen? Rechnet das aktuelle Szenario über einen oder zwei Parameter des Motors (
 map-intro-model = ) oder des Modells (
 map-intro-axes = ), jeden Wert mit jedem Startwert, und zeigt für jeden Kennwert Median und Spannweite über die Startwerte. Schreiben Sie eine Achse als KEY=LO..HI:N, in Werten oder als relative Fehler gegenüber der anderen Seite:{ " " }
-map-intro-example = { " " }ist der Rotorwiderstand des Motors von 10 % unter bis 10 % über dem des Modells.
+map-intro-example = { " " }ist der Rotorwiderstand des Motors von 10 % unter bis 10 % über dem des Modells. Jedes andere Zahlenfeld, etwa eine Verstärkung (k1=-20%..+20%:5), die Einstellung des EKF oder das Flussziel, wird gegen den eigenen Wert des Szenarios gelesen.
 map-axis = Achse
 map-second-axis = zweite Achse (optional)
 map-seeds = Startwerte

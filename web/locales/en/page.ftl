@@ -338,7 +338,7 @@ map-heading = Model-error map
 map-intro-start = How far does a result hold when the motor is not what the EKF and the controller assume? Runs the current scenario over one or two motor (
 map-intro-model = ) or model (
 map-intro-axes = ) parameters, each value with every seed, and shows each figure's median and range over the seeds. Write an axis as KEY=LO..HI:N, in values or as relative errors against the other side:{ " " }
-map-intro-example = { " " }is the motor's rotor resistance from 10 % below to 10 % above the model's.
+map-intro-example = { " " }is the motor's rotor resistance from 10 % below to 10 % above the model's. Any other numeric field, such as a gain (k1=-20%..+20%:5), the EKF's tuning or the flux target, is read against the scenario's own value.
 map-axis = axis
 map-second-axis = second axis (optional)
 map-seeds = seeds

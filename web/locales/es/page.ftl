@@ -336,7 +336,7 @@ map-heading = Mapa de errores de modelo
 map-intro-start = ¿Hasta dónde se mantiene un resultado cuando el motor no es el que suponen el EKF y el controlador? Ejecuta el escenario actual sobre uno o dos parámetros del motor (
 map-intro-model = ) o del modelo (
 map-intro-axes = ), cada valor con todas las semillas, y muestra la mediana y el rango de cada cifra según las semillas. Escribe un eje como CLAVE=MIN..MAX:N, en valores o como errores relativos respecto al otro lado:{ " " }
-map-intro-example = { " " }es la resistencia rotórica del motor desde un 10 % por debajo hasta un 10 % por encima de la del modelo.
+map-intro-example = { " " }es la resistencia rotórica del motor desde un 10 % por debajo hasta un 10 % por encima de la del modelo. Cualquier otro campo numérico, como una ganancia (k1=-20%..+20%:5), el ajuste del EKF o la consigna de flujo, se lee respecto al valor propio del escenario.
 map-axis = eje
 map-second-axis = segundo eje (opcional)
 map-seeds = semillas

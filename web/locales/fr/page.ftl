@@ -264,7 +264,7 @@ map-heading = Carte d’erreur de modèle
 map-intro-start = Jusqu’où un résultat tient-il lorsque le moteur n’est pas ce que supposent l’EKF et le correcteur ? Simule le scénario actuel sur un ou deux paramètres du moteur (
 map-intro-model = ) ou du modèle (
 map-intro-axes = ), chaque valeur avec chaque graine, et affiche la médiane et l’étendue de chaque indicateur sur les graines. Écrivez un axe sous la forme KEY=LO..HI:N, en valeurs ou en erreurs relatives par rapport à l’autre côté :{ " " }
-map-intro-example = { " " }est la résistance rotorique du moteur de 10 % en dessous à 10 % au-dessus de celle du modèle.
+map-intro-example = { " " }est la résistance rotorique du moteur de 10 % en dessous à 10 % au-dessus de celle du modèle. Tout autre champ numérique, comme un gain (k1=-20%..+20%:5), le réglage de l’EKF ou la cible de flux, est lu par rapport à la valeur propre du scénario.
 map-axis = axe
 map-second-axis = second axe (facultatif)
 map-seeds = graines
