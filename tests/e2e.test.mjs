@@ -250,6 +250,23 @@ test('an edit run before the closed settings groups are built keeps their values
   assert.deepEqual(errors, [], 'console errors');
 });
 
+test("a motor chosen in the form sets the plant, the model and the rating, as its link's motor= does", () =>
+  withPage('v=1&preset=step&duration=0.02&plant.rr=5', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.click('details[data-group=plant] > summary');
+    const ran = () => page.evaluate(() => document.body.dataset.scenario);
+    const before = await ran();
+    await page.selectOption('#field-motor', '2.2kw');
+    await startRun(page, () => page.click('#run'));
+    assert.notEqual(await ran(), before);
+    // The old plant.rr does not undo the motor: the run is the link's, and the form shows its values.
+    assert.equal(await ran(), 'v=1&preset=step&motor=2.2kw&duration=0.02');
+    assert.equal(await page.inputValue('[id="field-plant.rr"]'), '2.1');
+    const described = execFileSync(cli, ['describe', await ran()]).toString();
+    assert.match(described, /^plant\.rr +=  +2\.1 Ω/m);
+    assert.match(described, /^i_rated +=  +7\.0710678118654755 A/m);
+  }));
+
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>
   withPage('v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');

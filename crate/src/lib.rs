@@ -14,6 +14,7 @@ pub mod challenge;
 pub mod control;
 pub mod inverter;
 pub mod model;
+pub mod motors;
 pub mod observer;
 pub mod params;
 pub mod record;

@@ -251,13 +251,19 @@ function valueOf(control) {
  */
 export function formScenario(form, preset) {
   const info = shown.get(form);
+  const held = (/** @type {Field} */ f) => {
+    const control = namedControl(form, f.key);
+    return control ? valueOf(control) : String(f.value);
+  };
+  // A field changed here whose new value sets others afresh (the core's `resets`: a motor sets
+  // the plant, the model and the rating) leaves their old values out.
+  const reset = new Set(
+    (info?.fields ?? []).filter((f) => f.value !== null && held(f) !== f.value).flatMap((f) => f.resets),
+  );
   /** @type {[string, string][]} */
   const fields = [];
   for (const group of GROUPS) {
-    for (const f of info ? fieldsOf(info, group) : []) {
-      const control = namedControl(form, f.key);
-      fields.push([f.key, control ? valueOf(control) : String(f.value)]);
-    }
+    for (const f of info ? fieldsOf(info, group) : []) if (!reset.has(f.key)) fields.push([f.key, held(f)]);
   }
   return { preset, fields };
 }

@@ -5,7 +5,9 @@ use super::presets::default_reference;
 use super::{ControllerKind, Scenario, ScenarioError};
 use crate::control::Reference;
 use crate::inverter::Shape;
+use crate::motors::{motor, MOTOR_NAMES};
 use crate::observer::Predictor;
+use crate::params::MotorParams;
 use crate::text::percent::{self, Plus};
 use crate::text::Message;
 use serde::Serialize;
@@ -120,6 +122,10 @@ pub struct FieldInfo {
     /// limit, `vdc` only with the circle or hex limit or PWM, `delay.comp` only with the delay and
     /// the backstepping controller.
     pub acts: bool,
+    /// The fields a new value of this one sets afresh (`motor=` sets the plant's and the model's
+    /// circuit and the rating): a form that changes this field leaves those out, or their old
+    /// values would undo it.
+    pub resets: &'static [&'static str],
 }
 
 /// Why field `key` changes nothing in scenario `s`: the settings that leave it idle, as the codec
@@ -329,6 +335,37 @@ pub(crate) fn decode_formula(text: &str) -> Option<String> {
     percent::decode(text, Plus::Plus)
 }
 
+/// The fields [`set_motor`] sets: each side's circuit and inertia, and the rating.
+const MOTOR_SET: &[&str] = &[
+    "plant.rs", "plant.rr", "plant.m", "plant.ls", "plant.lr", "plant.j", "plant.np",
+    "model.rs", "model.rr", "model.m", "model.ls", "model.lr", "model.j", "model.np",
+    "i_rated",
+];
+
+/// The fields a new value of field `key` sets afresh (see [`FieldInfo::resets`]).
+fn resets(key: &str) -> &'static [&'static str] {
+    if key == "motor" {
+        MOTOR_SET
+    } else {
+        &[]
+    }
+}
+
+/// Sets the plant and the model to library motor `name` (their load, T_0 and C_f, kept), and the
+/// rated current to its rating.
+pub(super) fn set_motor(s: &mut Scenario, name: &str) {
+    let m = motor(name).expect("checked option");
+    for side in [&mut s.plant, &mut s.model] {
+        *side = MotorParams {
+            t0: side.t0,
+            cf: side.cf,
+            ..m.params
+        };
+    }
+    s.i_rated = m.rated_current().0;
+    s.motor = m.name.to_string();
+}
+
 fn set_reference(s: &mut Scenario, name: &str) {
     // Keep the parameters when the kind does not change.
     if s.reference.kind() != name {
@@ -400,6 +437,9 @@ fn table() -> Vec<Field> {
         number("noise", "noise", "A", closed(0.0, 10.0), at!(noise)),
         number("seed", "noise", "", whole(0.0, MAX_SEED as f64), at!(seed)),
     ];
+    v.push(choice("motor", "plant", Access::Choice {
+        options: MOTOR_NAMES, get: |s| motor(&s.motor).map_or("paper", |m| m.name), set: set_motor,
+    }));
     v.extend(motor!(plant));
     v.extend(motor!(model));
     v.extend([
@@ -598,6 +638,7 @@ impl Field {
                 _ => self.get(s),
             },
             acts: idle_because(self.key, s).is_none(),
+            resets: resets(self.key),
         }
     }
 }

@@ -14,7 +14,7 @@ pub use error::ScenarioError;
 
 pub(crate) use fields::parse_number;
 pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
-pub use presets::{preset, Preset, PRESETS};
+pub use presets::{preset, Preset, I_RATED, PRESETS};
 pub use validate::{MAX_LAW_WORK, MAX_STEPS, MAX_WORK};
 
 use crate::control::{Gains, IfocTuning, Reference};
@@ -75,6 +75,9 @@ pub enum ControllerKind {
 pub struct Scenario {
     /// Name of the preset this scenario starts from.
     pub preset: String,
+    /// The library motor (`crate::motors`) the plant and the model were set from, before any of
+    /// their values was changed on either side.
+    pub motor: String,
     /// Speed reference ω_d(t).
     pub reference: Reference,
     /// Flux target ψ_d for φ_ra² + φ_rb² (Wb²).
@@ -265,10 +268,15 @@ impl Scenario {
         if base.reference.kind() != self.reference.kind() {
             base.reference = default_reference(self.reference.kind()).expect("known kind");
         }
+        // After `motor=`, the plant, the model and the rating differ from that motor's values.
+        if base.motor != self.motor {
+            fields::set_motor(&mut base, &self.motor);
+        }
         fields()
             .iter()
             .filter_map(|field| {
-                let theirs = field.get(if field.key == "ref" { &original } else { &base });
+                let switch = matches!(field.key, "ref" | "motor");
+                let theirs = field.get(if switch { &original } else { &base });
                 field
                     .get(self)
                     .filter(|m| Some(m) != theirs.as_ref())
@@ -380,6 +388,47 @@ mod tests {
             assert_eq!(Scenario::parse(&text).unwrap(), s);
             assert_eq!(Scenario::parse(p.name).unwrap(), s);
         }
+    }
+
+    #[test]
+    fn a_motor_sets_the_plant_the_model_and_the_rating_and_its_values_can_still_change() {
+        let m = crate::motors::motor("2.2kw").unwrap();
+        let s = Scenario::parse("v=1&preset=step&motor=2.2kw").unwrap();
+        let step = preset("step").unwrap();
+        for side in [&s.plant, &s.model] {
+            // The motor's circuit and inertia; the scenario's load.
+            assert_eq!((side.rs, side.rr, side.m), (m.params.rs, m.params.rr, m.params.m));
+            assert_eq!((side.ls, side.lr, side.j), (m.params.ls, m.params.lr, m.params.j));
+            assert_eq!((side.t0, side.cf), (step.plant.t0, step.plant.cf));
+        }
+        assert_eq!(s.i_rated, 5.0 * 2f64.sqrt());
+        assert_eq!(s.encode(), "v=1&preset=step&motor=2.2kw");
+        assert_eq!(s.changed_keys(), ["motor"]);
+        // A value changed after it, in either order in the link, is written after it.
+        for link in [
+            "v=1&preset=step&motor=2.2kw&plant.rr=2.5&i_rated=7",
+            "v=1&preset=step&i_rated=7&plant.rr=2.5&motor=2.2kw",
+        ] {
+            let t = Scenario::parse(link).unwrap();
+            assert_eq!((t.plant.rr, t.model.rr, t.i_rated), (2.5, 2.1, 7.0));
+            let written = t.encode();
+            assert_eq!(written, "v=1&preset=step&motor=2.2kw&plant.rr=2.5&i_rated=7");
+            assert_eq!(Scenario::parse(&written).unwrap(), t);
+        }
+        // The paper's motor is the presets' own: choosing it changes nothing.
+        let paper = Scenario::parse("v=1&preset=step&motor=paper").unwrap();
+        assert_eq!(paper, step);
+        assert_eq!(paper.encode(), "v=1&preset=step");
+        // What a form must leave out when it changes the motor: every field the motor sets.
+        let big = Scenario::parse("v=1&preset=step&motor=15kw").unwrap();
+        let resets = big.describe().into_iter().find(|f| f.key == "motor").unwrap().resets;
+        for (before, after) in step.describe().iter().zip(big.describe()) {
+            if before.value != after.value && before.key != "motor" {
+                assert!(resets.contains(&before.key), "{}", before.key);
+            }
+        }
+        let e = Scenario::parse("v=1&preset=step&motor=7kw").unwrap_err();
+        assert_eq!(e.key(), Some("motor"), "{e}");
     }
 
     #[test]

@@ -62,11 +62,12 @@ const RR_STD: f64 = 0.5;
 /// 1430 rpm is 7.3–10 N m: i_q = 3.6–4.9 A and |i_s| = 3.8–5.1 A. 4 A (2.8 A rms per phase)
 /// gives 7.7 N m; at the model's slip for that current (25.5 rad/s electrical, 8.1 % at 50 Hz,
 /// 1378 rpm) that is 1.12 kW, at the low end of that class.
-pub(super) const I_RATED: f64 = 4.0;
+pub const I_RATED: f64 = 4.0;
 
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
     Scenario {
         preset: name.to_string(),
+        motor: "paper".to_string(),
         reference,
         psi_d: 0.5,
         plant: MotorParams::PAPER,

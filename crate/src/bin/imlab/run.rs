@@ -25,6 +25,26 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     for idle in s.idle_settings() {
         writeln!(out, "# {idle}")?;
     }
+    if let Some(m) = imlab::motors::motor(&s.motor).filter(|m| m.name != "paper") {
+        let (amplitude, estimated) = m.rated_current();
+        let how = if estimated {
+            format!(
+                "estimated from its equivalent circuit at {} V, {} Hz and {} kW",
+                m.voltage,
+                m.frequency,
+                m.power / 1e3
+            )
+        } else {
+            "published".to_string()
+        };
+        writeln!(
+            out,
+            "# motor {}: {}; rated current amplitude {} A ({how})",
+            m.name,
+            m.source,
+            imlab::text::rounded(amplitude, 4)
+        )?;
+    }
     for f in s.describe() {
         let value = match f.value {
             Some(v) if f.formula.is_some() && v.is_empty() => "paper's".to_string(),
