@@ -337,9 +337,8 @@ pub(crate) fn decode_formula(text: &str) -> Option<String> {
 
 /// The fields [`set_motor`] sets: each side's circuit and inertia, and the rating.
 const MOTOR_SET: &[&str] = &[
-    "plant.rs", "plant.rr", "plant.m", "plant.ls", "plant.lr", "plant.j", "plant.np",
-    "model.rs", "model.rr", "model.m", "model.ls", "model.lr", "model.j", "model.np",
-    "i_rated",
+    "plant.rs", "plant.rr", "plant.m", "plant.ls", "plant.lr", "plant.j", "plant.np", "model.rs",
+    "model.rr", "model.m", "model.ls", "model.lr", "model.j", "model.np", "i_rated",
 ];
 
 /// The fields a new value of field `key` sets afresh (see [`FieldInfo::resets`]).

@@ -397,8 +397,14 @@ mod tests {
         let step = preset("step").unwrap();
         for side in [&s.plant, &s.model] {
             // The motor's circuit and inertia; the scenario's load.
-            assert_eq!((side.rs, side.rr, side.m), (m.params.rs, m.params.rr, m.params.m));
-            assert_eq!((side.ls, side.lr, side.j), (m.params.ls, m.params.lr, m.params.j));
+            assert_eq!(
+                (side.rs, side.rr, side.m),
+                (m.params.rs, m.params.rr, m.params.m)
+            );
+            assert_eq!(
+                (side.ls, side.lr, side.j),
+                (m.params.ls, m.params.lr, m.params.j)
+            );
             assert_eq!((side.t0, side.cf), (step.plant.t0, step.plant.cf));
         }
         assert_eq!(s.i_rated, 5.0 * 2f64.sqrt());
@@ -412,7 +418,10 @@ mod tests {
             let t = Scenario::parse(link).unwrap();
             assert_eq!((t.plant.rr, t.model.rr, t.i_rated), (2.5, 2.1, 7.0));
             let written = t.encode();
-            assert_eq!(written, "v=1&preset=step&motor=2.2kw&plant.rr=2.5&i_rated=7");
+            assert_eq!(
+                written,
+                "v=1&preset=step&motor=2.2kw&plant.rr=2.5&i_rated=7"
+            );
             assert_eq!(Scenario::parse(&written).unwrap(), t);
         }
         // The paper's motor is the presets' own: choosing it changes nothing.
@@ -421,7 +430,12 @@ mod tests {
         assert_eq!(paper.encode(), "v=1&preset=step");
         // What a form must leave out when it changes the motor: every field the motor sets.
         let big = Scenario::parse("v=1&preset=step&motor=15kw").unwrap();
-        let resets = big.describe().into_iter().find(|f| f.key == "motor").unwrap().resets;
+        let resets = big
+            .describe()
+            .into_iter()
+            .find(|f| f.key == "motor")
+            .unwrap()
+            .resets;
         for (before, after) in step.describe().iter().zip(big.describe()) {
             if before.value != after.value && before.key != "motor" {
                 assert!(resets.contains(&before.key), "{}", before.key);
