@@ -240,9 +240,9 @@ html = once(
 );
 // The page's own words are its English messages: each element of static/index.html with a
 // `data-l10n-id` gets the message's attributes and, when the message has a text, that text, escaped,
-// as @fluent/dom gives them in another language. An element whose message has a text holds text
-// only; one that holds other elements (a region, a list of links) or none at all (an input) takes a
-// message of attributes only, as @fluent/dom leaves such an element's children alone.
+// as the page writes them in another language (web/l10n/l10n.js, translatePage). An element whose
+// message has a text holds text only; one that holds other elements (a region, a list of links) or
+// none at all (an input) takes a message of attributes only, whose children stay as they are.
 const enBundle = new FluentBundle('en', { useIsolating: false });
 const enErrors = enBundle.addResource(new FluentResource(enPage));
 if (enErrors.length) throw new Error(`bundle: web/locales/en: ${enErrors.join('; ')}`);

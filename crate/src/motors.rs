@@ -33,8 +33,6 @@ pub struct Motor {
     pub frequency: f64,
     /// How its rated current is known.
     pub rating: Rating,
-    /// Where its values come from.
-    pub source: &'static str,
 }
 
 /// The equivalent circuit and inertia of a library motor, with no load of its own.
@@ -61,7 +59,6 @@ pub const MOTORS: &[Motor] = &[
         voltage: f64::NAN,
         frequency: f64::NAN,
         rating: Rating::Given(crate::scenario::I_RATED),
-        source: "the paper's Section 5, from Khalil et al. (2009); the presets' rating",
     },
     // Inverse-Γ values R_s 3.7 Ω, R_R 2.1 Ω, L_σ 0.021 H, L_M 0.224 H: in the T form, the rotor
     // leakage is zero (L_r = M = L_M, L_s = L_σ + L_M).
@@ -72,8 +69,6 @@ pub const MOTORS: &[Motor] = &[
         voltage: 400.0,
         frequency: 50.0,
         rating: Rating::Published(5.0),
-        source: "motulator (Aalto University), its 2.2-kW induction machine examples: 400 V, \
-                 5 A, 50 Hz, 2.2 kW, inverse-Γ parameters and J",
     },
     Motor {
         name: "3.7kw",
@@ -82,8 +77,6 @@ pub const MOTORS: &[Motor] = &[
         voltage: 400.0,
         frequency: 50.0,
         rating: Rating::Estimated,
-        source: "MATLAB's preset IM5HP400V50Hz (5 hp, 400 V, 50 Hz, 4 poles), as the Modelica \
-                 Buildings library's record IM_5HP_400V_50Hz gives it",
     },
     Motor {
         name: "15kw",
@@ -92,8 +85,6 @@ pub const MOTORS: &[Motor] = &[
         voltage: 400.0,
         frequency: 50.0,
         rating: Rating::Estimated,
-        source: "MATLAB's preset IM20HP400V50Hz (20 hp, 400 V, 50 Hz, 4 poles), as the Modelica \
-                 Buildings library's record IM_20HP_400V_50Hz gives it",
     },
 ];
 
@@ -106,6 +97,28 @@ pub fn motor(name: &str) -> Option<&'static Motor> {
 }
 
 impl Motor {
+    /// Where its values come from (for the CLI and the files the tools write: the run's module
+    /// carries no English).
+    #[cfg(feature = "english")]
+    pub fn source(&self) -> &'static str {
+        match self.name {
+            "paper" => "the paper's Section 5, from Khalil et al. (2009); the presets' rating",
+            "2.2kw" => {
+                "motulator (Aalto University), its 2.2-kW induction machine examples: 400 V, \
+                 5 A, 50 Hz, 2.2 kW, inverse-Γ parameters and J"
+            }
+            "3.7kw" => {
+                "MATLAB's preset IM5HP400V50Hz (5 hp, 400 V, 50 Hz, 4 poles), as the Modelica \
+                 Buildings library's record IM_5HP_400V_50Hz gives it"
+            }
+            "15kw" => {
+                "MATLAB's preset IM20HP400V50Hz (20 hp, 400 V, 50 Hz, 4 poles), as the Modelica \
+                 Buildings library's record IM_20HP_400V_50Hz gives it"
+            }
+            _ => unreachable!("every motor of the library has its source"),
+        }
+    }
+
     /// The amplitude |i_s| of its rated phase current (A), and whether it is an estimate. With
     /// none published: the stator current of its steady-state T-equivalent circuit at its rated
     /// voltage and frequency, at the slip where its mechanical power 3·|I_r|²·R_r·(1 − s)/s is
@@ -132,7 +145,7 @@ impl Motor {
             ((a.0 * b.0 + a.1 * b.1) / d, (a.1 * b.0 - a.0 * b.1) / d)
         };
         let add = |a: (f64, f64), b: (f64, f64)| (a.0 + b.0, a.1 + b.1);
-        let abs = |a: (f64, f64)| a.0.hypot(a.1);
+        let abs = |a: (f64, f64)| (a.0 * a.0 + a.1 * a.1).sqrt();
         // Stator current and mechanical power at slip s.
         let at = |s: f64| {
             let zs = (p.rs, w * (p.ls - p.m));
@@ -143,16 +156,17 @@ impl Motor {
             let ir = abs(div(mul(i, zm), add(zm, zr)));
             (abs(i), 3.0 * ir * ir * p.rr * (1.0 - s) / s)
         };
-        // The slip of peak power on a logarithmic grid, then bisection below it.
-        let grid = (1..=1200).map(|k| 10f64.powf(-6.0 + 6.0 * k as f64 / 1200.0));
-        let peak = grid.fold((0.0, 1e-6), |best, s| {
+        // The slip of peak power on a logarithmic grid from 1e-6 to 1 (each point 1.2 % above the
+        // one before), then bisection below it.
+        let mut peak = (0.0, 1e-6);
+        let mut s = 1e-6;
+        while s < 1.0 {
             let power = at(s).1;
-            if power > best.0 {
-                (power, s)
-            } else {
-                best
+            if power > peak.0 {
+                peak = (power, s);
             }
-        });
+            s *= 1.012;
+        }
         let (mut lo, mut hi) = (1e-9, peak.1);
         for _ in 0..200 {
             let mid = 0.5 * (lo + hi);
@@ -182,6 +196,7 @@ mod tests {
             assert!(amplitude.is_finite() && amplitude > 0.0, "{}", m.name);
             assert_eq!(estimated, m.rating == Rating::Estimated, "{}", m.name);
             assert!(m.params.lumped().is_ok(), "{}", m.name);
+            assert!(!m.source().is_empty(), "{}", m.name);
         }
     }
 

@@ -50,16 +50,26 @@ export async function useLanguage(lang) {
   loading.clear();
   rest = false;
   document.documentElement.lang = lang;
-  if (lang === 'en') return fetchPart('page');
-  // The build wrote the page's English words into it: another language replaces them, with
-  // @fluent/dom fetched beside its messages (an English page carries neither).
-  const [{ DOMLocalization }] = await Promise.all([import('@fluent/dom'), fetchPart('page')]);
-  await new DOMLocalization([], generateBundles).translateFragment(document.documentElement);
+  await fetchPart('page');
+  if (lang !== 'en') translatePage();
 }
 
-/** @returns {Generator<FluentBundle>} */
-function* generateBundles() {
-  yield bundle;
+/**
+ * Writes the page's own words in the language shown. The build wrote the English ones into it
+ * (scripts/bundle.mjs): each element with a `data-l10n-id` holds its message's text, when the
+ * message has one, and has its message's attributes; another language writes its own the same way.
+ */
+function translatePage() {
+  for (const element of document.querySelectorAll('[data-l10n-id]')) {
+    const id = /** @type {string} */ (element.getAttribute('data-l10n-id'));
+    const message = bundle.getMessage(id);
+    if (!message) {
+      console.error(`no message ${id} in ${language}`);
+      continue;
+    }
+    if (message.value !== null) element.textContent = t(id);
+    for (const name of Object.keys(message.attributes)) element.setAttribute(name, t(`${id}.${name}`));
+  }
 }
 
 /**

@@ -41,7 +41,7 @@ pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
             out,
             "# motor {}: {}; rated current amplitude {} A ({how})",
             m.name,
-            m.source,
+            m.source(),
             imlab::text::rounded(amplitude, 4)
         )?;
     }
