@@ -132,6 +132,9 @@ test('before the rest of its messages arrives the page says nothing it lacks: fi
     // Then the lessons and the law's verdict are said.
     await page.waitForSelector('#lessons [data-lesson]', { state: 'attached' });
     await page.waitForSelector('#settings .law-field .law-verdict.bad', { state: 'attached' });
+    // Its number in German, as the CLI's English writes it (1.58e-4) with a decimal comma.
+    const verdict = await page.textContent('#settings .law-field .law-verdict.bad');
+    assert.match(verdict, /um bis zu 1,58e-4 /, verdict);
   } finally {
     release();
     await context.close();

@@ -4,7 +4,7 @@
 
 /**
  * @typedef {{id: string, args: Record<string, CoreArg>}} CoreMessage
- * @typedef {string | number | {real: number} | {fixed: number, fraction: number} | CoreMessage | CoreMessage[]} CoreArg
+ * @typedef {string | number | {real: number} | {fixed: number, fraction: number} | {sci: number, places: number} | CoreMessage | CoreMessage[]} CoreArg
  */
 
 /**

@@ -184,6 +184,7 @@ function said(text) {
     else if (Array.isArray(arg)) args[name] = arg.map(said).join(t('core-list-separator'));
     else if (isCoreMessage(arg)) args[name] = said(arg);
     else if ('real' in arg) args[name] = shortest(arg.real);
+    else if ('sci' in arg) args[name] = scientific(arg.sci, arg.places);
     else args[name] = num(arg.fixed, arg.fraction);
   }
   return t(text.id, args);
@@ -197,6 +198,19 @@ function said(text) {
 function shortest(value) {
   const separator = new Intl.NumberFormat(language).formatToParts(0.5).find((p) => p.type === 'decimal')?.value ?? '.';
   return String(value).replace('.', separator);
+}
+
+/**
+ * `value` in scientific notation with `places` decimals in its mantissa, in the language shown
+ * (1,58e-4 in German), with a lower-case e as the core writes it in English.
+ * @param {number} value
+ * @param {number} places
+ */
+function scientific(value, places) {
+  const format = { notation: 'scientific', minimumFractionDigits: places, maximumFractionDigits: places };
+  return new Intl.NumberFormat(language, /** @type {Intl.NumberFormatOptions} */ (format))
+    .format(value)
+    .replace('E', 'e');
 }
 
 /**

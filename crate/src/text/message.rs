@@ -83,6 +83,13 @@ pub enum Arg {
         /// Its decimals.
         fraction: u8,
     },
+    /// A number in scientific notation with `places` decimals in its mantissa (1.58e-4).
+    Sci {
+        /// The number.
+        sci: f64,
+        /// The mantissa's decimals.
+        places: u8,
+    },
     /// A message said inside this one.
     Said(Box<Message>),
     /// Messages listed, in order.
@@ -132,6 +139,11 @@ impl Message {
                 fraction,
             },
         )
+    }
+
+    /// With `value` as `name`, in scientific notation with `places` decimals in its mantissa.
+    pub fn sci(self, name: &'static str, value: f64, places: u8) -> Message {
+        self.with(name, Arg::Sci { sci: value, places })
     }
 
     /// With `value` as `name`, as [`short`](super::short) writes it: its shortest digits, in
@@ -258,6 +270,9 @@ mod english {
                 Arg::Real { real } => FluentValue::from(real.to_string()),
                 Arg::Fixed { fixed, fraction } => {
                     FluentValue::from(format!("{fixed:.*}", *fraction as usize))
+                }
+                Arg::Sci { sci, places } => {
+                    FluentValue::from(format!("{sci:.*e}", *places as usize))
                 }
                 Arg::Said(inner) => FluentValue::from(render(inner)),
                 Arg::List(items) => {

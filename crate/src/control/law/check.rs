@@ -440,12 +440,9 @@ pub fn check(
             designed,
             worst: Some(worst),
             finding: None,
-            text: digits(
-                verdict("law-designed"),
-                "worst",
-                format!("{:.0e}", worst.max(f64::EPSILON)),
-            )
-            .said("caveats", caveats),
+            text: verdict("law-designed")
+                .sci("worst", worst.max(f64::EPSILON), 0)
+                .said("caveats", caveats),
         });
     }
     let finding = mistakes
@@ -459,7 +456,7 @@ pub fn check(
         Some(f) => Message::new("law-difference").said("finding", f.clone()),
         None => Message::new("law-difference-unnamed"),
     };
-    let text = digits(verdict("law-not-designed"), "worst", three(worst))
+    let text = with_worst(verdict("law-not-designed"), worst)
         .text("unit", unit)
         .said("difference", difference)
         .said("caveats", caveats);
@@ -671,6 +668,17 @@ fn distinct(a: f64, b: f64) -> (String, String) {
 }
 
 /// `v` to three significant digits, as plain decimals where they are short (400, 0.833, 1.2e-5).
+/// `message` with `v` as its `worst`, as [`three`] writes it: in scientific notation outside
+/// 1e-3..1e6, with two decimals in its mantissa.
+fn with_worst(message: Message, v: f64) -> Message {
+    let text = three(v);
+    if text.contains('e') {
+        message.sci("worst", v, 2)
+    } else {
+        digits(message, "worst", text)
+    }
+}
+
 fn three(v: f64) -> String {
     if v == 0.0 || !v.is_finite() {
         return format!("{v}");
