@@ -32,11 +32,19 @@ self.addEventListener('activate', (event) =>
 );
 
 // The page names the files of the language it shows (`{keep: [path, …]}`), once this worker is
-// active: they are kept for offline use, and no other language's are fetched.
+// active: they are kept for offline use, and no other language's are fetched. The port sent with
+// the message hears whether they were kept.
 self.addEventListener('message', (event) => {
   const keep = event.data?.keep;
   if (!Array.isArray(keep) || !keep.every((path) => typeof path === 'string' && path.startsWith('locales/'))) return;
-  event.waitUntil(caches.open(CACHE).then((cache) => cache.addAll(keep)));
+  const kept = caches
+    .open(CACHE)
+    .then((cache) => cache.addAll(keep))
+    .then(
+      () => true,
+      () => false,
+    );
+  event.waitUntil(kept.then((ok) => event.ports[0]?.postMessage({ kept: ok })));
 });
 
 self.addEventListener('fetch', (event) => {

@@ -60,9 +60,13 @@ function registerServiceWorker() {
   try {
     // A sandboxed frame refuses even the look at navigator.serviceWorker.
     navigator.serviceWorker?.register('sw.js').then(async () => {
-      // Kept offline: the language shown, not the others.
-      (await navigator.serviceWorker.ready).active?.postMessage({ keep: languageFiles() });
-      document.body.dataset.offline = 'kept';
+      // Kept offline: the language shown, not the others; said once the worker has kept them.
+      const worker = (await navigator.serviceWorker.ready).active;
+      if (!worker) return refused();
+      const channel = new MessageChannel();
+      const kept = new Promise((resolve) => (channel.port1.onmessage = (e) => resolve(e.data?.kept === true)));
+      worker.postMessage({ keep: languageFiles() }, [channel.port2]);
+      document.body.dataset.offline = (await kept) ? 'kept' : 'failed';
     }, refused);
   } catch {
     refused();
