@@ -65,7 +65,7 @@ field-noise = Standardabweichung des Strommessrauschens
 field-seed = Rausch-Startwert
 # The simulated motor's parameters, the plant's; the model's, what the controller and the observer
 # assume, read the same.
-field-motor = Motor von Strecke und Modell zugleich, samt Nennstrom: der Motor des Artikels (paper), 2.2kw, 3.7kw oder 15kw (docs/model-and-paper.md nennt ihre Quellen); jeder ihrer Werte lässt sich auf beiden Seiten weiterhin ändern
+field-motor = Motor von Strecke und Modell zugleich, samt Nennstrom
 field-plant-rs = Statorwiderstand Rs
 field-plant-rr = Rotorwiderstand Rr
 field-plant-m = Gegeninduktivität M

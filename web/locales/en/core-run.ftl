@@ -66,7 +66,7 @@ field-noise = current-measurement noise std
 field-seed = noise seed
 # The simulated motor's parameters, the plant's; the model's, what the controller and the observer
 # assume, read the same.
-field-motor = motor of the plant and the model together, and its rated current: the paper's motor (paper), 2.2kw, 3.7kw or 15kw (docs/model-and-paper.md gives their sources); any of their values can still be changed on either side
+field-motor = motor of the plant and the model together, with its rated current
 field-plant-rs = stator resistance Rs
 field-plant-rr = rotor resistance Rr
 field-plant-m = mutual inductance M

@@ -66,7 +66,7 @@ field-noise = desviación típica del ruido de medida de corriente
 field-seed = semilla del ruido
 # Los parámetros del motor simulado, los de la planta; los del modelo, lo que suponen el
 # controlador y el observador, se leen igual.
-field-motor = motor de la planta y del modelo a la vez, con su corriente nominal: el motor del artículo (paper), 2.2kw, 3.7kw o 15kw (docs/model-and-paper.md da sus fuentes); cualquiera de sus valores se puede seguir cambiando en cada lado
+field-motor = motor de la planta y del modelo a la vez, con su corriente nominal
 field-plant-rs = resistencia estatórica Rs
 field-plant-rr = resistencia rotórica Rr
 field-plant-m = inductancia mutua M

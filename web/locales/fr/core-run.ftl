@@ -67,7 +67,7 @@ field-noise = écart type du bruit de mesure des courants
 field-seed = graine du bruit
 # Les paramètres du moteur simulé (plant) ; ceux du modèle, que supposent le correcteur et
 # l’observateur, se lisent de même.
-field-motor = moteur simulé et moteur du modèle à la fois, avec son courant nominal : le moteur de l’article (paper), 2.2kw, 3.7kw ou 15kw (docs/model-and-paper.md donne leurs sources) ; chacune de leurs valeurs reste modifiable de part et d’autre
+field-motor = moteur simulé et moteur du modèle à la fois, avec son courant nominal
 field-plant-rs = résistance statorique Rs
 field-plant-rr = résistance rotorique Rr
 field-plant-m = inductance mutuelle M

@@ -59,7 +59,7 @@ field-perfect = 理想オブザーバ：制御器が真の状態を得る（0/1�
 field-noise = 電流測定ノイズの標準偏差
 field-seed = ノイズのシード
 # シミュレーション上の電動機（プラント）のパラメータ。モデルのもの（制御器とオブザーバの想定）も同じ文言。
-field-motor = プラントとモデルの電動機をまとめて選び、その定格電流も設定します：論文の電動機（paper）、2.2kw、3.7kw、15kw（出典は docs/model-and-paper.md）。どちらの側の値も個別に変更できます
+field-motor = プラントとモデルの電動機をまとめて選び、その定格電流も設定します
 field-plant-rs = 固定子抵抗 Rs
 field-plant-rr = 回転子抵抗 Rr
 field-plant-m = 相互インダクタンス M

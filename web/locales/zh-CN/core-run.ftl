@@ -63,7 +63,7 @@ field-perfect = 理想观测器：控制器获得真实状态（0/1）
 field-noise = 电流测量噪声标准差
 field-seed = 噪声种子
 # 仿真电机（被控对象）的参数；模型参数（控制器和观测器所假设的）与之同名。
-field-motor = 同时设定被控对象和模型的电机及其额定电流：论文中的电机（paper）、2.2kw、3.7kw 或 15kw（docs/model-and-paper.md 给出其来源）；两侧的任何参数仍可单独修改
+field-motor = 同时设定被控对象和模型的电机及其额定电流
 field-plant-rs = 定子电阻 Rs
 field-plant-rr = 转子电阻 Rr
 field-plant-m = 互感 M
