@@ -12,6 +12,7 @@
 pub mod analysis;
 pub mod challenge;
 pub mod control;
+pub mod design;
 pub mod inverter;
 pub mod model;
 pub mod motors;

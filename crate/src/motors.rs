@@ -56,8 +56,8 @@ pub const MOTORS: &[Motor] = &[
         name: "paper",
         params: MotorParams::PAPER,
         power: f64::NAN,
-        voltage: f64::NAN,
-        frequency: f64::NAN,
+        voltage: crate::scenario::RATED_V,
+        frequency: crate::scenario::RATED_F,
         rating: Rating::Given(crate::scenario::I_RATED),
     },
     // Inverse-Γ values R_s 3.7 Ω, R_R 2.1 Ω, L_σ 0.021 H, L_M 0.224 H: in the T form, the rotor
@@ -102,7 +102,10 @@ impl Motor {
     #[cfg(feature = "english")]
     pub fn source(&self) -> &'static str {
         match self.name {
-            "paper" => "the paper's Section 5, from Khalil et al. (2009); the presets' rating",
+            "paper" => {
+                "the paper's Section 5, from Khalil et al. (2009); the presets' rating, and 400 V, \
+                 50 Hz assumed (the paper gives no nameplate)"
+            }
             "2.2kw" => {
                 "motulator (Aalto University), its 2.2-kW induction machine examples: 400 V, \
                  5 A, 50 Hz, 2.2 kW, inverse-Γ parameters and J"

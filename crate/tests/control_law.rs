@@ -1,6 +1,8 @@
 //! The backstepping law gives the designed error dynamics, checked against the true model.
 
-use imlab::control::{Adapted, Backstepping, ControlInput, Gains, Reference, Terms};
+use imlab::control::{
+    flux_target, Adapted, Backstepping, ControlInput, Gains, RefSample, Reference, Terms,
+};
 use imlab::model::{self, State};
 use imlab::params::{Lumped, MotorParams};
 use imlab::rng::Rng;
@@ -30,6 +32,8 @@ struct Case {
     reference: Reference,
     l: [[f64; 2]; 5],
     psi_d: f64,
+    /// Base speed of the field weakening, or None for a constant flux target.
+    fw: Option<f64>,
 }
 
 impl Case {
@@ -41,7 +45,7 @@ impl Case {
             l: self.l,
             residual: [x[1] - x_hat[1], x[2] - x_hat[2]],
             speed_ref: self.reference.sample(t),
-            psi_d: self.psi_d,
+            psi_d: flux_target(self.psi_d, self.fw, &self.reference.sample(t)),
         };
         self.ctrl.control(&input).expect("flux is away from zero")
     }
@@ -56,6 +60,15 @@ impl Case {
             rate[i] += self.l[i][0] * e2 + self.l[i][1] * e3;
         }
         rate
+    }
+}
+
+/// A constant flux target.
+fn constant(psi_d: f64) -> RefSample {
+    RefSample {
+        value: psi_d,
+        d1: 0.0,
+        d2: 0.0,
     }
 }
 
@@ -110,6 +123,9 @@ fn control_law_gives_the_designed_error_dynamics() {
             },
             l: std::array::from_fn(|_| [sym(2000.0), sym(2000.0)]),
             psi_d: 0.5 + sym(0.2),
+            // Every other case weakens the field from a base speed inside the reference's swing,
+            // so ψ̇_d and ψ̈_d are large where z3 and z4 are judged.
+            fw: (case_no % 2 == 1).then(|| 2.0 + sym(15.0).abs()),
         };
         let x: State = [sym(100.0), sym(10.0), sym(10.0), sym(1.0), sym(1.0)];
         if x[3] * x[3] + x[4] * x[4] < 0.01 {
@@ -150,6 +166,7 @@ fn estimation_errors_break_the_designed_dynamics() {
         reference: Reference::Constant { value: 10.0 },
         l: [[100.0, 0.0]; 5],
         psi_d: 0.5,
+        fw: None,
     };
     let x: State = [10.0, 2.0, 1.0, 0.6, 0.3];
     let x_hat: State = [12.0, 2.1, 0.9, 0.6, 0.3];
@@ -194,7 +211,7 @@ fn step_terms_sum_to_the_applied_law() {
                 offset: 0.0,
             }
             .sample(sym(0.1).abs()),
-            psi_d: 0.5,
+            psi_d: constant(0.5),
         };
         let t = ctrl.control(&input).unwrap();
         assert_eq!(t.v1, t.v1a + t.v1s);
@@ -231,7 +248,7 @@ fn zero_flux_estimate_is_an_error_not_nan() {
         l: [[0.0; 2]; 5],
         residual: [0.0; 2],
         speed_ref: Reference::Constant { value: 0.0 }.sample(0.0),
-        psi_d: 0.5,
+        psi_d: constant(0.5),
     };
     let err = ctrl.control(&input).unwrap_err();
     assert!(err.to_string().contains("singular"), "{err}");
@@ -278,7 +295,7 @@ fn load_state_departure(d_a2_factor: f64) -> f64 {
                 l,
                 residual: [e2, e3],
                 speed_ref: reference.sample(t),
-                psi_d,
+                psi_d: constant(psi_d),
             };
             let adapted = Adapted {
                 model: Lumped { a2: a2_hat, ..base },

@@ -76,8 +76,9 @@ pub struct ControlInput {
     pub residual: [f64; 2],
     /// Speed reference and its derivatives.
     pub speed_ref: RefSample,
-    /// Flux target ψ_d for x̂4² + x̂5² (Wb²); constant, so its derivatives are zero.
-    pub psi_d: f64,
+    /// Flux target ψ_d for x̂4² + x̂5² (Wb²) and its time derivatives, zero unless the field
+    /// weakens above base speed.
+    pub psi_d: RefSample,
 }
 
 /// Parameters the observer adapts: the controller uses them in place of its model's.
@@ -110,7 +111,7 @@ pub struct Terms {
     pub v2s: f64,
     /// Virtual control v3 = v3a + v3s (Wb²/s), eq (45).
     pub v3: f64,
-    /// Feedforward v3a = −ψ3.
+    /// Feedforward v3a = −ψ3 + ψ̇_d (ψ̇_d = 0 for a constant target).
     pub v3a: f64,
     /// Feedback v3s = −k3 z3.
     pub v3s: f64,
@@ -124,7 +125,7 @@ pub struct Terms {
     pub psi2: f64,
     /// ψ3 of eq (43).
     pub psi3: f64,
-    /// ψ4 of eq (47).
+    /// ψ4 of eq (47), less ψ̈_d for a moving target.
     pub psi4: f64,
     /// Estimated torque term a1(x3·x̂4 − x2·x̂5) that tracks v1 (rad/s²).
     pub torque: f64,
@@ -397,7 +398,9 @@ impl Backstepping {
         // Step 3, flux outer loop: eqs (42)–(46).
         let psi3 = -2.0 * p.a8 * flux_sq - 2.0 * p.a10 * (e2 * x4h + e3 * x5h)
             + 2.0 * (x4h * si[3] + x5h * si[4]);
-        let v3a = -psi3;
+        // With a moving target, ż3 gains −ψ̇_d, which v3a takes up (a constant target adds 0.0,
+        // which leaves every bit as it was).
+        let v3a = -(psi3 - input.psi_d.d1);
         let v3s = -g.k3 * z3;
         let v3 = chosen(custom, 3, s.all(), v3a + v3s)?;
         let z4 = 2.0 * p.a10 * (x2 * x4h + x3 * x5h) - v3;
@@ -413,7 +416,8 @@ impl Backstepping {
             + 2.0 * (l[3][1] * x4h + l[4][1] * x5h) * de3
             + 2.0 * (si[3] + p.a10 * x2h - 2.0 * p.a8 * x4h) * dx4h
             + 2.0 * (si[4] + p.a10 * x3h - 2.0 * p.a8 * x5h) * dx5h
-            + g.k3 * (-g.k3 * z3 + z4);
+            + g.k3 * (-g.k3 * z3 + z4)
+            - input.psi_d.d2;
         let v4a = -psi4 - z3;
         let v4s2 = if g.robust {
             -g.h4 * g.h4 / (4.0 * g.eps4) * z4
@@ -493,7 +497,7 @@ impl Shared {
         let k1s1 = g.k1 - p.a3;
         let k2s1 = g.k2 - p.a7 - p.a8;
         let z1 = x1h - input.speed_ref.value;
-        let z3 = flux_sq - input.psi_d;
+        let z3 = flux_sq - input.psi_d.value;
         // x̂̇4, x̂̇5 of the observer (4).
         let dx4h = -p.a8 * x4h - p.a9 * x1h * x5h + p.a10 * x2h + si[3];
         let dx5h = -p.a8 * x5h + p.a9 * x1h * x4h + p.a10 * x3h + si[4];
@@ -545,7 +549,7 @@ fn gather<S: Signals>(
         (sig!("wd"), r.value),
         (sig!("dwd"), r.d1),
         (sig!("ddwd"), r.d2),
-        (sig!("psi_d"), input.psi_d),
+        (sig!("psi_d"), input.psi_d.value),
         (sig!("a1"), p.a1),
         (sig!("a2"), p.a2),
         (sig!("a3"), p.a3),

@@ -27,8 +27,8 @@ pub struct Sample<'a> {
     pub extra_load: f64,
     /// The speed reference and its derivatives.
     pub speed_ref: RefSample,
-    /// The flux target ψ_d (Wb²).
-    pub psi_d: f64,
+    /// The flux target ψ_d (Wb²) and its time derivatives.
+    pub psi_d: RefSample,
 }
 
 /// The rates of the observer (4): the model with the estimates, the measured currents `y` in the
@@ -186,7 +186,11 @@ mod tests {
             l: d.l,
             extra_load,
             speed_ref: d.r,
-            psi_d: 0.5,
+            psi_d: RefSample {
+                value: 0.5,
+                d1: 0.0,
+                d2: 0.0,
+            },
         };
         disturbances(&controller, &sample).unwrap()
     }

@@ -13,6 +13,7 @@ macro_rules! sig {
 mod backstepping;
 mod chain;
 mod disturbance;
+mod flux;
 pub mod formula;
 mod ifoc;
 pub mod law;
@@ -24,6 +25,7 @@ pub use backstepping::{
     Terms,
 };
 pub use disturbance::{disturbances, Sample};
+pub use flux::flux_target;
 pub use ifoc::{Ifoc, IfocTuning};
 pub use reference::{RefSample, Reference};
 pub use stability::LyapunovBound;

@@ -41,6 +41,18 @@ pub enum Reference {
         /// Plateau duration (s).
         hold: f64,
     },
+    /// Reversal: 0 until `start`, up at `slope` to `level`, hold for `hold`, then down at `slope`
+    /// through zero to −`level`, held to the end.
+    Reversal {
+        /// Time the run-up starts (s).
+        start: f64,
+        /// Speed reversed, |ω_d| before and after the reversal (rad/s).
+        level: f64,
+        /// Magnitude of the slopes (rad/s²).
+        slope: f64,
+        /// Time at `level` before the reversal (s).
+        hold: f64,
+    },
 }
 
 /// ω_d(t) and its first two derivatives.
@@ -62,6 +74,7 @@ impl Reference {
             Reference::Sine { .. } => "sine",
             Reference::Step { .. } => "step",
             Reference::Ramp { .. } => "ramp",
+            Reference::Reversal { .. } => "reversal",
         }
     }
 
@@ -116,6 +129,28 @@ impl Reference {
                 };
                 RefSample { value, d1, d2: 0.0 }
             }
+            Reference::Reversal {
+                start,
+                level,
+                slope,
+                hold,
+            } => {
+                let rise = level.abs() / slope;
+                let dir = level.signum() * slope;
+                let (t1, t2, t3) = (start + rise, start + rise + hold, start + 3.0 * rise + hold);
+                let (value, d1) = if t < start {
+                    (0.0, 0.0)
+                } else if t < t1 {
+                    (dir * (t - start), dir)
+                } else if t < t2 {
+                    (level, 0.0)
+                } else if t < t3 {
+                    (level - dir * (t - t2), -dir)
+                } else {
+                    (-level, 0.0)
+                };
+                RefSample { value, d1, d2: 0.0 }
+            }
         }
     }
 }
@@ -167,6 +202,29 @@ mod tests {
             hold: 0.1,
         };
         check_derivatives(ramp, &[0.01, 0.1, 0.35, 0.5, 0.68]);
+        let reversal = Reference::Reversal {
+            start: 0.05,
+            level: 100.0,
+            slope: 400.0,
+            hold: 0.1,
+        };
+        check_derivatives(reversal, &[0.01, 0.1, 0.35, 0.5, 0.68, 0.95]);
+    }
+
+    #[test]
+    fn a_reversal_crosses_zero_at_its_slope_and_holds_the_opposite_speed() {
+        let r = Reference::Reversal {
+            start: 0.05,
+            level: 100.0,
+            slope: 400.0,
+            hold: 0.1,
+        };
+        // Up by 0.3 s, held to 0.4 s, through zero at 0.65 s, at −100 rad/s from 0.9 s on.
+        assert_eq!(r.sample(0.35).value, 100.0);
+        assert!(r.sample(0.65).value.abs() < 1e-9);
+        assert_eq!(r.sample(0.65).d1, -400.0);
+        assert_eq!(r.sample(0.95).value, -100.0);
+        assert_eq!(r.sample(5.0).value, -100.0);
     }
 
     #[test]

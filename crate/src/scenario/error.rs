@@ -83,6 +83,18 @@ pub enum ScenarioError {
         /// Its length (bytes).
         bytes: usize,
     },
+    /// A field that cannot be used with another setting of the scenario.
+    Refused {
+        /// The field.
+        key: &'static str,
+        /// Why.
+        why: Message,
+    },
+    /// No design follows from the motor's data (`design=derived`).
+    Design {
+        /// Why.
+        error: crate::design::DesignError,
+    },
     /// A run that would need more steps or memory than allowed.
     TooLarge {
         /// What was too large and the limit.
@@ -137,6 +149,10 @@ impl ScenarioError {
             Physics { which, error } => Message::new("scenario-physics")
                 .text("which", *which)
                 .said("error", error.message()),
+            Refused { key, why } => Message::new("scenario-refused")
+                .text("key", *key)
+                .said("why", why.clone()),
+            Design { error } => Message::new("scenario-design").said("why", error.message()),
             BadFormula { key, error } => Message::new("scenario-bad-formula")
                 .text("key", *key)
                 .said("error", error.message()),
@@ -160,7 +176,7 @@ impl ScenarioError {
     pub fn key(&self) -> Option<&str> {
         use ScenarioError::*;
         match self {
-            Missing { key } | BadFormula { key, .. } => Some(key),
+            Missing { key } | BadFormula { key, .. } | Refused { key, .. } => Some(key),
             UnknownKey { key }
             | DuplicateKey { key }
             | BadValue { key, .. }
@@ -168,6 +184,7 @@ impl ScenarioError {
             | NotApplicable { key, .. } => Some(key),
             UnsupportedVersion { .. } => Some("v"),
             UnknownPreset { .. } => Some("preset"),
+            Design { .. } => Some("design"),
             Malformed { .. } | Physics { .. } | TooLong { .. } | TooLarge { .. } => None,
         }
     }

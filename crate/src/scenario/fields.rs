@@ -1,13 +1,13 @@
 //! The field table of the codec, written once: each field's key, group, unit, allowed values
 //! and place in [`Scenario`]; its meaning is its message `field-KEY` of `core-run.ftl`.
 
+use super::origin::{resets, set_design, set_motor};
 use super::presets::default_reference;
-use super::{ControllerKind, Scenario, ScenarioError};
+use super::{ControllerKind, DesignKind, Scenario, ScenarioError, Start};
 use crate::control::Reference;
 use crate::inverter::Shape;
 use crate::motors::{motor, MOTOR_NAMES};
 use crate::observer::Predictor;
-use crate::params::MotorParams;
 use crate::text::percent::{self, Plus};
 use crate::text::Message;
 use serde::Serialize;
@@ -160,6 +160,12 @@ pub(super) fn idle_because(key: &str, s: &Scenario) -> Option<String> {
             s.drive.vlimit == Shape::Box && !s.drive.pwm,
             "vlimit=box, pwm=0",
         )
+    } else if key == "fw" {
+        reason(ifoc, "controller=ifoc")
+    } else if key == "fw.base" {
+        reason(ifoc, "controller=ifoc").or(reason(!s.fw, "fw=0"))
+    } else if matches!(key, "rated.v" | "rated.f") {
+        reason(s.design == DesignKind::Paper, "design=paper")
     } else if key == "delay.comp" {
         reason(ifoc, "controller=ifoc").or(reason(!s.drive.delay, "delay=0"))
     } else {
@@ -335,36 +341,6 @@ pub(crate) fn decode_formula(text: &str) -> Option<String> {
     percent::decode(text, Plus::Plus)
 }
 
-/// The fields [`set_motor`] sets: each side's circuit and inertia, and the rating.
-const MOTOR_SET: &[&str] = &[
-    "plant.rs", "plant.rr", "plant.m", "plant.ls", "plant.lr", "plant.j", "plant.np", "model.rs",
-    "model.rr", "model.m", "model.ls", "model.lr", "model.j", "model.np", "i_rated",
-];
-
-/// The fields a new value of field `key` sets afresh (see [`FieldInfo::resets`]).
-fn resets(key: &str) -> &'static [&'static str] {
-    if key == "motor" {
-        MOTOR_SET
-    } else {
-        &[]
-    }
-}
-
-/// Sets the plant and the model to library motor `name` (their load, T_0 and C_f, kept), and the
-/// rated current to its rating.
-pub(super) fn set_motor(s: &mut Scenario, name: &str) {
-    let m = motor(name).expect("checked option");
-    for side in [&mut s.plant, &mut s.model] {
-        *side = MotorParams {
-            t0: side.t0,
-            cf: side.cf,
-            ..m.params
-        };
-    }
-    s.i_rated = m.rated_current().0;
-    s.motor = m.name.to_string();
-}
-
 fn set_reference(s: &mut Scenario, name: &str) {
     // Keep the parameters when the kind does not change.
     if s.reference.kind() != name {
@@ -377,8 +353,13 @@ fn set_reference(s: &mut Scenario, name: &str) {
 #[rustfmt::skip]
 fn table() -> Vec<Field> {
     let mut v = vec![
+        choice("design", "gains", Access::Choice {
+            options: &["paper", "derived"],
+            get: |s| match s.design { DesignKind::Paper => "paper", DesignKind::Derived => "derived" },
+            set: set_design,
+        }),
         choice("ref", "reference", Access::Choice {
-            options: &["constant", "sine", "step", "ramp"], get: |s| s.reference.kind(), set: set_reference,
+            options: &["constant", "sine", "step", "ramp", "reversal"], get: |s| s.reference.kind(), set: set_reference,
         }),
         number("ref.value", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Constant.value)),
         number("sine.amp", "reference", "rad/s", closed(0.0, 1000.0), reference!(Sine.amp)),
@@ -391,7 +372,13 @@ fn table() -> Vec<Field> {
         number("ramp.level", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Ramp.level)),
         number("ramp.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Ramp.slope)),
         number("ramp.hold", "reference", "s", closed(0.0, 10.0), reference!(Ramp.hold)),
+        number("rev.start", "reference", "s", closed(0.0, 10.0), reference!(Reversal.start)),
+        number("rev.level", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Reversal.level)),
+        number("rev.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Reversal.slope)),
+        number("rev.hold", "reference", "s", closed(0.0, 10.0), reference!(Reversal.hold)),
         number("psi_d", "reference", "Wb²", above(0.0, 4.0), at!(psi_d)),
+        number("fw", "reference", "", whole(0.0, 1.0), flag!(fw)),
+        number("fw.base", "reference", "rad/s", above(0.0, 1e4), at!(fw_base)),
         number("k1", "gains", "1/s", above(0.0, 1e6), at!(gains.k1)),
         number("k2", "gains", "1/s", above(0.0, 1e6), at!(gains.k2)),
         number("k3", "gains", "1/s", above(0.0, 1e6), at!(gains.k3)),
@@ -432,6 +419,11 @@ fn table() -> Vec<Field> {
         number("ekf.q_rr", "observer", "Ω²/s", above(0.0, 1e6), at!(ekf.q_rr)),
         number("ekf.rr_std", "observer", "Ω", above(0.0, 1000.0), at!(ekf.rr_std)),
         number("init_err", "observer", "", closed(0.0, 1.0), at!(init_error)),
+        choice("start", "observer", Access::Choice {
+            options: &["paper", "magnetized"],
+            get: |s| match s.start { Start::Paper => "paper", Start::Magnetized => "magnetized" },
+            set: |s, name| s.start = if name == "magnetized" { Start::Magnetized } else { Start::Paper },
+        }),
         number("perfect", "observer", "", whole(0.0, 1.0), flag!(perfect)),
         number("noise", "noise", "A", closed(0.0, 10.0), at!(noise)),
         number("seed", "noise", "", whole(0.0, MAX_SEED as f64), at!(seed)),
@@ -449,6 +441,8 @@ fn table() -> Vec<Field> {
         number("ts", "limits", "s", closed(1e-7, 1e-2), at!(ts)),
         number("substeps", "limits", "", whole(1.0, 1000.0), at!(substeps)),
         number("i_rated", "limits", "A", above(0.0, 1e4), at!(i_rated)),
+        number("rated.v", "limits", "V", above(0.0, 1e5), at!(rated_v)),
+        number("rated.f", "limits", "Hz", above(0.0, 1e4), at!(rated_f)),
         number("delay", "drive", "", whole(0.0, 1.0), flag!(drive.delay)),
         number("delay.comp", "drive", "", whole(0.0, 1.0), flag!(drive.delay_comp)),
         choice("vlimit", "drive", Access::Choice {
@@ -637,7 +631,7 @@ impl Field {
                 _ => self.get(s),
             },
             acts: idle_because(self.key, s).is_none(),
-            resets: resets(self.key),
+            resets: resets(self.key, s),
         }
     }
 }

@@ -7,14 +7,16 @@
 
 mod error;
 mod fields;
+mod origin;
 mod presets;
 mod validate;
 
 pub use error::ScenarioError;
+pub use origin::{DesignKind, Start, DESIGN_SET};
 
 pub(crate) use fields::parse_number;
 pub use fields::{FieldInfo, MAX_DURATION, MAX_SEED};
-pub use presets::{preset, Preset, I_RATED, PRESETS};
+pub use presets::{preset, Preset, I_RATED, PRESETS, RATED_F, RATED_V};
 pub use validate::{MAX_LAW_WORK, MAX_STEPS, MAX_WORK};
 
 use crate::control::{Gains, IfocTuning, Reference};
@@ -80,8 +82,21 @@ pub struct Scenario {
     pub motor: String,
     /// Speed reference ω_d(t).
     pub reference: Reference,
-    /// Flux target ψ_d for φ_ra² + φ_rb² (Wb²).
+    /// Where the controller's and observer's settings come from.
+    #[serde(default)]
+    pub design: DesignKind,
+    /// Flux target ψ_d for φ_ra² + φ_rb² (Wb²), below base speed with field weakening.
     pub psi_d: f64,
+    /// Field weakening: the flux target falls as (base/ω_d)² above base speed (see
+    /// [`crate::control::flux_target`]).
+    #[serde(default)]
+    pub fw: bool,
+    /// Base speed of the field weakening (rad/s).
+    #[serde(default = "default_fw_base")]
+    pub fw_base: f64,
+    /// The state the motor starts from.
+    #[serde(default)]
+    pub start: Start,
     /// Parameters of the simulated motor.
     pub plant: MotorParams,
     /// Parameters the observer and controller assume.
@@ -117,10 +132,28 @@ pub struct Scenario {
     /// Rated stator current of the motor: the amplitude of its rated phase current, which is
     /// |i_s| at rated load in the amplitude-invariant a–b frame (A).
     pub i_rated: f64,
+    /// Rated line-to-line voltage (V rms), which the derived design reads.
+    #[serde(default = "default_rated_v")]
+    pub rated_v: f64,
+    /// Rated frequency (Hz), which the derived design reads.
+    #[serde(default = "default_rated_f")]
+    pub rated_f: f64,
     /// The backstepping steps' own laws, v1..v4 as formulas (None: the paper's law), see
     /// [`crate::control::law`].
     #[serde(default)]
     pub law: [Option<String>; 4],
+}
+
+fn default_fw_base() -> f64 {
+    presets::FW_BASE
+}
+
+fn default_rated_v() -> f64 {
+    presets::RATED_V
+}
+
+fn default_rated_f() -> f64 {
+    presets::RATED_F
 }
 
 impl Scenario {
@@ -203,18 +236,31 @@ impl Scenario {
         // Apply in field order so `ref=` (which resets the reference parameters) comes first.
         // Strictly, cross-field checks wait for the whole scenario (so no order of fields matters);
         // leniently, each field must leave a valid scenario, so a bad one can be singled out.
+        let mut given = std::collections::HashSet::new();
         for field in fields() {
             if let Some(value) = pairs.get(field.key) {
                 if !lenient {
                     field.set(&mut s, value)?;
+                    given.insert(field.key);
                     continue;
                 }
                 let mut trial = s.clone();
                 match field.set(&mut trial, value).and_then(|()| trial.validate()) {
-                    Ok(()) => s = trial,
+                    Ok(()) => {
+                        s = trial;
+                        given.insert(field.key);
+                    }
                     Err(e) => note(e)?,
                 }
             }
+        }
+        // The derived design, from the motor, rating and sampling the link ends with, for every
+        // setting of the design the link does not give.
+        if s.design == DesignKind::Derived {
+            let derived = s
+                .derived()
+                .map_err(|error| ScenarioError::Design { error })?;
+            origin::apply_design(&mut s, &derived, &|key| given.contains(key));
         }
         s.validate()?;
         Ok((s, errors))
@@ -270,12 +316,19 @@ impl Scenario {
         }
         // After `motor=`, the plant, the model and the rating differ from that motor's values.
         if base.motor != self.motor {
-            fields::set_motor(&mut base, &self.motor);
+            origin::set_motor(&mut base, &self.motor);
+        }
+        // With the derived design, its settings differ from the preset's: they are read against
+        // the design this scenario's motor, rating and sampling give.
+        if self.design == DesignKind::Derived {
+            if let Ok(derived) = self.derived() {
+                origin::apply_design(&mut base, &derived, &|_| false);
+            }
         }
         fields()
             .iter()
             .filter_map(|field| {
-                let switch = matches!(field.key, "ref" | "motor");
+                let switch = matches!(field.key, "ref" | "motor" | "design");
                 let theirs = field.get(if switch { &original } else { &base });
                 field
                     .get(self)

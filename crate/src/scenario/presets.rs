@@ -1,6 +1,6 @@
 //! The presets: the paper's figures and the scenarios the lessons use, each a [`Scenario`].
 
-use super::{ControllerKind, Drive, LoadStep, Scenario};
+use super::{ControllerKind, DesignKind, Drive, LoadStep, Scenario, Start};
 use crate::control::{Gains, IfocTuning, Reference};
 use crate::inverter::Shape;
 use crate::observer::{EkfConfig, Predictor};
@@ -63,6 +63,15 @@ const RR_STD: f64 = 0.5;
 /// gives 7.7 N m; at the model's slip for that current (25.5 rad/s electrical, 8.1 % at 50 Hz,
 /// 1378 rpm) that is 1.12 kW, at the low end of that class.
 pub const I_RATED: f64 = 4.0;
+/// Rated voltage (V rms, line to line) and frequency (Hz) the derived design reads for the
+/// paper's motor, which has no nameplate: the 400 V of its voltage limit, at 50 Hz, the class
+/// its rating above is drawn from.
+pub const RATED_V: f64 = 400.0;
+/// See [`RATED_V`].
+pub const RATED_F: f64 = 50.0;
+/// Base speed the field-weakening setting shows while it is off (rad/s): the paper's motor's
+/// synchronous speed at 50 Hz.
+pub const FW_BASE: f64 = 50.0 * std::f64::consts::PI;
 
 fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
     Scenario {
@@ -123,6 +132,12 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
             pwm: false,
         },
         i_rated: I_RATED,
+        rated_v: RATED_V,
+        rated_f: RATED_F,
+        design: DesignKind::Paper,
+        fw: false,
+        fw_base: FW_BASE,
+        start: Start::Paper,
         law: Default::default(),
     }
 }
@@ -245,6 +260,12 @@ pub(super) fn default_reference(kind: &str) -> Option<Reference> {
         "sine" => SINE200,
         "step" => STEP,
         "ramp" => Reference::Ramp {
+            start: 0.05,
+            level: 100.0,
+            slope: 400.0,
+            hold: 0.10,
+        },
+        "reversal" => Reference::Reversal {
             start: 0.05,
             level: 100.0,
             slope: 400.0,

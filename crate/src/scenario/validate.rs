@@ -54,6 +54,15 @@ impl Scenario {
                 name: self.preset.clone(),
             });
         }
+        // An own law of step 3 or 4 is a formula of constant ψ_d: it has no ψ̇_d or ψ̈_d to read.
+        if self.fw && self.controller == ControllerKind::Backstepping {
+            if let Some(step) = [2, 3].into_iter().find(|&i| self.law[i].is_some()) {
+                return Err(ScenarioError::Refused {
+                    key: ["law.v3", "law.v4"][step - 2],
+                    why: Message::new("scenario-law-fw"),
+                });
+            }
+        }
         for field in fields() {
             if let Access::Number { get, .. } = field.access {
                 if let Some(v) = get(self) {

@@ -183,8 +183,8 @@ const ESTIMATE_NAMES: [&str; 5] = [
 ];
 
 impl Loop {
-    /// The loop of `scenario` and its state before the first sample. Section 5: x(0) =
-    /// [ω_d(0), 2, 2, 0.5, 0.5]; x̂(0) = (1 − e)·x(0); P0 = diag((e·x(0))²) + Q.
+    /// The loop of `scenario` and its state before the first sample: x(0) its start state (Section
+    /// 5's [ω_d(0), 2, 2, 0.5, 0.5] in the presets); x̂(0) = (1 − e)·x(0); P0 = diag((e·x(0))²) + Q.
     pub(super) fn new(scenario: &Scenario) -> Result<(Loop, LoopState), ScenarioError> {
         let plant = scenario
             .plant
@@ -200,7 +200,7 @@ impl Loop {
                 which: "model",
                 error,
             })?;
-        let x0 = [scenario.reference.sample(0.0).value, 2.0, 2.0, 0.5, 0.5];
+        let x0 = scenario.start_state();
         let e = scenario.init_error;
         let (x0_hat, p0_std) = (x0.map(|v| (1.0 - e) * v), x0.map(|v| e * v));
         let (m, ts, cfg) = (&scenario.model, scenario.ts, &scenario.ekf);
@@ -332,7 +332,7 @@ impl Loop {
             l,
             extra_load: self.load_step(row.t) / self.plant.j,
             speed_ref: s.reference.sample(row.t),
-            psi_d: s.psi_d,
+            psi_d: s.flux_target(&s.reference.sample(row.t)),
         };
         control::disturbances(&self.controller, &sample).unwrap_or([f64::NAN; 2])
     }
@@ -514,7 +514,7 @@ impl Loop {
                 l,
                 residual: [0.0; 2],
                 speed_ref: s.reference.sample((st.k + 1) as f64 * s.ts),
-                psi_d: s.psi_d,
+                psi_d: s.flux_target(&s.reference.sample((st.k + 1) as f64 * s.ts)),
             }
         } else if s.perfect {
             ControlInput {
@@ -523,7 +523,7 @@ impl Loop {
                 l,
                 residual: [0.0; 2],
                 speed_ref: *speed_ref,
-                psi_d: s.psi_d,
+                psi_d: s.flux_target(speed_ref),
             }
         } else {
             ControlInput {
@@ -532,7 +532,7 @@ impl Loop {
                 l,
                 residual: observed.residual,
                 speed_ref: *speed_ref,
-                psi_d: s.psi_d,
+                psi_d: s.flux_target(speed_ref),
             }
         }
     }
@@ -628,7 +628,7 @@ impl Loop {
             y_b: y[1],
             flux,
             flux_hat: flux_sq_hat.sqrt(),
-            flux_ref: s.psi_d.sqrt(),
+            flux_ref: s.flux_target(speed_ref).value.sqrt(),
             omega_err: x[0] - speed_ref.value,
             omega_est_err: x[0] - x_hat[0],
             flux_est_err: flux - flux_sq_hat.sqrt(),

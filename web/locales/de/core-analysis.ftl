@@ -27,3 +27,27 @@ map-runs-many = Die Karte braucht { $runs } Läufe ({ $cells } Zellen × { $seed
 map-cell-refused = { $key }={ $value }: { $reason }
 map-work = Die Karte braucht { $work } Schritte der Strecke ({ $cells } Zellen × { $seeds } Startwerte × die Schritte eines Laufs), mehr als die zulässigen { $max }; verwenden Sie weniger Punkte oder Startwerte oder eine kürzere 'duration'
 map-law-work = Die eigenen Regelgesetze der Karte brauchen { $work } Operationen ({ $cells } Zellen × { $seeds } Startwerte × bis zu { $per-run } je Lauf), mehr als die zulässigen { $max }; verwenden Sie höchstens { $runs } Läufe (Zellen × Startwerte), eine kürzere 'duration' oder Regelgesetze mit weniger Operationen
+
+## Der abgeleitete Entwurf (design=derived): die Regel hinter jedem Wert, mit ihrer Begründung.
+# $voltage: verkettete Nennspannung (V effektiv); $frequency: Nennfrequenz (Hz).
+design-rule-vdc = √2 × { $voltage } V, die gleichgerichtete Netzspannung; vlimit=circle, die Spannungsgrenze ist also die Amplitude vdc/√3 der Nennphasenspannung
+design-rule-flux = der Rotorfluss bei { $voltage } V, { $frequency } Hz und Leerlauf, M·V/|Rs + jωLs|: die eigene Magnetisierung des Motors
+design-rule-flux-capped = begrenzt auf M·i_rated/√2 (der Leerlauffluss bei { $voltage } V, { $frequency } Hz verlangt mehr): Der Magnetisierungsstrom lässt die Hälfte von i_rated² für das Drehmoment
+design-rule-psi = das Quadrat des Flusses, das Ziel für φa² + φb²
+design-rule-id = Magnetisierungsstrom, flux/M
+# $i_rated: die Amplitude des Nennstroms (A).
+design-rule-iq = momentbildender Strom, √({ $i_rated }² − i_d²): der Rest des Nennstroms
+design-rule-torque = Drehmoment bei Nennstrom und Nennfluss, (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = Nennbeschleunigung, torque/J: die Steigung der Reversierung, die der Motor mit Nennstrom schafft
+# $share: Prozent der Spannungsgrenze.
+design-rule-base = Eckdrehzahl: Nennfluss und momentbildender Nennstrom brauchen dort stationär { $share } % der Spannungsgrenze; darüber senkt fw=1 den Fluss wie base/ω und hält so die induzierte Gegenspannung, und der Rest der Spannung ist die Reserve der Stromregelkreise
+# $kts: k·Ts; $share: Prozent der Spannungsgrenze; $sigma: Streuinduktivität σ (H).
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts: Jeder Fehler darf je Abtastschritt um das { $kts }-Fache seiner selbst sinken, wie die 1200/s des Artikels bei 20 kHz; die Spannungsschranke, { $share } % der Grenze durch σ·i_rated (σ = { $sigma } H), liegt höher
+design-rule-gain-voltage = k2 = k3 = k4 = { $share } % der Spannungsgrenze durch σ·i_rated (σ = { $sigma } H): Einen Fehler in Höhe des Nennstroms mit dieser Rate abzubauen, verlangt ein Viertel der Spannung; die Abtastschranke { $kts }/Ts liegt höher
+# $ratio: k1 durch k2.
+design-rule-k1 = k1 = { $ratio } × k2: Der Drehzahlregelkreis ist langsamer als der Strom, den er vorgibt
+design-rule-q = Prozessrauschen: Das Modell ist der Motor und wird wie die Strecke integriert, also ist Q nur eine Untergrenze, die die Verstärkung des Filters am Leben hält; mit den 1e-3 des Artikels läge der NIS dieser Motoren unter seinem Band
+design-rule-r = das Rauschen des Stromsensors: R entspricht ihm
+# $time: Sekunden.
+design-rule-q-load = torque²/{ $time } s: Die Last darf sich in { $time } s um ihr Nennmoment ändern
+design-rule-load-std = torque/4: Die Last ist anfangs bis auf ein Viertel des Nennmoments unbekannt

@@ -15,6 +15,7 @@ time-s = { $s } s
 
 # (0/1) marks a switch: 0 off, 1 on.
 
+field-design = Entwurf: paper (Artikel, eingestellte Werte) oder derived (aus den Motordaten)
 field-ref = Art des Drehzahlsollwerts
 field-ref-value = konstante Drehzahl
 field-sine-amp = Amplitude des Sinus
@@ -27,7 +28,13 @@ field-ramp-start = Startzeitpunkt der Rampe
 field-ramp-level = Plateauwert der Rampe
 field-ramp-slope = Betrag der Rampensteigung
 field-ramp-hold = Dauer des Plateaus
+field-rev-start = Hochlaufbeginn der Reversierung
+field-rev-level = umgekehrte Drehzahl, +level auf −level
+field-rev-slope = Betrag der Reversiersteigung
+field-rev-hold = Dauer bei +level vor der Umkehr
 field-psi_d = Flussziel für φa² + φb²
+field-fw = Feldschwächung oberhalb der Eckdrehzahl (0/1)
+field-fw-base = Eckdrehzahl der Feldschwächung
 field-k1 = Abklingrate des Drehzahlfehlers k1
 field-k2 = Abklingrate des Drehmomentfehlers k2 = a7 + a8 + k2s1
 field-k3 = Abklingrate des Flussfehlers k3
@@ -60,6 +67,7 @@ field-ekf-rr = Rotorwiderstand R_r als EKF-Zustand schätzen (0/1)
 field-ekf-q_rr = Random-Walk-Intensität des Rotorwiderstands
 field-ekf-rr_std = Anfangsstandardabweichung des R_r-Schätzwerts
 field-init_err = relativer Anfangsfehler der Schätzwerte
+field-start = Anfangszustand: paper (Artikel: 2 A, 2 A, 0,5 Wb, 0,5 Wb) oder magnetized (auf das Flussziel)
 field-perfect = idealer Beobachter: Der Regler erhält den wahren Zustand (0/1)
 field-noise = Standardabweichung des Strommessrauschens
 field-seed = Rausch-Startwert
@@ -91,6 +99,8 @@ field-duration = simulierte Zeit
 field-ts = Abtastzeit Ts
 field-substeps = RK4-Teilschritte der Strecke je Abtastwert
 field-i_rated = Nennstrom: Amplitude |i_s| des Nennphasenstroms
+field-rated-v = Nennspannung, verkettet, effektiv
+field-rated-f = Nennfrequenz
 field-delay = Rechentotzeit: u_k wird einen Abtastschritt später angelegt (0/1)
 field-delay-comp = Totzeitkompensation: Regelung aus der Einschrittprädiktion x̂(k+1|k) (0/1)
 # box, circle and hex are the field's values: keep them as they are.

@@ -26,6 +26,10 @@ scenario-physics = { $which ->
     }: { $error }
 # $error says where and why the formula was refused.
 scenario-bad-formula = Feld '{ $key }': { $error }
+scenario-refused = Feld '{ $key }': { $why }
+scenario-law-fw = Ein eigenes Regelgesetz für Schritt 3 oder 4 ist für ein konstantes Flussziel geschrieben, und fw=1 verschiebt es; schalten Sie fw aus oder lassen Sie das Regelgesetz leer
+scenario-design = Feld 'design' = 'derived': { $why }
+design-no-voltage = Die Nennspannung lässt { $available } V für den stationären Betrieb, Nennfluss mit Nennstrom braucht aber schon im Stillstand { $needed } V
 scenario-too-long = Das Szenario ist { $bytes } Bytes lang, mehr als die zulässigen { $max } Bytes ({ $kib } KiB)
 
 ## Was ein Feld annimmt

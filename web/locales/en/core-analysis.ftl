@@ -39,3 +39,27 @@ map-cell-refused = { $key }={ $value }: { $reason }
 map-work = the map needs { $work } plant steps ({ $cells } cells × { $seeds } seeds × the steps of a run), more than the { $max } allowed; use fewer points or seeds, or a shorter 'duration'
 # $per-run: the operations of the costliest run; $runs: how many such runs fit.
 map-law-work = the map's own laws take { $work } operations ({ $cells } cells × { $seeds } seeds × up to { $per-run } a run), more than the { $max } allowed; use at most { $runs } runs (cells × seeds), a shorter 'duration', or cheaper laws
+
+## The derived design (design=derived): the rule behind each value, with its reason.
+# $voltage: rated line-to-line voltage (V rms); $frequency: rated frequency (Hz).
+design-rule-vdc = √2 × { $voltage } V, the rectified line voltage; vlimit=circle, so the voltage limit is the rated phase voltage's amplitude vdc/√3
+design-rule-flux = the rotor flux at { $voltage } V, { $frequency } Hz and no load, M·V/|Rs + jωLs|: the motor's own magnetisation
+design-rule-flux-capped = capped at M·i_rated/√2 (the no-load flux at { $voltage } V, { $frequency } Hz asks more): the magnetising current leaves half of i_rated² for torque
+design-rule-psi = the square of the flux, the target of φa² + φb²
+design-rule-id = magnetising current, flux/M
+# $i_rated: the rated current amplitude (A).
+design-rule-iq = torque current, √({ $i_rated }² − i_d²): the rest of the rated current
+design-rule-torque = torque at rated current and flux, (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = rated acceleration, torque/J: the slope of the reversal the motor can make at rated current
+# $share: per cent of the voltage limit.
+design-rule-base = base speed: rated flux and rated torque current need { $share } % of the voltage limit in steady state there; above it fw=1 lowers the flux as base/ω, keeping the back-EMF, and the rest of the voltage is the current loops' headroom
+# $kts: k·Ts; $share: per cent of the voltage limit; $sigma: leakage inductance σ (H).
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts: each error may fall by { $kts } of itself a sample, as the paper's 1200/s at 20 kHz; the voltage bound, { $share } % of the limit over σ·i_rated (σ = { $sigma } H), is higher
+design-rule-gain-voltage = k2 = k3 = k4 = { $share } % of the voltage limit over σ·i_rated (σ = { $sigma } H): closing a rated-current error at that rate asks a quarter of the voltage; the sampling bound { $kts }/Ts is higher
+# $ratio: k1 over k2.
+design-rule-k1 = k1 = { $ratio } × k2: the speed loop is slower than the current it commands
+design-rule-q = process noise: the model is the motor, integrated as the plant is, so Q is only a floor that keeps the filter's gain alive; the paper's 1e-3 would hold these motors' NIS below its band
+design-rule-r = the current sensor's noise: R matches it
+# $time: seconds.
+design-rule-q-load = torque²/{ $time } s: the load may move by its rated torque in { $time } s
+design-rule-load-std = torque/4: the load starts unknown to a quarter of the rated torque

@@ -16,6 +16,7 @@ time-s = { $s } s
 
 # (0/1) marks a switch: 0 off, 1 on.
 
+field-design = design: paper (the values set) or derived from the motor's data
 field-ref = speed reference kind
 field-ref-value = constant speed
 field-sine-amp = sine amplitude
@@ -28,7 +29,13 @@ field-ramp-start = ramp start time
 field-ramp-level = ramp plateau level
 field-ramp-slope = ramp slope magnitude
 field-ramp-hold = ramp plateau duration
+field-rev-start = reversal run-up start time
+field-rev-level = speed reversed, +level to −level
+field-rev-slope = reversal slope magnitude
+field-rev-hold = time at +level before reversing
 field-psi_d = flux target for φa² + φb²
+field-fw = field weakening above base speed (0/1)
+field-fw-base = base speed of the field weakening
 field-k1 = speed-error rate k1
 field-k2 = torque-error rate k2 = a7 + a8 + k2s1
 field-k3 = flux-error rate k3
@@ -61,6 +68,7 @@ field-ekf-rr = estimate the rotor resistance R_r as an EKF state (0/1)
 field-ekf-q_rr = random-walk intensity of the rotor resistance
 field-ekf-rr_std = initial standard deviation of the R_r estimate
 field-init_err = initial relative estimation error
+field-start = start state: paper (2 A, 2 A, 0.5 Wb, 0.5 Wb) or magnetized at the flux target
 field-perfect = perfect observer: controller gets the true state (0/1)
 field-noise = current-measurement noise std
 field-seed = noise seed
@@ -92,6 +100,8 @@ field-duration = simulated time
 field-ts = sampling period Ts
 field-substeps = plant RK4 substeps per sample
 field-i_rated = rated current: amplitude |i_s| of the rated phase current
+field-rated-v = rated voltage, line to line rms
+field-rated-f = rated frequency
 field-delay = computation delay: u_k applied one sample later (0/1)
 field-delay-comp = delay compensation: control from the one-step prediction x̂(k+1|k) (0/1)
 # box, circle and hex are the field's values: keep them as they are.

@@ -23,6 +23,10 @@ scenario-physics = { $which } parameters: { $error }
 # $error says where and why the formula was refused (formula-at or another formula-* message of
 # core-law.ftl).
 scenario-bad-formula = field '{ $key }': { $error }
+scenario-refused = field '{ $key }': { $why }
+scenario-law-fw = an own law of step 3 or 4 is written for a constant flux target, and fw=1 moves it; turn fw off or leave the law empty
+scenario-design = field 'design' = 'derived': { $why }
+design-no-voltage = the rated voltage leaves { $available } V for steady operation, and rated flux with rated current needs { $needed } V even at rest
 scenario-too-long = the scenario is { $bytes } bytes long, more than the { $max } bytes ({ $kib } KiB) allowed
 
 ## What a field takes

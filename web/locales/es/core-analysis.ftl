@@ -27,3 +27,27 @@ map-runs-many = el mapa necesita { $runs } ejecuciones ({ $cells } celdas × { $
 map-cell-refused = { $key }={ $value }: { $reason }
 map-work = el mapa necesita { $work } pasos de la planta ({ $cells } celdas × { $seeds } semillas × los pasos de una ejecución), más de los { $max } permitidos; usa menos puntos o semillas, o una 'duration' más corta
 map-law-work = las leyes propias del mapa requieren { $work } operaciones ({ $cells } celdas × { $seeds } semillas × hasta { $per-run } por ejecución), más de las { $max } permitidas; usa como mucho { $runs } ejecuciones (celdas × semillas), una 'duration' más corta o leyes menos costosas
+
+## El diseño derivado (design=derived): la regla detrás de cada valor, con su razón.
+# $voltage: tensión nominal entre líneas (V eficaces); $frequency: frecuencia nominal (Hz).
+design-rule-vdc = √2 × { $voltage } V, la tensión de línea rectificada; vlimit=circle, así que el límite de tensión es la amplitud de la tensión de fase nominal, vdc/√3
+design-rule-flux = el flujo rotórico a { $voltage } V, { $frequency } Hz y en vacío, M·V/|Rs + jωLs|: la magnetización propia del motor
+design-rule-flux-capped = limitado a M·i_rated/√2 (el flujo en vacío a { $voltage } V, { $frequency } Hz pide más): la corriente magnetizante deja la mitad de i_rated² para el par
+design-rule-psi = el cuadrado del flujo, la consigna de φa² + φb²
+design-rule-id = corriente magnetizante, flux/M
+# $i_rated: la amplitud de la corriente nominal (A).
+design-rule-iq = corriente de par, √({ $i_rated }² − i_d²): el resto de la corriente nominal
+design-rule-torque = par a corriente y flujo nominales, (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = aceleración nominal, torque/J: la pendiente de inversión que el motor logra a corriente nominal
+# $share: porcentaje del límite de tensión.
+design-rule-base = velocidad base: el flujo nominal y la corriente de par nominal necesitan ahí el { $share } % del límite de tensión en régimen permanente; por encima, fw=1 reduce el flujo como base/ω, lo que mantiene la fuerza contraelectromotriz, y el resto de la tensión es el margen de los lazos de corriente
+# $kts: k·Ts; $share: porcentaje del límite de tensión; $sigma: inductancia de dispersión σ (H).
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts: cada error puede caer en { $kts } veces su valor por muestra, como los 1200/s del artículo a 20 kHz; la cota de tensión, el { $share } % del límite entre σ·i_rated (σ = { $sigma } H), es mayor
+design-rule-gain-voltage = k2 = k3 = k4 = { $share } % del límite de tensión entre σ·i_rated (σ = { $sigma } H): cerrar a ese ritmo un error del tamaño de la corriente nominal pide una cuarta parte de la tensión; la cota de muestreo { $kts }/Ts es mayor
+# $ratio: k1 entre k2.
+design-rule-k1 = k1 = { $ratio } × k2: el lazo de velocidad es más lento que la corriente que ordena
+design-rule-q = ruido de proceso: el modelo es el motor, integrado como la planta, así que Q es solo un mínimo que mantiene viva la ganancia del filtro; el 1e-3 del artículo dejaría el NIS de estos motores por debajo de su banda
+design-rule-r = el ruido del sensor de corriente: R coincide con él
+# $time: segundos.
+design-rule-q-load = torque²/{ $time } s: la carga puede variar en su par nominal en { $time } s
+design-rule-load-std = torque/4: la carga empieza desconocida hasta un cuarto del par nominal

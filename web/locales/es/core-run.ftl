@@ -16,6 +16,7 @@ time-s = { $s } s
 
 # (0/1) marca un interruptor: 0 desactivado, 1 activado.
 
+field-design = diseño: paper (artículo, valores fijados) o derived (de los datos del motor)
 field-ref = tipo de referencia de velocidad
 field-ref-value = velocidad constante
 field-sine-amp = amplitud del seno
@@ -28,7 +29,13 @@ field-ramp-start = instante de inicio de la rampa
 field-ramp-level = nivel de la meseta de la rampa
 field-ramp-slope = pendiente de la rampa, en valor absoluto
 field-ramp-hold = duración de la meseta de la rampa
+field-rev-start = inicio de la subida de la inversión
+field-rev-level = velocidad invertida, de +level a −level
+field-rev-slope = pendiente de la inversión, en valor absoluto
+field-rev-hold = tiempo en +level antes de invertir
 field-psi_d = consigna de flujo para φa² + φb²
+field-fw = debilitamiento de campo por encima de la velocidad base (0/1)
+field-fw-base = velocidad base del debilitamiento de campo
 field-k1 = tasa del error de velocidad k1
 field-k2 = tasa del error de par k2 = a7 + a8 + k2s1
 field-k3 = tasa del error de flujo k3
@@ -61,6 +68,7 @@ field-ekf-rr = estimar la resistencia rotórica R_r como estado del EKF (0/1)
 field-ekf-q_rr = intensidad del paseo aleatorio de la resistencia rotórica
 field-ekf-rr_std = desviación típica inicial de la estimación de R_r
 field-init_err = error relativo inicial de la estimación
+field-start = estado inicial: paper (2 A, 2 A, 0,5 Wb, 0,5 Wb) o magnetized (en la consigna de flujo)
 field-perfect = observador perfecto: el controlador recibe el estado real (0/1)
 field-noise = desviación típica del ruido de medida de corriente
 field-seed = semilla del ruido
@@ -92,6 +100,8 @@ field-duration = tiempo simulado
 field-ts = periodo de muestreo Ts
 field-substeps = subpasos RK4 de la planta por muestra
 field-i_rated = corriente nominal: amplitud |i_s| de la corriente de fase nominal
+field-rated-v = tensión nominal, eficaz entre líneas
+field-rated-f = frecuencia nominal
 field-delay = retardo de cálculo: u_k se aplica una muestra después (0/1)
 field-delay-comp = compensación del retardo: control a partir de la predicción a un paso x̂(k+1|k) (0/1)
 # box, circle y hex son los valores del campo: se mantienen tal cual.

@@ -26,6 +26,10 @@ scenario-physics = { $which ->
     }: { $error }
 # $error dice dónde y por qué se rechazó la fórmula.
 scenario-bad-formula = campo '{ $key }': { $error }
+scenario-refused = campo '{ $key }': { $why }
+scenario-law-fw = una ley propia del paso 3 o 4 está escrita para una consigna de flujo constante, y fw=1 la mueve; desactiva fw o deja la ley vacía
+scenario-design = campo 'design' = 'derived': { $why }
+design-no-voltage = la tensión nominal deja { $available } V para el régimen permanente, y el flujo nominal con la corriente nominal necesita { $needed } V incluso en reposo
 scenario-too-long = el escenario ocupa { $bytes } bytes, más de los { $max } bytes ({ $kib } KiB) permitidos
 
 ## What a field takes

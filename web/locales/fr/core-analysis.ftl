@@ -27,3 +27,27 @@ map-runs-many = la carte demande { $runs } simulations ({ $cells } cases × { $s
 map-cell-refused = { $key }={ $value } : { $reason }
 map-work = la carte demande { $work } pas du moteur ({ $cells } cases × { $seeds } graines × les pas d’une simulation), plus que les { $max } autorisés ; utilisez moins de points ou de graines, ou une 'duration' plus courte
 map-law-work = les lois propres de la carte demandent { $work } opérations ({ $cells } cases × { $seeds } graines × jusqu’à { $per-run } par simulation), plus que les { $max } autorisées ; utilisez au plus { $runs } simulations (cases × graines), une 'duration' plus courte ou des lois moins coûteuses
+
+## La conception dérivée (design=derived) : la règle derrière chaque valeur, avec sa raison.
+# $voltage : tension nominale entre phases (V efficaces) ; $frequency : fréquence nominale (Hz).
+design-rule-vdc = √2 × { $voltage } V, la tension de ligne redressée ; vlimit=circle, donc la limite de tension est l’amplitude vdc/√3 de la tension de phase nominale
+design-rule-flux = le flux rotorique à { $voltage } V, { $frequency } Hz et à vide, M·V/|Rs + jωLs| : la magnétisation propre du moteur
+design-rule-flux-capped = plafonné à M·i_rated/√2 (le flux à vide à { $voltage } V, { $frequency } Hz demande plus) : le courant magnétisant laisse la moitié de i_rated² au couple
+design-rule-psi = le carré du flux, la cible de φa² + φb²
+design-rule-id = courant magnétisant, flux/M
+# $i_rated : l’amplitude du courant nominal (A).
+design-rule-iq = courant de couple, √({ $i_rated }² − i_d²) : le reste du courant nominal
+design-rule-torque = couple au courant et au flux nominaux, (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = accélération nominale, torque/J : la pente d’inversion que permet le couple au courant nominal
+# $share : pourcentage de la limite de tension.
+design-rule-base = vitesse de base : le flux nominal et le courant de couple nominal y demandent { $share } % de la limite de tension en régime permanent ; au-delà, fw=1 abaisse le flux comme base/ω, ce qui maintient la force contre-électromotrice, et le reste de la tension est la marge des boucles de courant
+# $kts : k·Ts ; $share : pourcentage de la limite de tension ; $sigma : inductance de fuite σ (H).
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts : chaque erreur peut baisser de { $kts } fois sa valeur par échantillon, comme les 1200/s de l’article à 20 kHz ; la borne en tension, { $share } % de la limite divisés par σ·i_rated (σ = { $sigma } H), est plus haute
+design-rule-gain-voltage = k2 = k3 = k4 = { $share } % de la limite de tension divisés par σ·i_rated (σ = { $sigma } H) : résorber à ce taux une erreur égale au courant nominal demande un quart de la tension ; la borne d’échantillonnage { $kts }/Ts est plus haute
+# $ratio : k1 divisé par k2.
+design-rule-k1 = k1 = { $ratio } × k2 : la boucle de vitesse est plus lente que le courant qu’elle commande
+design-rule-q = bruit de processus : le modèle est le moteur, intégré comme le moteur simulé, donc Q n’est qu’un plancher qui garde en vie le gain du filtre ; le 1e-3 de l’article maintiendrait le NIS de ces moteurs sous sa bande
+design-rule-r = le bruit du capteur de courant : R lui correspond
+# $time : secondes.
+design-rule-q-load = torque²/{ $time } s : la charge peut varier de son couple nominal en { $time } s
+design-rule-load-std = torque/4 : la charge est d’abord inconnue à un quart du couple nominal près

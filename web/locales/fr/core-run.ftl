@@ -17,6 +17,7 @@ time-s = { $s } s
 
 # (0/1) marque un interrupteur : 0 désactivé, 1 activé.
 
+field-design = conception : paper (article, valeurs réglées) ou derived (données du moteur)
 field-ref = type de consigne de vitesse
 field-ref-value = vitesse constante
 field-sine-amp = amplitude du sinus
@@ -29,7 +30,13 @@ field-ramp-start = début de la rampe
 field-ramp-level = niveau du palier de la rampe
 field-ramp-slope = pente de la rampe, en valeur absolue
 field-ramp-hold = durée du palier de la rampe
+field-rev-start = début de la montée avant l’inversion
+field-rev-level = vitesse inversée, de +level à −level
+field-rev-slope = pente de l’inversion, en valeur absolue
+field-rev-hold = durée à +level avant l’inversion
 field-psi_d = cible de flux pour φa² + φb²
+field-fw = défluxage au-delà de la vitesse de base (0/1)
+field-fw-base = vitesse de base du défluxage
 field-k1 = taux de décroissance de l’erreur de vitesse k1
 field-k2 = taux de décroissance de l’erreur de couple k2 = a7 + a8 + k2s1
 field-k3 = taux de décroissance de l’erreur de flux k3
@@ -62,6 +69,7 @@ field-ekf-rr = estimer la résistance rotorique R_r comme état de l’EKF (0/1)
 field-ekf-q_rr = intensité de la marche aléatoire de la résistance rotorique
 field-ekf-rr_std = écart type initial de l’estimée de R_r
 field-init_err = erreur d’estimation relative initiale
+field-start = état initial : paper (2 A, 2 A, 0,5 Wb, 0,5 Wb) ou magnetized (magnétisé à la cible de flux)
 field-perfect = observateur parfait : le correcteur reçoit l’état réel (0/1)
 field-noise = écart type du bruit de mesure des courants
 field-seed = graine du bruit
@@ -93,6 +101,8 @@ field-duration = durée simulée
 field-ts = période d’échantillonnage Ts
 field-substeps = sous-pas RK4 du moteur par échantillon
 field-i_rated = courant nominal : amplitude |i_s| du courant de phase nominal
+field-rated-v = tension nominale, efficace entre phases
+field-rated-f = fréquence nominale
 field-delay = retard de calcul : u_k appliquée un échantillon plus tard (0/1)
 field-delay-comp = compensation du retard : commande calculée sur la prédiction à un pas x̂(k+1|k) (0/1)
 # box, circle et hex sont les valeurs du champ : elles restent telles quelles.

@@ -20,6 +20,10 @@ scenario-physics = { $which ->
        *[model] paramètres du modèle ({ $which })
     } : { $error }
 scenario-bad-formula = champ '{ $key }' : { $error }
+scenario-refused = champ '{ $key }' : { $why }
+scenario-law-fw = une loi propre de l’étape 3 ou 4 est écrite pour une cible de flux constante, et fw=1 la déplace ; désactivez fw ou laissez la loi vide
+scenario-design = champ 'design' = 'derived' : { $why }
+design-no-voltage = la tension nominale laisse { $available } V au régime permanent, et le flux nominal avec le courant nominal demande { $needed } V même à l’arrêt
 scenario-too-long = le scénario fait { $bytes } octets, plus que les { $max } octets ({ $kib } Kio) autorisés
 
 ## Ce qu’accepte un champ

@@ -27,3 +27,27 @@ map-runs-many = マップには{ $runs }回の実行（{ $cells }セル × { $se
 map-cell-refused = { $key }={ $value }：{ $reason }
 map-work = マップにはプラントの{ $work }ステップ（{ $cells }セル × { $seeds }シード × 一回の実行のステップ数）が必要で、許容される{ $max }ステップを超えています。点かシードを減らすか、'duration' を短くしてください
 map-law-work = マップの自作の制御則には{ $work }演算（{ $cells }セル × { $seeds }シード × 実行一回あたり最大{ $per-run }演算）が必要で、許容される{ $max }演算を超えています。実行を{ $runs }回（セル × シード）以下にするか、'duration' を短くするか、演算の少ない制御則にしてください
+
+## 導出した設計（design=derived）：各値を与える規則とその理由。
+# $voltage：定格線間電圧（V 実効値）、$frequency：定格周波数（Hz）。
+design-rule-vdc = √2 × { $voltage } V、整流した線間電圧。vlimit=circle なので、電圧制限は定格相電圧の振幅 vdc/√3 です
+design-rule-flux = { $voltage } V、{ $frequency } Hz、無負荷での回転子磁束 M·V/|Rs + jωLs|：電動機自身の励磁です
+design-rule-flux-capped = M·i_rated/√2 で頭打ち（{ $voltage } V、{ $frequency } Hz の無負荷磁束はこれより大きい）：励磁電流が i_rated² の半分をトルクに残します
+design-rule-psi = 磁束の二乗、φa² + φb² の目標値
+design-rule-id = 励磁電流、flux/M
+# $i_rated：定格電流の振幅（A）。
+design-rule-iq = トルク電流 √({ $i_rated }² − i_d²)：定格電流の残りの分
+design-rule-torque = 定格電流・定格磁束でのトルク (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = 定格加速度 torque/J：定格電流で電動機が行える反転の傾き
+# $share：電圧制限に対する百分率。
+design-rule-base = 基底速度：ここで定格磁束と定格トルク電流は定常状態で電圧制限の{ $share } %を要します。これより上では fw=1 が磁束を base/ω に比例して下げて逆起電力を保ち、残りの電圧は電流ループの余裕になります
+# $kts：k·Ts、$share：電圧制限に対する百分率、$sigma：漏れインダクタンス σ（H）。
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts：各誤差は一サンプルで自身の{ $kts }倍だけ減ってよく、論文の 20 kHz での 1200/s と同じです。電圧による上限（制限の{ $share } %を σ·i_rated で割った値、σ = { $sigma } H）はこれより高くなります
+design-rule-gain-voltage = k2 = k3 = k4 = 電圧制限の{ $share } %を σ·i_rated で割った値（σ = { $sigma } H）：定格電流の大きさの誤差をこの速さで縮めるには電圧の四分の一を要します。サンプリングによる上限 { $kts }/Ts はこれより高くなります
+# $ratio：k1 を k2 で割った比。
+design-rule-k1 = k1 = { $ratio } × k2：速度ループは、それが指令する電流より遅くなります
+design-rule-q = プロセスノイズ：モデルは電動機そのもので、プラントと同じく積分されるので、Q はフィルタのゲインを保つための下限にすぎません。論文の 1e-3 では、これらの電動機の NIS がその区間を下回ります
+design-rule-r = 電流センサのノイズ：R をこれに合わせます
+# $time：秒。
+design-rule-q-load = torque²/{ $time } s：負荷は{ $time } sで定格トルク分だけ変化しうるものとします
+design-rule-load-std = torque/4：負荷は初め、定格トルクの四分の一の範囲で未知とします

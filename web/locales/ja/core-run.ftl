@@ -12,6 +12,7 @@ time-s = { $s } s
 
 # (0/1) はスイッチ：0 でオフ、1 でオン。
 
+field-design = 設計：paper（論文、設定値のまま）または derived（電動機データから導出）
 field-ref = 速度指令値の種類
 field-ref-value = 一定速度
 field-sine-amp = 正弦波の振幅
@@ -24,7 +25,13 @@ field-ramp-start = ランプの開始時刻
 field-ramp-level = ランプの平坦部の値
 field-ramp-slope = ランプの傾きの大きさ
 field-ramp-hold = ランプの平坦部の継続時間
+field-rev-start = 反転の立ち上げ開始時刻
+field-rev-level = 反転する速度、+level から −level へ
+field-rev-slope = 反転の傾きの大きさ
+field-rev-hold = 反転前に +level を保つ時間
 field-psi_d = φa² + φb² の磁束目標値
+field-fw = 基底速度以上で弱め界磁（0/1）
+field-fw-base = 弱め界磁の基底速度
 field-k1 = 速度誤差の減衰率 k1
 field-k2 = トルク誤差の減衰率 k2 = a7 + a8 + k2s1
 field-k3 = 磁束誤差の減衰率 k3
@@ -55,6 +62,7 @@ field-ekf-rr = 回転子抵抗 R_r をEKFの状態として推定（0/1）
 field-ekf-q_rr = 回転子抵抗のランダムウォークの強度
 field-ekf-rr_std = R_r推定値の初期標準偏差
 field-init_err = 推定値の初期相対誤差
+field-start = 初期状態：paper（2 A、2 A、0.5 Wb、0.5 Wb）または magnetized（磁束目標値まで励磁）
 field-perfect = 理想オブザーバ：制御器が真の状態を得る（0/1）
 field-noise = 電流測定ノイズの標準偏差
 field-seed = ノイズのシード
@@ -85,6 +93,8 @@ field-duration = シミュレーション時間
 field-ts = サンプリング周期 Ts
 field-substeps = サンプルあたりのプラントのRK4サブステップ数
 field-i_rated = 定格電流：定格相電流の振幅 |i_s|
+field-rated-v = 定格電圧（線間実効値）
+field-rated-f = 定格周波数
 field-delay = 計算遅延：u_k を一サンプル後に印加（0/1）
 field-delay-comp = 遅延補償：一段先予測 x̂(k+1|k) から制御（0/1）
 field-vlimit = 電圧制限：box（成分ごとに ±vmax、論文）、circle（|u| ≤ vdc/√3）、hex（二レベルインバータ）

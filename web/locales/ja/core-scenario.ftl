@@ -18,6 +18,10 @@ scenario-physics = { $which ->
        *[model] モデル（{ $which }）
     }のパラメータ：{ $error }
 scenario-bad-formula = フィールド '{ $key }'：{ $error }
+scenario-refused = フィールド '{ $key }'：{ $why }
+scenario-law-fw = ステップ3または4の自作の制御則は一定の磁束目標値を前提に書かれていますが、fw=1 はこの目標値を動かします。fw をオフにするか、制御則を空欄にしてください
+scenario-design = フィールド 'design' = 'derived'：{ $why }
+design-no-voltage = 定格電圧で定常運転に使えるのは{ $available } Vですが、定格磁束と定格電流には静止時でも{ $needed } Vが必要です
 scenario-too-long = シナリオの長さは{ $bytes }バイトで、許容される{ $max }バイト（{ $kib } KiB）を超えています
 
 ## フィールドがとる値

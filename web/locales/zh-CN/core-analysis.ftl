@@ -27,3 +27,27 @@ map-runs-many = 误差图需要 { $runs } 次运行（{ $cells } 个格子 × { 
 map-cell-refused = { $key }={ $value }：{ $reason }
 map-work = 误差图需要 { $work } 个被控对象步（{ $cells } 个格子 × { $seeds } 个种子 × 每次运行的步数），超过允许的 { $max } 步；请减少取值点或种子，或缩短 'duration'
 map-law-work = 误差图的自定义控制律需要 { $work } 次运算（{ $cells } 个格子 × { $seeds } 个种子 × 每次运行至多 { $per-run } 次），超过允许的 { $max } 次；请最多使用 { $runs } 次运行（格子 × 种子）、缩短 'duration'，或改用运算量更小的控制律
+
+## 推导设计（design=derived）：每个值背后的规则及其理由。
+# $voltage：额定线电压（V，有效值）；$frequency：额定频率（Hz）。
+design-rule-vdc = √2 × { $voltage } V，即整流后的线电压；vlimit=circle，因此电压限幅为额定相电压的幅值 vdc/√3
+design-rule-flux = { $voltage } V、{ $frequency } Hz 空载时的转子磁链 M·V/|Rs + jωLs|：电机自身的励磁
+design-rule-flux-capped = 限制在 M·i_rated/√2（{ $voltage } V、{ $frequency } Hz 下的空载磁链要求更高）：励磁电流为转矩留出 i_rated² 的一半
+design-rule-psi = 磁链的平方，即 φa² + φb² 的目标值
+design-rule-id = 励磁电流，即磁链除以 M：flux/M
+# $i_rated：额定电流幅值（A）。
+design-rule-iq = 转矩电流 √({ $i_rated }² − i_d²)：额定电流的其余部分
+design-rule-torque = 额定电流和额定磁链下的转矩 (3/2)·np·(M/Lr)·flux·i_q
+design-rule-accel = 额定加速度 torque/J（转矩除以 J）：电机在额定电流下所能实现的反转斜率
+# $share：占电压限幅的百分比。
+design-rule-base = 基速：在此转速下，额定磁链和额定转矩电流在稳态时需要电压限幅的 { $share }%；高于基速时 fw=1 按 base/ω 降低磁链，使反电动势保持不变，其余电压作为电流环的裕量
+# $kts：k·Ts；$share：占电压限幅的百分比；$sigma：漏感 σ（H）。
+design-rule-gain-ts = k2 = k3 = k4 = { $kts }/Ts：每个误差每个采样周期可减少自身的 { $kts }，与论文在 20 kHz 下的 1200/s 相同；电压约束（限幅的 { $share }% 除以 σ·i_rated，σ = { $sigma } H）更高
+design-rule-gain-voltage = k2 = k3 = k4 = 电压限幅的 { $share }% 除以 σ·i_rated（σ = { $sigma } H）：以该速率消除额定电流大小的误差需要四分之一的电压；采样约束 { $kts }/Ts 更高
+# $ratio：k1 与 k2 之比。
+design-rule-k1 = k1 = { $ratio } × k2：转速环比它所指令的电流更慢
+design-rule-q = 过程噪声：模型就是电机本身，并与被控对象一样积分，因此 Q 只是维持滤波器增益不消失的下限；论文的 1e-3 会使这些电机的 NIS 低于其区间
+design-rule-r = 电流传感器的噪声：R 与之相符
+# $time：秒。
+design-rule-q-load = torque²/{ $time } s：负载可在 { $time } s 内变化一个额定转矩
+design-rule-load-std = torque/4：负载的初始不确定度为额定转矩的四分之一

@@ -14,6 +14,7 @@ time-s = { $s } s
 
 # (0/1) 表示开关：0 关，1 开。
 
+field-design = 设计：paper（论文，沿用所设的值）或 derived（由电机数据推导）
 field-ref = 转速参考值类型
 field-ref-value = 恒定转速
 field-sine-amp = 正弦幅值
@@ -26,7 +27,13 @@ field-ramp-start = 斜坡起始时刻
 field-ramp-level = 斜坡平台值
 field-ramp-slope = 斜坡斜率大小
 field-ramp-hold = 斜坡平台持续时间
+field-rev-start = 反转前升速的起始时刻
+field-rev-level = 反转转速，从 +level 到 −level
+field-rev-slope = 反转斜率大小
+field-rev-hold = 反转前在 +level 的保持时间
 field-psi_d = φa² + φb² 的磁链目标值
+field-fw = 基速以上弱磁（0/1）
+field-fw-base = 弱磁基速
 field-k1 = 转速误差衰减速率 k1
 field-k2 = 转矩误差衰减速率 k2 = a7 + a8 + k2s1
 field-k3 = 磁链误差衰减速率 k3
@@ -59,6 +66,7 @@ field-ekf-rr = 将转子电阻 R_r 作为 EKF 状态估计（0/1）
 field-ekf-q_rr = 转子电阻的随机游走强度
 field-ekf-rr_std = R_r 估计的初始标准差
 field-init_err = 初始相对估计误差
+field-start = 初始状态：paper（2 A、2 A、0.5 Wb、0.5 Wb）或 magnetized（已励磁至磁链目标值）
 field-perfect = 理想观测器：控制器获得真实状态（0/1）
 field-noise = 电流测量噪声标准差
 field-seed = 噪声种子
@@ -89,6 +97,8 @@ field-duration = 仿真时长
 field-ts = 采样周期 Ts
 field-substeps = 每个采样周期内被控对象的 RK4 子步数
 field-i_rated = 额定电流：额定相电流的幅值 |i_s|
+field-rated-v = 额定电压，线电压有效值
+field-rated-f = 额定频率
 field-delay = 计算延时：u_k 延后一个采样周期施加（0/1）
 field-delay-comp = 延时补偿：按一步预测 x̂(k+1|k) 计算控制量（0/1）
 # box、circle 和 hex 是字段的取值：保持原样。

@@ -24,6 +24,10 @@ scenario-physics = { $which ->
     }参数：{ $error }
 # $error 说明公式在何处、因何被拒绝。
 scenario-bad-formula = 字段 '{ $key }'：{ $error }
+scenario-refused = 字段 '{ $key }'：{ $why }
+scenario-law-fw = 第 3 或第 4 步的自定义控制律是按恒定的磁链目标值写的，而 fw=1 会改变该目标值；请关闭 fw 或将该控制律留空
+scenario-design = 字段 'design' = 'derived'：{ $why }
+design-no-voltage = 额定电压只为稳态运行留出 { $available } V，而额定磁链加额定电流即使在静止时也需要 { $needed } V
 scenario-too-long = 场景长 { $bytes } 字节，超过允许的 { $max } 字节（{ $kib } KiB）
 
 ## 字段接受的取值

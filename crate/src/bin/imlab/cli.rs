@@ -42,6 +42,11 @@ pub(crate) enum Command {
         #[command(flatten)]
         target: ScenarioArg,
     },
+    /// Print the design derived from the scenario's motor, rating and sampling, with its rules
+    Design {
+        #[command(flatten)]
+        target: ScenarioArg,
+    },
     /// Run the scenario and write its trace as CSV to stdout or FILE
     Run {
         #[command(flatten)]

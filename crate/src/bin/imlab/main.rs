@@ -78,6 +78,7 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
     match command {
         Command::List => run::list(out).map_err(stdout_stop),
         Command::Describe { target } => run::describe(&target.parse()?, out).map_err(stdout_stop),
+        Command::Design { target } => run::design(&target.parse()?, out),
         Command::Run {
             target,
             every,

@@ -19,6 +19,64 @@ pub(crate) fn list(out: &mut impl Write) -> io::Result<()> {
 }
 
 /// Writes the scenario's canonical string, its length and every field with unit and doc.
+/// `imlab design`: the design derived from the scenario's model, rating and sampling, a value a
+/// line with the rule behind it, and the scenario that uses it.
+pub(crate) fn design(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
+    let derived = s
+        .derived()
+        .map_err(|e| Stop::Failed(e.message().to_string()))?;
+    // The scenario with the derived design; one that has it keeps its own overrides.
+    let mut with = s.clone();
+    if s.design != imlab::scenario::DesignKind::Derived {
+        with.set("design", "derived")
+            .map_err(|e| Stop::Failed(e.to_string()))?;
+    }
+    let write = |out: &mut dyn Write| -> io::Result<()> {
+        writeln!(
+            out,
+            "# the design derived from the model's motor, its rating and Ts"
+        )?;
+        writeln!(out, "# {}", with.encode())?;
+        for line in derived.lines(&imlab::design::Inputs {
+            model: s.model,
+            i_rated: s.i_rated,
+            voltage: s.rated_v,
+            frequency: s.rated_f,
+            ts: s.ts,
+            noise: s.noise,
+        }) {
+            let value = if line.value != 0.0 && line.value.abs() < 1e-3 {
+                format!("{:e}", line.value)
+            } else {
+                imlab::text::rounded(line.value, 4)
+            };
+            // A setting the link gives itself stands in place of the rule's.
+            let own = with
+                .describe()
+                .into_iter()
+                .find(|f| f.key == line.key)
+                .and_then(|f| f.value)
+                .filter(|v| v.parse::<f64>().ok() != Some(line.value))
+                .map_or(String::new(), |v| format!(" (this link sets {v})"));
+            writeln!(
+                out,
+                "{:12} = {:>10} {:16} {}{own}",
+                line.key, value, line.unit, line.rule
+            )?;
+        }
+        writeln!(
+            out,
+            "# the runs that check it (crate/tests/design.rs runs them on seeds 1-30):"
+        )?;
+        let own_load = with.plant.t0 + with.plant.cf * 50.0;
+        for (name, link) in imlab::design::checks(&with.encode(), &derived, own_load) {
+            writeln!(out, "# {name:8} {link}")?;
+        }
+        Ok(())
+    };
+    write(out).map_err(stdout_stop)
+}
+
 pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "# {}", s.encode())?;
     writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;

@@ -97,7 +97,11 @@ fn draw(rng: &mut Rng, model: &Lumped, gains: &Gains, vary: bool) -> (Backsteppi
             d1: v(1e3),
             d2: v(1e4),
         },
-        psi_d: 0.5 + v(0.25).abs(),
+        psi_d: RefSample {
+            value: 0.5 + v(0.25).abs(),
+            d1: 0.0,
+            d2: 0.0,
+        },
     };
     (Backstepping::new(p, g), input)
 }

@@ -1,0 +1,215 @@
+//! Where a scenario's motor and design come from: `motor=` sets the plant, the model and the
+//! rating from the library; `design=derived` sets the controller's and observer's settings from
+//! them (see [`crate::design`]); and the state the motor starts from.
+
+use super::fields::field;
+use super::Scenario;
+use crate::design::Derived;
+use crate::inverter::Shape;
+use crate::motors::motor;
+use crate::observer::Predictor;
+use crate::params::MotorParams;
+use serde::{Deserialize, Serialize};
+
+/// Where the controller's and observer's settings come from.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum DesignKind {
+    /// The values the scenario holds: the presets hold the paper's design.
+    #[default]
+    Paper,
+    /// Derived from the model's motor, its rating and the sampling by [`crate::design`], for the
+    /// settings the link does not give.
+    Derived,
+}
+
+/// The state the motor starts from, and the estimate (1 − e) times it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Start {
+    /// Section 5's x(0) = [ω_d(0), 2, 2, 0.5, 0.5].
+    #[default]
+    Paper,
+    /// Magnetised at the flux target, the current that holds the flux at rest, at 45°.
+    Magnetized,
+}
+
+impl Scenario {
+    /// The design [`crate::design`] derives from this scenario's model, rating and sampling
+    /// (whether or not the scenario uses it).
+    pub fn derived(&self) -> Result<crate::design::Derived, crate::design::DesignError> {
+        crate::design::derive(&crate::design::Inputs {
+            model: self.model,
+            i_rated: self.i_rated,
+            voltage: self.rated_v,
+            frequency: self.rated_f,
+            ts: self.ts,
+            noise: self.noise,
+        })
+    }
+
+    /// The flux target and its derivatives at speed reference `r`: ψ_d, weakened above base
+    /// speed with `fw`.
+    #[inline]
+    pub fn flux_target(&self, r: &crate::control::RefSample) -> crate::control::RefSample {
+        crate::control::flux_target(self.psi_d, self.fw.then_some(self.fw_base), r)
+    }
+
+    /// The state x(0) the motor starts from.
+    pub fn start_state(&self) -> [f64; 5] {
+        let w = self.reference.sample(0.0).value;
+        match self.start {
+            Start::Paper => [w, 2.0, 2.0, 0.5, 0.5],
+            Start::Magnetized => {
+                // The flux at the target (weakened at the start speed), and the current M·i = φ.
+                let flux = (self.flux_target(&self.reference.sample(0.0)).value / 2.0).sqrt();
+                let i = flux / self.plant.m;
+                [w, i, i, flux, flux]
+            }
+        }
+    }
+}
+
+/// The fields [`set_motor`] sets: each side's circuit and inertia, and the rating.
+const MOTOR_SET: &[&str] = &[
+    "plant.rs", "plant.rr", "plant.m", "plant.ls", "plant.lr", "plant.j", "plant.np", "model.rs",
+    "model.rr", "model.m", "model.ls", "model.lr", "model.j", "model.np", "i_rated", "rated.v",
+    "rated.f",
+];
+
+/// The fields a motor and the derived design set.
+const MOTOR_AND_DESIGN_SET: &[&str] = &[
+    "plant.rs",
+    "plant.rr",
+    "plant.m",
+    "plant.ls",
+    "plant.lr",
+    "plant.j",
+    "plant.np",
+    "model.rs",
+    "model.rr",
+    "model.m",
+    "model.ls",
+    "model.lr",
+    "model.j",
+    "model.np",
+    "i_rated",
+    "rated.v",
+    "rated.f",
+    "psi_d",
+    "fw",
+    "fw.base",
+    "k1",
+    "k2",
+    "k3",
+    "k4",
+    "ekf",
+    "ekf.q",
+    "ekf.q_speed",
+    "ekf.r_std",
+    "ekf.q_load",
+    "ekf.load_std",
+    "start",
+    "vlimit",
+    "vdc",
+];
+
+/// The fields a new value of field `key` sets afresh in `s` (see [`FieldInfo::resets`]): a motor
+/// sets its values, and with the derived design, a value the design is derived from sets it.
+pub(super) fn resets(key: &str, s: &Scenario) -> &'static [&'static str] {
+    let derived = s.design == DesignKind::Derived || key == "design";
+    match key {
+        "motor" if derived => MOTOR_AND_DESIGN_SET,
+        "motor" => MOTOR_SET,
+        _ if derived && DESIGN_INPUTS.contains(&key) => DESIGN_SET,
+        _ => &[],
+    }
+}
+
+/// Sets the plant and the model to library motor `name` (their load, T_0 and C_f, kept), and the
+/// rated current to its rating.
+pub(super) fn set_motor(s: &mut Scenario, name: &str) {
+    let m = motor(name).expect("checked option");
+    for side in [&mut s.plant, &mut s.model] {
+        *side = MotorParams {
+            t0: side.t0,
+            cf: side.cf,
+            ..m.params
+        };
+    }
+    s.i_rated = m.rated_current().0;
+    s.rated_v = m.voltage;
+    s.rated_f = m.frequency;
+    s.motor = m.name.to_string();
+}
+
+/// The settings the derived design gives (see [`crate::design`]).
+pub const DESIGN_SET: &[&str] = &[
+    "psi_d",
+    "fw",
+    "fw.base",
+    "k1",
+    "k2",
+    "k3",
+    "k4",
+    "ekf",
+    "ekf.q",
+    "ekf.q_speed",
+    "ekf.r_std",
+    "ekf.q_load",
+    "ekf.load_std",
+    "start",
+    "vlimit",
+    "vdc",
+];
+
+/// The fields the derived design is derived from: a new value of one sets the design afresh.
+const DESIGN_INPUTS: &[&str] = &[
+    "design", "motor", "model.rs", "model.rr", "model.m", "model.ls", "model.lr", "model.j",
+    "model.np", "i_rated", "rated.v", "rated.f", "ts", "noise",
+];
+
+/// Sets in `s` each setting of design `d` for which `keep` is false.
+pub(super) fn apply_design(s: &mut Scenario, d: &Derived, keep: &dyn Fn(&str) -> bool) {
+    let mut put = |key: &str, apply: &dyn Fn(&mut Scenario)| {
+        if !keep(key) {
+            apply(s);
+        }
+    };
+    put("psi_d", &|s| s.psi_d = d.psi_d);
+    put("fw", &|s| s.fw = true);
+    put("fw.base", &|s| s.fw_base = d.base);
+    put("k1", &|s| s.gains.k1 = d.gains[0]);
+    put("k2", &|s| s.gains.k2 = d.gains[1]);
+    put("k3", &|s| s.gains.k3 = d.gains[2]);
+    put("k4", &|s| s.gains.k4 = d.gains[3]);
+    put("ekf", &|s| s.ekf.predictor = Predictor::Rk4);
+    put("ekf.q", &|s| s.ekf.q = d.q);
+    put("ekf.q_speed", &|s| s.ekf.q_speed = d.q_speed);
+    put("ekf.r_std", &|s| s.ekf.r_std = d.r_std);
+    put("ekf.q_load", &|s| s.ekf.q_load = d.q_load);
+    put("ekf.load_std", &|s| s.ekf.load_std = d.load_std);
+    put("start", &|s| s.start = Start::Magnetized);
+    put("vlimit", &|s| s.drive.vlimit = Shape::Circle);
+    put("vdc", &|s| s.drive.vdc = d.vdc);
+}
+
+/// `design=`: the derived design from the scenario as it stands (the parser derives it again
+/// from the link's final motor, rating and sampling), or the preset's settings back.
+pub(super) fn set_design(s: &mut Scenario, name: &str) {
+    if name == "derived" {
+        s.design = DesignKind::Derived;
+        if let Ok(d) = s.derived() {
+            apply_design(s, &d, &|_| false);
+        }
+    } else {
+        let original = super::preset(&s.preset).expect("a scenario's preset exists");
+        for key in DESIGN_SET {
+            let f = field(key).expect("a design setting is a field");
+            if let Some(value) = f.get(&original) {
+                f.set(s, &value).expect("the preset's value is valid");
+            }
+        }
+        s.design = DesignKind::Paper;
+    }
+}
