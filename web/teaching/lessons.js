@@ -6,7 +6,7 @@ import { fragment, setFragment } from '../ui/url.js';
 import { withLanguage } from '../ui/language.js';
 import { language, loadRest, t } from '../l10n/l10n.js';
 import { LESSON_TEXTS, measuredArgs } from './measured.js';
-import { TABLE } from './table.js';
+import { loadTable, theTable } from './table.js';
 
 /** @typedef {import('./teaching.js').Lesson} Lesson */
 
@@ -30,7 +30,7 @@ let measured = null;
  * @returns {Record<(typeof LESSON_TEXTS)[number], string>}
  */
 export function lessonText(lesson) {
-  measured ??= measuredArgs(TABLE, language);
+  measured ??= measuredArgs(theTable(), language);
   const args = measured;
   return /** @type {Record<(typeof LESSON_TEXTS)[number], string>} */ (
     Object.fromEntries(LESSON_TEXTS.map((k) => [k, t(`${lesson.id}-${k}`, args)]))
@@ -82,7 +82,7 @@ export class LessonPanel {
 
   /** Loads the lessons' texts (once) and lists the lessons; resolves when they are listed. */
   texts() {
-    this.loaded ??= loadRest().then(
+    this.loaded ??= Promise.all([loadRest(), loadTable()]).then(
       () => {
         this.lessons.forEach((lesson, i) => {
           const text = lessonText(lesson);

@@ -8,7 +8,7 @@ import { SECTIONS } from './walkthrough-text.js';
 import { laterTex } from './tex.js';
 import { scrollBox } from './layout.js';
 import { lawBlock } from './law-editor.js';
-import { TABLE } from './table.js';
+import { theTable } from './table.js';
 import { measuredArgs } from './measured.js';
 
 /** @import * as P from '../worker/protocol.js' */
@@ -25,7 +25,7 @@ const measurements = new Map();
 export function measured(id) {
   let args = measurements.get(language);
   if (!args) {
-    args = measuredArgs(TABLE, language);
+    args = measuredArgs(theTable(), language);
     measurements.set(language, args);
   }
   return t(id, args);

@@ -5,6 +5,7 @@
 import { Plots } from '../plots/plots.js';
 import { loadRest, restLoaded, restReady, t } from '../l10n/l10n.js';
 import { SECTIONS } from './walkthrough-text.js';
+import { loadTable, tableLoaded } from './table.js';
 import { typesetWaiting } from './tex.js';
 import { keepAboveSheet, markScrollable, rendered } from './layout.js';
 import { fillInspect } from './inspect-panel.js';
@@ -127,7 +128,7 @@ export class Walkthrough {
    * @returns {Promise<boolean>}
    */
   build() {
-    this.building ??= loadRest().then(
+    this.building ??= Promise.all([loadRest(), loadTable()]).then(
       () => {
         this.buildSections();
         return true;
@@ -269,7 +270,7 @@ export class Walkthrough {
    * (the first time) and learn whether they scroll, and a waiting view is drawn. Should its texts
    * fail to load (the network gone), the page says so. */
   shown() {
-    if (restLoaded()) this.buildSections();
+    if (restLoaded() && tableLoaded()) this.buildSections();
     this.build().then((built) => (built ? this.opening() : say(t('walkthrough-load-failed'))));
   }
 

@@ -3,13 +3,12 @@
 
 use super::RefSample;
 
-/// Sharpness of the corner at base speed: ψ_d·(1 + y^N)^(−1/N) with y = (ω_d/ω_b)², which is ψ_d
-/// well below base speed, ψ_d·(ω_b/ω_d)² well above it (flux inversely proportional to speed, so
-/// the back-EMF stays at its base-speed value), and 2^(−1/N) = 84 % of ψ_d at base speed.
-const N: f64 = 4.0;
-
 /// The flux target at reference `r`: ψ_d without field weakening (`base` None), else weakened
-/// above base speed `base` (rad/s). Value (Wb²), first and second time derivatives.
+/// above base speed `base` (rad/s) as ψ_d·(1 + y⁴)^(−1/4) with y = (ω_d/ω_b)²: ψ_d well below base
+/// speed, ψ_d·(ω_b/ω_d)² well above it (the flux inversely proportional to the speed, so the
+/// back-EMF stays at its base-speed value), and 2^(−1/4) = 84 % of ψ_d at base speed. Value
+/// (Wb²), first and second time derivatives.
+#[inline(never)]
 pub fn flux_target(psi_d: f64, base: Option<f64>, r: &RefSample) -> RefSample {
     let Some(base) = base else {
         return RefSample {
@@ -22,13 +21,15 @@ pub fn flux_target(psi_d: f64, base: Option<f64>, r: &RefSample) -> RefSample {
     let y = r.value * r.value / b2;
     let dy = 2.0 * r.value * r.d1 / b2;
     let ddy = 2.0 * (r.d1 * r.d1 + r.value * r.d2) / b2;
-    // g(y) = (1 + y^N)^(−1/N), g' = −(1 + y^N)^(−1/N − 1)·y^(N−1),
-    // g'' = (1 + y^N)^(−1/N − 2)·y^(N−2)·(2·y^N − (N − 1)).
-    let yn = y.powi(N as i32);
-    let base_term = 1.0 + yn;
-    let g = base_term.powf(-1.0 / N);
-    let g1 = -base_term.powf(-1.0 / N - 1.0) * y.powi(N as i32 - 1);
-    let g2 = base_term.powf(-1.0 / N - 2.0) * y.powi(N as i32 - 2) * (2.0 * yn - (N - 1.0));
+    // g(y) = (1 + y⁴)^(−1/4), g' = −(1 + y⁴)^(−5/4)·y³ = −g⁵·y³,
+    // g'' = (1 + y⁴)^(−9/4)·y²·(2·y⁴ − 3) = g⁹·y²·(2·y⁴ − 3): square roots and products only.
+    let y2 = y * y;
+    let y4 = y2 * y2;
+    let g = 1.0 / (1.0 + y4).sqrt().sqrt();
+    let g4 = g * g * g * g;
+    let g5 = g4 * g;
+    let g1 = -g5 * y2 * y;
+    let g2 = g5 * g4 * y2 * (2.0 * y4 - 3.0);
     RefSample {
         value: psi_d * g,
         d1: psi_d * g1 * dy,

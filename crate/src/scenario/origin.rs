@@ -2,7 +2,6 @@
 //! rating from the library; `design=derived` sets the controller's and observer's settings from
 //! them (see [`crate::design`]); and the state the motor starts from.
 
-use super::fields::field;
 use super::Scenario;
 use crate::design::Derived;
 use crate::inverter::Shape;
@@ -50,7 +49,6 @@ impl Scenario {
 
     /// The flux target and its derivatives at speed reference `r`: ψ_d, weakened above base
     /// speed with `fw`.
-    #[inline]
     pub fn flux_target(&self, r: &crate::control::RefSample) -> crate::control::RefSample {
         crate::control::flux_target(self.psi_d, self.fw.then_some(self.fw_base), r)
     }
@@ -171,27 +169,31 @@ const DESIGN_INPUTS: &[&str] = &[
 
 /// Sets in `s` each setting of design `d` for which `keep` is false.
 pub(super) fn apply_design(s: &mut Scenario, d: &Derived, keep: &dyn Fn(&str) -> bool) {
-    let mut put = |key: &str, apply: &dyn Fn(&mut Scenario)| {
-        if !keep(key) {
-            apply(s);
-        }
-    };
-    put("psi_d", &|s| s.psi_d = d.psi_d);
-    put("fw", &|s| s.fw = true);
-    put("fw.base", &|s| s.fw_base = d.base);
-    put("k1", &|s| s.gains.k1 = d.gains[0]);
-    put("k2", &|s| s.gains.k2 = d.gains[1]);
-    put("k3", &|s| s.gains.k3 = d.gains[2]);
-    put("k4", &|s| s.gains.k4 = d.gains[3]);
-    put("ekf", &|s| s.ekf.predictor = Predictor::Rk4);
-    put("ekf.q", &|s| s.ekf.q = d.q);
-    put("ekf.q_speed", &|s| s.ekf.q_speed = d.q_speed);
-    put("ekf.r_std", &|s| s.ekf.r_std = d.r_std);
-    put("ekf.q_load", &|s| s.ekf.q_load = d.q_load);
-    put("ekf.load_std", &|s| s.ekf.load_std = d.load_std);
-    put("start", &|s| s.start = Start::Magnetized);
-    put("vlimit", &|s| s.drive.vlimit = Shape::Circle);
-    put("vdc", &|s| s.drive.vdc = d.vdc);
+    macro_rules! put {
+        ($($key:literal => $place:expr, $value:expr;)*) => {
+            $(if !keep($key) {
+                $place = $value;
+            })*
+        };
+    }
+    put! {
+        "psi_d" => s.psi_d, d.psi_d;
+        "fw" => s.fw, true;
+        "fw.base" => s.fw_base, d.base;
+        "k1" => s.gains.k1, d.gains[0];
+        "k2" => s.gains.k2, d.gains[1];
+        "k3" => s.gains.k3, d.gains[2];
+        "k4" => s.gains.k4, d.gains[3];
+        "ekf" => s.ekf.predictor, Predictor::Rk4;
+        "ekf.q" => s.ekf.q, d.q;
+        "ekf.q_speed" => s.ekf.q_speed, d.q_speed;
+        "ekf.r_std" => s.ekf.r_std, d.r_std;
+        "ekf.q_load" => s.ekf.q_load, d.q_load;
+        "ekf.load_std" => s.ekf.load_std, d.load_std;
+        "start" => s.start, Start::Magnetized;
+        "vlimit" => s.drive.vlimit, Shape::Circle;
+        "vdc" => s.drive.vdc, d.vdc;
+    }
 }
 
 /// `design=`: the derived design from the scenario as it stands (the parser derives it again
@@ -203,13 +205,17 @@ pub(super) fn set_design(s: &mut Scenario, name: &str) {
             apply_design(s, &d, &|_| false);
         }
     } else {
-        let original = super::preset(&s.preset).expect("a scenario's preset exists");
-        for key in DESIGN_SET {
-            let f = field(key).expect("a design setting is a field");
-            if let Some(value) = f.get(&original) {
-                f.set(s, &value).expect("the preset's value is valid");
-            }
-        }
+        let o = super::preset(&s.preset).expect("a scenario's preset exists");
         s.design = DesignKind::Paper;
+        s.psi_d = o.psi_d;
+        (s.fw, s.fw_base, s.start) = (o.fw, o.fw_base, o.start);
+        s.gains.k1 = o.gains.k1;
+        s.gains.k2 = o.gains.k2;
+        s.gains.k3 = o.gains.k3;
+        s.gains.k4 = o.gains.k4;
+        let (e, oe) = (&mut s.ekf, &o.ekf);
+        (e.predictor, e.q, e.q_speed, e.r_std) = (oe.predictor, oe.q, oe.q_speed, oe.r_std);
+        (e.q_load, e.load_std) = (oe.q_load, oe.load_std);
+        (s.drive.vlimit, s.drive.vdc) = (o.drive.vlimit, o.drive.vdc);
     }
 }
