@@ -4,6 +4,7 @@
 import { $, say, ui } from '../ui/page.js';
 import { formScenario, forwardKnob, markInvalid, renderFields, syncFields } from './controls.js';
 import { ScenarioRefused, WorkerFailed } from '../client/run-client.js';
+import { designView } from './design-view.js';
 import { DEFAULT_PRESET, DEFAULT_SCENARIO, scenarioFromUrl, showScenario } from '../ui/url.js';
 import { listed } from '../ui/quote.js';
 import { t } from '../l10n/l10n.js';
@@ -139,6 +140,7 @@ export function createSettings({
   let composed = null; // the scenario the form held when last checked
   let checking = Promise.resolve(true); // that check: whether the core accepted it
   const knobs = knobMaker(state); // the walkthrough's knobs, with unique ids
+  const showDesign = designView(client, ui.designDoc); // the derived design, when the scenario has it
 
   /**
    * Shows `info` in the form, which showed `before` (re-built only where its fields differ).
@@ -165,6 +167,7 @@ export function createSettings({
     ui.presetDoc.textContent = info.idle.length
       ? t('settings-idle', { changed, idle: info.idle.join(t('settings-idle-separator')) })
       : changed;
+    void showDesign(info);
     ui.run.disabled = state.running;
     markInvalid(ui.form, null);
     described(info);

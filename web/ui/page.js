@@ -19,6 +19,7 @@ export function $(id, kind) {
 export const ui = {
   preset: $('preset', HTMLSelectElement),
   presetDoc: $('preset-doc', HTMLParagraphElement),
+  designDoc: $('design-doc', HTMLDivElement),
   form: $('settings', HTMLFormElement),
   run: $('run', HTMLButtonElement),
   cancel: $('cancel', HTMLButtonElement),

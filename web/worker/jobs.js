@@ -2,6 +2,7 @@
 // returns what the core computed, so any worker of a pool can take any of them. They run on the
 // core built with its tools (pkg/), which the worker loads with this module on its first job.
 import initTools, {
+  design_lines,
   law_language,
   law_preview,
   law_verdicts,
@@ -48,6 +49,7 @@ export const JOBS = {
   'law-language': () => law_language(),
   'law-preview': (d) => law_preview(d.step, d.text),
   'law-verdicts': (d) => law_verdicts(d.scenario),
+  design: (d) => design_lines(d.scenario),
   'scenario-differences': (d) => scenario_differences(d.from, d.text),
   ...CHALLENGE_JOBS,
 };

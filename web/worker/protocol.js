@@ -17,7 +17,7 @@ export {};
  * The core's own types, declared in its bindings' `.d.ts` from the Rust structures (tsify): what
  * a reply carries is what the core wrote.
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
- *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Measures,
+ *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Line, Measures,
  *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView, Message} from '../../pkg/imlab.js'
  */
@@ -159,6 +159,8 @@ export {};
  * - 'law-language': the names and functions a step's own law may use; 'law-preview' the law
  *   `text` of `step` as typed (its TeX, or where and why it is refused); 'law-verdicts' the
  *   verdict on each own law of `scenario` against its step's designed dynamics.
+ * - 'design': the design `design=derived` gives the motor of `scenario`, each value with the rule
+ *   behind it (as `imlab design` prints them).
  * - 'scenario-differences': how scenario `text` differs from scenario `from`, a line a field
  *   ("key: from's → text's unit").
  * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
@@ -191,6 +193,7 @@ export {};
  *   'law-language': {req: {}, result: Language},
  *   'law-preview': {req: {step: number, text: string}, result: Preview},
  *   'law-verdicts': {req: {scenario: string}, result: LawVerdict[]},
+ *   design: {req: {scenario: string}, result: Line[]},
  *   'scenario-differences': {req: {from: string, text: string}, result: string[]},
  *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassView},
  *   'grade-link': {req: {text: string, row: ClassRow}, result: GradedView},

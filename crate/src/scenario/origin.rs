@@ -36,15 +36,20 @@ pub enum Start {
 impl Scenario {
     /// The design [`crate::design`] derives from this scenario's model, rating and sampling
     /// (whether or not the scenario uses it).
-    pub fn derived(&self) -> Result<crate::design::Derived, crate::design::DesignError> {
-        crate::design::derive(&crate::design::Inputs {
+    pub fn derived(&self) -> Result<Derived, crate::design::DesignError> {
+        crate::design::derive(&self.design_inputs())
+    }
+
+    /// What [`crate::design`] derives the design from: the model, the rating and the sampling.
+    pub fn design_inputs(&self) -> crate::design::Inputs {
+        crate::design::Inputs {
             model: self.model,
             i_rated: self.i_rated,
             voltage: self.rated_v,
             frequency: self.rated_f,
             ts: self.ts,
             noise: self.noise,
-        })
+        }
     }
 
     /// The flux target and its derivatives at speed reference `r`: ψ_d, weakened above base
@@ -217,5 +222,59 @@ pub(super) fn set_design(s: &mut Scenario, name: &str) {
         (e.predictor, e.q, e.q_speed, e.r_std) = (oe.predictor, oe.q, oe.q_speed, oe.r_std);
         (e.q_load, e.load_std) = (oe.q_load, oe.load_std);
         (s.drive.vlimit, s.drive.vdc) = (o.drive.vlimit, o.drive.vdc);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::scenario::{preset, DESIGN_SET};
+
+    /// The text of field `key` in `s`.
+    fn value(s: &Scenario, key: &str) -> Option<String> {
+        s.describe()
+            .into_iter()
+            .find(|f| f.key == key)
+            .unwrap()
+            .value
+    }
+
+    #[test]
+    fn the_derived_design_round_trips_keeps_a_links_own_values_and_goes_back_to_the_papers() {
+        let s = Scenario::parse("v=1&preset=step&design=derived&motor=2.2kw&k1=100").unwrap();
+        let d = s.derived().unwrap();
+        // The link's own k1 stands; the rest is the rule's, from the motor set after `design`.
+        assert_eq!(s.gains.k1, 100.0);
+        assert_eq!(
+            (s.gains.k2, s.psi_d, s.fw_base),
+            (d.gains[1], d.psi_d, d.base)
+        );
+        assert!(s.fw && s.start == Start::Magnetized && s.drive.vlimit == Shape::Circle);
+        assert_eq!(
+            s.encode(),
+            "v=1&preset=step&design=derived&k1=100&motor=2.2kw"
+        );
+        assert_eq!(Scenario::parse(&s.encode()).unwrap(), s);
+        // Back to the paper's design: every setting of the design is the preset's again.
+        let mut back = s.clone();
+        back.set("design", "paper").unwrap();
+        let step = preset("step").unwrap();
+        for key in DESIGN_SET {
+            assert_eq!(value(&back, key), value(&step, key), "{key}");
+        }
+    }
+
+    #[test]
+    fn a_magnetized_start_holds_the_flux_target_with_the_current_that_makes_it() {
+        let s = Scenario::parse("v=1&preset=step&design=derived&motor=15kw").unwrap();
+        let [w, ia, ib, fa, fb] = s.start_state();
+        assert_eq!(w, s.reference.sample(0.0).value);
+        assert!(((fa * fa + fb * fb) / s.psi_d - 1.0).abs() < 1e-12);
+        assert!((ia * s.plant.m / fa - 1.0).abs() < 1e-12 && ia == ib);
+        // The presets start where Section 5 does.
+        assert_eq!(
+            preset("step").unwrap().start_state(),
+            [0.0, 2.0, 2.0, 0.5, 0.5]
+        );
     }
 }

@@ -329,6 +329,15 @@ pub fn law_verdicts(scenario: &str) -> Result<Vec<Ts<crate::control::law::Verdic
     to_js_list(&verdicts)
 }
 
+/// The design `design=derived` gives the motor of `scenario`: each value with the rule behind it
+/// and its reason (as `imlab design` prints them).
+#[wasm_bindgen]
+pub fn design_lines(scenario: &str) -> Result<Vec<Ts<crate::design::Line>>, JsValue> {
+    let s = Scenario::parse(scenario).map_err(js_error)?;
+    let derived = s.derived().map_err(|e| js_error(e.message()))?;
+    to_js_list(&derived.lines(&s.design_inputs()))
+}
+
 /// How scenario `text` differs from scenario `from`, field by field ("key: from's → text's unit").
 #[wasm_bindgen]
 pub fn scenario_differences(from: &str, text: &str) -> Result<Vec<String>, JsValue> {

@@ -51,3 +51,7 @@ design-rule-r = das Rauschen des Stromsensors: R entspricht ihm
 # $time: Sekunden.
 design-rule-q-load = torque²/{ $time } s: Die Last darf sich in { $time } s um ihr Nennmoment ändern
 design-rule-load-std = torque/4: Die Last ist anfangs bis auf ein Viertel des Nennmoments unbekannt
+# Unter der Beschreibung der Vorlage, wenn das Szenario design=derived hat.
+design-derived-heading = Der aus dem Motor abgeleitete Entwurf und die Regel hinter jedem Wert
+# $reason: warum der Kern ihn nicht ableiten konnte.
+design-failed = Der abgeleitete Entwurf konnte nicht angezeigt werden: { $reason }

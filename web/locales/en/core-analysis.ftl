@@ -63,3 +63,7 @@ design-rule-r = the current sensor's noise: R matches it
 # $time: seconds.
 design-rule-q-load = torque²/{ $time } s: the load may move by its rated torque in { $time } s
 design-rule-load-std = torque/4: the load starts unknown to a quarter of the rated torque
+# Under the preset's description when the scenario has design=derived.
+design-derived-heading = The design derived from the motor, and the rule behind each value
+# $reason: why the core could not derive it.
+design-failed = The derived design could not be shown: { $reason }

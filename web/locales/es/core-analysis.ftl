@@ -51,3 +51,7 @@ design-rule-r = el ruido del sensor de corriente: R coincide con él
 # $time: segundos.
 design-rule-q-load = torque²/{ $time } s: la carga puede variar en su par nominal en { $time } s
 design-rule-load-std = torque/4: la carga empieza desconocida hasta un cuarto del par nominal
+# Bajo la descripción del preajuste cuando el escenario tiene design=derived.
+design-derived-heading = El diseño derivado del motor y la regla detrás de cada valor
+# $reason: por qué el núcleo no pudo derivarlo.
+design-failed = No se pudo mostrar el diseño derivado: { $reason }

@@ -51,3 +51,7 @@ design-rule-r = le bruit du capteur de courant : R lui correspond
 # $time : secondes.
 design-rule-q-load = torque²/{ $time } s : la charge peut varier de son couple nominal en { $time } s
 design-rule-load-std = torque/4 : la charge est d’abord inconnue à un quart du couple nominal près
+# Sous la description du préréglage quand le scénario a design=derived.
+design-derived-heading = La conception dérivée du moteur, et la règle derrière chaque valeur
+# $reason : pourquoi le cœur n’a pas pu la dériver.
+design-failed = La conception dérivée n’a pas pu être affichée : { $reason }

@@ -51,3 +51,7 @@ design-rule-r = 電流センサのノイズ：R をこれに合わせます
 # $time：秒。
 design-rule-q-load = torque²/{ $time } s：負荷は{ $time } sで定格トルク分だけ変化しうるものとします
 design-rule-load-std = torque/4：負荷は初め、定格トルクの四分の一の範囲で未知とします
+# シナリオが design=derived のとき、プリセットの説明の下に表示する。
+design-derived-heading = 電動機から導出した設計と、各値を与える規則
+# $reason：コアが設計を導出できなかった理由。
+design-failed = 導出した設計を表示できませんでした：{ $reason }

@@ -51,3 +51,7 @@ design-rule-r = 电流传感器的噪声：R 与之相符
 # $time：秒。
 design-rule-q-load = torque²/{ $time } s：负载可在 { $time } s 内变化一个额定转矩
 design-rule-load-std = torque/4：负载的初始不确定度为额定转矩的四分之一
+# 场景含 design=derived 时，显示在预设说明的下方。
+design-derived-heading = 由电机推导出的设计，以及每个值背后的规则
+# $reason：核心无法推导该设计的原因。
+design-failed = 无法显示推导出的设计：{ $reason }

@@ -37,14 +37,7 @@ pub(crate) fn design(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
             "# the design derived from the model's motor, its rating and Ts"
         )?;
         writeln!(out, "# {}", with.encode())?;
-        for line in derived.lines(&imlab::design::Inputs {
-            model: s.model,
-            i_rated: s.i_rated,
-            voltage: s.rated_v,
-            frequency: s.rated_f,
-            ts: s.ts,
-            noise: s.noise,
-        }) {
+        for line in derived.lines(&s.design_inputs()) {
             let value = if line.value != 0.0 && line.value.abs() < 1e-3 {
                 format!("{:e}", line.value)
             } else {
