@@ -62,6 +62,11 @@ for (const [width, height] of [
   test(`no page scrolls sideways at ${width} px on any tab${width >= 1280 ? ', also in presentation mode' : ', also with the settings open'}`, () =>
     withPage('?v=1&preset=step', [width, height], async (page) => {
       const check = async (where) => {
+        // The plots follow a new viewport once the page has laid it out: wait for the page to stop
+        // scrolling sideways (a busy machine lays out later), then report whatever still does.
+        await page
+          .waitForFunction(() => document.documentElement.scrollWidth <= window.innerWidth, null, { timeout: 10_000 })
+          .catch(() => {});
         const { over, culprits } = await sideways(page);
         assert.ok(over <= 0, `${where}: the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);
       };
@@ -121,6 +126,11 @@ for (const lang of LANGS)
       assert.equal((await page.textContent('#run'))?.trim(), run?.trim(), 'the Run button speaks the language');
       const found = [];
       const check = async (where) => {
+        // The plots follow a new viewport once the page has laid it out: wait for the page to stop
+        // scrolling sideways (a busy machine lays out later), then report whatever still does.
+        await page
+          .waitForFunction(() => document.documentElement.scrollWidth <= window.innerWidth, null, { timeout: 10_000 })
+          .catch(() => {});
         const { over, culprits } = await sideways(page);
         if (over > 0)
           found.push(`${where}: the page scrolls ${over} px sideways; past the edge: ${culprits.join(', ')}`);

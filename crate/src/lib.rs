@@ -13,6 +13,7 @@ pub mod analysis;
 pub mod challenge;
 pub mod control;
 pub mod design;
+pub mod identify;
 pub mod inverter;
 pub mod model;
 pub mod motors;

@@ -7,6 +7,7 @@ mod claims;
 mod cli;
 mod grade;
 mod law;
+mod motor;
 mod output;
 mod robust;
 mod run;
@@ -79,6 +80,26 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
         Command::List => run::list(out).map_err(stdout_stop),
         Command::Describe { target } => run::describe(&target.parse()?, out).map_err(stdout_stop),
         Command::Design { target } => run::design(&target.parse()?, out),
+        Command::Motor {
+            rs,
+            no_load,
+            locked,
+            nema,
+            rated,
+            j,
+            np,
+        } => motor::motor(
+            &motor::MotorArgs {
+                rs,
+                no_load,
+                locked,
+                nema,
+                rated,
+                j,
+                np,
+            },
+            out,
+        ),
         Command::Run {
             target,
             every,
