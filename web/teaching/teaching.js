@@ -21,6 +21,7 @@ import lowSpeed from './lesson-text/low-speed.js';
 import modelExactness from './lesson-text/model-exactness.js';
 import deriveSteps from './lesson-text/derive-steps.js';
 import robustTerms from './lesson-text/robust-terms.js';
+import ownMotor from './lesson-text/own-motor.js';
 
 /**
  * A lesson: its link's name, its run, the conclusions its texts state
@@ -48,4 +49,5 @@ export const LESSONS = [
   modelExactness,
   deriveSteps,
   robustTerms,
+  ownMotor,
 ];
