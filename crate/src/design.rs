@@ -136,8 +136,13 @@ pub fn derive(inputs: &Inputs) -> Result<Derived, DesignError> {
     let we_base = (-b + (b * b - 4.0 * a * c).sqrt()) / (2.0 * a);
     let base = (we_base - slip) / p.np;
     if !(c < 0.0 && base > 0.0) {
+        // At rest the stator frequency is the slip's.
+        let (vd, vq) = (
+            p.rs * i_d - slip * sigma * i_q,
+            p.rs * i_q + slip * p.ls * i_d,
+        );
         return Err(DesignError::NoVoltage {
-            needed: (p.rs * inputs.i_rated).max((c + available * available).sqrt()),
+            needed: vd.hypot(vq),
             available,
         });
     }
@@ -269,7 +274,16 @@ impl Derived {
                 "(state unit)²/s",
                 Message::new("design-rule-q"),
             ),
-            line("ekf.r_std", self.r_std, "A", Message::new("design-rule-r")),
+            line(
+                "ekf.r_std",
+                self.r_std,
+                "A",
+                Message::new(if inputs.noise > 0.0 {
+                    "design-rule-r"
+                } else {
+                    "design-rule-r-none"
+                }),
+            ),
             line(
                 "ekf.q_load",
                 self.q_load,
@@ -292,43 +306,66 @@ fn three(v: f64) -> f64 {
     (v * scale).round() / scale
 }
 
-/// The runs that check a derived design, each the link `base` (a scenario with `design=derived`)
-/// with its reference and load: the preset's step; a ramp to 1.5× base speed at half the rated
+/// The runs that check a derived design, each scenario `s` (which has `design=derived`) with
+/// its reference and load set: the preset's step; a ramp to 1.5× base speed at half the rated
 /// acceleration (the torque at rated current falls as base/ω above base speed), through field
 /// weakening; a reversal from base speed through zero to −base at the rated acceleration; and a
-/// step of the rated torque (less the scenario's own load T_0 + C_f·ω at 50 rad/s) at 50 rad/s with
-/// the load an EKF state.
-/// Values are written to three significant digits.
-pub fn checks(base: &str, d: &Derived, own_load: f64) -> [(&'static str, String); 4] {
+/// step of the rated torque, less the scenario's own load T_0 + C_f·ω at 50 rad/s, at 50 rad/s
+/// with the load an EKF state. Values are written to three significant digits; each link is the
+/// codec's.
+pub fn checks(
+    s: &crate::scenario::Scenario,
+    d: &Derived,
+) -> Result<[(&'static str, String); 4], crate::scenario::ScenarioError> {
     let (base_speed, accel) = (three(d.base), three(d.accel));
     let level = three(1.5 * d.base);
     let slope = three(0.5 * d.accel);
-    let ramp_end = 0.05 + 2.0 * level / slope + 0.3;
-    let reversal_end = 0.05 + 3.0 * base_speed / accel + 0.2;
+    let start = 0.05;
     // Each run lasts to 0.3 s past its reference's last change, in tenths of a second.
-    let tenths = |end: f64| ((end + 0.3) * 10.0).ceil() / 10.0;
-    [
-        ("step", base.to_string()),
+    let tenths = |end: f64| (((end + 0.3) * 10.0).ceil() / 10.0).to_string();
+    let own_load = s.plant.t0 + s.plant.cf * 50.0;
+    let with = |fields: &[(&str, String)]| {
+        let mut run = s.clone();
+        for (key, value) in fields {
+            run.set(key, value)?;
+        }
+        Ok::<_, crate::scenario::ScenarioError>(run.encode())
+    };
+    let n = |v: f64| v.to_string();
+    Ok([
+        ("step", s.encode()),
         (
             "ramp",
-            format!(
-                "{base}&ref=ramp&ramp.level={level}&ramp.slope={slope}&ramp.hold=0.3&duration={}",
-                tenths(ramp_end)
-            ),
+            with(&[
+                ("ref", "ramp".into()),
+                ("ramp.start", n(start)),
+                ("ramp.level", n(level)),
+                ("ramp.slope", n(slope)),
+                ("ramp.hold", n(0.3)),
+                ("duration", tenths(start + 2.0 * level / slope + 0.3)),
+            ])?,
         ),
         (
             "reversal",
-            format!(
-                "{base}&ref=reversal&rev.level={base_speed}&rev.slope={accel}&rev.hold=0.2&duration={}",
-                tenths(reversal_end)
-            ),
+            with(&[
+                ("ref", "reversal".into()),
+                ("rev.start", n(start)),
+                ("rev.level", n(base_speed)),
+                ("rev.slope", n(accel)),
+                ("rev.hold", n(0.2)),
+                ("duration", tenths(start + 3.0 * base_speed / accel + 0.2)),
+            ])?,
         ),
         (
             "load",
-            format!(
-                "{base}&ref=constant&ref.value=50&load.time=0.3&load.torque={}&ekf.load=1&duration=0.6",
-                three(d.torque - own_load)
-            ),
+            with(&[
+                ("ref", "constant".into()),
+                ("ref.value", n(50.0)),
+                ("load.time", n(0.3)),
+                ("load.torque", n(three(d.torque - own_load))),
+                ("ekf.load", n(1.0)),
+                ("duration", n(0.6)),
+            ])?,
         ),
-    ]
+    ])
 }

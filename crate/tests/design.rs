@@ -34,7 +34,7 @@ fn value(figures: &[Figure], name: &str) -> f64 {
 fn check(label: &str, base: &str, failures: &mut Vec<String>) {
     let s = Scenario::parse(base).unwrap_or_else(|e| panic!("{base}: {e}"));
     let d = s.derived().unwrap();
-    for (name, link) in checks(base, &d, s.plant.t0 + s.plant.cf * 50.0) {
+    for (name, link) in checks(&s, &d).unwrap() {
         let mut in_band = 0;
         for seed in SEEDS {
             let mut s = Scenario::parse(&link).unwrap_or_else(|e| panic!("{link}: {e}"));

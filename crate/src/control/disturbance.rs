@@ -80,11 +80,12 @@ pub fn disturbances(controller: &Backstepping, s: &Sample) -> Result<[f64; 2], C
     let v2 = p.b * p.a1 * (x4h * s.u[1] - x5h * s.u[0]);
     let d2 = dz2 - (v2 + terms.psi2 - (p.a7 + p.a8) * z2);
 
-    // Step 4: z4 = ż3 + k3·z3 with ż3 = 2(x̂4·x̂̇4 + x̂5·x̂̇5), so ż4 = z̈3 + k3·ż3; ψ_d is constant.
-    let dz3 = 2.0 * (x4h * dxh[3] + x5h * dxh[4]);
+    // Step 4: z4 = ż3 + k3·z3 with ż3 = 2(x̂4·x̂̇4 + x̂5·x̂̇5) − ψ̇_d, so ż4 = z̈3 + k3·ż3 (a
+    // constant target subtracts 0.0, which leaves every bit).
+    let dz3 = 2.0 * (x4h * dxh[3] + x5h * dxh[4]) - s.psi_d.d1;
     let ddx4h = -p.a8 * dxh[3] - p.a9 * (dxh[0] * x5h + x1h * dxh[4]) + p.a10 * dxh[1] + dsi[3];
     let ddx5h = -p.a8 * dxh[4] + p.a9 * (dxh[0] * x4h + x1h * dxh[3]) + p.a10 * dxh[2] + dsi[4];
-    let ddz3 = 2.0 * (dxh[3] * dxh[3] + x4h * ddx4h + dxh[4] * dxh[4] + x5h * ddx5h);
+    let ddz3 = 2.0 * (dxh[3] * dxh[3] + x4h * ddx4h + dxh[4] * dxh[4] + x5h * ddx5h) - s.psi_d.d2;
     let dz4 = ddz3 + g.k3 * dz3;
     let v4 = 2.0 * p.a10 * p.b * (x4h * s.u[0] + x5h * s.u[1]);
     let d4 = dz4 - (v4 + terms.psi4);

@@ -29,7 +29,8 @@ pub enum Start {
     /// Section 5's x(0) = [ω_d(0), 2, 2, 0.5, 0.5].
     #[default]
     Paper,
-    /// Magnetised at the flux target, the current that holds the flux at rest, at 45°.
+    /// Magnetised at the flux target, with the current that holds that flux in steady state at
+    /// rest, at 45°, at the reference's start speed ω_d(0) (0 in the presets).
     Magnetized,
 }
 
@@ -55,7 +56,9 @@ impl Scenario {
     /// The flux target and its derivatives at speed reference `r`: ψ_d, weakened above base
     /// speed with `fw`.
     pub fn flux_target(&self, r: &crate::control::RefSample) -> crate::control::RefSample {
-        crate::control::flux_target(self.psi_d, self.fw.then_some(self.fw_base), r)
+        // The IFOC baseline regulates a constant flux: field weakening is the backstepping's.
+        let weakens = self.fw && self.controller == super::ControllerKind::Backstepping;
+        crate::control::flux_target(self.psi_d, weakens.then_some(self.fw_base), r)
     }
 
     /// The state x(0) the motor starts from.
@@ -166,7 +169,9 @@ pub const DESIGN_SET: &[&str] = &[
     "vdc",
 ];
 
-/// The fields the derived design is derived from: a new value of one sets the design afresh.
+/// The fields the derived design is derived from: in a form, a new value of one sets the design
+/// afresh (see [`resets`]), as a link is derived again when it is parsed. [`Scenario::set`] keeps
+/// the design as it stands: a map's or a sweep's axis varies one value under a fixed design.
 const DESIGN_INPUTS: &[&str] = &[
     "design", "motor", "model.rs", "model.rr", "model.m", "model.ls", "model.lr", "model.j",
     "model.np", "i_rated", "rated.v", "rated.f", "ts", "noise",

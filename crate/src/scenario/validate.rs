@@ -54,6 +54,11 @@ impl Scenario {
                 name: self.preset.clone(),
             });
         }
+        // A derived design must follow from the motor's data, however the scenario was set.
+        if self.design == super::DesignKind::Derived {
+            self.derived()
+                .map_err(|error| ScenarioError::Design { error })?;
+        }
         // An own law of step 3 or 4 is a formula of constant ψ_d: it has no ψ̇_d or ψ̈_d to read.
         if self.fw && self.controller == ControllerKind::Backstepping {
             if let Some(step) = [2, 3].into_iter().find(|&i| self.law[i].is_some()) {

@@ -48,6 +48,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = { $share } % der Spannungsgrenze durch
 design-rule-k1 = k1 = { $ratio } × k2: Der Drehzahlregelkreis ist langsamer als der Strom, den er vorgibt
 design-rule-q = Prozessrauschen: Das Modell ist der Motor und wird wie die Strecke integriert, also ist Q nur eine Untergrenze, die die Verstärkung des Filters am Leben hält; mit den 1e-3 des Artikels läge der NIS dieser Motoren unter seinem Band
 design-rule-r = das Rauschen des Stromsensors: R entspricht ihm
+design-rule-r-none = kein Sensorrauschen: r_std = i_rated/1000, damit die Verstärkung des Filters endlich bleibt
 # $time: Sekunden.
 design-rule-q-load = torque²/{ $time } s: Die Last darf sich in { $time } s um ihr Nennmoment ändern
 design-rule-load-std = torque/4: Die Last ist anfangs bis auf ein Viertel des Nennmoments unbekannt

@@ -60,6 +60,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = { $share } % of the voltage limit over
 design-rule-k1 = k1 = { $ratio } × k2: the speed loop is slower than the current it commands
 design-rule-q = process noise: the model is the motor, integrated as the plant is, so Q is only a floor that keeps the filter's gain alive; the paper's 1e-3 would hold these motors' NIS below its band
 design-rule-r = the current sensor's noise: R matches it
+design-rule-r-none = no sensor noise: r_std = i_rated/1000, which keeps the filter's gain finite
 # $time: seconds.
 design-rule-q-load = torque²/{ $time } s: the load may move by its rated torque in { $time } s
 design-rule-load-std = torque/4: the load starts unknown to a quarter of the rated torque

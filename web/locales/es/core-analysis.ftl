@@ -48,6 +48,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = { $share } % del límite de tensión e
 design-rule-k1 = k1 = { $ratio } × k2: el lazo de velocidad es más lento que la corriente que ordena
 design-rule-q = ruido de proceso: el modelo es el motor, integrado como la planta, así que Q es solo un mínimo que mantiene viva la ganancia del filtro; el 1e-3 del artículo dejaría el NIS de estos motores por debajo de su banda
 design-rule-r = el ruido del sensor de corriente: R coincide con él
+design-rule-r-none = sin ruido del sensor: r_std = i_rated/1000, para que la ganancia del filtro siga siendo finita
 # $time: segundos.
 design-rule-q-load = torque²/{ $time } s: la carga puede variar en su par nominal en { $time } s
 design-rule-load-std = torque/4: la carga empieza desconocida hasta un cuarto del par nominal

@@ -48,6 +48,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = { $share } % de la limite de tension d
 design-rule-k1 = k1 = { $ratio } × k2 : la boucle de vitesse est plus lente que le courant qu’elle commande
 design-rule-q = bruit de processus : le modèle est le moteur, intégré comme le moteur simulé, donc Q n’est qu’un plancher qui garde en vie le gain du filtre ; le 1e-3 de l’article maintiendrait le NIS de ces moteurs sous sa bande
 design-rule-r = le bruit du capteur de courant : R lui correspond
+design-rule-r-none = pas de bruit de capteur : r_std = i_rated/1000, pour que le gain du filtre reste fini
 # $time : secondes.
 design-rule-q-load = torque²/{ $time } s : la charge peut varier de son couple nominal en { $time } s
 design-rule-load-std = torque/4 : la charge est d’abord inconnue à un quart du couple nominal près

@@ -48,6 +48,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = 電圧制限の{ $share } %を σ·i_r
 design-rule-k1 = k1 = { $ratio } × k2：速度ループは、それが指令する電流より遅くなります
 design-rule-q = プロセスノイズ：モデルは電動機そのもので、プラントと同じく積分されるので、Q はフィルタのゲインを保つための下限にすぎません。論文の 1e-3 では、これらの電動機の NIS がその区間を下回ります
 design-rule-r = 電流センサのノイズ：R をこれに合わせます
+design-rule-r-none = センサ雑音なし：r_std = i_rated/1000 とし、フィルタのゲインを有限に保つ
 # $time：秒。
 design-rule-q-load = torque²/{ $time } s：負荷は{ $time } sで定格トルク分だけ変化しうるものとします
 design-rule-load-std = torque/4：負荷は初め、定格トルクの四分の一の範囲で未知とします

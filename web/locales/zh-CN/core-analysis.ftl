@@ -48,6 +48,7 @@ design-rule-gain-voltage = k2 = k3 = k4 = 电压限幅的 { $share }% 除以 σ�
 design-rule-k1 = k1 = { $ratio } × k2：转速环比它所指令的电流更慢
 design-rule-q = 过程噪声：模型就是电机本身，并与被控对象一样积分，因此 Q 只是维持滤波器增益不消失的下限；论文的 1e-3 会使这些电机的 NIS 低于其区间
 design-rule-r = 电流传感器的噪声：R 与之相符
+design-rule-r-none = 无传感器噪声：r_std = i_rated/1000，使滤波器增益保持有限
 # $time：秒。
 design-rule-q-load = torque²/{ $time } s：负载可在 { $time } s 内变化一个额定转矩
 design-rule-load-std = torque/4：负载的初始不确定度为额定转矩的四分之一

@@ -18,7 +18,6 @@ pub(crate) fn list(out: &mut impl Write) -> io::Result<()> {
     Ok(())
 }
 
-/// Writes the scenario's canonical string, its length and every field with unit and doc.
 /// `imlab design`: the design derived from the scenario's model, rating and sampling, a value a
 /// line with the rule behind it, and the scenario that uses it.
 pub(crate) fn design(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
@@ -61,15 +60,20 @@ pub(crate) fn design(s: &Scenario, out: &mut impl Write) -> Result<(), Stop> {
             out,
             "# the runs that check it (crate/tests/design.rs runs them on seeds 1-30):"
         )?;
-        let own_load = with.plant.t0 + with.plant.cf * 50.0;
-        for (name, link) in imlab::design::checks(&with.encode(), &derived, own_load) {
-            writeln!(out, "# {name:8} {link}")?;
+        match imlab::design::checks(&with, &derived) {
+            Ok(runs) => {
+                for (name, link) in runs {
+                    writeln!(out, "# {name:8} {link}")?;
+                }
+            }
+            Err(e) => writeln!(out, "# none: {e}")?,
         }
         Ok(())
     };
     write(out).map_err(stdout_stop)
 }
 
+/// Writes the scenario's canonical string, its length and every field with unit and doc.
 pub(crate) fn describe(s: &Scenario, out: &mut impl Write) -> io::Result<()> {
     writeln!(out, "# {}", s.encode())?;
     writeln!(out, "# {} samples of {} s", s.steps(), s.ts)?;
