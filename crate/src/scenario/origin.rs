@@ -83,49 +83,16 @@ const MOTOR_SET: &[&str] = &[
     "rated.f",
 ];
 
-/// The fields a motor and the derived design set.
-const MOTOR_AND_DESIGN_SET: &[&str] = &[
-    "plant.rs",
-    "plant.rr",
-    "plant.m",
-    "plant.ls",
-    "plant.lr",
-    "plant.j",
-    "plant.np",
-    "model.rs",
-    "model.rr",
-    "model.m",
-    "model.ls",
-    "model.lr",
-    "model.j",
-    "model.np",
-    "i_rated",
-    "rated.v",
-    "rated.f",
-    "psi_d",
-    "fw",
-    "fw.base",
-    "k1",
-    "k2",
-    "k3",
-    "k4",
-    "ekf",
-    "ekf.q",
-    "ekf.q_speed",
-    "ekf.r_std",
-    "ekf.q_load",
-    "ekf.load_std",
-    "start",
-    "vlimit",
-    "vdc",
-];
-
 /// The fields a new value of field `key` sets afresh in `s` (see [`FieldInfo::resets`]): a motor
 /// sets its values, and with the derived design, a value the design is derived from sets it.
 pub(super) fn resets(key: &str, s: &Scenario) -> &'static [&'static str] {
     let derived = s.design == DesignKind::Derived || key == "design";
     match key {
-        "motor" if derived => MOTOR_AND_DESIGN_SET,
+        "motor" if derived => {
+            // The fields a motor and the derived design set.
+            static BOTH: std::sync::OnceLock<Vec<&'static str>> = std::sync::OnceLock::new();
+            BOTH.get_or_init(|| [MOTOR_SET, DESIGN_SET].concat())
+        }
         "motor" => MOTOR_SET,
         _ if derived && DESIGN_INPUTS.contains(&key) => DESIGN_SET,
         _ => &[],

@@ -49,31 +49,7 @@ pub(crate) enum Command {
     },
     /// Estimate a motor's equivalent circuit from its nameplate and the no-load and locked-rotor
     /// tests (IEEE Std 112), and print the link that uses it
-    Motor {
-        /// Stator resistance per phase from the DC test (Ω)
-        #[arg(long, value_name = "OHMS", allow_hyphen_values = true)]
-        rs: String,
-        /// The no-load test at rated voltage: line voltage (V rms), line current (A rms), input
-        /// power (W), frequency (Hz)
-        #[arg(long, value_name = "V,I,P,F", allow_hyphen_values = true)]
-        no_load: String,
-        /// The locked-rotor test, as --no-load
-        #[arg(long, value_name = "V,I,P,F", allow_hyphen_values = true)]
-        locked: String,
-        /// The rotor's NEMA design letter, which splits the locked-rotor leakage: A or D half
-        /// each, B 40/60, C 30/70 (stator/rotor)
-        #[arg(long, value_name = "LETTER", default_value = "B")]
-        nema: String,
-        /// The nameplate: rated line voltage (V rms), frequency (Hz) and current (A rms)
-        #[arg(long, value_name = "V,F,I", allow_hyphen_values = true)]
-        rated: String,
-        /// Rotor inertia (kg m²)
-        #[arg(long, value_name = "KG_M2", allow_hyphen_values = true)]
-        j: String,
-        /// Pole pairs
-        #[arg(long, value_name = "N", allow_hyphen_values = true)]
-        np: String,
-    },
+    Motor(crate::motor::MotorArgs),
     /// Run the scenario and write its trace as CSV to stdout or FILE
     Run {
         #[command(flatten)]

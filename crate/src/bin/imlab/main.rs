@@ -80,26 +80,7 @@ fn execute(command: Command, out: &mut impl Write) -> Result<(), Stop> {
         Command::List => run::list(out).map_err(stdout_stop),
         Command::Describe { target } => run::describe(&target.parse()?, out).map_err(stdout_stop),
         Command::Design { target } => run::design(&target.parse()?, out),
-        Command::Motor {
-            rs,
-            no_load,
-            locked,
-            nema,
-            rated,
-            j,
-            np,
-        } => motor::motor(
-            &motor::MotorArgs {
-                rs,
-                no_load,
-                locked,
-                nema,
-                rated,
-                j,
-                np,
-            },
-            out,
-        ),
+        Command::Motor(args) => motor::motor(&args, out),
         Command::Run {
             target,
             every,
