@@ -114,45 +114,42 @@ impl Reference {
                 level,
                 slope,
                 hold,
-            } => {
-                let rise = level.abs() / slope;
-                let dir = level.signum() * slope;
-                let (t1, t2, t3) = (start + rise, start + rise + hold, start + 2.0 * rise + hold);
-                let (value, d1) = if t < start || t >= t3 {
-                    (0.0, 0.0)
-                } else if t < t1 {
-                    (dir * (t - start), dir)
-                } else if t < t2 {
-                    (level, 0.0)
-                } else {
-                    (level - dir * (t - t2), -dir)
-                };
-                RefSample { value, d1, d2: 0.0 }
-            }
+            } => trapezoid(t, start, level, slope, hold, 0.0),
             Reference::Reversal {
                 start,
                 level,
                 slope,
                 hold,
-            } => {
-                let rise = level.abs() / slope;
-                let dir = level.signum() * slope;
-                let (t1, t2, t3) = (start + rise, start + rise + hold, start + 3.0 * rise + hold);
-                let (value, d1) = if t < start {
-                    (0.0, 0.0)
-                } else if t < t1 {
-                    (dir * (t - start), dir)
-                } else if t < t2 {
-                    (level, 0.0)
-                } else if t < t3 {
-                    (level - dir * (t - t2), -dir)
-                } else {
-                    (-level, 0.0)
-                };
-                RefSample { value, d1, d2: 0.0 }
-            }
+            } => trapezoid(t, start, level, slope, hold, -level),
         }
     }
+}
+
+/// 0 until `start`, up at `slope` to `level`, held for `hold`, then at `slope` to `end` (0 or
+/// −`level`), held there: the ramp's and the reversal's trapezoid. Its corners' impulses in d2 are
+/// left out.
+fn trapezoid(t: f64, start: f64, level: f64, slope: f64, hold: f64, end: f64) -> RefSample {
+    let rise = level.abs() / slope;
+    let dir = level.signum() * slope;
+    // The way down is one rise to 0 and, to −level, one more.
+    let down = if end == 0.0 { 2.0 } else { 3.0 };
+    let (t1, t2, t3) = (
+        start + rise,
+        start + rise + hold,
+        start + down * rise + hold,
+    );
+    let (value, d1) = if t < start {
+        (0.0, 0.0)
+    } else if t < t1 {
+        (dir * (t - start), dir)
+    } else if t < t2 {
+        (level, 0.0)
+    } else if t < t3 {
+        (level - dir * (t - t2), -dir)
+    } else {
+        (end, 0.0)
+    };
+    RefSample { value, d1, d2: 0.0 }
 }
 
 #[cfg(test)]
