@@ -32,7 +32,7 @@ const suite = browserSuite();
 const problems = (page) =>
   page.evaluate(async (LOG_DECADES) => {
     // Every plot, including those not near the viewport, which a lazy set has not drawn yet.
-    await window.imlab.plots.drawAll();
+    window.imlab.plots.drawAll();
     const { fit, from } = window.imlab.plots.framing();
     const found = [];
     const sets = [

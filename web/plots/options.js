@@ -105,7 +105,9 @@ export function chartOptions(set, plot, width) {
     series: seriesOf(plot, set.scale),
     axes: axesOf(plot, set.scale),
     cursor: {
-      sync: { key: SYNC_KEY, setSeries: false },
+      // The charts share the cursor only: a drag zooms the chart it is on, and its set passes
+      // the window on (Plots.zoomed), so that no other chart zooms by its own, older scale.
+      sync: { key: SYNC_KEY, setSeries: false, filters: { pub: (type) => type === 'mousemove', sub: () => true } },
       drag: { x: true, y: false },
       bind: {
         dblclick: () => () => {

@@ -140,11 +140,10 @@ export class Plots {
       if (c === null) return null;
       const data = c.data;
       c.destroy();
-      return new uPlot(chartOptions(this, this.defs[i], width), data, this.slots[i]);
+      return this.create(i, data, width);
     });
     if (this.observer)
       for (const [i, div] of this.slots.entries()) if (!this.charts[i]) div.style.minHeight = this.held();
-    if (this.window) for (const c of this.drawn()) c.setScale('x', { min: this.window[0], max: this.window[1] });
   }
 
   /**
@@ -165,11 +164,52 @@ export class Plots {
     if (this.syncing) return;
     // A chart's time scale has its range once the chart is drawn.
     const { min, max } = /** @type {{min: number, max: number}} */ (source.scales.x);
-    this.window = [min, max];
-    this.syncing = true;
-    for (const c of this.drawn()) if (c !== source) c.setScale('x', { min, max });
-    this.syncing = false;
+    this.follow(min, max);
     this.onWindow(min, max);
+  }
+
+  /**
+   * Shows the window [t0, t1] on every chart (another set was zoomed, or a chart of this one).
+   * @param {number} t0
+   * @param {number} t1
+   */
+  follow(t0, t1) {
+    this.window = [t0, t1];
+    this.quietly(() => this.drawn().forEach((c) => c.batch(() => c.setScale('x', { min: t0, max: t1 }))));
+  }
+
+  /**
+   * Runs \`change\`, which sets the charts' data or scales, as no zoom of the user's: uPlot fires
+   * a chart's scale hooks when it commits, which \`batch\` does at once rather than in a microtask.
+   * @param {() => void} change
+   */
+  quietly(change) {
+    this.syncing = true;
+    try {
+      change();
+    } finally {
+      this.syncing = false;
+    }
+  }
+
+  /**
+   * A new chart of plot \`i\` in its figure, drawn at once with the set's window: its scales are
+   * set here, not zoomed by the user.
+   * @param {number} i
+   * @param {uPlot.AlignedData} data
+   * @param {number} width
+   */
+  create(i, data, width) {
+    return new uPlot(chartOptions(this, this.defs[i], width), data, (chart, init) => {
+      this.slots[i].appendChild(chart.root);
+      const w = this.window;
+      this.quietly(() =>
+        chart.batch(() => {
+          init();
+          if (w) chart.setScale('x', { min: w[0], max: w[1] });
+        }),
+      );
+    });
   }
 
   /**
@@ -235,23 +275,15 @@ export class Plots {
     const i = this.slots.indexOf(div);
     if (i < 0 || this.charts[i] !== null || this.view === null) return;
     this.observer?.unobserve(div);
-    // Its scales are set here, not zoomed by the user: the set's window stays as it is.
-    this.syncing = true;
-    const chart = new uPlot(chartOptions(this, this.defs[i], width), this.data(this.defs[i], this.view), div);
-    if (this.window) chart.setScale('x', { min: this.window[0], max: this.window[1] });
-    this.syncing = false;
+    // The figure gives up its held height first: the chart measures where it lies as it draws.
     div.style.minHeight = '';
-    this.charts[i] = chart;
+    this.charts[i] = this.create(i, this.data(this.defs[i], this.view), width);
   }
 
-  /**
-   * Draws every chart not drawn yet (the PNG export takes them all); resolves once they are drawn
-   * (uPlot draws a new chart in a microtask).
-   */
-  async drawAll() {
+  /** Draws every chart not drawn yet (the PNG export takes them all). */
+  drawAll() {
     const width = this.width();
     this.slots.forEach((div) => this.draw(div, width));
-    await null;
   }
 
   /**
@@ -297,9 +329,7 @@ export class Plots {
       }
       const title = chart.root.querySelector('.u-title');
       if (title) title.textContent = this.title(plot);
-      this.syncing = true;
-      chart.setData(this.data(plot, view), true);
-      this.syncing = false;
+      this.quietly(() => chart.batch(() => chart.setData(this.data(plot, view), true)));
     }
   }
 
@@ -310,9 +340,12 @@ export class Plots {
   refine(view) {
     if (this.view === null) return;
     this.view = view;
-    this.syncing = true;
-    this.defs.forEach((plot, i) => this.charts[i]?.setData(this.data(plot, view), true));
-    this.syncing = false;
+    this.quietly(() =>
+      this.defs.forEach((plot, i) => {
+        const c = this.charts[i];
+        c?.batch(() => c.setData(this.data(plot, view), true));
+      }),
+    );
   }
 
   /** Forgets the zoom window; the next view shows the whole run. */
@@ -322,9 +355,7 @@ export class Plots {
 
   /** Re-fits the y-axes (after the framing changed). */
   refit() {
-    this.syncing = true;
-    for (const c of this.drawn()) c.setData(c.data, true);
-    this.syncing = false;
+    this.quietly(() => this.drawn().forEach((c) => c.batch(() => c.setData(c.data, true))));
   }
 
   resize(height = this.height) {
@@ -334,8 +365,8 @@ export class Plots {
   }
 
   /** Each chart's canvas with its title and colour key, for the PNG export. */
-  async figures() {
-    await this.drawAll();
+  figures() {
+    this.drawAll();
     return this.drawn().map((c) => {
       const i = this.charts.indexOf(c);
       return {

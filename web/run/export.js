@@ -80,7 +80,7 @@ export function createExport({ client, state, plots, walkthrough }) {
       return;
     }
     // The plots' series are labelled with text.
-    const image = await png(/** @type {PlotImage[]} */ (await set.figures()), pngHeader());
+    const image = await png(/** @type {PlotImage[]} */ (set.figures()), pngHeader());
     // The browser gives no image for a canvas it cannot encode.
     if (image === null) throw new Error('the browser could not encode the plots as a PNG');
     download(image, `${fileStem()}.png`);

@@ -36,7 +36,7 @@ export function createViews({ client, state, plots, walkthrough, stale }) {
     // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
     const full = /** @type {[number, number]} */ (plots.full); // the run shown has one
     if (t0 <= full[0] && t1 >= full[1]) return;
-    for (const set of plotSets) set.window = [t0, t1];
+    for (const set of plotSets) set.follow(t0, t1);
     requestViews(t0, t1);
   }
 
