@@ -388,3 +388,43 @@ test('a link with a sweep and a map runs both: neither cancels the other', async
     assert.equal(await page.$$eval('.map-table .map-cell', (bs) => bs.length), 3);
   });
 });
+
+test("a motor typed as its nameplate and lab tests gives `imlab motor`'s circuit and link, runs them, and a bad reading is named", () =>
+  withPage('?v=1&preset=step&duration=0.02', async (page) => {
+    await page.click('[role=tab][data-tab=analysis]');
+    await page.click('#motor-example');
+    await page.waitForFunction(() => document.querySelector('#motor-form [name=rs]').value !== '');
+    const form = await page.evaluate(() =>
+      Object.fromEntries([...new FormData(document.querySelector('#motor-form'))].map(([k, v]) => [k, String(v)])),
+    );
+    const printed = execFileSync(cli, [
+      'motor',
+      ...['rs', 'no_load', 'locked', 'nema', 'rated', 'j', 'np'].flatMap((k) => [`--${k.replace('_', '-')}`, form[k]]),
+    ])
+      .toString()
+      .trim()
+      .split('\n');
+    await page.click('#motor-run');
+    await page.waitForFunction(() => document.body.dataset.motor === 'done');
+    // The heading, each value with how it was found, and the link, as the CLI prints them.
+    assert.equal(await page.textContent('#motor-status'), printed[0].replace(/^# /, ''));
+    const lines = await page.$$eval('#motor-result dt', (dts) =>
+      dts.map((dt) => [dt.textContent, /** @type {HTMLElement} */ (dt.nextElementSibling).textContent]),
+    );
+    const collapse = (/** @type {string} */ text) => text.replace(/\s+/g, ' ').trim();
+    assert.deepEqual(
+      lines.map(([value, how]) => collapse(`${value} ${how}`)),
+      printed.slice(1, 8).map(collapse),
+    );
+    const link = printed.at(-1);
+    assert.equal(await page.textContent('#motor-result .motor-link'), link);
+    await startRun(page, () => page.click('#motor-result button'));
+    assert.equal(await page.evaluate(() => document.body.dataset.scenario), link);
+    // A reading with a number missing is refused, naming the test.
+    await page.click('[role=tab][data-tab=analysis]');
+    await page.fill('#motor-form [name=no_load]', '400,2.985,98.9');
+    await page.click('#motor-run');
+    await page.waitForFunction(() => document.body.dataset.motor === 'refused');
+    assert.equal(await page.locator('#motor-result > *').count(), 0);
+    assert.match(await page.textContent('#motor-status'), /'no-load' = '400,2\.985,98\.9': expected V,I,P,F/);
+  }));

@@ -267,6 +267,27 @@ test("a motor chosen in the form sets the plant, the model and the rating, as it
     assert.match(described, /^i_rated +=  +7\.0710678118654755 A/m);
   }));
 
+test('a reference typed as a table runs as its link does in the CLI; a table past its bound names the field and its count', () =>
+  withPage('v=1&preset=step&duration=0.05', async (page) => {
+    assert.equal(await settled(page), 'done');
+    await page.selectOption('#field-ref', 'table');
+    const table = '[id="field-ref.table"]';
+    await page.waitForSelector(table);
+    const long = Array.from({ length: 17 }, (_, i) => `${i / 100}:${i}`).join(',');
+    await page.fill(table, long);
+    await page.press(table, 'Tab');
+    await page.waitForSelector(`${table}.invalid`);
+    assert.match(await page.textContent('#message'), /'ref\.table'.*at most 16 points; this table has 17/);
+    assert.ok(await page.isDisabled('#run'));
+    await page.fill(table, '0:0,0.01:20,0.03:20,0.04:-10');
+    await page.press(table, 'Tab');
+    await page.waitForFunction((t) => !document.querySelector(`${t}.invalid`), table);
+    await startRun(page, () => page.click('#run'));
+    const scenario = scenarioInUrl(page);
+    assert.equal(scenario, 'v=1&preset=step&ref=table&ref.table=0:0,0.01:20,0.03:20,0.04:-10&duration=0.05');
+    assert.equal(await exportCsv(page), cliCsv(scenario));
+  }));
+
 test('Enter in the settings runs, and the address always describes the run on screen or the page says it does not', () =>
   withPage('v=1&preset=step', async (page) => {
     assert.equal(await settled(page), 'done');

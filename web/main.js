@@ -23,6 +23,7 @@ import { createTabs } from './ui/tabs.js';
 import { createPresentation } from './ui/presentation.js';
 import { wireShare } from './ui/share.js';
 import { createSweeps } from './analysis/sweeps.js';
+import { createMotorForm } from './analysis/motor-form.js';
 import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
@@ -111,7 +112,6 @@ const state = {
   pins: [], // pinned scenarios, in pin order (pins)
   pinning: false, // pins are being run in the worker (pins; run, when the worker fails)
 };
-
 /** Whether the y-axes leave out the start-up transient, and from which time. */
 const framing = () => ({ fit: ui.fit.checked && state.transient !== null, from: state.transient?.t ?? -Infinity });
 const sampleTime = () => Number(fieldValue(state.info, 'ts')) || null;
@@ -216,20 +216,20 @@ for (const event of ['pointerenter', 'focus', 'click'])
   $('tab-lessons', HTMLButtonElement).addEventListener(event, listLessons, { once: true });
 const current = () => settings.runCurrent();
 const sweeps = createSweeps({ state, analysis, framing, showTab: tabs.showTab, current, stale });
+// Shows the plots of a scenario, run (a map's cell, a motor of one's own).
+const openRun = (/** @type {string} */ scenario) => (tabs.showTab('plots'), settings.load(scenario));
 const robust = createRobust({
   state,
   analysis,
   showTab: tabs.showTab,
   current,
   stale,
-  open: (/** @type {string} */ scenario) => {
-    tabs.showTab('plots');
-    settings.load(scenario);
-  },
+  open: openRun,
   scale: () => plots.scale,
   // A lesson about the map shows it as it is drawn.
   drawn: () => lessons.mapDrawn(),
 });
+createMotorForm({ client, open: openRun });
 const challenge = new ChallengePanel({
   client,
   state,

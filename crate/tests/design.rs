@@ -10,7 +10,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use imlab::design::{checks, OVERLOAD};
-use imlab::identify::{circuit, readings, Nema, Tests};
+use imlab::identify::{circuit, readings, Nema, Tests, MACHINE, MACHINE_RATING};
 use imlab::motors::MOTOR_NAMES;
 use imlab::params::MotorParams;
 use imlab::record::{Figure, WarningKind};
@@ -85,31 +85,18 @@ fn the_derived_design_follows_within_the_rating_and_stays_consistent_on_every_mo
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
 
-/// A 2.2 kW, 400 V, 50 Hz, 5 A machine of a drives researcher (values of that class): the motor
-/// the runs simulate.
-const MACHINE: MotorParams = MotorParams {
-    rs: 3.7,
-    rr: 2.5,
-    m: 0.235,
-    ls: 0.246,
-    lr: 0.246,
-    j: 0.015,
-    np: 2.0,
-    t0: 0.0,
-    cf: 0.0,
-};
-
 #[test]
 fn a_machine_entered_by_its_nameplate_and_tests_gets_a_design_that_meets_the_same() {
     // The lab's readings (a simulated lab: the machine's steady state), locked at a quarter of
     // the rated voltage and frequency; the model is what the method estimates from them.
-    let (no_load, locked) = readings(&MACHINE, (400.0, 50.0), (100.0, 12.5));
+    let (v, f, i) = MACHINE_RATING;
+    let (no_load, locked) = readings(&MACHINE, (v, f), (v / 4.0, f / 4.0));
     let tests = Tests {
         rs: MACHINE.rs,
         no_load,
         locked,
         nema: Nema::A,
-        frequency: 50.0,
+        frequency: f,
     };
     let model = circuit(&tests, MACHINE.j, MACHINE.np).unwrap();
     let side = |name: &str, p: &MotorParams| {
@@ -119,10 +106,10 @@ fn a_machine_entered_by_its_nameplate_and_tests_gets_a_design_that_meets_the_sam
         )
     };
     let base = format!(
-        "v=1&preset=step&design=derived{}{}&i_rated={}&rated.v=400&rated.f=50",
+        "v=1&preset=step&design=derived{}{}&i_rated={}&rated.v={v}&rated.f={f}",
         side("plant", &MACHINE),
         side("model", &model),
-        5.0 * 2f64.sqrt()
+        i * 2f64.sqrt()
     );
     let mut failures = Vec::new();
     check("2.2 kW by its tests", &base, &mut failures);

@@ -38,6 +38,12 @@ const OPEN_GROUPS = new Set(['reference', 'controller', 'gains']);
 function allowed(f) {
   if (f.options.length) return f.options.join(' | ');
   if (f.formula) return t('settings-allowed-formula');
+  if (f.points)
+    return t('settings-allowed-table', {
+      points: f.points,
+      min: local(String(f.min)),
+      max: `${local(String(f.max))} ${f.unit}`,
+    });
   return t(f.integer ? 'settings-allowed-whole' : 'settings-allowed-range', {
     min: local(String(f.min)),
     op: f.min_open ? '<' : '≤',
@@ -71,6 +77,7 @@ function input(f) {
       autocapitalize: 'off',
     });
   }
+  if (f.points) return el('input', { type: 'text', name: f.key, value, spellcheck: false, autocomplete: 'off' });
   if (f.integer && f.min === 0 && f.max === 1) {
     return el('input', { type: 'checkbox', name: f.key, checked: value === '1' });
   }
@@ -255,8 +262,8 @@ export function formScenario(form, preset) {
     const control = namedControl(form, f.key);
     return control ? valueOf(control) : String(f.value);
   };
-  // A field changed here whose new value sets others afresh (the core's `resets`: a motor sets
-  // the plant, the model and the rating) leaves their old values out.
+  // A field changed here whose new value sets others afresh (the core's `resets`: a reference kind
+  // its parameters, a motor the plant, the model and the rating) leaves their old values out.
   const reset = new Set(
     (info?.fields ?? []).filter((f) => f.value !== null && held(f) !== f.value).flatMap((f) => f.resets),
   );

@@ -6,6 +6,8 @@ import initTools, {
   law_language,
   law_preview,
   law_verdicts,
+  motor_example,
+  motor_from_tests,
   panic_message,
   robust_cells,
   robust_csv,
@@ -50,6 +52,8 @@ export const JOBS = {
   'law-preview': (d) => law_preview(d.step, d.text),
   'law-verdicts': (d) => law_verdicts(d.scenario),
   design: (d) => design_lines(d.scenario),
+  motor: (d) => motor_from_tests(d.entry),
+  'motor-example': () => motor_example(),
   'scenario-differences': (d) => scenario_differences(d.from, d.text),
   ...CHALLENGE_JOBS,
 };

@@ -17,7 +17,7 @@ export {};
  * The core's own types, declared in its bindings' `.d.ts` from the Rust structures (tsify): what
  * a reply carries is what the core wrote.
  * @import {Cell, ChallengeParts, ChallengeVerdict, ChallengeView, ClassRow, ClassView,
- *   Composed, CriterionFigure, Description, Figure, FigureInfo, GradedView, Language, LawVerdict, Line, Measures,
+ *   Composed, CriterionFigure, Description, Entry, Figure, FigureInfo, GradedView, Identified, Language, LawVerdict, Line, Measures,
  *   MapParts, Metrics, PlanView, PresetInfo, Preview, Report, RobustMap, MapRun, SeedBands, SeedResult, SeedRun,
  *   Snapshot, Stability, SubmissionView, SweepPoint, SweepSummary, BuiltinView, Message} from '../../pkg/imlab.js'
  */
@@ -161,6 +161,9 @@ export {};
  *   verdict on each own law of `scenario` against its step's designed dynamics.
  * - 'design': the design `design=derived` gives the motor of `scenario`, each value with the rule
  *   behind it (as `imlab design` prints them).
+ * - 'motor': the circuit a motor's nameplate and lab tests give, each value with how it was found,
+ *   and the link that runs it (as `imlab motor` prints them); 'motor-example' the entry of the
+ *   2.2 kW machine the method is checked on.
  * - 'scenario-differences': how scenario `text` differs from scenario `from`, a line a field
  *   ("key: from's → text's unit").
  * - 'grade-class': a class's file read against a challenge (a built-in's name or a link): the
@@ -194,6 +197,8 @@ export {};
  *   'law-preview': {req: {step: number, text: string}, result: Preview},
  *   'law-verdicts': {req: {scenario: string}, result: LawVerdict[]},
  *   design: {req: {scenario: string}, result: Line[]},
+ *   motor: {req: {entry: Entry}, result: Identified},
+ *   'motor-example': {req: {}, result: Entry},
  *   'scenario-differences': {req: {from: string, text: string}, result: string[]},
  *   'grade-class': {req: {text: string, bytes: Uint8Array}, result: ClassView},
  *   'grade-link': {req: {text: string, row: ClassRow}, result: GradedView},

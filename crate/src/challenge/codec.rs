@@ -500,7 +500,7 @@ fn parse_need(base: &Scenario, figure: &str, value: &str) -> Result<Criterion, C
             _ => return Err(bad()),
         }
     };
-    if figure == LOAD_RECOVERY && base.load_step.torque == 0.0 {
+    if figure == LOAD_RECOVERY && base.load_step.step().is_none() {
         return Err(ChallengeError::malformed(
             Message::new("challenge-need-no-load-step").text("key", key.as_str()),
         ));

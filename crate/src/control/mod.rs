@@ -17,6 +17,7 @@ mod flux;
 pub mod formula;
 mod ifoc;
 pub mod law;
+mod points;
 mod reference;
 mod stability;
 
@@ -27,5 +28,6 @@ pub use backstepping::{
 pub use disturbance::{disturbances, Sample};
 pub use flux::flux_target;
 pub use ifoc::{Ifoc, IfocTuning};
+pub use points::{Points, PointsError, MAX_POINTS};
 pub use reference::{RefSample, Reference};
 pub use stability::LyapunovBound;

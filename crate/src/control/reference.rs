@@ -1,9 +1,13 @@
 //! Speed references with analytic first and second time derivatives.
 
+use super::Points;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// A speed reference ω_d(t) (rad/s).
+// A table's points are kept inline (a few hundred bytes), not boxed: the scenario stays `Copy` and
+// a run reads its reference every sample without following a pointer.
+#[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "lowercase")]
 pub enum Reference {
@@ -53,6 +57,11 @@ pub enum Reference {
         /// Time at `level` before the reversal (s).
         hold: f64,
     },
+    /// Straight between the points of a table (t, ω_d), held before the first and after the last.
+    Table {
+        /// The points.
+        points: Points,
+    },
 }
 
 /// ω_d(t) and its first two derivatives.
@@ -75,11 +84,12 @@ impl Reference {
             Reference::Step { .. } => "step",
             Reference::Ramp { .. } => "ramp",
             Reference::Reversal { .. } => "reversal",
+            Reference::Table { .. } => "table",
         }
     }
 
-    /// Samples ω_d and its derivatives at time `t` (s). Corners of the ramp and the step's
-    /// start carry Dirac impulses in their derivatives; those are left out.
+    /// Samples ω_d and its derivatives at time `t` (s). Corners of the ramp, the reversal and the
+    /// table, and the step's start, carry Dirac impulses in their derivatives; those are left out.
     pub fn sample(&self, t: f64) -> RefSample {
         match *self {
             Reference::Constant { value } => RefSample {
@@ -121,6 +131,10 @@ impl Reference {
                 slope,
                 hold,
             } => trapezoid(t, start, level, slope, hold, -level),
+            Reference::Table { ref points } => {
+                let (value, d1) = points.sample(t);
+                RefSample { value, d1, d2: 0.0 }
+            }
         }
     }
 }

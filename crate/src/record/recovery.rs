@@ -23,12 +23,9 @@ pub fn recovery_band(reference_at_step: f64) -> f64 {
 }
 
 /// [`LOAD_RECOVERY`] of the rows `rows` recorded from scenario `s` (s); None when the scenario
-/// has no load step (`load.torque` = 0) or the rows end before it.
+/// has no load step (`load.torque` = 0, or a load table instead) or the rows end before it.
 pub fn load_recovery(s: &Scenario, rows: &dyn Samples) -> Option<f64> {
-    if s.load_step.torque == 0.0 {
-        return None;
-    }
-    let from = s.load_step.time;
+    let (from, _) = s.load_step.step()?;
     let len = rows.count();
     let start = (0..len).find(|&i| rows.time(i) >= from)?;
     let band = recovery_band(rows.row(start).omega_ref);

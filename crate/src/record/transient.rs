@@ -332,8 +332,8 @@ fn converged(rows: &dyn Samples, levels: &Levels) -> (Option<f64>, Option<f64>, 
 }
 
 /// The time of the first change the scenario makes to the drive after `after` (s): the
-/// reference's step or the start of its ramp, or the load step (none for a constant or sine
-/// reference and no load step after it).
+/// reference's step, the start of its ramp or reversal or a corner of its table, or when the
+/// extra load first acts (none for a constant or sine reference and no load after it).
 fn first_event(s: &Scenario, after: f64) -> Option<f64> {
     let reference = match s.reference {
         Reference::Step { size, time, .. } if size != 0.0 => Some(time),
@@ -342,10 +342,24 @@ fn first_event(s: &Scenario, after: f64) -> Option<f64> {
             level,
             slope,
             ..
+        }
+        | Reference::Reversal {
+            start,
+            level,
+            slope,
+            ..
         } if level != 0.0 && slope > 0.0 => Some(start),
+        // A table's first corner after `after` from which the reference moves.
+        Reference::Table { points } => {
+            let pairs: Vec<(f64, f64)> = points.pairs().collect();
+            pairs
+                .windows(2)
+                .find(|w| w[1].1 != w[0].1 && w[0].0 > after)
+                .map(|w| w[0].0)
+        }
         _ => None,
     };
-    let load = (s.load_step.torque != 0.0).then_some(s.load_step.time);
+    let load = s.load_step.from();
     [reference, load]
         .into_iter()
         .flatten()

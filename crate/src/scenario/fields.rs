@@ -4,7 +4,7 @@
 use super::origin::{resets, set_design, set_motor};
 use super::presets::default_reference;
 use super::{ControllerKind, DesignKind, Scenario, ScenarioError, Start};
-use crate::control::Reference;
+use crate::control::{Points, PointsError, Reference, MAX_POINTS};
 use crate::inverter::Shape;
 use crate::motors::{motor, MOTOR_NAMES};
 use crate::observer::Predictor;
@@ -33,6 +33,11 @@ pub(super) enum Access {
     },
     /// The law of backstepping step `step` (1–4): a formula, percent-encoded in the codec.
     Formula { step: u8 },
+    /// A table of points `t:value,...` (a reference or a load torque); its range bounds the values.
+    Table {
+        get: fn(&Scenario) -> Option<Points>,
+        set: fn(&mut Scenario, Points) -> bool,
+    },
 }
 
 /// The values a number field takes.
@@ -113,6 +118,9 @@ pub struct FieldInfo {
     /// For a field that holds a formula, a step's own law: the step (1–4); its value is then the
     /// formula's text, not its codec text.
     pub formula: Option<u8>,
+    /// For a table of points (`t:value,...`), the most points it holds; `min` and `max` bound its
+    /// values, and its times run from 0 to the longest run.
+    pub points: Option<u8>,
     /// Meaning (`field-KEY` of `core-run.ftl`).
     pub doc: Message,
     /// Current value as written in the codec, or None when it does not apply.
@@ -122,9 +130,9 @@ pub struct FieldInfo {
     /// limit, `vdc` only with the circle or hex limit or PWM, `delay.comp` only with the delay and
     /// the backstepping controller.
     pub acts: bool,
-    /// The fields a new value of this one sets afresh (`motor=` sets the plant's and the model's
-    /// circuit and the rating): a form that changes this field leaves those out, or their old
-    /// values would undo it.
+    /// The fields a new value of this one sets afresh (`ref=` the new kind's parameters, `motor=`
+    /// the plant's and the model's circuit and the rating): a form that changes this field leaves
+    /// those out, or their old values would undo it or not apply.
     pub resets: &'static [&'static str],
 }
 
@@ -134,7 +142,7 @@ pub struct FieldInfo {
 /// only the backstepping controller reads) only with the backstepping controller; ε and h only
 /// with the robust terms on; the EKF's load and R_r tuning only with those states on; `vmax` only
 /// with the box limit; `vdc` only with the circle or hex limit or PWM; `delay.comp` only with the
-/// delay and the backstepping controller.
+/// delay and the backstepping controller; the load step only without a load table.
 pub(super) fn idle_because(key: &str, s: &Scenario) -> Option<String> {
     let ifoc = s.controller == ControllerKind::Ifoc;
     let backstepping_only =
@@ -168,6 +176,8 @@ pub(super) fn idle_because(key: &str, s: &Scenario) -> Option<String> {
         reason(s.design == DesignKind::Paper, "design=paper")
     } else if key == "delay.comp" {
         reason(ifoc, "controller=ifoc").or(reason(!s.drive.delay, "delay=0"))
+    } else if matches!(key, "load.time" | "load.torque") {
+        (!s.load_step.table.is_empty()).then(|| "load.table".to_string())
     } else {
         None
     }
@@ -318,6 +328,17 @@ const fn choice(key: &'static str, group: &'static str, access: Access) -> Field
     }
 }
 
+const fn table_of(
+    key: &'static str,
+    group: &'static str,
+    unit: &'static str,
+    range: Range,
+    get: fn(&Scenario) -> Option<Points>,
+    set: fn(&mut Scenario, Points) -> bool,
+) -> Field {
+    number(key, group, unit, range, Access::Table { get, set })
+}
+
 const fn law(key: &'static str, unit: &'static str, step: u8) -> Field {
     Field {
         key,
@@ -359,7 +380,7 @@ fn table() -> Vec<Field> {
             set: set_design,
         }),
         choice("ref", "reference", Access::Choice {
-            options: &["constant", "sine", "step", "ramp", "reversal"], get: |s| s.reference.kind(), set: set_reference,
+            options: &["constant", "sine", "step", "ramp", "reversal", "table"], get: |s| s.reference.kind(), set: set_reference,
         }),
         number("ref.value", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Constant.value)),
         number("sine.amp", "reference", "rad/s", closed(0.0, 1000.0), reference!(Sine.amp)),
@@ -376,6 +397,9 @@ fn table() -> Vec<Field> {
         number("rev.level", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Reversal.level)),
         number("rev.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Reversal.slope)),
         number("rev.hold", "reference", "s", closed(0.0, 10.0), reference!(Reversal.hold)),
+        table_of("ref.table", "reference", "rad/s", closed(-1000.0, 1000.0),
+            |s| match s.reference { Reference::Table { points } => Some(points), _ => None },
+            |s, p| match &mut s.reference { Reference::Table { points } => { *points = p; true } _ => false }),
         number("psi_d", "reference", "Wb²", above(0.0, 4.0), at!(psi_d)),
         number("fw", "reference", "", whole(0.0, 1.0), flag!(fw)),
         number("fw.base", "reference", "rad/s", above(0.0, 1e4), at!(fw_base)),
@@ -436,6 +460,9 @@ fn table() -> Vec<Field> {
     v.extend([
         number("load.time", "load", "s", closed(0.0, 10.0), at!(load_step.time)),
         number("load.torque", "load", "N m", closed(-1e4, 1e4), at!(load_step.torque)),
+        table_of("load.table", "load", "N m", closed(-1e4, 1e4),
+            |s| Some(s.load_step.table),
+            |s, p| { s.load_step.table = p; true }),
         number("vmax", "limits", "V", above(0.0, 1e5), at!(voltage_limit)),
         number("duration", "limits", "s", above(0.0, MAX_DURATION), at!(duration)),
         number("ts", "limits", "s", closed(1e-7, 1e-2), at!(ts)),
@@ -489,32 +516,57 @@ impl Field {
             Access::Formula { step } => {
                 Message::new("scenario-allowed-formula").count("step", step)
             }
-            Access::Number { .. } => {
-                let Range {
-                    min,
-                    min_open,
-                    max,
-                    integer,
-                } = self.range;
-                let range = Message::new("scenario-allowed-range")
-                    .real("min", min)
-                    .text("below", if min_open { "<" } else { "≤" })
-                    .text("key", self.key)
-                    .real("max", max);
-                let range = if self.unit.is_empty() {
-                    range
-                } else {
-                    Message::new("scenario-allowed-unit")
-                        .said("range", range)
-                        .text("unit", self.unit)
-                };
-                if integer {
-                    Message::new("scenario-allowed-whole").said("range", range)
-                } else {
-                    range
-                }
-            }
+            Access::Table { .. } => Message::new("scenario-allowed-table")
+                .count("max", MAX_POINTS)
+                .real("duration", MAX_DURATION)
+                .said("values", self.value_range()),
+            Access::Number { .. } => self.value_range(),
         }
+    }
+
+    /// The range of its numbers (of a table, its values), with the unit and whether whole.
+    fn value_range(&self) -> Message {
+        let Range {
+            min,
+            min_open,
+            max,
+            integer,
+        } = self.range;
+        let range = Message::new("scenario-allowed-range")
+            .real("min", min)
+            .text("below", if min_open { "<" } else { "≤" })
+            .text("key", self.key)
+            .real("max", max);
+        let range = if self.unit.is_empty() {
+            range
+        } else {
+            Message::new("scenario-allowed-unit")
+                .said("range", range)
+                .text("unit", self.unit)
+        };
+        if integer {
+            Message::new("scenario-allowed-whole").said("range", range)
+        } else {
+            range
+        }
+    }
+
+    /// Whether table `p` fits the field: its times from 0 to the longest run, its values in the
+    /// field's range.
+    pub(super) fn check_points(&self, p: &Points) -> Result<(), ScenarioError> {
+        for (t, v) in p.pairs() {
+            if !(0.0..=MAX_DURATION).contains(&t) {
+                return Err(ScenarioError::BadValue {
+                    key: self.key.to_string(),
+                    value: p.encode(),
+                    expected: Message::new("scenario-expected-table-time")
+                        .real("t", t)
+                        .real("max", MAX_DURATION),
+                });
+            }
+            self.check(v)?;
+        }
+        Ok(())
     }
 
     /// Whether `value` is in the field's range.
@@ -544,6 +596,7 @@ impl Field {
             Access::Formula { step } => Some(encode_formula(
                 s.law[step as usize - 1].as_deref().unwrap_or(""),
             )),
+            Access::Table { get, .. } => get(s).map(|p| p.encode()),
         }
     }
 
@@ -567,6 +620,39 @@ impl Field {
                     }
                 })?;
                 s.law[step as usize - 1] = Some(text);
+                Ok(())
+            }
+            Access::Table { set, .. } => {
+                let bad = |expected: Message| ScenarioError::BadValue {
+                    key: self.key.to_string(),
+                    value: value.to_string(),
+                    expected,
+                };
+                // A page or a mail client may have escaped the `:` and `,`.
+                let text = percent::decode(value, Plus::Plus)
+                    .ok_or_else(|| bad(Message::new("scenario-expected-table")))?;
+                let points = Points::parse(&text).map_err(|e| {
+                    bad(match e {
+                        PointsError::Syntax => Message::new("scenario-expected-table"),
+                        PointsError::TooMany { count } => {
+                            Message::new("scenario-expected-table-length")
+                                .count("count", count)
+                                .count("max", MAX_POINTS)
+                        }
+                        PointsError::NotRising { before, after } => {
+                            Message::new("scenario-expected-table-rising")
+                                .real("before", before)
+                                .real("after", after)
+                        }
+                    })
+                })?;
+                self.check_points(&points)?;
+                if !set(s, points) {
+                    return Err(ScenarioError::NotApplicable {
+                        key: self.key.to_string(),
+                        reference: s.reference.kind(),
+                    });
+                }
                 Ok(())
             }
             Access::Choice { options, set, .. } => {
@@ -617,10 +703,14 @@ impl Field {
             integer,
             options: match self.access {
                 Access::Choice { options, .. } => options,
-                Access::Number { .. } | Access::Formula { .. } => &[],
+                Access::Number { .. } | Access::Formula { .. } | Access::Table { .. } => &[],
             },
             formula: match self.access {
                 Access::Formula { step } => Some(step),
+                _ => None,
+            },
+            points: match self.access {
+                Access::Table { .. } => Some(MAX_POINTS as u8),
                 _ => None,
             },
             doc: Message::new(self.doc),

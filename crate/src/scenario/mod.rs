@@ -7,11 +7,13 @@
 
 mod error;
 mod fields;
+mod load;
 mod origin;
 mod presets;
 mod validate;
 
 pub use error::ScenarioError;
+pub use load::LoadStep;
 pub use origin::{DesignKind, Start, DESIGN_SET};
 
 pub(crate) use fields::parse_number;
@@ -33,15 +35,6 @@ pub const CODEC_VERSION: u32 = 1;
 /// Longest scenario string accepted (bytes): every field written out at full precision takes
 /// about 2 KiB, so 16 KiB leaves room without letting a pasted megabyte block the parser.
 pub const MAX_SCENARIO_BYTES: usize = 16 * 1024;
-/// An extra load torque applied from a given time on, unknown to the controller and observer.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct LoadStep {
-    /// Time the step is applied (s).
-    pub time: f64,
-    /// Extra load torque (N m); 0 means no step.
-    pub torque: f64,
-}
-
 /// What a real drive adds between the controller and the motor, all off by default (the paper's
 /// idealised loop: u_k applied at t_k, ±vmax per component, ideal averaged voltages).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -649,6 +642,12 @@ mod properties {
 
     /// A value in the range of the field described by `f`, as the codec writes it.
     fn value_in(f: &FieldInfo) -> BoxedStrategy<String> {
+        if f.points.is_some() {
+            // Two points, the second a value in the field's range.
+            return (f.min.max(-1e3)..=f.max.min(1e3))
+                .prop_map(|v| format!("0:0,0.1:{v}"))
+                .boxed();
+        }
         if !f.options.is_empty() {
             return proptest::sample::select(f.options)
                 .prop_map(str::to_string)

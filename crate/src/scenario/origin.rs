@@ -83,11 +83,23 @@ const MOTOR_SET: &[&str] = &[
     "rated.f",
 ];
 
-/// The fields a new value of field `key` sets afresh in `s` (see [`FieldInfo::resets`]): a motor
-/// sets its values, and with the derived design, a value the design is derived from sets it.
+/// The fields a new value of field `key` sets afresh in `s` (see [`FieldInfo::resets`]): a new
+/// reference kind has parameters of its own, a motor sets its values, and with the derived
+/// design, a value the design is derived from sets it.
 pub(super) fn resets(key: &str, s: &Scenario) -> &'static [&'static str] {
     let derived = s.design == DesignKind::Derived || key == "design";
     match key {
+        "ref" => {
+            static KINDS: std::sync::OnceLock<Vec<&'static str>> = std::sync::OnceLock::new();
+            KINDS.get_or_init(|| {
+                let of_a_kind = ["ref.", "sine.", "step.", "ramp.", "rev."];
+                super::fields::fields()
+                    .iter()
+                    .map(|f| f.key)
+                    .filter(|k| of_a_kind.iter().any(|p| k.starts_with(p)))
+                    .collect()
+            })
+        }
         "motor" if derived => {
             // The fields a motor and the derived design set.
             static BOTH: std::sync::OnceLock<Vec<&'static str>> = std::sync::OnceLock::new();

@@ -1,7 +1,7 @@
 //! The presets: the paper's figures and the scenarios the lessons use, each a [`Scenario`].
 
 use super::{ControllerKind, DesignKind, Drive, LoadStep, Scenario, Start};
-use crate::control::{Gains, IfocTuning, Reference};
+use crate::control::{Gains, IfocTuning, Points, Reference};
 use crate::inverter::Shape;
 use crate::observer::{EkfConfig, Predictor};
 use crate::params::MotorParams;
@@ -122,6 +122,7 @@ fn paper_base(name: &str, reference: Reference, duration: f64) -> Scenario {
         load_step: LoadStep {
             time: 0.0,
             torque: 0.0,
+            table: Points::EMPTY,
         },
         perfect: false,
         drive: Drive {
@@ -192,6 +193,7 @@ pub fn preset(name: &str) -> Option<Scenario> {
             s.load_step = LoadStep {
                 time: 0.15,
                 torque: 2.0,
+                table: Points::EMPTY,
             };
             s
         }
@@ -270,6 +272,11 @@ pub(super) fn default_reference(kind: &str) -> Option<Reference> {
             level: 100.0,
             slope: 400.0,
             hold: 0.10,
+        },
+        // The ramp's trapezoid as a table, to edit from.
+        "table" => Reference::Table {
+            points: Points::new(&[(0.05, 0.0), (0.3, 100.0), (0.4, 100.0), (0.65, 0.0)])
+                .expect("rising times"),
         },
         _ => return None,
     })

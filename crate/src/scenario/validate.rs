@@ -69,10 +69,18 @@ impl Scenario {
             }
         }
         for field in fields() {
-            if let Access::Number { get, .. } = field.access {
-                if let Some(v) = get(self) {
-                    field.check(v)?;
+            match field.access {
+                Access::Number { get, .. } => {
+                    if let Some(v) = get(self) {
+                        field.check(v)?;
+                    }
                 }
+                Access::Table { get, .. } => {
+                    if let Some(p) = get(self) {
+                        field.check_points(&p)?;
+                    }
+                }
+                Access::Choice { .. } | Access::Formula { .. } => {}
             }
         }
         if self.drive.pwm && self.drive.vlimit == Shape::Box {

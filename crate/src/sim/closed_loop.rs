@@ -549,15 +549,10 @@ impl Loop {
         };
     }
 
-    /// The unknown load step's torque at time `t` (N m): zero before its time.
+    /// The unknown extra load torque at time `t` (N m).
     #[inline(always)]
     fn load_step(&self, t: f64) -> f64 {
-        let step = &self.scenario.load_step;
-        if t >= step.time {
-            step.torque
-        } else {
-            0.0
-        }
+        self.scenario.load_step.at(t)
     }
 
     /// Apply (step 6): hold u over [t_k, t_k + Ts), averaged or switched by PWM, with the extra load;

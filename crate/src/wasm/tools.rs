@@ -345,3 +345,20 @@ pub fn scenario_differences(from: &str, text: &str) -> Result<Vec<String>, JsVal
     let to = Scenario::parse(text).map_err(js_error)?;
     Ok(to.differences(&from))
 }
+
+/// The circuit a motor's nameplate and lab tests give (`imlab motor`), each value with how it was
+/// found, and the link that runs it with the derived design.
+#[wasm_bindgen]
+pub fn motor_from_tests(
+    entry: Ts<crate::identify::Entry>,
+) -> Result<Ts<crate::identify::Identified>, JsValue> {
+    let entry = from_js(&entry)?;
+    to_js(&crate::identify::identify(&entry).map_err(|e| js_error(e.message()))?)
+}
+
+/// The example the motor form fills in: the 2.2 kW machine's rating and the readings its circuit
+/// gives, as a lab writes them down.
+#[wasm_bindgen]
+pub fn motor_example() -> Result<Ts<crate::identify::Entry>, JsValue> {
+    to_js(&crate::identify::Entry::example())
+}

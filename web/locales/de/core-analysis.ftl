@@ -56,3 +56,28 @@ design-rule-load-std = torque/4: Die Last ist anfangs bis auf ein Viertel des Ne
 design-derived-heading = Der aus dem Motor abgeleitete Entwurf und die Regel hinter jedem Wert
 # $reason: warum der Kern ihn nicht ableiten konnte.
 design-failed = Der abgeleitete Entwurf konnte nicht angezeigt werden: { $reason }
+
+## Ein Motor aus Typenschild und Laborversuchen (`imlab motor`, die Registerkarte „Analyse“)
+
+# $key ist das Feld (rs, no-load, locked, nema, rated, j, np), $value die Eingabe.
+identify-bad-field = '{ $key }' = '{ $value }': Erwartet wird { $expected }
+identify-expect-positive = eine positive Zahl
+identify-expect-whole = eine ganze Zahl von mindestens 1
+identify-expect-nema = A, B, C oder D
+identify-expect-rated = V,F,I: die verkettete Nennspannung (V effektiv), die Nennfrequenz (Hz) und der Nennstrom (A effektiv), positiv und durch Kommas getrennt
+identify-expect-reading = V,I,P,F: verkettete Spannung (V effektiv), Leiterstrom (A effektiv), aufgenommene Leistung (W) und Frequenz (Hz), durch Kommas getrennt; die Leistung darf 0 sein, die übrigen Werte sind positiv
+# $what ist die Größe einer Messung, wie der Code sie nennt (voltage, current, frequency, power, rs).
+identify-not-positive = { $what } muss eine positive Zahl sein
+# $test ist das Feld des Versuchs: no-load oder locked.
+identify-power-too-high = '{ $test }': Die Leistung des Versuchs ist größer, als √3·V·I zulässt, sein Widerstand wäre also größer als seine Impedanz
+identify-no-rotor-resistance = 'locked': Der Widerstand je Strang im Kurzschlussversuch, { $locked } Ω, ist nicht größer als der Statorwiderstand von { $rs } Ω, für den Rotorwiderstand bleibt also nichts übrig
+identify-no-magnetising = 'no-load': Die Leerlaufreaktanz ist nicht größer als die Streureaktanz des Stators, für die Magnetisierungsreaktanz bleibt also nichts übrig
+# $stator und $rotor sind die Anteile der Streuung (0.5 und 0.5), $letter der NEMA-Designbuchstabe.
+identify-heading = das Ersatzschaltbild aus Leerlauf- und Kurzschlussversuch (IEEE Std 112), die Streuung aus dem Kurzschlussversuch im Verhältnis { $stator }/{ $rotor } auf Stator und Rotor aufgeteilt (NEMA-Design { $letter })
+identify-how-rs = Gleichstrommessung
+identify-how-rr = Schätzwert: Widerstand im Kurzschlussversuch abzüglich rs, über den Magnetisierungszweig auf den Rotorwiderstand umgerechnet
+identify-how-m = Schätzwert: Leerlaufreaktanz abzüglich der Streureaktanz des Stators
+identify-how-ls = Schätzwert: m plus der Statoranteil der Streuung aus dem Kurzschlussversuch
+identify-how-lr = Schätzwert: m plus der Rotoranteil der Streuung aus dem Kurzschlussversuch
+identify-how-given = vorgegeben
+identify-link-heading = der Motor in der Vorlage step, als Strecke und Modell zugleich, mit seinen Nenndaten (Nennspannung, Nennfrequenz, Nennstrom) und dem abgeleiteten Entwurf:

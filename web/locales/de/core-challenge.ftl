@@ -46,7 +46,7 @@ challenge-allow-choice = Feld '{ $key }' = '{ $value }': erwartet werden verschi
 challenge-need-unknown-figure = Feld '{ $key }': '{ $figure }' ist kein Kennwert ({ $figures })
 challenge-need-band = Feld '{ $key }' = 'band': Nur mean_nis hat ein Band
 challenge-need-op = Feld '{ $key }' = '{ $value }': erwartet wird max:B, min:B, abs:B oder band
-challenge-need-no-load-step = Feld '{ $key }': Die Basis hat keinen Lastsprung (load.torque = 0)
+challenge-need-no-load-step = Feld '{ $key }': Die Basis hat keinen Lastsprung (load.torque = 0 oder stattdessen eine Lasttabelle)
 challenge-vary-seeds = Feld 'vary' = '{ $value }': erwartet wird seeds:A..B, ganze Zahlen mit A ≤ B ≤ { $max_seed } und höchstens { $max } Startwerten
 challenge-vary-too-many = Feld 'vary': { $count } Varianten, mehr als die zulässigen { $max }
 # $number counts the variants from 1; $error says what is wrong with it (a scenario-* message).

@@ -37,8 +37,15 @@ scenario-too-long = Das Szenario ist { $bytes } Bytes lang, mehr als die zuläss
 scenario-expected-formula = eine Formel, prozentkodiert als UTF-8
 scenario-expected-one-of = eines von { $options }
 scenario-expected-number = eine Dezimalzahl
+# A table of points: a reference or a load torque given as t:value pairs.
+scenario-expected-table = eine durch Kommas getrennte Liste von Punkten t:value wie 0:0,0.1:100, jede Zahl eine Dezimalzahl
+scenario-expected-table-length = höchstens { $max } Punkte; diese Tabelle hat { $count }
+scenario-expected-table-rising = von Punkt zu Punkt steigende Zeiten; { $after } s liegt nicht nach { $before } s
+scenario-expected-table-time = Zeiten von 0 bis { $max } s; { $t } s liegt außerhalb
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = eine Formel in den Namen, die Schritt { $step } verwenden darf (`imlab describe` führt sie auf), oder leer
+# $values is the values' range (scenario-allowed-unit).
+scenario-allowed-table = bis zu { $max } Punkte t:value, Zeiten von 0 bis { $duration } s steigend, Werte { $values }; zwischen den Punkten geradlinig, vor dem ersten und nach dem letzten Punkt gehalten
 # A field's range: "0 < k1 ≤ 1000000"; $below is < or ≤.
 scenario-allowed-range = { $min } { $below } { $key } ≤ { $max }
 # $range is the range above, with its unit after it: "0 < k1 ≤ 1000000 (1/s)".

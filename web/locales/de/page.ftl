@@ -233,7 +233,7 @@ settings-group-observer = Beobachter (EKF)
 settings-group-noise = Rauschen und Startwert
 settings-group-plant = Strecke: der simulierte Motor
 settings-group-model = Modell: was EKF und Regler annehmen
-settings-group-load = Unbekannter Lastsprung
+settings-group-load = Unbekannte Last: ein Sprung oder eine Tabelle von Punkten
 settings-group-limits = Spannungsgrenze (Rechteck), Nennstrom, Dauer und Zeitschritte
 settings-group-drive = Antrieb: Rechentotzeit, Wechselrichtergrenze und PWM
 settings-group-law = Eigene Regelgesetze für die Backstepping-Schritte (leer: die des Artikels)
@@ -242,6 +242,8 @@ settings-allowed-formula = eine Formel in den Namen, die „Diesen Schritt selbs
 # $min and $max are the least and the largest value ($max with the field's unit: 20 s), $op is < or ≤,
 # $key the field's key (duration).
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+# A table of points: $points points at most; $min and $max bound the values ($max with their unit).
+settings-allowed-table = bis zu { $points } Punkte t:value, etwa 0:0,0.1:100, Zeiten ab 0 steigend; Werte von { $min } bis { $max }
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }, ganze Zahl
 # $values is what the field allows (settings-allowed-range, or its options: euler | rk4).
 settings-allowed = zulässig: { $values }
@@ -370,6 +372,20 @@ seeds-count = Startwerte
 seeds-run-button = Startwerte durchrechnen
 seeds-progress =
     .aria-label = Erledigte Startwert-Läufe
+motor-heading = Ein eigener Motor, aus Typenschild und Laborversuchen
+motor-intro = Schätzt das Ersatzschaltbild eines Motors aus dem Gleichstromwiderstand des Stators, dem Leerlaufversuch bei Nennspannung und dem Kurzschlussversuch (IEEE Std 112), wie `imlab motor` es tut, und gibt an, welche Werte Schätzwerte sind. Der Motor läuft dann als Strecke und Modell zugleich, mit dem daraus abgeleiteten Entwurf. Jeder Versuch ist eine Messung: verkettete Spannung, Leiterstrom, aufgenommene Leistung und Frequenz, durch Kommas getrennt.
+motor-rs = Statorwiderstand je Strang, Gleichstrommessung
+motor-no-load = Leerlaufversuch
+motor-locked = Kurzschlussversuch (Rotor blockiert)
+# The NEMA design letter splits the locked-rotor leakage between stator and rotor.
+motor-nema = NEMA-Designbuchstabe
+motor-rated = Typenschild: Spannung, Frequenz, Strom
+motor-j = Trägheitsmoment des Rotors
+motor-np = Polpaarzahl
+motor-run-button = Ersatzschaltbild schätzen
+motor-example-button = Beispiel eintragen
+motor-example-filled = Das Formular enthält eine Maschine mit 2,2 kW und 400 V, wie ein Labor sie aufschreiben würde: ihr Typenschild und die Messwerte, die ihr Ersatzschaltbild liefert (ein simuliertes Labor, kein Motor aus einem Katalog).
+motor-open = Diesen Motor mit seinem abgeleiteten Entwurf rechnen
 
 ## Die Registerkarte „Lektionen“
 

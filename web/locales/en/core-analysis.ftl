@@ -68,3 +68,28 @@ design-rule-load-std = torque/4: the load starts unknown to a quarter of the rat
 design-derived-heading = The design derived from the motor, and the rule behind each value
 # $reason: why the core could not derive it.
 design-failed = The derived design could not be shown: { $reason }
+
+## A motor from its nameplate and lab tests (`imlab motor`, the Analysis tab)
+
+# $key is the field (rs, no-load, locked, nema, rated, j, np), $value what was typed.
+identify-bad-field = '{ $key }' = '{ $value }': expected { $expected }
+identify-expect-positive = a positive number
+identify-expect-whole = a whole number of at least 1
+identify-expect-nema = A, B, C or D
+identify-expect-rated = V,F,I: the rated line voltage (V rms), frequency (Hz) and current (A rms), positive and separated by commas
+identify-expect-reading = V,I,P,F: line voltage (V rms), line current (A rms), input power (W) and frequency (Hz), separated by commas; the power may be 0, the others are positive
+# $what is a reading's quantity as the code names it (voltage, current, frequency, power, rs).
+identify-not-positive = { $what } must be a positive number
+# $test is the test's field: no-load or locked.
+identify-power-too-high = '{ $test }': the test's power is more than √3·V·I can carry, so its resistance would exceed its impedance
+identify-no-rotor-resistance = 'locked': the locked-rotor resistance per phase, { $locked } Ω, is no more than the stator's { $rs } Ω, so no rotor resistance is left
+identify-no-magnetising = 'no-load': the no-load reactance is no more than the stator's leakage reactance, so no magnetising reactance is left
+# $stator and $rotor are the shares of the leakage (0.5 and 0.5), $letter the NEMA design letter.
+identify-heading = the equivalent circuit from the no-load and locked-rotor tests (IEEE Std 112), the locked-rotor leakage split { $stator }/{ $rotor } between stator and rotor (NEMA design { $letter })
+identify-how-rs = DC test
+identify-how-rr = estimate: locked-rotor resistance less rs, through the magnetising branch
+identify-how-m = estimate: no-load reactance less the stator's leakage
+identify-how-ls = estimate: m and the stator's share of the locked-rotor leakage
+identify-how-lr = estimate: m and the rotor's share of the locked-rotor leakage
+identify-how-given = given
+identify-link-heading = the motor in preset step, plant and model alike, with its rating and the derived design:

@@ -46,7 +46,7 @@ challenge-allow-choice = field '{ $key }' = '{ $value }': expected distinct name
 challenge-need-unknown-figure = field '{ $key }': '{ $figure }' is not a figure ({ $figures })
 challenge-need-band = field '{ $key }' = 'band': only mean_nis has a band
 challenge-need-op = field '{ $key }' = '{ $value }': expected max:B, min:B, abs:B or band
-challenge-need-no-load-step = field '{ $key }': the base has no load step (load.torque = 0)
+challenge-need-no-load-step = field '{ $key }': the base has no load step (load.torque = 0, or a load table instead)
 challenge-vary-seeds = field 'vary' = '{ $value }': expected seeds:A..B, whole numbers with A ≤ B ≤ { $max_seed } and at most { $max } seeds
 challenge-vary-too-many = field 'vary': { $count } variants, more than the { $max } allowed
 # $number counts the variants from 1; $error says what is wrong with it (a scenario-* message).

@@ -34,8 +34,15 @@ scenario-too-long = the scenario is { $bytes } bytes long, more than the { $max 
 scenario-expected-formula = a formula, percent-encoded as UTF-8
 scenario-expected-one-of = one of { $options }
 scenario-expected-number = a decimal number
+# A table of points: a reference or a load torque given as t:value pairs.
+scenario-expected-table = points t:value separated by commas, such as 0:0,0.1:100, each a decimal number
+scenario-expected-table-length = at most { $max } points; this table has { $count }
+scenario-expected-table-rising = times that rise from point to point; { $after } s is not after { $before } s
+scenario-expected-table-time = times from 0 to { $max } s; { $t } s is outside
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = a formula of the names step { $step } may use (`imlab describe` lists them), or empty
+# $values is the values' range (scenario-allowed-unit).
+scenario-allowed-table = up to { $max } points t:value, times rising from 0 to { $duration } s, values { $values }; straight between points, held before the first and after the last
 # A field's range: "0 < k1 ≤ 1000000"; $below is < or ≤.
 scenario-allowed-range = { $min } { $below } { $key } ≤ { $max }
 # $range is the range above, with its unit after it: "0 < k1 ≤ 1000000 (1/s)".

@@ -233,7 +233,7 @@ settings-group-observer = Observer (EKF)
 settings-group-noise = Noise and seed
 settings-group-plant = Plant: the simulated motor
 settings-group-model = Model: what the EKF and controller assume
-settings-group-load = Unknown load step
+settings-group-load = Unknown load: a step, or a table of points
 settings-group-limits = Voltage limit (box), rating, duration and timing
 settings-group-drive = Drive: computation delay, inverter limit and PWM
 settings-group-law = Your own laws for the backstepping steps (empty: the paper’s)
@@ -242,6 +242,8 @@ settings-allowed-formula = a formula of the names the walkthrough’s “Write t
 # $min and $max are the least and the largest value ($max with the field's unit: 20 s), $op is < or ≤,
 # $key the field's key (duration).
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+# A table of points: $points points at most; $min and $max bound the values ($max with their unit).
+settings-allowed-table = up to { $points } points t:value, such as 0:0,0.1:100, times rising from 0; values from { $min } to { $max }
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }, whole number
 # $values is what the field allows (settings-allowed-range, or its options: euler | rk4).
 settings-allowed = allowed: { $values }
@@ -372,6 +374,20 @@ seeds-count = seeds
 seeds-run-button = Run seeds
 seeds-progress =
     .aria-label = Seed runs done
+motor-heading = A motor of your own, from its nameplate and lab tests
+motor-intro = Estimates a motor's equivalent circuit from the stator's DC resistance, the no-load test at rated voltage and the locked-rotor test (IEEE Std 112), as `imlab motor` does, and says which values are estimates. The motor then runs as plant and model alike, with the design derived from it. Each test is one reading: line voltage, line current, input power and frequency, separated by commas.
+motor-rs = stator resistance per phase, DC test
+motor-no-load = no-load test
+motor-locked = locked-rotor test
+# The NEMA design letter splits the locked-rotor leakage between stator and rotor.
+motor-nema = NEMA design letter
+motor-rated = nameplate: voltage, frequency, current
+motor-j = rotor inertia
+motor-np = pole pairs
+motor-run-button = Estimate the circuit
+motor-example-button = Fill in an example
+motor-example-filled = The form holds a 2.2 kW, 400 V machine as a lab would write it down: its nameplate and the readings its circuit gives (a simulated lab, not a catalogue's motor).
+motor-open = Run this motor with its derived design
 
 ## The Lessons tab
 

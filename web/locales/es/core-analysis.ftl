@@ -56,3 +56,28 @@ design-rule-load-std = torque/4: la carga empieza desconocida hasta un cuarto de
 design-derived-heading = El diseño derivado del motor y la regla detrás de cada valor
 # $reason: por qué el núcleo no pudo derivarlo.
 design-failed = No se pudo mostrar el diseño derivado: { $reason }
+
+## Un motor a partir de su placa de características y sus ensayos de laboratorio (`imlab motor`, la pestaña Análisis)
+
+# $key es el campo (rs, no-load, locked, nema, rated, j, np); $value, lo que se escribió.
+identify-bad-field = '{ $key }' = '{ $value }': se esperaba { $expected }
+identify-expect-positive = un número positivo
+identify-expect-whole = un número entero mayor o igual que 1
+identify-expect-nema = A, B, C o D
+identify-expect-rated = V,F,I: la tensión nominal entre líneas (V eficaces), la frecuencia nominal (Hz) y la corriente nominal (A eficaces), positivas y separadas por comas
+identify-expect-reading = V,I,P,F: tensión entre líneas (V eficaces), corriente de línea (A eficaces), potencia absorbida (W) y frecuencia (Hz), separadas por comas; la potencia puede ser 0, las demás son positivas
+# $what es la magnitud de una lectura tal como la nombra el código (voltage, current, frequency, power, rs).
+identify-not-positive = { $what } debe ser un número positivo
+# $test es el campo del ensayo: no-load o locked.
+identify-power-too-high = '{ $test }': la potencia del ensayo supera lo que √3·V·I puede aportar, así que su resistencia superaría su impedancia
+identify-no-rotor-resistance = 'locked': la resistencia por fase a rotor bloqueado, { $locked } Ω, no supera la resistencia estatórica, { $rs } Ω, así que no queda resistencia rotórica
+identify-no-magnetising = 'no-load': la reactancia en vacío no supera la reactancia de dispersión estatórica, así que no queda reactancia magnetizante
+# $stator y $rotor son las partes de la dispersión (0.5 y 0.5); $letter, la letra de diseño NEMA.
+identify-heading = el circuito equivalente a partir de los ensayos en vacío y a rotor bloqueado (IEEE Std 112), con la dispersión del ensayo a rotor bloqueado repartida { $stator }/{ $rotor } entre estátor y rotor (diseño NEMA { $letter })
+identify-how-rs = ensayo en corriente continua
+identify-how-rr = estimación: resistencia a rotor bloqueado menos rs, llevada a resistencia rotórica a través de la rama magnetizante
+identify-how-m = estimación: reactancia en vacío menos la dispersión estatórica
+identify-how-ls = estimación: m más la parte estatórica de la dispersión a rotor bloqueado
+identify-how-lr = estimación: m más la parte rotórica de la dispersión a rotor bloqueado
+identify-how-given = dado
+identify-link-heading = el motor en el preajuste step, como planta y como modelo a la vez, con sus valores nominales y el diseño derivado:

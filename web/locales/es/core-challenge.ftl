@@ -46,7 +46,7 @@ challenge-allow-choice = campo '{ $key }' = '{ $value }': se esperaban nombres d
 challenge-need-unknown-figure = campo '{ $key }': '{ $figure }' no es una cifra ({ $figures })
 challenge-need-band = campo '{ $key }' = 'band': solo mean_nis tiene banda
 challenge-need-op = campo '{ $key }' = '{ $value }': se esperaba max:B, min:B, abs:B o band
-challenge-need-no-load-step = campo '{ $key }': la base no tiene escalón de carga (load.torque = 0)
+challenge-need-no-load-step = campo '{ $key }': la base no tiene escalón de carga (load.torque = 0, o en su lugar una tabla de carga)
 challenge-vary-seeds = campo 'vary' = '{ $value }': se esperaba seeds:A..B, números enteros con A ≤ B ≤ { $max_seed } y como mucho { $max } semillas
 challenge-vary-too-many = campo 'vary': { $count } variantes, más de las { $max } permitidas
 # $number cuenta las variantes desde 1; $error dice qué falla en ella (un mensaje scenario-*).

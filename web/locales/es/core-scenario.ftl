@@ -37,8 +37,15 @@ scenario-too-long = el escenario ocupa { $bytes } bytes, más de los { $max } by
 scenario-expected-formula = una fórmula, codificada por porcentajes en UTF-8
 scenario-expected-one-of = uno de { $options }
 scenario-expected-number = un número decimal
+# Una tabla de puntos: una referencia o un par de carga dados como pares t:value.
+scenario-expected-table = puntos t:value separados por comas, como 0:0,0.1:100, cada número en forma decimal
+scenario-expected-table-length = como mucho { $max } puntos; esta tabla tiene { $count }
+scenario-expected-table-rising = tiempos que crezcan de un punto al siguiente; { $after } s no es posterior a { $before } s
+scenario-expected-table-time = tiempos de 0 a { $max } s; { $t } s queda fuera
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = una fórmula con los nombres que puede usar el paso { $step } (`imlab describe` los enumera), o vacío
+# $values es el rango de los valores (scenario-allowed-unit).
+scenario-allowed-table = hasta { $max } puntos t:value, con tiempos crecientes de 0 a { $duration } s y valores { $values }; en línea recta entre los puntos, y constante antes del primero y después del último
 # El rango de un campo: "0 < k1 ≤ 1000000"; $below es < o ≤.
 scenario-allowed-range = { $min } { $below } { $key } ≤ { $max }
 # $range es el rango anterior, seguido de su unidad: "0 < k1 ≤ 1000000 (1/s)".

@@ -233,7 +233,7 @@ settings-group-observer = Observador (EKF)
 settings-group-noise = Ruido y semilla
 settings-group-plant = Planta: el motor simulado
 settings-group-model = Modelo: lo que suponen el EKF y el controlador
-settings-group-load = Escalón de carga desconocido
+settings-group-load = Carga desconocida: un escalón o una tabla de puntos
 settings-group-limits = Límite de tensión (caja), valor nominal, duración y temporización
 settings-group-drive = Accionamiento: retardo de cálculo, límite del inversor y PWM
 settings-group-law = Tus propias leyes para los pasos del backstepping (vacío: las del artículo)
@@ -242,6 +242,8 @@ settings-allowed-formula = una fórmula con los nombres que enumera «Escribir e
 # $min y $max son el valor mínimo y el máximo ($max con la unidad del campo: 20 s), $op es < o ≤,
 # $key la clave del campo (duration).
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+# Una tabla de puntos: como mucho $points puntos; $min y $max acotan los valores ($max con su unidad).
+settings-allowed-table = hasta { $points } puntos t:value, como 0:0,0.1:100, con tiempos crecientes desde 0; valores de { $min } a { $max }
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }, número entero
 # $values es lo que admite el campo (settings-allowed-range, o sus opciones: euler | rk4).
 settings-allowed = permitido: { $values }
@@ -370,6 +372,20 @@ seeds-count = semillas
 seeds-run-button = Ejecutar semillas
 seeds-progress =
     .aria-label = Ejecuciones de semillas completadas
+motor-heading = Un motor propio, a partir de su placa de características y sus ensayos de laboratorio
+motor-intro = Estima el circuito equivalente de un motor a partir de la resistencia estatórica en corriente continua, el ensayo en vacío a tensión nominal y el ensayo a rotor bloqueado (IEEE Std 112), como hace `imlab motor`, e indica qué valores son estimaciones. Después ejecuta el motor como planta y como modelo a la vez, con el diseño derivado de él. Cada ensayo es una lectura: tensión entre líneas, corriente de línea, potencia absorbida y frecuencia, separadas por comas.
+motor-rs = resistencia estatórica por fase, ensayo en corriente continua
+motor-no-load = ensayo en vacío
+motor-locked = ensayo a rotor bloqueado
+# La letra de diseño NEMA reparte la dispersión a rotor bloqueado entre estátor y rotor.
+motor-nema = letra de diseño NEMA
+motor-rated = placa de características: tensión, frecuencia, corriente
+motor-j = inercia del rotor
+motor-np = pares de polos
+motor-run-button = Estimar el circuito
+motor-example-button = Rellenar con un ejemplo
+motor-example-filled = El formulario contiene una máquina de 2,2 kW y 400 V tal como la anotaría un laboratorio: su placa de características y las lecturas que da su circuito (un laboratorio simulado, no un motor de catálogo).
+motor-open = Ejecutar este motor con su diseño derivado
 
 ## The Lessons tab
 

@@ -56,3 +56,28 @@ design-rule-load-std = torque/4 : la charge est d’abord inconnue à un quart 
 design-derived-heading = La conception dérivée du moteur, et la règle derrière chaque valeur
 # $reason : pourquoi le cœur n’a pas pu la dériver.
 design-failed = La conception dérivée n’a pas pu être affichée : { $reason }
+
+## Un moteur d’après sa plaque signalétique et ses essais (`imlab motor`, l’onglet Analyse)
+
+# $key : le champ (rs, no-load, locked, nema, rated, j, np) ; $value : ce qui a été saisi.
+identify-bad-field = '{ $key }' = '{ $value }' : attendu { $expected }
+identify-expect-positive = un nombre positif
+identify-expect-whole = un nombre entier supérieur ou égal à 1
+identify-expect-nema = A, B, C ou D
+identify-expect-rated = V,F,I : la tension nominale entre phases (V efficaces), la fréquence nominale (Hz) et le courant nominal (A efficaces), positifs et séparés par des virgules
+identify-expect-reading = V,I,P,F : tension entre phases (V efficaces), courant de ligne (A efficaces), puissance absorbée (W) et fréquence (Hz), séparés par des virgules ; la puissance peut valoir 0, les autres sont positifs
+# $what : la grandeur d’une mesure, telle que le code la nomme (voltage, current, frequency, power, rs).
+identify-not-positive = { $what } doit être un nombre positif
+# $test : le champ de l’essai, no-load ou locked.
+identify-power-too-high = '{ $test }' : la puissance de l’essai dépasse ce que √3·V·I peut fournir, donc sa résistance dépasserait son impédance
+identify-no-rotor-resistance = 'locked' : la résistance par phase à rotor bloqué, { $locked } Ω, ne dépasse pas la résistance statorique, { $rs } Ω, il ne reste donc aucune résistance rotorique
+identify-no-magnetising = 'no-load' : la réactance à vide ne dépasse pas la réactance de fuite statorique, il ne reste donc aucune réactance magnétisante
+# $stator et $rotor : les parts de la fuite (0.5 et 0.5) ; $letter : la lettre de classe NEMA.
+identify-heading = le schéma équivalent d’après l’essai à vide et l’essai à rotor bloqué (IEEE Std 112), la fuite à rotor bloqué étant répartie { $stator }/{ $rotor } entre stator et rotor (classe NEMA { $letter })
+identify-how-rs = essai en courant continu
+identify-how-rr = estimée : résistance à rotor bloqué moins rs, ramenée à la résistance rotorique à travers la branche magnétisante
+identify-how-m = estimée : réactance à vide moins la fuite statorique
+identify-how-ls = estimée : m plus la part statorique de la fuite à rotor bloqué
+identify-how-lr = estimée : m plus la part rotorique de la fuite à rotor bloqué
+identify-how-given = donnée
+identify-link-heading = le moteur dans le préréglage step, à la fois machine simulée et modèle, avec ses valeurs nominales et la conception dérivée :

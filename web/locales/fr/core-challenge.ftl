@@ -47,7 +47,7 @@ challenge-allow-choice = champ '{ $key }' = '{ $value }' : des noms distincts p
 challenge-need-unknown-figure = champ '{ $key }' : '{ $figure }' n’est pas un indicateur ({ $figures })
 challenge-need-band = champ '{ $key }' = 'band' : seul mean_nis a une bande
 challenge-need-op = champ '{ $key }' = '{ $value }' : max:B, min:B, abs:B ou band attendu
-challenge-need-no-load-step = champ '{ $key }' : la base n’a pas d’échelon de charge (load.torque = 0)
+challenge-need-no-load-step = champ '{ $key }' : la base n’a pas d’échelon de charge (load.torque = 0, ou un tableau de charge à la place)
 challenge-vary-seeds = champ 'vary' = '{ $value }' : seeds:A..B attendu, des nombres entiers avec A ≤ B ≤ { $max_seed } et au plus { $max } graines
 challenge-vary-too-many = champ 'vary' : { $count } variantes, plus que les { $max } autorisées
 # $number compte les variantes à partir de 1 ; $error : ce qui ne va pas (un message scenario-*).

@@ -185,12 +185,13 @@ settings-group-observer = Observateur (EKF)
 settings-group-noise = Bruit et graine
 settings-group-plant = Moteur : la machine simulée
 settings-group-model = Modèle : ce que supposent l’EKF et le correcteur
-settings-group-load = Échelon de charge inconnu
+settings-group-load = Charge inconnue : un échelon ou un tableau de points
 settings-group-limits = Limite de tension (carré), courant nominal, durée et pas de temps
 settings-group-drive = Variateur : retard de calcul, limite de l’onduleur et PWM
 settings-group-law = Vos propres lois pour les étapes du backstepping (vide : celles de l’article)
 settings-allowed-formula = une formule des noms que liste « Écrire cette étape » dans le parcours ; vide : la loi de l’article
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+settings-allowed-table = jusqu’à { $points } points t:value, par exemple 0:0,0.1:100, instants croissants à partir de 0 ; valeurs de { $min } à { $max }
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }, nombre entier
 settings-allowed = autorisé : { $values }
 settings-link-rejected = Certains réglages de l’adresse ont été rejetés et laissés aux valeurs du préréglage : { $list }.
@@ -295,6 +296,19 @@ seeds-count = graines
 seeds-run-button = Lancer les graines
 seeds-progress =
     .aria-label = Simulations des graines effectuées
+motor-heading = Votre propre moteur, d’après sa plaque signalétique et ses essais
+motor-intro = Estime le schéma équivalent d’un moteur à partir de la résistance statorique mesurée en courant continu, de l’essai à vide sous tension nominale et de l’essai à rotor bloqué (IEEE Std 112), comme le fait `imlab motor`, et indique quelles valeurs sont des estimées. Le moteur sert ensuite à la fois de machine simulée et de modèle, avec la conception qui en est dérivée. Chaque essai est une mesure : tension entre phases, courant de ligne, puissance absorbée et fréquence, séparés par des virgules.
+motor-rs = résistance statorique par phase, essai en courant continu
+motor-no-load = essai à vide
+motor-locked = essai à rotor bloqué
+motor-nema = lettre de classe NEMA
+motor-rated = plaque signalétique : tension, fréquence, courant
+motor-j = inertie du rotor
+motor-np = paires de pôles
+motor-run-button = Estimer le schéma
+motor-example-button = Remplir avec un exemple
+motor-example-filled = Le formulaire contient une machine de 2,2 kW sous 400 V telle qu’un laboratoire la noterait : sa plaque signalétique et les mesures que donne son schéma (un laboratoire simulé, pas le moteur d’un catalogue).
+motor-open = Simuler ce moteur avec la conception qui en est dérivée
 
 ## L’onglet Leçons
 

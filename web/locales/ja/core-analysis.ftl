@@ -56,3 +56,28 @@ design-rule-load-std = torque/4：負荷は初め、定格トルクの四分の�
 design-derived-heading = 電動機から導出した設計と、各値を与える規則
 # $reason：コアが設計を導出できなかった理由。
 design-failed = 導出した設計を表示できませんでした：{ $reason }
+
+## 銘板と試験データから求める電動機（`imlab motor`、「解析」タブ）
+
+# $key はフィールド（rs、no-load、locked、nema、rated、j、np）、$value は入力された値。
+identify-bad-field = '{ $key }' = '{ $value }'：期待される値：{ $expected }
+identify-expect-positive = 正の数
+identify-expect-whole = 1以上の整数
+identify-expect-nema = A、B、C、D のいずれか
+identify-expect-rated = V,F,I：定格線間電圧（V 実効値）、定格周波数（Hz）、定格電流（A 実効値）をカンマで区切ったもの。いずれも正の値
+identify-expect-reading = V,I,P,F：線間電圧（V 実効値）、線電流（A 実効値）、入力電力（W）、周波数（Hz）をカンマで区切ったもの。電力は 0 でもよく、その他は正の値
+# $what はコードでの測定量の名前（voltage、current、frequency、power、rs）。
+identify-not-positive = { $what } は正の数でなければなりません
+# $test は試験のフィールド：no-load または locked。
+identify-power-too-high = '{ $test }'：試験の電力が √3·V·I で供給できる値を超えているため、抵抗がインピーダンスより大きくなってしまいます
+identify-no-rotor-resistance = 'locked'：拘束試験での一相あたりの抵抗 { $locked } Ω が固定子の { $rs } Ω 以下なので、回転子抵抗が残りません
+identify-no-magnetising = 'no-load'：無負荷リアクタンスが固定子の漏れリアクタンス以下なので、励磁リアクタンスが残りません
+# $stator と $rotor は漏れの配分（0.5 と 0.5）、$letter は NEMA デザインの記号。
+identify-heading = 無負荷試験と拘束試験（IEEE Std 112）から求めた等価回路。拘束試験の漏れを固定子と回転子に { $stator }/{ $rotor } で配分（NEMA デザイン { $letter }）
+identify-how-rs = 直流試験
+identify-how-rr = 推定値：拘束試験の抵抗から rs を引き、励磁枝を介して回転子抵抗に換算した値
+identify-how-m = 推定値：無負荷リアクタンスから固定子の漏れを引いた値
+identify-how-ls = 推定値：m に、拘束試験の漏れのうち固定子の分を加えた値
+identify-how-lr = 推定値：m に、拘束試験の漏れのうち回転子の分を加えた値
+identify-how-given = 与えられた値
+identify-link-heading = プリセット step の電動機（プラントとモデルの両方）、その定格と導出した設計：

@@ -33,7 +33,7 @@ challenge-allow-choice = フィールド '{ $key }' = '{ $value }'：{ $options 
 challenge-need-unknown-figure = フィールド '{ $key }'：'{ $figure }' は指標ではありません（{ $figures }）
 challenge-need-band = フィールド '{ $key }' = 'band'：区間をもつのは mean_nis だけです
 challenge-need-op = フィールド '{ $key }' = '{ $value }'：max:B、min:B、abs:B、band のいずれかを指定してください
-challenge-need-no-load-step = フィールド '{ $key }'：基本シナリオに負荷ステップがありません（load.torque = 0）
+challenge-need-no-load-step = フィールド '{ $key }'：基本シナリオに負荷ステップがありません（load.torque = 0、または代わりに負荷の表を使用）
 challenge-vary-seeds = フィールド 'vary' = '{ $value }'：seeds:A..B（A ≤ B ≤ { $max_seed } の整数で、シードは{ $max }個まで）を指定してください
 challenge-vary-too-many = フィールド 'vary'：バリアントが{ $count }個あり、許容される{ $max }個を超えています
 challenge-vary-variant-refused = フィールド 'vary'、バリアント{ $number }：{ $error }

@@ -182,12 +182,13 @@ settings-group-observer = オブザーバ（EKF）
 settings-group-noise = ノイズとシード
 settings-group-plant = プラント：シミュレーション上の電動機
 settings-group-model = モデル：EKFと制御器が想定するもの
-settings-group-load = 未知の負荷ステップ
+settings-group-load = 未知の負荷：ステップまたは点の表
 settings-group-limits = 電圧制限（正方形）、定格、実行時間、タイミング
 settings-group-drive = ドライブ：計算遅延、インバータの制限、PWM
 settings-group-law = バックステッピングの各ステップの自作の制御則（空欄：論文の制御則）
 settings-allowed-formula = 設計解説の「このステップを書く」に挙がっている名前による式。空欄：論文の制御則
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+settings-allowed-table = 点 t:value を{ $points }個まで（例：0:0,0.1:100）、時刻は0から増加。値は{ $min }から{ $max }まで
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }、整数
 settings-allowed = 許容値：{ $values }
 settings-link-rejected = アドレス内の一部の設定は却下され、プリセットの値のままです：{ $list }。
@@ -292,6 +293,19 @@ seeds-count = シード
 seeds-run-button = 複数シードで実行
 seeds-progress =
     .aria-label = 完了したシードの実行
+motor-heading = 独自の電動機：銘板と試験データから
+motor-intro = 固定子の直流抵抗、定格電圧での無負荷試験、拘束試験（IEEE Std 112）から、`imlab motor` と同じように電動機の等価回路を推定し、どの値が推定値かを示します。その後、この電動機から導出した設計で、電動機をプラントとモデルの両方として実行します。各試験は一つの測定値で、線間電圧、線電流、入力電力、周波数をカンマで区切って書きます。
+motor-rs = 一相あたりの固定子抵抗（直流試験）
+motor-no-load = 無負荷試験
+motor-locked = 拘束試験
+motor-nema = NEMA デザインの記号
+motor-rated = 銘板：電圧、周波数、電流
+motor-j = 回転子の慣性モーメント
+motor-np = 極対数
+motor-run-button = 等価回路を推定
+motor-example-button = 例を入力
+motor-example-filled = フォームには、2.2 kW、400 V の機械が、試験室で書き留めるとおりに入っています：銘板と、その等価回路が与える測定値です（カタログの電動機ではなく、シミュレーション上の試験室です）。
+motor-open = 導出した設計でこの電動機を実行
 
 ## 「レッスン」タブ
 

@@ -56,3 +56,28 @@ design-rule-load-std = torque/4：负载的初始不确定度为额定转矩的�
 design-derived-heading = 由电机推导出的设计，以及每个值背后的规则
 # $reason：核心无法推导该设计的原因。
 design-failed = 无法显示推导出的设计：{ $reason }
+
+## 由铭牌和试验数据得到的电机（`imlab motor`，“分析”选项卡）
+
+# $key 为字段（rs、no-load、locked、nema、rated、j、np），$value 为输入的内容。
+identify-bad-field = '{ $key }' = '{ $value }'：应为{ $expected }
+identify-expect-positive = 正数
+identify-expect-whole = 不小于 1 的整数
+identify-expect-nema = A、B、C 或 D
+identify-expect-rated = V,F,I：额定线电压（V，有效值）、额定频率（Hz）和额定电流（A，有效值），均为正数，以逗号分隔
+identify-expect-reading = V,I,P,F：线电压（V，有效值）、线电流（A，有效值）、输入功率（W）和频率（Hz），以逗号分隔；功率可以为 0，其余均为正数
+# $what 为代码中测量量的名称（voltage、current、frequency、power、rs）。
+identify-not-positive = { $what } 必须为正数
+# $test 为试验的字段：no-load 或 locked。
+identify-power-too-high = '{ $test }'：试验功率超过了 √3·V·I 所能提供的值，因此其电阻会大于其阻抗
+identify-no-rotor-resistance = 'locked'：堵转时的每相电阻 { $locked } Ω 不大于定子的 { $rs } Ω，因此没有剩余的转子电阻
+identify-no-magnetising = 'no-load'：空载电抗不大于定子漏抗，因此没有剩余的励磁电抗
+# $stator 和 $rotor 为漏抗的分配比例（0.5 和 0.5），$letter 为 NEMA 设计字母。
+identify-heading = 由空载试验和堵转试验（IEEE Std 112）得到的等效电路，堵转漏抗按 { $stator }/{ $rotor } 分配给定子和转子（NEMA 设计 { $letter }）
+identify-how-rs = 直流试验
+identify-how-rr = 估计值：堵转电阻减去 rs，再经励磁支路折算为转子电阻
+identify-how-m = 估计值：空载电抗减去定子漏抗
+identify-how-ls = 估计值：m 加上堵转漏感中定子所占的部分
+identify-how-lr = 估计值：m 加上堵转漏感中转子所占的部分
+identify-how-given = 给定值
+identify-link-heading = 预设 step 中的电机，同时作为被控对象和模型，带有其额定值和推导出的设计：

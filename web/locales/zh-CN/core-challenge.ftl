@@ -42,7 +42,7 @@ challenge-allow-choice = 字段 '{ $key }' = '{ $value }'：应为取自 { $opti
 challenge-need-unknown-figure = 字段 '{ $key }'：'{ $figure }' 不是指标（{ $figures }）
 challenge-need-band = 字段 '{ $key }' = 'band'：只有 mean_nis 有区间
 challenge-need-op = 字段 '{ $key }' = '{ $value }'：应为 max:B、min:B、abs:B 或 band
-challenge-need-no-load-step = 字段 '{ $key }'：基础场景没有负载阶跃（load.torque = 0）
+challenge-need-no-load-step = 字段 '{ $key }'：基础场景没有负载阶跃（load.torque = 0，或改用了负载表）
 challenge-vary-seeds = 字段 'vary' = '{ $value }'：应为 seeds:A..B，A、B 为整数，A ≤ B ≤ { $max_seed }，且至多 { $max } 个种子
 challenge-vary-too-many = 字段 'vary'：共 { $count } 个变体，超过允许的 { $max } 个
 # $number 从 1 起数变体；$error 说明它有何问题（scenario-* 消息）。

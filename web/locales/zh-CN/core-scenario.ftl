@@ -35,8 +35,15 @@ scenario-too-long = 场景长 { $bytes } 字节，超过允许的 { $max } 字�
 scenario-expected-formula = 以 UTF-8 百分号编码的公式
 scenario-expected-one-of = 以下之一：{ $options }
 scenario-expected-number = 十进制数
+# 点表：以 t:value 对给出的参考值或负载转矩。
+scenario-expected-table = 以逗号分隔的点 t:value，例如 0:0,0.1:100，各数均为十进制数
+scenario-expected-table-length = 至多 { $max } 个点；此表有 { $count } 个
+scenario-expected-table-rising = 逐点递增的时间；{ $after } s 并不在 { $before } s 之后
+scenario-expected-table-time = 0 到 { $max } s 之间的时间；{ $t } s 超出范围
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = 由第 { $step } 步可用的名称构成的公式（`imlab describe` 列出了这些名称），或为空
+# $values 是取值的范围（scenario-allowed-unit）。
+scenario-allowed-table = 至多 { $max } 个点 t:value，时间从 0 递增到 { $duration } s，取值 { $values }；点与点之间按直线连接，第一个点之前和最后一个点之后保持不变
 # 字段的范围："0 < k1 ≤ 1000000"；$below 是 < 或 ≤。
 scenario-allowed-range = { $min } { $below } { $key } ≤ { $max }
 # $range 是上面的范围，其后附单位："0 < k1 ≤ 1000000 (1/s)"。

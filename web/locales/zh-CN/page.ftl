@@ -230,7 +230,7 @@ settings-group-observer = 观测器（EKF）
 settings-group-noise = 噪声与种子
 settings-group-plant = 被控对象：仿真的电机
 settings-group-model = 模型：EKF 和控制器所假设的
-settings-group-load = 未知的负载阶跃
+settings-group-load = 未知负载：阶跃或点表
 settings-group-limits = 电压限幅（矩形）、额定电流、时长与时序
 settings-group-drive = 驱动：计算延时、逆变器限幅与 PWM
 settings-group-law = 反步控制各步的自定义控制律（为空：用论文的）
@@ -239,6 +239,8 @@ settings-allowed-formula = 由设计详解中“写出这一步”所列名称�
 # $min 和 $max 是最小值和最大值（$max 带有字段的单位：20 s），$op 是 < 或 ≤，
 # $key 是字段的键（duration）。
 settings-allowed-range = { $min } { $op } { $key } ≤ { $max }
+# 点表：至多 $points 个点；$min 和 $max 为取值的上下界（$max 带单位）。
+settings-allowed-table = 至多 { $points } 个点 t:value，例如 0:0,0.1:100，时间从 0 起递增；取值从 { $min } 到 { $max }
 settings-allowed-whole = { $min } { $op } { $key } ≤ { $max }，整数
 # $values 是字段允许的取值（settings-allowed-range，或其选项：euler | rk4）。
 settings-allowed = 允许：{ $values }
@@ -367,6 +369,20 @@ seeds-count = 种子数
 seeds-run-button = 运行多种子
 seeds-progress =
     .aria-label = 已完成的多种子运行
+motor-heading = 自定义电机：由铭牌和试验数据得到
+motor-intro = 与 `imlab motor` 一样，由定子直流电阻、额定电压下的空载试验和堵转试验（IEEE Std 112）估计电机的等效电路，并指出哪些值是估计值。随后该电机同时作为被控对象和模型运行，并采用由它推导出的设计。每项试验为一组读数：线电压、线电流、输入功率和频率，以逗号分隔。
+motor-rs = 每相定子电阻，直流试验
+motor-no-load = 空载试验
+motor-locked = 堵转试验
+# NEMA 设计字母决定堵转漏抗在定子和转子之间的分配。
+motor-nema = NEMA 设计字母
+motor-rated = 铭牌：电压、频率、电流
+motor-j = 转子转动惯量
+motor-np = 极对数
+motor-run-button = 估计等效电路
+motor-example-button = 填入示例
+motor-example-filled = 表单中是一台 2.2 kW、400 V 的电机，按实验室的记录方式填写：铭牌以及由其等效电路得到的读数（这是模拟的实验室，而非产品目录中的电机）。
+motor-open = 用推导出的设计运行该电机
 
 ## “课程”选项卡
 
