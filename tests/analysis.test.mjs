@@ -392,6 +392,8 @@ test('a link with a sweep and a map runs both: neither cancels the other', async
 test("a motor typed as its nameplate and lab tests gives `imlab motor`'s circuit and link, runs them, and a bad reading is named", () =>
   withPage('?v=1&preset=step&duration=0.02', async (page) => {
     await page.click('[role=tab][data-tab=analysis]');
+    await page.click('#motor-section > summary');
+    await page.waitForSelector('#motor-section[data-built]');
     await page.click('#motor-example');
     await page.waitForFunction(() => document.querySelector('#motor-form [name=rs]').value !== '');
     const form = await page.evaluate(() =>

@@ -23,7 +23,7 @@ import { createTabs } from './ui/tabs.js';
 import { createPresentation } from './ui/presentation.js';
 import { wireShare } from './ui/share.js';
 import { createSweeps } from './analysis/sweeps.js';
-import { createMotorForm } from './analysis/motor-form.js';
+import { wireMotor } from './analysis/motor.js';
 import { createRobust } from './analysis/robust.js';
 import { ChallengePanel } from './challenge/challenge.js';
 import { listBuiltins } from './challenge/builtins.js';
@@ -229,7 +229,7 @@ const robust = createRobust({
   // A lesson about the map shows it as it is drawn.
   drawn: () => lessons.mapDrawn(),
 });
-createMotorForm({ client, open: openRun });
+wireMotor({ client, open: openRun });
 const challenge = new ChallengePanel({
   client,
   state,

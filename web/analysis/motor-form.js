@@ -1,7 +1,6 @@
-// The Analysis tab's motor of your own: its nameplate and lab tests in a form, the equivalent
-// circuit the core estimates from them (each value with how it was found, as `imlab motor` prints
-// them), and a run of that motor with the design derived from it.
-import { $ } from '../ui/page.js';
+// The motor of your own's form, built when its section is first opened: the nameplate and lab
+// tests, the equivalent circuit the core estimates from them (each value with how it was found,
+// as `imlab motor` prints them), and a run of that motor with the design derived from it.
 import { el } from '../ui/dom.js';
 import { restReady, t } from '../l10n/l10n.js';
 import { sig } from './digits.js';
@@ -9,37 +8,71 @@ import { sig } from './digits.js';
 /** @import { RunClient } from '../client/run-client.js' */
 /** @import * as P from '../worker/protocol.js' */
 
-/** The form's fields, named as the core's entry names them. */
-const KEYS = /** @type {const} */ (['rs', 'no_load', 'locked', 'nema', 'rated', 'j', 'np']);
+/**
+ * The form's fields as the core's entry names them, each with its message and the unit after it.
+ * @type {[keyof P.RawJobs['motor']['req']['entry'], string, string][]}
+ */
+const FIELDS = [
+  ['rs', 'motor-rs', 'Ω'],
+  ['no_load', 'motor-no-load', 'V,A,W,Hz'],
+  ['locked', 'motor-locked', 'V,A,W,Hz'],
+  ['nema', 'motor-nema', ''],
+  ['rated', 'motor-rated', 'V,Hz,A'],
+  ['j', 'motor-j', 'kg m²'],
+  ['np', 'motor-np', ''],
+];
 
 /**
- * Wires the motor form: the core reads the fields and names any it refuses; `open(scenario)` runs
- * the motor found.
+ * Builds the form in `section` (its words are of the rest of the messages, loaded first) and wires
+ * it: the core reads the fields and names any it refuses; `open(scenario)` runs the motor found.
+ * The page's state for a reader waiting on it is `data-motor` on the body: running, then done or
+ * refused.
+ * @param {HTMLElement} section
  * @param {{client: RunClient, open: (scenario: string) => void}} parts
  */
-export function createMotorForm({ client, open }) {
-  const form = $('motor-form', HTMLFormElement);
-  const status = $('motor-status');
-  const result = $('motor-result');
-  /** @param {string} key */
-  const control = (key) => /** @type {HTMLInputElement | HTMLSelectElement} */ (form.elements.namedItem(key));
+export async function buildMotorForm(section, { client, open }) {
+  const status = el('p', { id: 'motor-status' });
+  status.setAttribute('aria-live', 'polite');
+  const unready = await restReady();
+  if (unready) return void section.append(el('p', { textContent: unready }));
+  /** @type {Record<string, HTMLInputElement | HTMLSelectElement>} */
+  const controls = {};
+  const labels = FIELDS.map(([key, message, unit]) => {
+    const control =
+      key === 'nema'
+        ? el(
+            'select',
+            { name: key },
+            ['A', 'B', 'C', 'D'].map((letter) => el('option', { textContent: letter, selected: letter === 'B' })),
+          )
+        : el('input', { name: key, size: key === 'no_load' || key === 'locked' ? 20 : 8, spellcheck: false });
+    controls[key] = control;
+    return el('label', {}, [el('span', { textContent: t(message) }), ' ', control, unit ? ` ${unit}` : '']);
+  });
+  const form = el('form', { id: 'motor-form', className: 'inline-form', autocomplete: 'off' }, labels);
+  const estimateButton = el('button', { type: 'button', id: 'motor-run', textContent: t('motor-run-button') });
+  const exampleButton = el('button', { type: 'button', id: 'motor-example', textContent: t('motor-example-button') });
+  const result = el('div', { id: 'motor-result' });
+  section.append(
+    el('p', { textContent: t('motor-intro') }),
+    form,
+    el('div', { className: 'buttons' }, [estimateButton, exampleButton]),
+    status,
+    result,
+  );
 
   /** Fills the form with the example machine's nameplate and readings, as the core writes them. */
   async function example() {
-    const unready = await restReady();
-    if (unready) return void (status.textContent = unready);
     const entry = await client.job('motor-example', {});
-    for (const key of KEYS) control(key).value = entry[key];
+    for (const [key] of FIELDS) controls[key].value = entry[key];
     result.replaceChildren();
     status.textContent = t('motor-example-filled');
   }
 
   /** Asks the core for the circuit of the form's motor and shows it, or what it refused. */
   async function estimate() {
-    const unready = await restReady();
-    if (unready) return void (status.textContent = unready);
     /** @param {string} key */
-    const value = (key) => control(key).value;
+    const value = (key) => controls[key].value;
     const entry = {
       rs: value('rs'),
       no_load: value('no_load'),
@@ -51,7 +84,6 @@ export function createMotorForm({ client, open }) {
     };
     result.replaceChildren();
     status.textContent = '';
-    // The page's state for a reader waiting on it: running, then done or refused.
     document.body.dataset.motor = 'running';
     /** @type {P.Jobs['motor']['result']} */
     let found;
@@ -77,6 +109,7 @@ export function createMotorForm({ client, open }) {
     document.body.dataset.motor = 'done';
   }
 
-  $('motor-example', HTMLButtonElement).addEventListener('click', example);
-  $('motor-run', HTMLButtonElement).addEventListener('click', estimate);
+  exampleButton.addEventListener('click', example);
+  estimateButton.addEventListener('click', estimate);
+  section.dataset.built = '';
 }

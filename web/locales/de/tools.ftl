@@ -308,3 +308,19 @@ grade-head-verdict = Befund
 grade-head-link = Link
 grade-value-reason = { $value }: { $reason }
 grade-worst-run = { $text } (ungünstigster Lauf: { $run })
+
+## The Analysis tab: a motor of your own
+
+motor-intro = Schätzt das Ersatzschaltbild eines Motors aus dem Gleichstromwiderstand des Stators, dem Leerlaufversuch bei Nennspannung und dem Kurzschlussversuch (IEEE Std 112), wie imlab motor es tut, und gibt an, welche Werte Schätzwerte sind. Der Motor läuft dann als Strecke und Modell zugleich, mit dem daraus abgeleiteten Entwurf. Jeder Versuch ist eine Messung: verkettete Spannung, Leiterstrom, aufgenommene Leistung und Frequenz, durch Kommas getrennt.
+motor-rs = Statorwiderstand je Strang, Gleichstrommessung
+motor-no-load = Leerlaufversuch
+motor-locked = Kurzschlussversuch (Rotor blockiert)
+# The NEMA design letter splits the locked-rotor leakage between stator and rotor.
+motor-nema = NEMA-Designbuchstabe
+motor-rated = Typenschild: Spannung, Frequenz, Strom
+motor-j = Trägheitsmoment des Rotors
+motor-np = Polpaarzahl
+motor-run-button = Ersatzschaltbild schätzen
+motor-example-button = Beispiel eintragen
+motor-example-filled = Das Formular enthält eine Maschine mit 2,2 kW und 400 V, wie ein Labor sie aufschreiben würde: ihr Typenschild und die Messwerte, die ihr Ersatzschaltbild liefert (ein simuliertes Labor, kein Motor aus einem Katalog).
+motor-open = Diesen Motor mit seinem abgeleiteten Entwurf rechnen

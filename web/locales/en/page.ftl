@@ -375,19 +375,6 @@ seeds-run-button = Run seeds
 seeds-progress =
     .aria-label = Seed runs done
 motor-heading = A motor of your own, from its nameplate and lab tests
-motor-intro = Estimates a motor's equivalent circuit from the stator's DC resistance, the no-load test at rated voltage and the locked-rotor test (IEEE Std 112), as imlab motor does, and says which values are estimates. The motor then runs as plant and model alike, with the design derived from it. Each test is one reading: line voltage, line current, input power and frequency, separated by commas.
-motor-rs = stator resistance per phase, DC test
-motor-no-load = no-load test
-motor-locked = locked-rotor test
-# The NEMA design letter splits the locked-rotor leakage between stator and rotor.
-motor-nema = NEMA design letter
-motor-rated = nameplate: voltage, frequency, current
-motor-j = rotor inertia
-motor-np = pole pairs
-motor-run-button = Estimate the circuit
-motor-example-button = Fill in an example
-motor-example-filled = The form holds a 2.2 kW, 400 V machine as a lab would write it down: its nameplate and the readings its circuit gives (a simulated lab, not a catalogue's motor).
-motor-open = Run this motor with its derived design
 
 ## The Lessons tab
 

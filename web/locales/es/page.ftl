@@ -373,19 +373,6 @@ seeds-run-button = Ejecutar semillas
 seeds-progress =
     .aria-label = Ejecuciones de semillas completadas
 motor-heading = Un motor propio, a partir de su placa de características y sus ensayos de laboratorio
-motor-intro = Estima el circuito equivalente de un motor a partir de la resistencia estatórica en corriente continua, el ensayo en vacío a tensión nominal y el ensayo a rotor bloqueado (IEEE Std 112), como hace imlab motor, e indica qué valores son estimaciones. Después ejecuta el motor como planta y como modelo a la vez, con el diseño derivado de él. Cada ensayo es una lectura: tensión entre líneas, corriente de línea, potencia absorbida y frecuencia, separadas por comas.
-motor-rs = resistencia estatórica por fase, ensayo en corriente continua
-motor-no-load = ensayo en vacío
-motor-locked = ensayo a rotor bloqueado
-# La letra de diseño NEMA reparte la dispersión a rotor bloqueado entre estátor y rotor.
-motor-nema = letra de diseño NEMA
-motor-rated = placa de características: tensión, frecuencia, corriente
-motor-j = inercia del rotor
-motor-np = pares de polos
-motor-run-button = Estimar el circuito
-motor-example-button = Rellenar con un ejemplo
-motor-example-filled = El formulario contiene una máquina de 2,2 kW y 400 V tal como la anotaría un laboratorio: su placa de características y las lecturas que da su circuito (un laboratorio simulado, no un motor de catálogo).
-motor-open = Ejecutar este motor con su diseño derivado
 
 ## The Lessons tab
 

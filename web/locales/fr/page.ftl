@@ -297,18 +297,6 @@ seeds-run-button = Lancer les graines
 seeds-progress =
     .aria-label = Simulations des graines effectuées
 motor-heading = Votre propre moteur, d’après sa plaque signalétique et ses essais
-motor-intro = Estime le schéma équivalent d’un moteur à partir de la résistance statorique mesurée en courant continu, de l’essai à vide sous tension nominale et de l’essai à rotor bloqué (IEEE Std 112), comme le fait imlab motor, et indique quelles valeurs sont des estimées. Le moteur sert ensuite à la fois de machine simulée et de modèle, avec la conception qui en est dérivée. Chaque essai est une mesure : tension entre phases, courant de ligne, puissance absorbée et fréquence, séparés par des virgules.
-motor-rs = résistance statorique par phase, essai en courant continu
-motor-no-load = essai à vide
-motor-locked = essai à rotor bloqué
-motor-nema = lettre de classe NEMA
-motor-rated = plaque signalétique : tension, fréquence, courant
-motor-j = inertie du rotor
-motor-np = paires de pôles
-motor-run-button = Estimer le schéma
-motor-example-button = Remplir avec un exemple
-motor-example-filled = Le formulaire contient une machine de 2,2 kW sous 400 V telle qu’un laboratoire la noterait : sa plaque signalétique et les mesures que donne son schéma (un laboratoire simulé, pas le moteur d’un catalogue).
-motor-open = Simuler ce moteur avec la conception qui en est dérivée
 
 ## L’onglet Leçons
 

@@ -294,18 +294,6 @@ seeds-run-button = 複数シードで実行
 seeds-progress =
     .aria-label = 完了したシードの実行
 motor-heading = 独自の電動機：銘板と試験データから
-motor-intro = 固定子の直流抵抗、定格電圧での無負荷試験、拘束試験（IEEE Std 112）から、imlab motor と同じように電動機の等価回路を推定し、どの値が推定値かを示します。その後、この電動機から導出した設計で、電動機をプラントとモデルの両方として実行します。各試験は一つの測定値で、線間電圧、線電流、入力電力、周波数をカンマで区切って書きます。
-motor-rs = 一相あたりの固定子抵抗（直流試験）
-motor-no-load = 無負荷試験
-motor-locked = 拘束試験
-motor-nema = NEMA デザインの記号
-motor-rated = 銘板：電圧、周波数、電流
-motor-j = 回転子の慣性モーメント
-motor-np = 極対数
-motor-run-button = 等価回路を推定
-motor-example-button = 例を入力
-motor-example-filled = フォームには、2.2 kW、400 V の機械が、試験室で書き留めるとおりに入っています：銘板と、その等価回路が与える測定値です（カタログの電動機ではなく、シミュレーション上の試験室です）。
-motor-open = 導出した設計でこの電動機を実行
 
 ## 「レッスン」タブ
 

@@ -293,3 +293,17 @@ grade-head-verdict = 判定
 grade-head-link = 链接
 grade-value-reason = { $value }：{ $reason }
 grade-worst-run = { $text }（最差运行：{ $run }）
+
+motor-intro = 与 imlab motor 一样，由定子直流电阻、额定电压下的空载试验和堵转试验（IEEE Std 112）估计电机的等效电路，并指出哪些值是估计值。随后该电机同时作为被控对象和模型运行，并采用由它推导出的设计。每项试验为一组读数：线电压、线电流、输入功率和频率，以逗号分隔。
+motor-rs = 每相定子电阻，直流试验
+motor-no-load = 空载试验
+motor-locked = 堵转试验
+# NEMA 设计字母决定堵转漏抗在定子和转子之间的分配。
+motor-nema = NEMA 设计字母
+motor-rated = 铭牌：电压、频率、电流
+motor-j = 转子转动惯量
+motor-np = 极对数
+motor-run-button = 估计等效电路
+motor-example-button = 填入示例
+motor-example-filled = 表单中是一台 2.2 kW、400 V 的电机，按实验室的记录方式填写：铭牌以及由其等效电路得到的读数（这是模拟的实验室，而非产品目录中的电机）。
+motor-open = 用推导出的设计运行该电机
