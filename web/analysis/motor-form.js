@@ -23,8 +23,8 @@ const FIELDS = [
 ];
 
 /**
- * Builds the form in `section` (its words are of the rest of the messages, loaded first) and wires
- * it: the core reads the fields and names any it refuses; `open(scenario)` runs the motor found.
+ * Builds the form in `section` (its words are of the rest of the messages, loaded first; a failed
+ * load rejects with why) and wires it: the core reads the fields and names any it refuses; `open(scenario)` runs the motor found.
  * The page's state for a reader waiting on it is `data-motor` on the body: running, then done or
  * refused.
  * @param {HTMLElement} section
@@ -34,7 +34,7 @@ export async function buildMotorForm(section, { client, open }) {
   const status = el('p', { id: 'motor-status' });
   status.setAttribute('aria-live', 'polite');
   const unready = await restReady();
-  if (unready) return void section.append(el('p', { textContent: unready }));
+  if (unready) throw new Error(unready);
   /** @type {Record<string, HTMLInputElement | HTMLSelectElement>} */
   const controls = {};
   const labels = FIELDS.map(([key, message, unit]) => {
@@ -61,9 +61,21 @@ export async function buildMotorForm(section, { client, open }) {
     result,
   );
 
+  // The last action asked for: an answer to an earlier one is dropped.
+  let asked = 0;
+
   /** Fills the form with the example machine's nameplate and readings, as the core writes them. */
   async function example() {
-    const entry = await client.job('motor-example', {});
+    const me = ++asked;
+    /** @type {P.Jobs['motor-example']['result']} */
+    let entry;
+    try {
+      entry = await client.job('motor-example', {});
+    } catch (e) {
+      if (me === asked) status.textContent = /** @type {Error} */ (e).message;
+      return;
+    }
+    if (me !== asked) return;
     for (const [key] of FIELDS) controls[key].value = entry[key];
     result.replaceChildren();
     status.textContent = t('motor-example-filled');
@@ -82,6 +94,7 @@ export async function buildMotorForm(section, { client, open }) {
       j: value('j'),
       np: value('np'),
     };
+    const me = ++asked;
     result.replaceChildren();
     status.textContent = '';
     document.body.dataset.motor = 'running';
@@ -90,10 +103,12 @@ export async function buildMotorForm(section, { client, open }) {
     try {
       found = await client.job('motor', { entry });
     } catch (e) {
+      if (me !== asked) return;
       status.textContent = /** @type {Error} */ (e).message;
       document.body.dataset.motor = 'refused';
       return;
     }
+    if (me !== asked) return;
     status.textContent = found.heading;
     const items = found.lines.flatMap((line) => [
       el('dt', { textContent: `${line.key} = ${sig(line.value, 4)} ${line.unit}` }),

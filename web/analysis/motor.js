@@ -1,6 +1,7 @@
 // The Analysis tab's motor of your own: its section fetches its form (motor-form.js) and the words
 // it needs when first opened, so that the first plot waits for neither.
 import { $ } from '../ui/page.js';
+import { el } from '../ui/dom.js';
 
 /** @import { RunClient } from '../client/run-client.js' */
 
@@ -10,9 +11,17 @@ import { $ } from '../ui/page.js';
  */
 export function wireMotor(parts) {
   const section = $('motor-section', HTMLDetailsElement);
-  section.addEventListener(
-    'toggle',
-    () => import('./motor-form.js').then(({ buildMotorForm }) => buildMotorForm(section, parts)),
-    { once: true },
-  );
+  /** @type {Promise<void> | null} the form being built, or built; null until opened or after a failed fetch */
+  let building = null;
+  section.addEventListener('toggle', () => {
+    if (building) return;
+    section.querySelector('.motor-failed')?.remove();
+    building = import('./motor-form.js')
+      .then(({ buildMotorForm }) => buildMotorForm(section, parts))
+      .catch((e) => {
+        // The network gone: said in the section, and fetched again when next opened.
+        building = null;
+        section.append(el('p', { className: 'motor-failed', textContent: e.message }));
+      });
+  });
 }

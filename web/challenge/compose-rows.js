@@ -59,7 +59,10 @@ export function button(id, text, onClick) {
  */
 export function allowSet(info) {
   /** @type {Field[]} */
-  const fields = info.fields.filter((/** @type {Field} */ f) => f.value !== null && f.acts && f.key !== 'seed');
+  // A table of points has no range to allow.
+  const fields = info.fields.filter(
+    (/** @type {Field} */ f) => f.value !== null && f.acts && f.key !== 'seed' && !f.points,
+  );
   const picker = /** @type {HTMLSelectElement} */ (
     el(
       'select',

@@ -157,7 +157,8 @@ export class Plots {
   }
 
   /**
-   * Zooms every other chart to the time window of chart `source`, and asks for that window's data.
+   * Chart `source` was zoomed by the user: every chart of this set follows its time window, and
+   * the window is asked for (the other set follows it then).
    * @param {uPlot} source
    */
   zoomed(source) {
@@ -169,13 +170,14 @@ export class Plots {
   }
 
   /**
-   * Shows the window [t0, t1] on every chart (another set was zoomed, or a chart of this one).
+   * Shows the window [t0, t1] on every chart that does not show it yet (the zoomed one does).
    * @param {number} t0
    * @param {number} t1
    */
   follow(t0, t1) {
     this.window = [t0, t1];
-    this.quietly(() => this.drawn().forEach((c) => c.batch(() => c.setScale('x', { min: t0, max: t1 }))));
+    const shown = (/** @type {uPlot} */ c) => c.scales.x.min === t0 && c.scales.x.max === t1;
+    this.quietly(() => this.drawn().forEach((c) => shown(c) || c.batch(() => c.setScale('x', { min: t0, max: t1 }))));
   }
 
   /**

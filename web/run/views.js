@@ -32,8 +32,8 @@ export function createViews({ client, state, plots, walkthrough, stale }) {
    */
   function requestWindow(t0, t1) {
     if (!showingLastRun()) return;
-    // uPlot reports each new chart's initial scale, the whole run, as a zoom; the charts already
-    // hold the whole run, and for a run of a million rows each request would cost the worker seconds.
+    // A window that holds the whole run is the whole run: the charts hold it already, and for a run
+    // of a million rows each request would cost the worker seconds.
     const full = /** @type {[number, number]} */ (plots.full); // the run shown has one
     if (t0 <= full[0] && t1 >= full[1]) return;
     for (const set of plotSets) set.follow(t0, t1);

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 /// that a lookup per sample costs no more than a few comparisons.
 pub const MAX_POINTS: usize = 16;
 
-/// Up to [`MAX_POINTS`] points with strictly rising times, kept inline so that a scenario stays
+/// Up to [`MAX_POINTS`] points with strictly rising times, kept inline so that a reference stays
 /// `Copy` and a run never allocates to read it.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Points {
@@ -120,24 +120,21 @@ impl Points {
         }
         for i in 1..n {
             if t < self.t[i] {
-                let slope = (self.v[i] - self.v[i - 1]) / (self.t[i] - self.t[i - 1]);
-                return (self.v[i - 1] + slope * (t - self.t[i - 1]), slope);
+                let (dv, dt) = (self.v[i] - self.v[i - 1], self.t[i] - self.t[i - 1]);
+                // The value by the fraction of the segment gone, finite however steep the segment.
+                return (self.v[i - 1] + dv * ((t - self.t[i - 1]) / dt), dv / dt);
             }
         }
         (self.v[n - 1], 0.0)
     }
 
-    /// The time from which the value leaves zero (0 when it is not zero from the start), or None
-    /// when it is zero throughout.
-    pub fn first_nonzero(&self) -> Option<f64> {
+    /// The first point after time `after` from which the value changes (a corner where a ramp
+    /// or a hold begins), or None when none does.
+    pub fn first_change_after(&self, after: f64) -> Option<f64> {
         let n = self.len as usize;
-        if n == 0 {
-            return None;
-        }
-        if self.v[0] != 0.0 {
-            return Some(0.0);
-        }
-        (1..n).find(|&i| self.v[i] != 0.0).map(|i| self.t[i - 1])
+        (1..n)
+            .find(|&i| self.v[i] != self.v[i - 1] && self.t[i - 1] > after)
+            .map(|i| self.t[i - 1])
     }
 }
 
@@ -190,13 +187,12 @@ mod tests {
     }
 
     #[test]
-    fn the_first_nonzero_time_is_where_the_value_leaves_zero() {
-        let at = |text: &str| Points::parse(text).unwrap().first_nonzero();
-        assert_eq!(at("0:0,0.1:0,0.2:5"), Some(0.1));
-        assert_eq!(at("0.1:0,0.2:5"), Some(0.1));
-        assert_eq!(at("0.1:5,0.2:5"), Some(0.0));
-        assert_eq!(at("0:3"), Some(0.0));
-        assert_eq!(at("0:0,0.5:0"), None);
-        assert_eq!(at(""), None);
+    fn the_first_change_after_a_time_is_the_corner_it_starts_from() {
+        let at = |text: &str, after: f64| Points::parse(text).unwrap().first_change_after(after);
+        assert_eq!(at("0:0,0.1:0,0.2:5", 0.0), Some(0.1));
+        assert_eq!(at("0:0,0.1:0,0.2:5,0.3:5,0.4:0", 0.15), Some(0.3));
+        assert_eq!(at("0:3,0.5:3", 0.0), None);
+        assert_eq!(at("0.2:1", 0.0), None);
+        assert_eq!(at("", 0.0), None);
     }
 }

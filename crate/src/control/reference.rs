@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 /// A speed reference ω_d(t) (rad/s).
-// A table's points are kept inline (a few hundred bytes), not boxed: the scenario stays `Copy` and
+// A table's points are kept inline (a few hundred bytes), not boxed: the reference stays `Copy` and
 // a run reads its reference every sample without following a pointer.
 #[allow(clippy::large_enum_variant)]
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -88,7 +88,7 @@ pub struct Transient {
 ///
 /// clamped to at most half the recorded run, so that a window of samples always remains after
 /// it, and to the scenario's first event after the controller's own start-up (the reference's
-/// step or ramp, the load step): what follows an event is the drive's response to it, not its
+/// step, the start of its ramp or reversal or a corner of its table, a change of the load): what follows an event is the drive's response to it, not its
 /// start, even when a model error keeps the estimates from converging (`first_event`). With nothing recorded yet, t = 0. Also returns the index of its first row in `rows`.
 pub fn transient(s: &Scenario, rows: &dyn Samples) -> (Transient, usize) {
     let len = rows.count();
@@ -350,16 +350,10 @@ fn first_event(s: &Scenario, after: f64) -> Option<f64> {
             ..
         } if level != 0.0 && slope > 0.0 => Some(start),
         // A table's first corner after `after` from which the reference moves.
-        Reference::Table { points } => {
-            let pairs: Vec<(f64, f64)> = points.pairs().collect();
-            pairs
-                .windows(2)
-                .find(|w| w[1].1 != w[0].1 && w[0].0 > after)
-                .map(|w| w[0].0)
-        }
+        Reference::Table { points } => points.first_change_after(after),
         _ => None,
     };
-    let load = s.load_step.from();
+    let load = s.load_step.change_after(after);
     [reference, load]
         .into_iter()
         .flatten()

@@ -33,10 +33,13 @@ pub(super) enum Access {
     },
     /// The law of backstepping step `step` (1–4): a formula, percent-encoded in the codec.
     Formula { step: u8 },
-    /// A table of points `t:value,...` (a reference or a load torque); its range bounds the values.
+    /// A table of points `t:value,...` (a reference or a load torque); its range bounds the values,
+    /// `slope` the change per second between points, and `empty` says whether no points is a value.
     Table {
         get: fn(&Scenario) -> Option<Points>,
         set: fn(&mut Scenario, Points) -> bool,
+        slope: f64,
+        empty: bool,
     },
 }
 
@@ -328,15 +331,15 @@ const fn choice(key: &'static str, group: &'static str, access: Access) -> Field
     }
 }
 
+/// A table of points; see [`Access::Table`].
 const fn table_of(
     key: &'static str,
     group: &'static str,
     unit: &'static str,
     range: Range,
-    get: fn(&Scenario) -> Option<Points>,
-    set: fn(&mut Scenario, Points) -> bool,
+    access: Access,
 ) -> Field {
-    number(key, group, unit, range, Access::Table { get, set })
+    number(key, group, unit, range, access)
 }
 
 const fn law(key: &'static str, unit: &'static str, step: u8) -> Field {
@@ -397,9 +400,13 @@ fn table() -> Vec<Field> {
         number("rev.level", "reference", "rad/s", closed(-1000.0, 1000.0), reference!(Reversal.level)),
         number("rev.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Reversal.slope)),
         number("rev.hold", "reference", "s", closed(0.0, 10.0), reference!(Reversal.hold)),
-        table_of("ref.table", "reference", "rad/s", closed(-1000.0, 1000.0),
-            |s| match s.reference { Reference::Table { points } => Some(points), _ => None },
-            |s, p| match &mut s.reference { Reference::Table { points } => { *points = p; true } _ => false }),
+        // A reference table's slopes are bounded as the ramp's are; it needs a point.
+        table_of("ref.table", "reference", "rad/s", closed(-1000.0, 1000.0), Access::Table {
+            get: |s| match s.reference { Reference::Table { points } => Some(points), _ => None },
+            set: |s, p| match &mut s.reference { Reference::Table { points } => { *points = p; true } _ => false },
+            slope: 1e6,
+            empty: false,
+        }),
         number("psi_d", "reference", "Wb²", above(0.0, 4.0), at!(psi_d)),
         number("fw", "reference", "", whole(0.0, 1.0), flag!(fw)),
         number("fw.base", "reference", "rad/s", above(0.0, 1e4), at!(fw_base)),
@@ -460,9 +467,13 @@ fn table() -> Vec<Field> {
     v.extend([
         number("load.time", "load", "s", closed(0.0, 10.0), at!(load_step.time)),
         number("load.torque", "load", "N m", closed(-1e4, 1e4), at!(load_step.torque)),
-        table_of("load.table", "load", "N m", closed(-1e4, 1e4),
-            |s| Some(s.load_step.table),
-            |s, p| { s.load_step.table = p; true }),
+        // An empty load table leaves the load step; the plant takes any change of load.
+        table_of("load.table", "load", "N m", closed(-1e4, 1e4), Access::Table {
+            get: |s| Some(s.load_step.table),
+            set: |s, p| { s.load_step.table = p; true },
+            slope: f64::INFINITY,
+            empty: true,
+        }),
         number("vmax", "limits", "V", above(0.0, 1e5), at!(voltage_limit)),
         number("duration", "limits", "s", above(0.0, MAX_DURATION), at!(duration)),
         number("ts", "limits", "s", closed(1e-7, 1e-2), at!(ts)),
@@ -551,16 +562,38 @@ impl Field {
         }
     }
 
-    /// Whether table `p` fits the field: its times from 0 to the longest run, its values in the
-    /// field's range.
+    /// Whether table `p` fits the field: a point at least where the field needs one, its times
+    /// from 0 to the longest run, its values in the field's range, its slopes within the field's.
     pub(super) fn check_points(&self, p: &Points) -> Result<(), ScenarioError> {
+        let Access::Table { slope, empty, .. } = self.access else {
+            return Ok(());
+        };
+        let bad = |expected: Message| ScenarioError::BadValue {
+            key: self.key.to_string(),
+            value: p.encode(),
+            expected,
+        };
+        if p.is_empty() && !empty {
+            return Err(bad(Message::new("scenario-expected-table")));
+        }
+        let pairs: Vec<(f64, f64)> = p.pairs().collect();
+        for w in pairs.windows(2) {
+            let rate = (w[1].1 - w[0].1) / (w[1].0 - w[0].0);
+            if rate.abs() > slope {
+                return Err(bad(Message::new("scenario-expected-table-slope")
+                    .real("max", slope)
+                    .text("unit", self.unit)
+                    .short("before", w[0].0)
+                    .short("after", w[1].0)));
+            }
+        }
         for (t, v) in p.pairs() {
             if !(0.0..=MAX_DURATION).contains(&t) {
                 return Err(ScenarioError::BadValue {
                     key: self.key.to_string(),
                     value: p.encode(),
                     expected: Message::new("scenario-expected-table-time")
-                        .real("t", t)
+                        .short("t", t)
                         .real("max", MAX_DURATION),
                 });
             }
@@ -641,8 +674,8 @@ impl Field {
                         }
                         PointsError::NotRising { before, after } => {
                             Message::new("scenario-expected-table-rising")
-                                .real("before", before)
-                                .real("after", after)
+                                .short("before", before)
+                                .short("after", after)
                         }
                     })
                 })?;

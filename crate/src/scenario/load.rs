@@ -28,12 +28,13 @@ impl LoadStep {
         }
     }
 
-    /// When an extra load first acts, or None when there is none.
-    pub fn from(&self) -> Option<f64> {
+    /// The first change of the extra load after time `after` (s): the step, or the first corner
+    /// of the table from which the load moves; None when there is none.
+    pub fn change_after(&self, after: f64) -> Option<f64> {
         if !self.table.is_empty() {
-            self.table.first_nonzero()
+            self.table.first_change_after(after)
         } else {
-            (self.torque != 0.0).then_some(self.time)
+            (self.torque != 0.0 && self.time > after).then_some(self.time)
         }
     }
 
@@ -57,7 +58,7 @@ mod tests {
         assert_eq!(s.reference.sample(0.05).value, 50.0);
         assert_eq!(s.reference.sample(0.15).d1, -1500.0);
         assert_eq!(s.load_step.at(0.055), 1.0);
-        assert_eq!(s.load_step.from(), Some(0.05));
+        assert_eq!(s.load_step.change_after(0.0), Some(0.05));
         // The load step's fields then do nothing, and say so; the recovery has no step to time.
         assert_eq!(s.idle_because("load.torque").as_deref(), Some("load.table"));
         assert_eq!(s.load_step.step(), None);
@@ -79,6 +80,15 @@ mod tests {
         assert!(refused("0:0,1:1001").contains("1001: out of range"));
         let long: Vec<String> = (0..17).map(|i| format!("{i}:1")).collect();
         assert!(refused(&long.join(",")).contains("at most 16 points; this table has 17"));
+        // A reference table needs a point, and its slopes are bounded as a ramp's are.
+        assert!(refused("").contains("points t:value"), "{}", refused(""));
+        let steep = refused("0:0,1e-9:100");
+        assert!(
+            steep.contains(
+                "at most 1000000 rad/s a second between points; from 0 s to 0.000000001 s"
+            ),
+            "{steep}"
+        );
         // A table of another reference kind does not apply.
         let err = Scenario::parse("v=1&preset=step&ref.table=0:1")
             .unwrap_err()

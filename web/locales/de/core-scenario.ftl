@@ -42,6 +42,8 @@ scenario-expected-table = eine durch Kommas getrennte Liste von Punkten t:value 
 scenario-expected-table-length = höchstens { $max } Punkte; diese Tabelle hat { $count }
 scenario-expected-table-rising = von Punkt zu Punkt steigende Zeiten; { $after } s liegt nicht nach { $before } s
 scenario-expected-table-time = Zeiten von 0 bis { $max } s; { $t } s liegt außerhalb
+# $unit is the values' unit (rad/s); $before and $after are the times of the two points.
+scenario-expected-table-slope = eine Änderung um höchstens { $max } { $unit } pro Sekunde zwischen den Punkten; von { $before } s bis { $after } s ist sie schneller
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = eine Formel in den Namen, die Schritt { $step } verwenden darf (`imlab describe` führt sie auf), oder leer
 # $values is the values' range (scenario-allowed-unit).

@@ -39,6 +39,8 @@ scenario-expected-table = points t:value separated by commas, such as 0:0,0.1:10
 scenario-expected-table-length = at most { $max } points; this table has { $count }
 scenario-expected-table-rising = times that rise from point to point; { $after } s is not after { $before } s
 scenario-expected-table-time = times from 0 to { $max } s; { $t } s is outside
+# $unit is the values' unit (rad/s); $before and $after are the times of the two points.
+scenario-expected-table-slope = a change of at most { $max } { $unit } a second between points; from { $before } s to { $after } s it is faster
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = a formula of the names step { $step } may use (`imlab describe` lists them), or empty
 # $values is the values' range (scenario-allowed-unit).

@@ -42,6 +42,8 @@ scenario-expected-table = puntos t:value separados por comas, como 0:0,0.1:100, 
 scenario-expected-table-length = como mucho { $max } puntos; esta tabla tiene { $count }
 scenario-expected-table-rising = tiempos que crezcan de un punto al siguiente; { $after } s no es posterior a { $before } s
 scenario-expected-table-time = tiempos de 0 a { $max } s; { $t } s queda fuera
+# $unit es la unidad de los valores (rad/s); $before y $after son los tiempos de los dos puntos.
+scenario-expected-table-slope = un cambio de como mucho { $max } { $unit } por segundo entre puntos; de { $before } s a { $after } s es más rápido
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = una fórmula con los nombres que puede usar el paso { $step } (`imlab describe` los enumera), o vacío
 # $values es el rango de los valores (scenario-allowed-unit).

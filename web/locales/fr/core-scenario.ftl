@@ -35,6 +35,7 @@ scenario-expected-table = des points t:value séparés par des virgules, par exe
 scenario-expected-table-length = au plus { $max } points ; ce tableau en a { $count }
 scenario-expected-table-rising = des instants croissants d’un point à l’autre ; { $after } s n’est pas après { $before } s
 scenario-expected-table-time = des instants de 0 à { $max } s ; { $t } s est en dehors
+scenario-expected-table-slope = une variation d’au plus { $max } { $unit } par seconde entre les points ; de { $before } s à { $after } s, elle est plus rapide
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = une formule des noms que l’étape { $step } peut utiliser (`imlab describe` les liste), ou vide
 scenario-allowed-table = jusqu’à { $max } points t:value, instants croissants de 0 à { $duration } s, valeurs { $values } ; en ligne droite entre les points, maintenu avant le premier et après le dernier

@@ -33,6 +33,7 @@ scenario-expected-table = カンマ区切りの点 t:value（例：0:0,0.1:100�
 scenario-expected-table-length = 点は{ $max }個まで。この表には{ $count }個あります
 scenario-expected-table-rising = 点ごとに増加する時刻。{ $after } s は { $before } s より後ではありません
 scenario-expected-table-time = 0から{ $max } sまでの時刻。{ $t } s は範囲外です
+scenario-expected-table-slope = 点の間で毎秒{ $max } { $unit }までの変化。{ $before } s から { $after } s まではそれより速く変化しています
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = ステップ{ $step }で使える名前による式（`imlab describe` に一覧があります）、または空欄
 scenario-allowed-table = 点 t:value を{ $max }個まで、時刻は0から{ $duration } sまで増加、値は{ $values }。点の間は直線で結び、最初の点より前と最後の点より後は値を保持

@@ -40,6 +40,8 @@ scenario-expected-table = 以逗号分隔的点 t:value，例如 0:0,0.1:100，�
 scenario-expected-table-length = 至多 { $max } 个点；此表有 { $count } 个
 scenario-expected-table-rising = 逐点递增的时间；{ $after } s 并不在 { $before } s 之后
 scenario-expected-table-time = 0 到 { $max } s 之间的时间；{ $t } s 超出范围
+# $unit 是取值的单位（rad/s）；$before 和 $after 是两个点的时间。
+scenario-expected-table-slope = 点与点之间每秒至多 { $max } { $unit } 的变化；从 { $before } s 到 { $after } s 的变化更快
 scenario-allowed-choice = { $options }
 scenario-allowed-formula = 由第 { $step } 步可用的名称构成的公式（`imlab describe` 列出了这些名称），或为空
 # $values 是取值的范围（scenario-allowed-unit）。

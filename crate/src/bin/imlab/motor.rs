@@ -5,7 +5,7 @@ use crate::output::{stdout_stop, Stop};
 use imlab::identify::{identify, Entry};
 use std::io::Write;
 
-/// The options of `imlab motor`, as given (strings: `number` quotes a bad one through `excerpt`).
+/// The options of `imlab motor`, as given: the core reads them (`identify::Entry`) and names a bad one.
 #[derive(clap::Args)]
 pub(crate) struct MotorArgs {
     /// Stator resistance per phase from the DC test (Ω)
