@@ -153,6 +153,7 @@ const partOf = (/** @type {string} */ lang, /** @type {string} */ part) =>
 /** @type {Record<string, Record<string, string>>} */
 const localeFiles = {};
 let enPage = '';
+let enRest = '';
 rmSync(join(dist, 'locales'), { recursive: true, force: true });
 for (const lang of readdirSync(LOCALES).sort()) {
   localeFiles[lang] = {};
@@ -166,6 +167,7 @@ for (const lang of readdirSync(LOCALES).sort()) {
       .join('\n');
     if (text === '') continue;
     if (lang === 'en' && part === 'page') enPage = text;
+    if (lang === 'en' && part === 'rest') enRest = text;
     const name = `locales/${lang}/${part}-${hashOf(Buffer.from(text))}.ftl`;
     mkdirSync(join(dist, 'locales', lang), { recursive: true });
     writeFileSync(join(dist, name), text);
@@ -238,13 +240,14 @@ html = once(
   '<script type="module" src="web/main.js"></script>',
   `<script type="module" src="web/${main.name}"></script>${preloads}`,
 );
-// The page's own words are its English messages: each element of static/index.html with a
-// `data-l10n-id` gets the message's attributes and, when the message has a text, that text, escaped,
+// The page's own words are its English messages, of both parts (the Analysis, Lessons and Challenge
+// tabs' own words are of the rest, web/locales/LANG/panels.ftl): each element of static/index.html
+// with a `data-l10n-id` gets the message's attributes and, when the message has a text, that text, escaped,
 // as the page writes them in another language (web/l10n/l10n.js, translatePage). An element whose
 // message has a text holds text only; one that holds other elements (a region, a list of links) or
 // none at all (an input) takes a message of attributes only, whose children stay as they are.
 const enBundle = new FluentBundle('en', { useIsolating: false });
-const enErrors = enBundle.addResource(new FluentResource(enPage));
+const enErrors = enBundle.addResource(new FluentResource(`${enPage}\n${enRest}`));
 if (enErrors.length) throw new Error(`bundle: web/locales/en: ${enErrors.join('; ')}`);
 const escapeHtml = (/** @type {string} */ text) =>
   text.replace(/[&<>"]/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;' })[c] ?? c);

@@ -51,20 +51,28 @@ export async function useLanguage(lang) {
   rest = false;
   document.documentElement.lang = lang;
   await fetchPart('page');
-  if (lang !== 'en') translatePage();
+  if (lang !== 'en') translatePage([...document.querySelectorAll('[data-l10n-id]')]);
 }
 
+/** The elements whose words come with the rest of the messages, until they come. */
+let waiting = /** @type {Element[]} */ ([]);
+
 /**
- * Writes the page's own words in the language shown. The build wrote the English ones into it
- * (scripts/bundle.mjs): each element with a `data-l10n-id` holds its message's text, when the
- * message has one, and has its message's attributes; another language writes its own the same way.
+ * Writes the page's own words of `elements` in the language shown. The build wrote the English ones
+ * into it (scripts/bundle.mjs): each element with a `data-l10n-id` holds its message's text, when
+ * the message has one, and has its message's attributes; another language writes its own the same
+ * way. An element inside `data-l10n-rest` whose message is of the rest waits for it.
+ * @param {Element[]} elements
  */
-function translatePage() {
-  for (const element of document.querySelectorAll('[data-l10n-id]')) {
+function translatePage(elements) {
+  waiting = [];
+  for (const element of elements) {
     const id = /** @type {string} */ (element.getAttribute('data-l10n-id'));
     const message = bundle.getMessage(id);
     if (!message) {
-      console.error(`no message ${id} in ${language}`);
+      // The Analysis, Lessons and Challenge tabs' own words come with the rest of the messages.
+      if (!rest && element.closest('[data-l10n-rest]')) waiting.push(element);
+      else console.error(`no message ${id} in ${language}`);
       continue;
     }
     if (message.value !== null) element.textContent = t(id);
@@ -96,7 +104,10 @@ export function loadRest() {
   let promise = loading.get('rest');
   if (!promise) {
     promise = fetchPart('rest').then(
-      () => void (rest = true),
+      () => {
+        rest = true;
+        if (waiting.length) translatePage(waiting);
+      },
       (e) => {
         loading.delete('rest');
         throw e;

@@ -261,61 +261,20 @@ plot-caption-keys = Sélectionnez le tracé et parcourez la simulation échantil
 
 ## L’onglet Analyse
 
-map-heading = Carte d’erreur de modèle
-map-intro-start = Jusqu’où un résultat tient-il lorsque le moteur n’est pas ce que supposent l’EKF et le correcteur ? Simule le scénario actuel sur un ou deux paramètres du moteur (
-map-intro-model = ) ou du modèle (
-map-intro-axes = ), chaque valeur avec chaque graine, et affiche la médiane et l’étendue de chaque indicateur sur les graines. Écrivez un axe sous la forme KEY=LO..HI:N, en valeurs ou en erreurs relatives par rapport à l’autre côté :{ " " }
-map-intro-example = { " " }est la résistance rotorique du moteur de 10 % en dessous à 10 % au-dessus de celle du modèle. Tout autre champ numérique, comme un gain (k1=-20%..+20%:5), le réglage de l’EKF ou la cible de flux, est lu par rapport à la valeur propre du scénario.
-map-axis = axe
-map-second-axis = second axe (facultatif)
-map-seeds = graines
-map-run-button = Lancer la carte
 map-figure = indicateur
 map-progress =
     .aria-label = Simulations de la carte effectuées
-sweep-heading = Réponse en fréquence en boucle fermée
-sweep-intro = Balaye des consignes de vitesse sinusoïdales ω_d = décalage + A·sin(2πft) sur le scénario actuel, ajuste le fondamental de ω (et de l’estimée de vitesse du correcteur) après la première moitié de chaque simulation, et en tire la bande passante à −3 dB et la phase à 200 Hz. Gardez A assez petit pour que les tensions restent à l’écart de la limite ; le tableau indique la saturation. L’IFOC classique demande une vitesse de fonctionnement (son MRAS est aveugle près de la vitesse nulle) et des simulations plus longues (sa boucle de vitesse est à 10 Hz).
-sweep-from = de
-sweep-to = à
-sweep-points = points
-sweep-offset = décalage
-sweep-run-length = durée
-sweep-workers = workers
-sweep-variants = variantes
-sweep-variant-euler = EKF Euler (article)
-sweep-variant-rk4 = EKF RK4
-sweep-variant-perfect = observateur parfait
-sweep-variant-delay = EKF Euler, retard d’un échantillon
-sweep-variant-ifoc = IFOC classique, anticipation de couple
-sweep-variant-ifocpi = IFOC classique, PI seul
-sweep-run-button = Lancer le balayage
 sweep-csv = CSV (première variante)
-seeds-heading = Balayage des graines
-seeds-intro = Simule le scénario actuel avec N graines de bruit en parallèle et affiche, pour chaque échantillon, la moyenne et la bande min–max de l’erreur de vitesse et de l’erreur d’estimation.
-seeds-count = graines
-seeds-run-button = Lancer les graines
 seeds-progress =
     .aria-label = Simulations des graines effectuées
-motor-heading = Votre propre moteur, d’après sa plaque signalétique et ses essais
 
 ## L’onglet Leçons
 
-lessons-heading = Leçons
-lessons-intro = Chaque leçon charge un préréglage, le simule et ouvre à côté des tracés un panneau de leçon : ce qu’il faut observer, la question, un indice et la réponse. Les indicateurs au-dessus des tracés répondent à la plupart des questions.
-challenges-heading = Défis de conception
-challenges-intro = Un défi est une tâche de conception contenue dans un lien : l’étudiant ne peut modifier que certains réglages et réussit lorsque chaque critère est rempli, sur la simulation nominale et sur ses variantes. Les liens ci-dessous ouvrent les défis intégrés ; l’onglet Défi en compose de nouveaux.
 
 ## L’onglet Défi
 
-compose-heading = Composer un défi
 compose-fill = Remplir à partir du scénario actuel
-grade-heading = Noter une classe
-grade-intro-start = Note chaque lien de soumission d’un fichier de classe au regard d’un défi, dans ce navigateur : rien n’en sort. Le fichier de classe contient un lien par ligne, ou c’est l’export CSV d’une plateforme de cours avec une colonne de liens (ses autres colonnes, comme le nom de l’étudiant, sont reprises dans le résultat). Le CSV est celui qu’écrit{ " " }
-grade-intro-end = { " " }pour les mêmes fichiers, octet pour octet. Une notation annulée ou interrompue est conservée dans ce navigateur jusqu’à la notation suivante, et « Noter » reprend là où elle s’est arrêtée.
 grade-challenge = Défi
-grade-challenge-input =
-    .placeholder = nom d’un défi intégré ou lien de défi
-grade-class-file = Fichier de classe
 grade-paste = ou collez les liens, un par ligne
 grade-run = Noter
 grade-csv = Télécharger le CSV

@@ -1,0 +1,41 @@
+map-heading = モデル誤差マップ
+map-intro-start = 電動機がEKFと制御器の想定と異なるとき、結果はどこまで成り立つか。現在のシナリオを、一つか二つの電動機のパラメータ（
+map-intro-model = ）またはモデルのパラメータ（
+map-intro-axes = ）にわたって、各値をすべてのシードで実行し、各指標のシードにわたる中央値と範囲を示します。軸は KEY=LO..HI:N の形で、値か、もう一方に対する相対誤差で書きます。例：{ " " }
+map-intro-example = { " " }は、電動機の回転子抵抗をモデルの値の10 %下から10 %上まで変えます。ゲイン（k1=-20%..+20%:5）、EKFの調整、磁束目標値など、その他の数値フィールドは、シナリオ自身の値に対して読み取ります。
+map-axis = 軸
+map-second-axis = 二つ目の軸（任意）
+map-seeds = シード
+map-run-button = マップを実行
+sweep-heading = 閉ループ周波数応答
+sweep-intro = 現在のシナリオで正弦波の速度指令 ω_d = offset + A·sin(2πft) をスイープし、各実行の前半の後で、ω（および制御器の速度推定値）の基本波を当てはめ、−3 dB帯域幅と200 Hzでの位相を読み取ります。電圧が制限にかからないよう、Aは十分小さくしてください。飽和は表に示されます。古典的なIFOCには、動作速度（そのMRASはゼロ速度付近では速度を推定できない）と、より長い実行（その速度ループは10 Hz）が必要です。
+sweep-from = 開始
+sweep-to = 終了
+sweep-points = 点数
+sweep-offset = オフセット
+sweep-run-length = 実行時間
+sweep-workers = ワーカー数
+sweep-variants = 構成
+sweep-variant-euler = オイラーEKF（論文）
+sweep-variant-rk4 = RK4 EKF
+sweep-variant-perfect = 理想オブザーバ
+sweep-variant-delay = オイラーEKF、一サンプル遅延
+sweep-variant-ifoc = 古典的なIFOC、トルクフィードフォワード
+sweep-variant-ifocpi = 古典的なIFOC、PIのみ
+sweep-run-button = スイープを実行
+seeds-heading = シードスイープ
+seeds-intro = 現在のシナリオをN個のノイズシードで並列に実行し、速度誤差と推定誤差について、サンプルごとの平均と最小–最大の帯を示します。
+seeds-count = シード
+seeds-run-button = 複数シードで実行
+motor-heading = 独自の電動機：銘板と試験データから
+lessons-heading = レッスン
+lessons-intro = 各レッスンはプリセットを読み込んで実行し、プロットの横にレッスンパネルを開きます。パネルには観察のポイント、問い、ヒント、解答があります。ほとんどの問いには、プロットの上の指標で答えられます。
+challenges-heading = 設計課題
+challenges-intro = 課題はリンクで渡す設計課題です。学生は一部の設定だけを変更でき、公称の実行とそのバリアントのすべてでどの基準も満たせば合格です。下のリンクは組み込みの課題を開きます。新しい課題は「課題」タブで作成します。
+compose-heading = 課題を作成
+grade-heading = クラスを採点
+grade-intro-start = クラスのファイルにあるすべての提出リンクを、課題に照らしてこのブラウザで採点します。データはブラウザの外に出ません。クラスのファイルは、一行に一つのリンクを書いたものか、リンクの列をもつ講義プラットフォームのCSV書き出しです（学生の名前など、その他の列は結果に引き継がれます）。このCSVは、同じファイルに対して{ " " }
+grade-intro-end = { " " }が書き出すものとバイト単位で同一です。中止または中断された採点は次の採点までこのブラウザに保存され、「採点」を押すと止まったところから続けます。
+grade-challenge-input =
+    .placeholder = 組み込みの課題の名前か課題リンク
+grade-class-file = クラスのファイル
