@@ -70,10 +70,6 @@ figures-fewer = Weniger Kennwerte
 figures-strip =
     .aria-label = Kennwerte des Laufs
 plots-hint = Ziehen Sie über ein Diagramm, um alle zu vergrößern; Doppelklick, Esc oder „Ganzer Lauf“ zeigt wieder den ganzen Lauf. Die Legende nennt die aufgezeichneten Werte am Abtastwert unter dem Mauszeiger; klicken Sie auf ein Diagramm, um jeden Term zu diesem Zeitpunkt zu untersuchen.
-lesson-panel =
-    .aria-label = Lektion
-challenge-panel =
-    .aria-label = Aufgabe
 
 ## Die angehefteten Läufe und ihre Überlagerung (Registerkarte „Verläufe“)
 
@@ -211,13 +207,6 @@ embed-unknown-plots = Kein Diagramm namens { $names }; gezeigt wird stattdessen 
 
 ## Ein Ergebnis eines früheren Szenarios als das der Einstellungen ($scenario ist dieses Szenario)
 
-stale-back = Zurück zu diesem Szenario
-stale-map = Diese Karte gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Karte berechnen“, um sie zu aktualisieren. Ihr CSV-Export nennt das Szenario, für das sie berechnet wurde.
-stale-sweep = Diese Bode-Diagramme und diese Tabelle gehören zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Frequenzgang berechnen“, um sie zu aktualisieren. Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
-stale-seeds = Diese Startwert-Bänder gehören zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Startwerte durchrechnen“, um sie zu aktualisieren. Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
-stale-challenge = Dieser Befund gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Starten und prüfen“, um ihn zu aktualisieren. „Abgabelink kopieren“ kopiert den Link der Einstellungen, die er geprüft hat.
-# The walkthrough's comparison of the EKF's predictors.
-stale-compare = Dieser Vergleich gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Starten“ und dann die Schaltfläche des Vergleichs, um ihn zu aktualisieren.
 
 ## Das eigene Regelgesetz eines Schritts (das Einstellungsformular und der Entwurfsdurchgang)
 
@@ -331,28 +320,12 @@ plot-caption-keys = Fokussieren Sie das Diagramm und untersuchen Sie den Lauf mi
 
 ## Die Registerkarte „Analyse“
 
-# Labels the menu of the figure the map shows.
-map-figure = Kennwert
-map-progress =
-    .aria-label = Erledigte Läufe der Karte
-sweep-csv = CSV (erste Variante)
-seeds-progress =
-    .aria-label = Erledigte Startwert-Läufe
 
 ## Die Registerkarte „Lektionen“
 
 
 ## Die Registerkarte „Aufgabe“
 
-compose-fill = Aus aktuellem Szenario übernehmen
-grade-challenge = Aufgabe
-grade-paste = oder die Links einfügen, einen pro Zeile
-grade-run = Bewerten
-grade-csv = CSV herunterladen
-grade-progress =
-    .aria-label = Bewertete Abgaben
-grade-table =
-    .aria-label = Bewertungen des Kurses
 
 ## The challenge panel's controls, built with the page
 
@@ -364,3 +337,8 @@ challenge-open-failed = Die Aufgabe konnte nicht geöffnet werden: { $reason }. 
 law-checking = Ihr Regelgesetz wird an der Entwurfsdynamik geprüft…
 law-verdict-failed = Der Befund zu Ihrem Regelgesetz konnte nicht berechnet werden: { $reason }
 walkthrough-load-failed = Der Entwurfsdurchgang konnte nicht geladen werden: Prüfen Sie die Verbindung und laden Sie die Seite neu.
+lesson-panel =
+    .aria-label = Lektion
+challenge-panel =
+    .aria-label = Aufgabe
+stale-back = Zurück zu diesem Szenario

@@ -1,5 +1,5 @@
-# The Analysis, Lessons and Challenge tabs' own words: they come with the rest of the page's
-# messages, after the first plot (web/l10n/l10n.js).
+# The Analysis, Lessons and Challenge tabs' own words, and the marks of a result of an earlier
+# scenario: they come with the rest of the page's messages, after the first plot (web/l10n/l10n.js).
 
 map-heading = Modellfehlerkarte
 # The map's introduction is cut around three pieces of code: plant.*, model.* and an example
@@ -48,3 +48,25 @@ grade-intro-end = { " " }für dieselben Dateien schreibt, Byte für Byte. Eine a
 grade-challenge-input =
     .placeholder = Name einer eingebauten Aufgabe oder Aufgabenlink
 grade-class-file = Kursdatei
+# Labels the menu of the figure the map shows.
+map-figure = Kennwert
+map-progress =
+    .aria-label = Erledigte Läufe der Karte
+sweep-csv = CSV (erste Variante)
+seeds-progress =
+    .aria-label = Erledigte Startwert-Läufe
+compose-fill = Aus aktuellem Szenario übernehmen
+grade-challenge = Aufgabe
+grade-paste = oder die Links einfügen, einen pro Zeile
+grade-run = Bewerten
+grade-csv = CSV herunterladen
+grade-progress =
+    .aria-label = Bewertete Abgaben
+grade-table =
+    .aria-label = Bewertungen des Kurses
+stale-map = Diese Karte gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Karte berechnen“, um sie zu aktualisieren. Ihr CSV-Export nennt das Szenario, für das sie berechnet wurde.
+stale-sweep = Diese Bode-Diagramme und diese Tabelle gehören zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Frequenzgang berechnen“, um sie zu aktualisieren. Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
+stale-seeds = Diese Startwert-Bänder gehören zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Startwerte durchrechnen“, um sie zu aktualisieren. Ihr CSV-Export, der sein Szenario nicht nennt, ist bis dahin gesperrt.
+stale-challenge = Dieser Befund gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Starten und prüfen“, um ihn zu aktualisieren. „Abgabelink kopieren“ kopiert den Link der Einstellungen, die er geprüft hat.
+# The walkthrough's comparison of the EKF's predictors.
+stale-compare = Dieser Vergleich gehört zu einem früheren Szenario ({ $scenario }), nicht zu den aktuellen Einstellungen. Drücken Sie „Starten“ und dann die Schaltfläche des Vergleichs, um ihn zu aktualisieren.

@@ -70,10 +70,6 @@ figures-fewer = Fewer figures
 figures-strip =
     .aria-label = Figures of the run
 plots-hint = Drag across a plot to zoom all of them; double-click, Escape or “Full run” returns to the whole run. The legend reads out the recorded values at the sample under the cursor; click a plot to inspect every term at that instant.
-lesson-panel =
-    .aria-label = Lesson
-challenge-panel =
-    .aria-label = Challenge
 
 ## The pins and their overlay (Trajectories tab)
 
@@ -211,13 +207,6 @@ embed-unknown-plots = No plot named { $names }; showing { $shown }. Plots: { $pl
 
 ## A result of an earlier scenario than the settings' ($scenario is that scenario)
 
-stale-back = Back to its scenario
-stale-map = This map is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run map” to bring it up to date. Its CSV names the scenario it was run for.
-stale-sweep = These Bode plots and this table are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run sweep” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
-stale-seeds = These seed bands are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run seeds” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
-stale-challenge = This verdict is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run and check” to bring it up to date. “Copy submission link” copies the link of the settings it checked.
-# The walkthrough's comparison of the EKF's predictors.
-stale-compare = This comparison is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run”, then the comparison’s button, to bring it up to date.
 
 ## A step's own law (the settings form and the walkthrough)
 
@@ -333,28 +322,12 @@ plot-caption-keys = Focus the plot and use the arrow keys to inspect the run sam
 
 ## The Analysis tab
 
-# Labels the menu of the figure the map shows.
-map-figure = figure
-map-progress =
-    .aria-label = Map runs done
-sweep-csv = CSV (first variant)
-seeds-progress =
-    .aria-label = Seed runs done
 
 ## The Lessons tab
 
 
 ## The Challenge tab
 
-compose-fill = Fill from the current scenario
-grade-challenge = Challenge
-grade-paste = or paste the links, one a line
-grade-run = Grade
-grade-csv = Download CSV
-grade-progress =
-    .aria-label = Submissions graded
-grade-table =
-    .aria-label = Grades of the class
 
 ## The challenge panel's controls, built with the page
 
@@ -369,3 +342,8 @@ law-checking = Checking your law against the designed dynamics…
 law-verdict-failed = The verdict on your law could not be computed: { $reason }
 # Said when the walkthrough is opened and its texts cannot be fetched.
 walkthrough-load-failed = The walkthrough could not be loaded: check the connection and reload the page.
+lesson-panel =
+    .aria-label = Lesson
+challenge-panel =
+    .aria-label = Challenge
+stale-back = Back to its scenario

@@ -1,5 +1,5 @@
-# The Analysis, Lessons and Challenge tabs' own words: they come with the rest of the page's
-# messages, after the first plot (web/l10n/l10n.js).
+# The Analysis, Lessons and Challenge tabs' own words, and the marks of a result of an earlier
+# scenario: they come with the rest of the page's messages, after the first plot (web/l10n/l10n.js).
 
 map-heading = Model-error map
 # The map's introduction is cut around three pieces of code: plant.*, model.* and an example
@@ -48,3 +48,25 @@ grade-intro-end = { " " }writes for the same files, byte for byte. A cancelled o
 grade-challenge-input =
     .placeholder = a built-in's name or a challenge link
 grade-class-file = Class file
+# Labels the menu of the figure the map shows.
+map-figure = figure
+map-progress =
+    .aria-label = Map runs done
+sweep-csv = CSV (first variant)
+seeds-progress =
+    .aria-label = Seed runs done
+compose-fill = Fill from the current scenario
+grade-challenge = Challenge
+grade-paste = or paste the links, one a line
+grade-run = Grade
+grade-csv = Download CSV
+grade-progress =
+    .aria-label = Submissions graded
+grade-table =
+    .aria-label = Grades of the class
+stale-map = This map is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run map” to bring it up to date. Its CSV names the scenario it was run for.
+stale-sweep = These Bode plots and this table are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run sweep” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
+stale-seeds = These seed bands are of an earlier scenario ({ $scenario }), not of the settings now. Press “Run seeds” to bring them up to date. Their CSV, which does not name its scenario, is off until then.
+stale-challenge = This verdict is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run and check” to bring it up to date. “Copy submission link” copies the link of the settings it checked.
+# The walkthrough's comparison of the EKF's predictors.
+stale-compare = This comparison is of an earlier scenario ({ $scenario }), not of the settings now. Press “Run”, then the comparison’s button, to bring it up to date.

@@ -70,10 +70,6 @@ figures-fewer = Menos cifras
 figures-strip =
     .aria-label = Cifras de la ejecución
 plots-hint = Arrastra sobre una gráfica para ampliarlas todas; el doble clic, Escape o «Ejecución completa» vuelven a la ejecución entera. La leyenda lee los valores registrados en la muestra bajo el cursor; haz clic en una gráfica para inspeccionar todos los términos en ese instante.
-lesson-panel =
-    .aria-label = Lección
-challenge-panel =
-    .aria-label = Reto
 
 ## The pins and their overlay (Trajectories tab)
 
@@ -211,13 +207,6 @@ embed-unknown-plots = No hay ninguna gráfica llamada { $names }; se muestran { 
 
 ## A result of an earlier scenario than the settings' ($scenario is that scenario)
 
-stale-back = Volver a su escenario
-stale-map = Este mapa es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar mapa» para actualizarlo. Su CSV indica el escenario para el que se ejecutó.
-stale-sweep = Estos diagramas de Bode y esta tabla son de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar barrido» para actualizarlos. Su CSV, que no indica su escenario, queda desactivado hasta entonces.
-stale-seeds = Estas bandas de semillas son de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar semillas» para actualizarlas. Su CSV, que no indica su escenario, queda desactivado hasta entonces.
-stale-challenge = Este veredicto es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar y comprobar» para actualizarlo. «Copiar enlace de entrega» copia el enlace de los ajustes que comprobó.
-# La comparación de los predictores del EKF en el recorrido por el diseño.
-stale-compare = Esta comparación es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar» y después el botón de la comparación para actualizarla.
 
 ## A step's own law (the settings form and the walkthrough)
 
@@ -331,28 +320,12 @@ plot-caption-keys = Da el foco a la gráfica y usa las teclas de flecha para ins
 
 ## The Analysis tab
 
-# Etiqueta el menú de la cifra que muestra el mapa.
-map-figure = cifra
-map-progress =
-    .aria-label = Ejecuciones del mapa completadas
-sweep-csv = CSV (primera variante)
-seeds-progress =
-    .aria-label = Ejecuciones de semillas completadas
 
 ## The Lessons tab
 
 
 ## The Challenge tab
 
-compose-fill = Rellenar desde el escenario actual
-grade-challenge = Reto
-grade-paste = o pega los enlaces, uno por línea
-grade-run = Calificar
-grade-csv = Descargar CSV
-grade-progress =
-    .aria-label = Entregas calificadas
-grade-table =
-    .aria-label = Calificaciones de la clase
 
 ## The challenge panel's controls, built with the page
 
@@ -364,3 +337,8 @@ challenge-open-failed = No se pudo abrir el reto: { $reason }. La página muestr
 law-checking = Comprobando tu ley frente a la dinámica diseñada…
 law-verdict-failed = No se pudo calcular el veredicto sobre tu ley: { $reason }
 walkthrough-load-failed = No se pudo cargar el recorrido por el diseño: comprueba la conexión y vuelve a cargar la página.
+lesson-panel =
+    .aria-label = Lección
+challenge-panel =
+    .aria-label = Reto
+stale-back = Volver a su escenario

@@ -45,3 +45,25 @@ grade-intro-end = { " " }escribe para los mismos archivos, byte a byte. Una cali
 grade-challenge-input =
     .placeholder = el nombre de uno incorporado o un enlace de reto
 grade-class-file = Archivo de la clase
+# Etiqueta el menú de la cifra que muestra el mapa.
+map-figure = cifra
+map-progress =
+    .aria-label = Ejecuciones del mapa completadas
+sweep-csv = CSV (primera variante)
+seeds-progress =
+    .aria-label = Ejecuciones de semillas completadas
+compose-fill = Rellenar desde el escenario actual
+grade-challenge = Reto
+grade-paste = o pega los enlaces, uno por línea
+grade-run = Calificar
+grade-csv = Descargar CSV
+grade-progress =
+    .aria-label = Entregas calificadas
+grade-table =
+    .aria-label = Calificaciones de la clase
+stale-map = Este mapa es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar mapa» para actualizarlo. Su CSV indica el escenario para el que se ejecutó.
+stale-sweep = Estos diagramas de Bode y esta tabla son de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar barrido» para actualizarlos. Su CSV, que no indica su escenario, queda desactivado hasta entonces.
+stale-seeds = Estas bandas de semillas son de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar semillas» para actualizarlas. Su CSV, que no indica su escenario, queda desactivado hasta entonces.
+stale-challenge = Este veredicto es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar y comprobar» para actualizarlo. «Copiar enlace de entrega» copia el enlace de los ajustes que comprobó.
+# La comparación de los predictores del EKF en el recorrido por el diseño.
+stale-compare = Esta comparación es de un escenario anterior ({ $scenario }), no de los ajustes actuales. Pulsa «Ejecutar» y después el botón de la comparación para actualizarla.

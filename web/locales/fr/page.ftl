@@ -62,10 +62,6 @@ figures-fewer = Moins d’indicateurs
 figures-strip =
     .aria-label = Indicateurs de la simulation
 plots-hint = Faites glisser la souris sur un tracé pour zoomer sur tous les tracés ; un double-clic, Échap ou « Simulation entière » revient à toute la simulation. La légende donne les valeurs enregistrées à l’échantillon sous le curseur ; cliquez sur un tracé pour inspecter chaque terme à cet instant.
-lesson-panel =
-    .aria-label = Leçon
-challenge-panel =
-    .aria-label = Défi
 
 ## Les épingles et leur superposition (onglet Trajectoires)
 
@@ -165,12 +161,6 @@ embed-unknown-plots = Aucun tracé nommé { $names } ; affichage de { $shown }
 
 ## Un résultat d’un scénario antérieur à celui des réglages ($scenario est ce scénario)
 
-stale-back = Revenir à son scénario
-stale-map = Cette carte porte sur un scénario antérieur ({ $scenario }), et non sur les réglages actuels. Appuyez sur « Lancer la carte » pour la mettre à jour. Son CSV nomme le scénario pour lequel elle a été calculée.
-stale-sweep = Ces diagrammes de Bode et ce tableau portent sur un scénario antérieur ({ $scenario }), et non sur les réglages actuels. Appuyez sur « Lancer le balayage » pour les mettre à jour. Leur CSV, qui ne nomme pas son scénario, est désactivé d’ici là.
-stale-seeds = Ces bandes sur les graines portent sur un scénario antérieur ({ $scenario }), et non sur les réglages actuels. Appuyez sur « Lancer les graines » pour les mettre à jour. Leur CSV, qui ne nomme pas son scénario, est désactivé d’ici là.
-stale-challenge = Ce verdict porte sur un scénario antérieur ({ $scenario }), et non sur les réglages actuels. Appuyez sur « Lancer et vérifier » pour le mettre à jour. « Copier le lien de soumission » copie le lien des réglages vérifiés.
-stale-compare = Cette comparaison porte sur un scénario antérieur ({ $scenario }), et non sur les réglages actuels. Appuyez sur « Lancer », puis sur le bouton de la comparaison, pour la mettre à jour.
 
 ## La loi propre d’une étape (le formulaire des réglages et le parcours)
 
@@ -261,27 +251,12 @@ plot-caption-keys = Sélectionnez le tracé et parcourez la simulation échantil
 
 ## L’onglet Analyse
 
-map-figure = indicateur
-map-progress =
-    .aria-label = Simulations de la carte effectuées
-sweep-csv = CSV (première variante)
-seeds-progress =
-    .aria-label = Simulations des graines effectuées
 
 ## L’onglet Leçons
 
 
 ## L’onglet Défi
 
-compose-fill = Remplir à partir du scénario actuel
-grade-challenge = Défi
-grade-paste = ou collez les liens, un par ligne
-grade-run = Noter
-grade-csv = Télécharger le CSV
-grade-progress =
-    .aria-label = Soumissions notées
-grade-table =
-    .aria-label = Notes de la classe
 
 ## The challenge panel's controls, built with the page
 
@@ -293,3 +268,8 @@ challenge-open-failed = Le défi n’a pas pu être ouvert : { $reason }. La pa
 law-checking = Vérification de votre loi par rapport à la dynamique voulue…
 law-verdict-failed = Le verdict sur votre loi n’a pas pu être calculé : { $reason }
 walkthrough-load-failed = Le parcours n’a pas pu être chargé : vérifiez la connexion et rechargez la page.
+lesson-panel =
+    .aria-label = Leçon
+challenge-panel =
+    .aria-label = Défi
+stale-back = Revenir à son scénario

@@ -61,10 +61,6 @@ figures-fewer = 指標を減らす
 figures-strip =
     .aria-label = この実行の指標
 plots-hint = プロット上をドラッグすると、すべてのプロットを拡大します。ダブルクリック、Escape、または「実行全体」で実行全体に戻ります。凡例には、カーソル位置のサンプルで記録された値が表示されます。プロットをクリックすると、その時刻のすべての項を調べられます。
-lesson-panel =
-    .aria-label = レッスン
-challenge-panel =
-    .aria-label = 課題
 
 ## ピン留めとその重ね描き（「時間応答」タブ）
 
@@ -162,12 +158,6 @@ embed-unknown-plots = { $names }という名前のプロットはありません
 
 ## 設定より前のシナリオの結果（$scenario はそのシナリオ）
 
-stale-back = 元のシナリオへ
-stale-map = このマップは以前のシナリオ（{ $scenario }）のもので、現在の設定のものではありません。最新にするには「マップを実行」を押してください。このマップのCSVには、実行したときのシナリオが記録されています。
-stale-sweep = このボード線図とこの表は以前のシナリオ（{ $scenario }）のもので、現在の設定のものではありません。最新にするには「スイープを実行」を押してください。これらのCSVにはシナリオが記録されないため、それまで書き出しできません。
-stale-seeds = このシード帯は以前のシナリオ（{ $scenario }）のもので、現在の設定のものではありません。最新にするには「複数シードで実行」を押してください。これらのCSVにはシナリオが記録されないため、それまで書き出しできません。
-stale-challenge = この判定は以前のシナリオ（{ $scenario }）のもので、現在の設定のものではありません。最新にするには「実行して確認」を押してください。「提出リンクをコピー」は、判定したときの設定のリンクをコピーします。
-stale-compare = この比較は以前のシナリオ（{ $scenario }）のもので、現在の設定のものではありません。最新にするには、「実行」を押してから比較のボタンを押してください。
 
 ## 各ステップの自作の制御則（設定フォームと設計解説）
 
@@ -258,27 +248,12 @@ plot-caption-keys = プロットにフォーカスし、矢印キーで実行を
 
 ## 「解析」タブ
 
-map-figure = 指標
-map-progress =
-    .aria-label = 完了したマップの実行
-sweep-csv = CSV（最初の構成）
-seeds-progress =
-    .aria-label = 完了したシードの実行
 
 ## 「レッスン」タブ
 
 
 ## 「課題」タブ
 
-compose-fill = 現在のシナリオから入力
-grade-challenge = 課題
-grade-paste = または、リンクを一行に一つずつ貼り付け
-grade-run = 採点
-grade-csv = CSVをダウンロード
-grade-progress =
-    .aria-label = 採点済みの提出
-grade-table =
-    .aria-label = クラスの採点結果
 
 ## The challenge panel's controls, built with the page
 
@@ -290,3 +265,8 @@ challenge-open-failed = 課題を開けませんでした：{ $reason }。代わ
 law-checking = 制御則を設計した動特性と照合しています…
 law-verdict-failed = 制御則の判定を計算できませんでした：{ $reason }
 walkthrough-load-failed = 設計解説を読み込めませんでした。接続を確認して、ページを再読み込みしてください。
+lesson-panel =
+    .aria-label = レッスン
+challenge-panel =
+    .aria-label = 課題
+stale-back = 元のシナリオへ

@@ -69,10 +69,6 @@ figures-fewer = 精简指标
 figures-strip =
     .aria-label = 本次运行的指标
 plots-hint = 在图上拖选即可同时放大所有图；双击、按 Escape 或“完整运行”可回到整个运行。图例显示光标所在采样点的记录值；点击图即可查看该时刻的每一项。
-lesson-panel =
-    .aria-label = 课程
-challenge-panel =
-    .aria-label = 挑战
 
 ## 固定的运行及其叠加图（“轨迹”选项卡）
 
@@ -208,13 +204,6 @@ embed-unknown-plots = 没有名为 { $names } 的图；改为显示 { $shown }�
 
 ## 属于较早场景（而非当前设置）的结果（$scenario 即该场景）
 
-stale-back = 返回其场景
-stale-map = 这张误差图属于较早的场景（{ $scenario }），而不是当前的设置。按“运行误差图”即可更新。其 CSV 注明了它所对应的场景。
-stale-sweep = 这些伯德图和这张表属于较早的场景（{ $scenario }），而不是当前的设置。按“运行扫描”即可更新。其 CSV 不注明所属场景，在此之前不可导出。
-stale-seeds = 这些多种子区间带属于较早的场景（{ $scenario }），而不是当前的设置。按“运行多种子”即可更新。其 CSV 不注明所属场景，在此之前不可导出。
-stale-challenge = 此判定属于较早的场景（{ $scenario }），而不是当前的设置。按“运行并检查”即可更新。“复制提交链接”复制的是它所检查的那组设置的链接。
-# 设计详解中 EKF 预测器的比较。
-stale-compare = 此比较属于较早的场景（{ $scenario }），而不是当前的设置。先按“运行”，再按比较按钮，即可更新。
 
 ## 某一步的自定义控制律（设置表单和设计详解）
 
@@ -328,28 +317,12 @@ plot-caption-keys = 聚焦此图后，可用方向键逐个采样点查看运行
 
 ## “分析”选项卡
 
-# 误差图所显示指标的菜单标签。
-map-figure = 指标
-map-progress =
-    .aria-label = 已完成的误差图运行
-sweep-csv = CSV（第一个方案）
-seeds-progress =
-    .aria-label = 已完成的多种子运行
 
 ## “课程”选项卡
 
 
 ## “挑战”选项卡
 
-compose-fill = 按当前场景填写
-grade-challenge = 挑战
-grade-paste = 或粘贴链接，每行一个
-grade-run = 评分
-grade-csv = 下载 CSV
-grade-progress =
-    .aria-label = 已评分的提交
-grade-table =
-    .aria-label = 全班成绩
 
 ## The challenge panel's controls, built with the page
 
@@ -361,3 +334,8 @@ challenge-open-failed = 无法打开此挑战：{ $reason }。页面改为显示
 law-checking = 正在按设计的动态检查你的控制律…
 law-verdict-failed = 无法计算对你的控制律的判定：{ $reason }
 walkthrough-load-failed = 无法载入设计详解：请检查网络连接并重新加载页面。
+lesson-panel =
+    .aria-label = 课程
+challenge-panel =
+    .aria-label = 挑战
+stale-back = 返回其场景

@@ -45,3 +45,25 @@ grade-intro-end = { " " }对同样的文件写出的 CSV 逐字节相同。已�
 grade-challenge-input =
     .placeholder = 内置挑战的名称或挑战链接
 grade-class-file = 班级文件
+# 误差图所显示指标的菜单标签。
+map-figure = 指标
+map-progress =
+    .aria-label = 已完成的误差图运行
+sweep-csv = CSV（第一个方案）
+seeds-progress =
+    .aria-label = 已完成的多种子运行
+compose-fill = 按当前场景填写
+grade-challenge = 挑战
+grade-paste = 或粘贴链接，每行一个
+grade-run = 评分
+grade-csv = 下载 CSV
+grade-progress =
+    .aria-label = 已评分的提交
+grade-table =
+    .aria-label = 全班成绩
+stale-map = 这张误差图属于较早的场景（{ $scenario }），而不是当前的设置。按“运行误差图”即可更新。其 CSV 注明了它所对应的场景。
+stale-sweep = 这些伯德图和这张表属于较早的场景（{ $scenario }），而不是当前的设置。按“运行扫描”即可更新。其 CSV 不注明所属场景，在此之前不可导出。
+stale-seeds = 这些多种子区间带属于较早的场景（{ $scenario }），而不是当前的设置。按“运行多种子”即可更新。其 CSV 不注明所属场景，在此之前不可导出。
+stale-challenge = 此判定属于较早的场景（{ $scenario }），而不是当前的设置。按“运行并检查”即可更新。“复制提交链接”复制的是它所检查的那组设置的链接。
+# 设计详解中 EKF 预测器的比较。
+stale-compare = 此比较属于较早的场景（{ $scenario }），而不是当前的设置。先按“运行”，再按比较按钮，即可更新。
