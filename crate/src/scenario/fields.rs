@@ -331,17 +331,6 @@ const fn choice(key: &'static str, group: &'static str, access: Access) -> Field
     }
 }
 
-/// A table of points; see [`Access::Table`].
-const fn table_of(
-    key: &'static str,
-    group: &'static str,
-    unit: &'static str,
-    range: Range,
-    access: Access,
-) -> Field {
-    number(key, group, unit, range, access)
-}
-
 const fn law(key: &'static str, unit: &'static str, step: u8) -> Field {
     Field {
         key,
@@ -401,7 +390,7 @@ fn table() -> Vec<Field> {
         number("rev.slope", "reference", "rad/s²", above(0.0, 1e6), reference!(Reversal.slope)),
         number("rev.hold", "reference", "s", closed(0.0, 10.0), reference!(Reversal.hold)),
         // A reference table's slopes are bounded as the ramp's are; it needs a point.
-        table_of("ref.table", "reference", "rad/s", closed(-1000.0, 1000.0), Access::Table {
+        number("ref.table", "reference", "rad/s", closed(-1000.0, 1000.0), Access::Table {
             get: |s| match s.reference { Reference::Table { points } => Some(points), _ => None },
             set: |s, p| match &mut s.reference { Reference::Table { points } => { *points = p; true } _ => false },
             slope: 1e6,
@@ -468,7 +457,7 @@ fn table() -> Vec<Field> {
         number("load.time", "load", "s", closed(0.0, 10.0), at!(load_step.time)),
         number("load.torque", "load", "N m", closed(-1e4, 1e4), at!(load_step.torque)),
         // An empty load table leaves the load step; the plant takes any change of load.
-        table_of("load.table", "load", "N m", closed(-1e4, 1e4), Access::Table {
+        number("load.table", "load", "N m", closed(-1e4, 1e4), Access::Table {
             get: |s| Some(s.load_step.table),
             set: |s, p| { s.load_step.table = p; true },
             slope: f64::INFINITY,
